@@ -1,0 +1,260 @@
+/* bench.c: `clsph bench neighbours`: device neighbour search (binning, sort, cell tables,
+ * reordering) and one sweep of each common operator, for several particle counts in 2-D, against a
+ * plain C loop of the density-type sum Σ_j V_j W_ij compiled with OpenMP (the machine's own
+ * reference). Figures are medians over --bench-reps repetitions; pair evaluations count the
+ * pairs within the support radius (i itself included), the same count for device and native. */
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "cli.h"
+#include "clsph_config.h"
+#include "lattice.h"
+#include "ops.h"
+#include "pset.h"
+#include "smoothing.h"
+
+static double now(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+  qsort(v, (size_t)n, sizeof *v, cmp_double);
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* The native reference: the same sum over the same sorted particles and cell table. */
+static double native_sum(const real *pos, const cl_uint *start, size_t n, const int nc[2],
+                         double cell_inv, double h, double alpha, double vol, real *out,
+                         long *pairs)
+{
+  const real support2 = (real)(4.0 * h * h), inv_h = (real)(1.0 / h), a = (real)alpha;
+  const real v = (real)vol;
+  long count = 0;
+  double t0 = omp_get_wtime();
+#pragma omp parallel for schedule(static) reduction(+ : count)
+  for (size_t i = 0; i < n; ++i) {
+    real xi = pos[2 * i], yi = pos[2 * i + 1];
+    int cx = (int)(xi * (real)cell_inv), cy = (int)(yi * (real)cell_inv);
+    real s = 0;
+    for (int dy = -1; dy <= 1; ++dy) {
+      int y = cy + dy;
+      if (y < 0 || y >= nc[1]) continue;
+      for (int dx = -1; dx <= 1; ++dx) {
+        int x = cx + dx;
+        if (x < 0 || x >= nc[0]) continue;
+        int c = x + nc[0] * y;
+        for (cl_uint j = start[c]; j < start[c + 1]; ++j) {
+          real rx = xi - pos[2 * j], ry = yi - pos[2 * j + 1];
+          real r2 = rx * rx + ry * ry;
+          if (r2 >= support2) continue;
+          real q = real_sqrt(r2) * inv_h;
+          real t = 1 - (real)0.5 * q;
+          real t2 = t * t;
+          s += v * a * t2 * t2 * (1 + 2 * q); /* Wendland C2, as in kernels/common/smoothing.h */
+          ++count;
+        }
+      }
+    }
+    out[i] = s;
+  }
+  double t = omp_get_wtime() - t0;
+  *pairs = count;
+  return t;
+}
+
+static enum clsph_status bench_size(const struct dev *dev, const struct cli *cli, long target)
+{
+  enum clsph_status st = CLSPH_OK;
+  const int reps = cli->bench_reps;
+  const int side = (int)lround(sqrt((double)target));
+  const double dr = 1.0; /* spacing 1: every size shares one program (h = 2) */
+  struct lattice lat = {0};
+  struct smoothing sm;
+  cl_program prog[2] = {NULL, NULL};
+  struct ops ops[2];
+  struct grid g = {0};
+  struct pset ps;
+  cl_mem d_flags = NULL, d_L = NULL, d_s = NULL, d_v = NULL;
+  real *pos = NULL, *ref = NULL, *dev_sum = NULL, *vol = NULL, *fld = NULL;
+  cl_uint *start = NULL;
+  double *t = NULL, *stage = NULL;
+  const cl_uint zero = 0;
+  int i_pos, i_vol, i_f, i_u, i_id;
+
+  memset(ops, 0, sizeof ops);
+  pset_init(&ps, 0, 0);
+  const int cells[3] = {side, side, 1};
+  const double lo[3] = {0, 0, 0};
+  CLSPH_TRY(lattice_make(2, cells, dr, lo, 0.2, 1, 7, &lat));
+  size_t n = lat.n;
+  pset_init(&ps, n, n);
+  CLSPH_TRY(smoothing_make(SMOOTHING_WENDLAND_C2, 2, 2.0 * dr, &sm));
+  struct grid_spec spec = {.dim = 2, .lo = {0, 0, 0}, .hi = {side * dr, side * dr, 0},
+                           .cell_min = sm.support};
+  for (int k = 0; k < 2; ++k) {
+    CLSPH_TRY(ops_build(dev, &spec, &sm, k, &prog[k]));
+    CLSPH_TRY(ops_create(prog[k], k, &ops[k]));
+  }
+  CLSPH_TRY(grid_create(dev, prog[0], &spec, n, &g));
+
+  t = malloc((size_t)reps * sizeof *t);
+  stage = malloc(5 * (size_t)reps * sizeof *stage);
+  pos = malloc(2 * n * sizeof *pos);
+  ref = malloc(n * sizeof *ref);
+  dev_sum = malloc(n * sizeof *dev_sum);
+  vol = malloc(n * sizeof *vol);
+  fld = malloc(2 * n * sizeof *fld);
+  start = malloc((g.ncells + 1) * sizeof *start);
+  CLSPH_CHECK(t && stage && pos && ref && dev_sum && vol && fld && start, CLSPH_E_NOMEM,
+              "bench: out of memory for %zu particles", n);
+  for (size_t i = 0; i < n; ++i) vol[i] = (real)(dr * dr);
+  for (size_t i = 0; i < 2 * n; ++i) fld[i] = (real)(0.001 * (double)(i % 1000));
+  cl_uint *id = (cl_uint *)ref; /* scratch for the initial ids */
+  for (size_t i = 0; i < n; ++i) id[i] = (cl_uint)i;
+  CLSPH_TRY(kern_buffer(dev, sizeof(cl_uint), &zero, &d_flags, "flags"));
+  CLSPH_TRY(pset_add(&ps, dev, "pos", 2 * sizeof(real), lat.pos, &i_pos));
+  CLSPH_TRY(pset_add(&ps, dev, "vel", 2 * sizeof(real), fld, &i_u));
+  CLSPH_TRY(pset_add(&ps, dev, "vol", sizeof(real), vol, &i_vol));
+  CLSPH_TRY(pset_add(&ps, dev, "p", sizeof(real), fld, &i_f));
+  CLSPH_TRY(pset_add(&ps, dev, "id", sizeof(cl_uint), id, &i_id));
+  CLSPH_TRY(kern_buffer(dev, n * 4 * sizeof(real), NULL, &d_L, "L"));
+  CLSPH_TRY(kern_buffer(dev, n * sizeof(real), NULL, &d_s, "sum"));
+  CLSPH_TRY(kern_buffer(dev, n * 2 * sizeof(real), NULL, &d_v, "vector out"));
+
+  /* neighbour search: first on the shuffled set, then the steady state (nearly sorted) */
+  double t0 = now();
+  CLSPH_TRY(grid_sort(&g, dev, n, pset_mem(&ps, i_pos), d_flags));
+  CLSPH_TRY(pset_reorder(&ps, &g, dev));
+  CLSPH_TRY(kern_finish(dev));
+  double first = now() - t0;
+  for (int r = 0; r < reps; ++r) {
+    grid_timing(&g, 1);
+    t0 = now();
+    CLSPH_TRY(grid_sort(&g, dev, n, pset_mem(&ps, i_pos), d_flags));
+    CLSPH_TRY(pset_reorder(&ps, &g, dev));
+    CLSPH_TRY(kern_finish(dev));
+    t[r] = now() - t0;
+    stage[0 * reps + r] = g.t_bin.seconds;
+    stage[1 * reps + r] = g.t_scan.seconds;
+    stage[2 * reps + r] = g.t_scatter.seconds + g.t_order.seconds;
+    stage[3 * reps + r] = g.t_gather.seconds;
+  }
+  grid_timing(&g, 0);
+  double search = median(t, reps);
+  double bin = median(stage, reps), scan = median(stage + reps, reps);
+  double sort = median(stage + 2 * reps, reps), gather = median(stage + 3 * reps, reps);
+
+  /* native reference */
+  cl_mem P = pset_mem(&ps, i_pos), V = pset_mem(&ps, i_vol);
+  CLSPH_TRY(kern_read(dev, P, 2 * n * sizeof(real), pos));
+  CLSPH_TRY(kern_read(dev, g.d_start, (g.ncells + 1) * sizeof(cl_uint), start));
+  long pairs = 0;
+  for (int r = 0; r < reps; ++r)
+    t[r] = native_sum(pos, start, n, g.n, g.geom.inv_cell.s[0], sm.h, sm.alpha, dr * dr, ref,
+                      &pairs);
+  double native = median(t, reps);
+  printf("\n%zu particles (%d x %d, jittered lattice, shuffled), %ld pairs within 2h "
+         "(%.1f per particle), %zu cells\n",
+         n, side, side, pairs, (double)pairs / (double)n, g.ncells);
+  printf("  neighbour search (wall, median): %9.3f ms   [first, from shuffled: %.3f ms]\n",
+         1e3 * search, 1e3 * first);
+  printf("    device time: bin %.3f ms, scan %.3f ms, scatter+order %.3f ms, reorder 5 fields "
+         "%.3f ms\n",
+         1e3 * bin, 1e3 * scan, 1e3 * sort, 1e3 * gather);
+  printf("  native OpenMP loop Σ V W (%d threads): %9.3f ms  %9.3e pairs/s\n",
+         omp_get_max_threads(), 1e3 * native, (double)pairs / native);
+
+  /* operator sweeps (device time per sweep, median) */
+  double shepard = 0.0;
+  printf("  %-26s %12s %14s %10s\n", "operator sweep", "ms", "pairs/s", "/native");
+  for (int k = 0; k < 2; ++k) {
+    CLSPH_TRY(ops_apply(&ops[k], OP_CORRECTION, dev, &g, n, P, V, NULL, NULL, d_L, NULL));
+    for (int op = 0; op < OP_COUNT; ++op) {
+      if (k == 1 && (op == OP_SHEPARD || op == OP_INTERP)) continue; /* no gradient inside */
+      if (k == 1 && op == OP_CORRECTION) continue;
+      int vector_in = op == OP_DIV;
+      int vector_out = op == OP_GRAD_SYM || op == OP_GRAD_ANTISYM;
+      cl_mem in = vector_in ? pset_mem(&ps, i_u) : pset_mem(&ps, i_f);
+      cl_mem out = op == OP_CORRECTION ? d_L : vector_out ? d_v : d_s;
+      if (op == OP_CORRECTION || op == OP_SHEPARD) in = NULL;
+      for (int r = 0; r < reps; ++r) {
+        struct kern_timer kt = {1, 0.0, 0};
+        CLSPH_TRY(ops_apply(&ops[k], (enum op_kind)op, dev, &g, n, P, V, d_L, in, out, &kt));
+        t[r] = kt.seconds;
+      }
+      double ts = median(t, reps);
+      if (op == OP_SHEPARD) shepard = ts;
+      char label[64];
+      snprintf(label, sizeof label, "%s%s", ops_name((enum op_kind)op), k ? " (corrected)" : "");
+      printf("  %-26s %12.3f %14.3e %10.2f\n", label, 1e3 * ts, (double)pairs / ts,
+             native / ts);
+    }
+  }
+  /* the device sum must equal the native one */
+  CLSPH_TRY(ops_apply(&ops[0], OP_SHEPARD, dev, &g, n, P, V, NULL, NULL, d_s, NULL));
+  CLSPH_TRY(kern_read(dev, d_s, n * sizeof(real), dev_sum));
+  double diff = 0.0;
+  for (size_t i = 0; i < n; ++i) diff = fmax(diff, fabs((double)dev_sum[i] - (double)ref[i]));
+  printf("  device / native Σ V W: %.2f (target >= 0.7); neighbour search / one sweep: %.2f "
+         "(target < 1); largest difference %.1e\n",
+         native / shepard, search / shepard, diff);
+done:
+  kern_release(&d_v);
+  kern_release(&d_s);
+  kern_release(&d_L);
+  kern_release(&d_flags);
+  pset_destroy(&ps);
+  grid_destroy(&g);
+  for (int k = 0; k < 2; ++k) {
+    ops_destroy(&ops[k]);
+    if (prog[k] != NULL) clReleaseProgram(prog[k]);
+  }
+  free(start);
+  free(fld);
+  free(vol);
+  free(dev_sum);
+  free(ref);
+  free(pos);
+  free(stage);
+  free(t);
+  lattice_free(&lat);
+  return st;
+}
+
+enum clsph_status bench_run(const struct cli *cli)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct dev dev = {0};
+  char *list = NULL;
+  CLSPH_TRY(dev_open(cli->device, CLSPH_DOUBLE, &dev));
+  printf("clsph bench neighbours: device %d %s (%s), precision %s, 2-D, Wendland C2, h = 2 dr, "
+         "median of %d\n",
+         dev.index, dev.name, dev.platform_name, CLSPH_PRECISION_NAME, cli->bench_reps);
+  list = malloc(strlen(cli->bench_sizes) + 1);
+  CLSPH_CHECK(list != NULL, CLSPH_E_NOMEM, "bench: out of memory");
+  strcpy(list, cli->bench_sizes);
+  for (char *tok = strtok(list, ","); tok != NULL; tok = strtok(NULL, ",")) {
+    char *end = NULL;
+    double v = strtod(tok, &end);
+    CLSPH_CHECK(end != tok && *end == '\0' && v >= 100 && v <= 1e8, CLSPH_E_INPUT,
+                "--bench-sizes: '%s' is not a particle count from 100 to 1e8", tok);
+    CLSPH_TRY(bench_size(&dev, cli, (long)v));
+  }
+done:
+  free(list);
+  dev_close(&dev);
+  return st;
+}

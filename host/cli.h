@@ -1,0 +1,32 @@
+/* cli.h: the command line and the commands it dispatches to. */
+#ifndef CLSPH_CLI_H
+#define CLSPH_CLI_H
+
+#include <stdio.h>
+
+#include "status.h"
+
+struct cli {
+  const char *command;    /* "devices", "demo", "bench", "help" */
+  const char *target;     /* bench: "neighbours" */
+  int device;             /* --device N, -1: $CLSPH_DEVICE or the default */
+  const char *kernel_dir; /* --kernel-dir DIR, NULL: embedded sources */
+  const char *cache_dir;  /* --prog-cache-dir DIR ("" disables), NULL: default */
+  int fast_math;          /* --fast-math */
+  int verbose;            /* --verbose */
+  const char *bench_sizes; /* --bench-sizes 1e4,1e5,1e6 */
+  int bench_reps;          /* --bench-reps N */
+  double demo_dr;          /* --demo-dr spacing of the demo lattice */
+};
+
+/** @brief Parse argv; bad input is reported with the offending argument. */
+enum clsph_status cli_parse(int argc, char **argv, struct cli *out);
+/** @brief The --help text. */
+void cli_usage(FILE *f);
+
+/** @brief `clsph demo`: the default scene (see demo.c). */
+enum clsph_status demo_run(const struct cli *cli);
+/** @brief `clsph bench neighbours`. */
+enum clsph_status bench_run(const struct cli *cli);
+
+#endif /* CLSPH_CLI_H */

@@ -1,0 +1,163 @@
+/* grid.c: host side of the device cell-linked list (the stages are described in grid.cl). */
+#include "grid.h"
+
+#include <math.h>
+#include <string.h>
+
+#define GRID_SCAN_BLOCK 64 /* same value as in grid.cl */
+
+enum clsph_status grid_define(const struct grid_spec *spec, struct prog_opts *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  static const char *const names[] = {"PERIODIC_X", "PERIODIC_Y", "PERIODIC_Z"};
+  CLSPH_TRY(prog_opts_define_int(o, "DIM", spec->dim));
+  for (int a = 0; a < spec->dim; ++a)
+    if (spec->periodic[a]) CLSPH_TRY(prog_opts_define_int(o, names[a], 1));
+done:
+  return st;
+}
+
+static enum clsph_status size_cells(const struct grid_spec *spec, struct grid *g)
+{
+  enum clsph_status st = CLSPH_OK;
+  static const char axis[] = "xyz";
+  double total = 1.0;
+  CLSPH_CHECK(spec->dim == 2 || spec->dim == 3, CLSPH_E_INPUT,
+              "grid: dimension must be 2 or 3, not %d", spec->dim);
+  CLSPH_CHECK(spec->cell_min > 0.0 && isfinite(spec->cell_min), CLSPH_E_INPUT,
+              "grid: the cell side must be positive, not %g", spec->cell_min);
+  double lo[4] = {0}, inv[4] = {0}, len[4] = {0};
+  cl_int n[4] = {1, 1, 1, 1};
+  for (int a = 0; a < spec->dim; ++a) {
+    double ext = spec->hi[a] - spec->lo[a];
+    CLSPH_CHECK(ext > 0.0 && isfinite(ext), CLSPH_E_INPUT,
+                "grid: the domain along %c is empty (lo %g, hi %g)", axis[a], spec->lo[a],
+                spec->hi[a]);
+    double cells = spec->periodic[a] ? floor(ext / spec->cell_min) : ceil(ext / spec->cell_min);
+    if (cells < 1.0) cells = 1.0;
+    CLSPH_CHECK(!spec->periodic[a] || cells >= 3.0, CLSPH_E_INPUT,
+                "grid: periodic axis %c is %g long, which is less than 3 support radii (%g); "
+                "enlarge the domain or make the axis non-periodic",
+                axis[a], ext, 3.0 * spec->cell_min);
+    CLSPH_CHECK(cells < 1e9, CLSPH_E_INPUT, "grid: too many cells along %c (%g)", axis[a], cells);
+    double side = spec->periodic[a] ? ext / cells : spec->cell_min;
+    lo[a] = spec->lo[a];
+    inv[a] = 1.0 / side;
+    len[a] = cells * side;
+    n[a] = (cl_int)cells;
+    total *= cells;
+  }
+  CLSPH_CHECK(total < 4e9 / 8, CLSPH_E_INPUT,
+              "grid: %.3g cells is too many; the domain is too large for the support radius",
+              total);
+  memset(&g->geom, 0, sizeof g->geom);
+  for (int a = 0; a < 4; ++a) {
+    g->geom.lo.s[a] = (real)lo[a];
+    g->geom.inv_cell.s[a] = (real)inv[a];
+    g->geom.len.s[a] = (real)len[a];
+    g->geom.n.s[a] = n[a];
+  }
+  g->geom.n.s[3] = (cl_int)total;
+  for (int a = 0; a < 3; ++a) g->n[a] = n[a];
+  g->ncells = (size_t)total;
+done:
+  return st;
+}
+
+enum clsph_status grid_create(const struct dev *dev, cl_program prog, const struct grid_spec *spec,
+                              size_t cap, struct grid *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct grid g;
+  memset(&g, 0, sizeof g);
+  g.spec = *spec;
+  g.cap = cap;
+  CLSPH_TRY(size_cells(spec, &g));
+  CLSPH_TRY(prog_kernel(prog, "grid_bin", &g.k_bin));
+  CLSPH_TRY(prog_kernel(prog, "grid_scan_blocks", &g.k_scan_blocks));
+  CLSPH_TRY(prog_kernel(prog, "grid_scan_top", &g.k_scan_top));
+  CLSPH_TRY(prog_kernel(prog, "grid_scan_apply", &g.k_scan_apply));
+  CLSPH_TRY(prog_kernel(prog, "grid_scatter", &g.k_scatter));
+  CLSPH_TRY(prog_kernel(prog, "grid_order_cells", &g.k_order));
+  CLSPH_TRY(prog_kernel(prog, "grid_gather", &g.k_gather));
+  size_t items = g.ncells + 1;
+  size_t blocks = (items + GRID_SCAN_BLOCK - 1) / GRID_SCAN_BLOCK;
+  CLSPH_TRY(kern_buffer(dev, items * sizeof(cl_uint), NULL, &g.d_count, "grid count"));
+  CLSPH_TRY(kern_buffer(dev, items * sizeof(cl_uint), NULL, &g.d_start, "grid start"));
+  CLSPH_TRY(kern_buffer(dev, blocks * sizeof(cl_uint), NULL, &g.d_block, "grid block sums"));
+  CLSPH_TRY(kern_buffer(dev, cap * sizeof(cl_uint), NULL, &g.d_cell, "grid cell"));
+  CLSPH_TRY(kern_buffer(dev, cap * sizeof(cl_uint), NULL, &g.d_rank, "grid rank"));
+  CLSPH_TRY(kern_buffer(dev, cap * sizeof(cl_uint), NULL, &g.d_perm, "grid perm"));
+  *out = g;
+  memset(&g, 0, sizeof g);
+done:
+  grid_destroy(&g);
+  return st;
+}
+
+enum clsph_status grid_sort(struct grid *g, const struct dev *dev, size_t n, cl_mem d_pos,
+                            cl_mem d_flags)
+{
+  enum clsph_status st = CLSPH_OK;
+  const cl_uint zero = 0;
+  CLSPH_CHECK(n <= g->cap, CLSPH_E_INPUT, "grid: %zu particles exceed the capacity %zu", n, g->cap);
+  cl_uint np = (cl_uint)n;
+  cl_uint items = (cl_uint)(g->ncells + 1);
+  cl_uint blocks = (items + GRID_SCAN_BLOCK - 1) / GRID_SCAN_BLOCK;
+  cl_uint ncells = (cl_uint)g->ncells;
+
+  /* bin: cell and rank of each particle */
+  CLSPH_TRY(kern_fill(dev, g->d_count, &zero, sizeof zero, items * sizeof(cl_uint)));
+  CLSPH_TRY(KERN_SET(g->k_bin, KARG(np), KARG(g->geom), KARG(d_pos), KARG(g->d_cell),
+                     KARG(g->d_rank), KARG(g->d_count), KARG(d_flags)));
+  CLSPH_TRY(kern_launch(dev, g->k_bin, n, &g->t_bin));
+  /* exclusive scan of the counts into start */
+  CLSPH_TRY(KERN_SET(g->k_scan_blocks, KARG(items), KARG(g->d_count), KARG(g->d_block)));
+  CLSPH_TRY(kern_launch(dev, g->k_scan_blocks, blocks, &g->t_scan));
+  CLSPH_TRY(KERN_SET(g->k_scan_top, KARG(blocks), KARG(g->d_block)));
+  CLSPH_TRY(kern_launch_wg(dev, g->k_scan_top, 1, 1, &g->t_scan));
+  CLSPH_TRY(KERN_SET(g->k_scan_apply, KARG(items), KARG(g->d_count), KARG(g->d_block),
+                     KARG(g->d_start)));
+  CLSPH_TRY(kern_launch(dev, g->k_scan_apply, blocks, &g->t_scan));
+  /* permutation, made independent of the order of the atomics */
+  CLSPH_TRY(KERN_SET(g->k_scatter, KARG(np), KARG(g->d_cell), KARG(g->d_rank), KARG(g->d_start),
+                     KARG(g->d_perm)));
+  CLSPH_TRY(kern_launch(dev, g->k_scatter, n, &g->t_scatter));
+  CLSPH_TRY(KERN_SET(g->k_order, KARG(ncells), KARG(g->d_start), KARG(g->d_perm)));
+  CLSPH_TRY(kern_launch(dev, g->k_order, g->ncells, &g->t_order));
+done:
+  return st;
+}
+
+enum clsph_status grid_gather(struct grid *g, const struct dev *dev, size_t n, size_t words,
+                              cl_mem src, cl_mem dst)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_uint np = (cl_uint)n, w = (cl_uint)words;
+  CLSPH_TRY(KERN_SET(g->k_gather, KARG(np), KARG(w), KARG(g->d_perm), KARG(src), KARG(dst)));
+  CLSPH_TRY(kern_launch(dev, g->k_gather, n * words, &g->t_gather));
+done:
+  return st;
+}
+
+void grid_timing(struct grid *g, int on)
+{
+  struct kern_timer t = {on, 0.0, 0};
+  g->t_bin = g->t_scan = g->t_scatter = g->t_order = g->t_gather = t;
+}
+
+void grid_destroy(struct grid *g)
+{
+  cl_kernel *ks[] = {&g->k_bin,     &g->k_scan_blocks, &g->k_scan_top, &g->k_scan_apply,
+                     &g->k_scatter, &g->k_order,       &g->k_gather};
+  for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {
+    if (*ks[i] != NULL) clReleaseKernel(*ks[i]);
+    *ks[i] = NULL;
+  }
+  kern_release(&g->d_count);
+  kern_release(&g->d_start);
+  kern_release(&g->d_block);
+  kern_release(&g->d_cell);
+  kern_release(&g->d_rank);
+  kern_release(&g->d_perm);
+}

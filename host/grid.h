@@ -1,0 +1,63 @@
+/* grid.h: the device cell-linked list (kernels/common/grid.cl): binning, counting sort by cell,
+ * cell start table and the permutation that reorders every particle field. */
+#ifndef CLSPH_GRID_H
+#define CLSPH_GRID_H
+
+#include "kern.h"
+#include "prog.h"
+
+/** What the user asks for: a box, a minimum cell side (the support radius), periodic axes. */
+struct grid_spec {
+  int dim;         /* 2 or 3 */
+  double lo[3];    /* lower corner, m */
+  double hi[3];    /* upper corner, m (the period of a periodic axis is hi − lo) */
+  double cell_min; /* smallest allowed cell side, m: the support radius */
+  int periodic[3]; /* 1 for a periodic axis */
+};
+
+/** Device view of the grid, passed by value to every neighbour kernel (struct grid in grid.cl). */
+struct grid_dev {
+  real4 lo;       /* lower corner */
+  real4 inv_cell; /* 1 / cell side per axis */
+  real4 len;      /* grid length per axis */
+  cl_int4 n;      /* cells per axis; .s[3] = total cells */
+};
+
+/** Kernel sources every neighbour program starts with, in order. */
+#define GRID_SOURCES "common/real.h", "common/flags.h", "common/smoothing.h", "common/grid.cl"
+
+struct grid {
+  struct grid_spec spec;
+  struct grid_dev geom;
+  int n[3];            /* cells per axis */
+  size_t ncells;       /* total cells */
+  size_t cap;          /* particles the per-particle buffers hold */
+  cl_kernel k_bin, k_scan_blocks, k_scan_top, k_scan_apply, k_scatter, k_order, k_gather;
+  cl_mem d_count;      /* ncells + 1 counts */
+  cl_mem d_block;      /* block sums of the scan */
+  cl_mem d_start;      /* ncells + 1: cell c holds sorted particles start[c] .. start[c+1] − 1 */
+  cl_mem d_cell;       /* cell of each particle (unsorted order) */
+  cl_mem d_rank;       /* rank of each particle in its cell (unsorted order) */
+  cl_mem d_perm;       /* perm[new] = old */
+  struct kern_timer t_bin, t_scan, t_scatter, t_order, t_gather; /* device time per stage */
+};
+
+/** @brief Add the -D switches of the grid (DIM, PERIODIC_X/Y/Z) to the build options. */
+enum clsph_status grid_define(const struct grid_spec *spec, struct prog_opts *o);
+/** @brief Check the spec, size the cells, create the kernels from `prog` (built with
+ *  GRID_SOURCES and grid_define) and the buffers for `cap` particles. */
+enum clsph_status grid_create(const struct dev *dev, cl_program prog, const struct grid_spec *spec,
+                              size_t cap, struct grid *out);
+/** @brief Bin the n particles at d_pos, sort them by cell: fills d_start and d_perm. Particles
+ *  outside a non-periodic axis are clamped into the edge cell and raise CLSPH_FLAG_ESCAPED. */
+enum clsph_status grid_sort(struct grid *g, const struct dev *dev, size_t n, cl_mem d_pos,
+                            cl_mem d_flags);
+/** @brief dst[k] = src[perm[k]] for a field of `words` 32-bit words per particle. */
+enum clsph_status grid_gather(struct grid *g, const struct dev *dev, size_t n, size_t words,
+                              cl_mem src, cl_mem dst);
+/** @brief Switch per-stage device timing on or off (and reset it). */
+void grid_timing(struct grid *g, int on);
+/** @brief Release kernels and buffers. Safe on a zeroed struct. */
+void grid_destroy(struct grid *g);
+
+#endif /* CLSPH_GRID_H */

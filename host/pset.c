@@ -1,0 +1,69 @@
+/* pset.c: particle fields on the device and their reordering. */
+#include "pset.h"
+
+#include <stdio.h>
+#include <string.h>
+
+void pset_init(struct pset *ps, size_t n, size_t cap)
+{
+  memset(ps, 0, sizeof *ps);
+  ps->n = n;
+  ps->cap = cap < n ? n : cap;
+}
+
+enum clsph_status pset_add(struct pset *ps, const struct dev *dev, const char *name, size_t elem,
+                           const void *init, int *index)
+{
+  enum clsph_status st = CLSPH_OK;
+  const cl_uint zero = 0;
+  CLSPH_CHECK(ps->nfields < PSET_MAX_FIELDS, CLSPH_E_INPUT, "too many particle fields (%d)",
+              PSET_MAX_FIELDS);
+  CLSPH_CHECK(elem > 0 && elem % 4 == 0, CLSPH_E_INPUT,
+              "particle field '%s': %zu bytes per particle is not a multiple of 4", name, elem);
+  struct pfield *f = &ps->f[ps->nfields];
+  snprintf(f->name, sizeof f->name, "%s", name);
+  f->elem = elem;
+  CLSPH_TRY(kern_buffer(dev, ps->cap * elem, NULL, &f->d, name));
+  if (init != NULL) CLSPH_TRY(kern_write(dev, f->d, ps->n * elem, init));
+  else CLSPH_TRY(kern_fill(dev, f->d, &zero, sizeof zero, ps->cap * elem));
+  /* a spare buffer for each element size, used by the reordering */
+  int have = 0;
+  for (int s = 0; s < ps->nscratch; ++s) have |= ps->scratch_elem[s] == elem;
+  if (!have) {
+    CLSPH_TRY(kern_buffer(dev, ps->cap * elem, NULL, &ps->scratch[ps->nscratch], "reorder spare"));
+    ps->scratch_elem[ps->nscratch++] = elem;
+  }
+  *index = ps->nfields++;
+done:
+  if (st != CLSPH_OK && ps->nfields < PSET_MAX_FIELDS) kern_release(&ps->f[ps->nfields].d);
+  return st;
+}
+
+cl_mem pset_mem(const struct pset *ps, int index)
+{
+  CLSPH_ASSERT(index >= 0 && index < ps->nfields);
+  return ps->f[index].d;
+}
+
+enum clsph_status pset_reorder(struct pset *ps, struct grid *g, const struct dev *dev)
+{
+  enum clsph_status st = CLSPH_OK;
+  for (int k = 0; k < ps->nfields; ++k) {
+    struct pfield *f = &ps->f[k];
+    int s = 0;
+    while (ps->scratch_elem[s] != f->elem) ++s;
+    CLSPH_TRY(grid_gather(g, dev, ps->n, f->elem / 4, f->d, ps->scratch[s]));
+    cl_mem old = f->d; /* the gathered copy becomes the field; the old buffer the spare */
+    f->d = ps->scratch[s];
+    ps->scratch[s] = old;
+  }
+done:
+  return st;
+}
+
+void pset_destroy(struct pset *ps)
+{
+  for (int k = 0; k < ps->nfields; ++k) kern_release(&ps->f[k].d);
+  for (int s = 0; s < ps->nscratch; ++s) kern_release(&ps->scratch[s]);
+  ps->nfields = ps->nscratch = 0;
+}

@@ -1,0 +1,230 @@
+/* grid.cl: cell-linked list on the device, and the neighbour loop every operator uses.
+ *
+ * Cells have a side of at least the support radius, so the neighbours of a particle lie in its
+ * own cell and the 3^DIM − 1 around it. Building the list is a stable counting sort:
+ *   grid_bin          cell of each particle, and its rank in the cell (atomic counter)
+ *   grid_scan_*       exclusive prefix sum of the counts: start[c] .. start[c+1] is cell c
+ *   grid_scatter      perm[new] = old
+ *   grid_order_cells  sorts each cell's slice of perm by old index, so the result does not
+ *                     depend on the order the atomics ran in (bit-for-bit reproducible runs)
+ *   grid_gather       applies perm to any field (dst[new] = src[perm[new]])
+ * Periodic axes (-D PERIODIC_X/Y/Z=1) wrap cells and shift the image: r_ij = r_i − (r_j + shift).
+ * A periodic axis needs at least 3 cells (the host checks). */
+
+struct grid {
+  real4 lo;       /* lower corner of the cell grid; .w unused */
+  real4 inv_cell; /* 1 / cell side per axis; .w unused */
+  real4 len;      /* grid length per axis (the period of a periodic axis); .w unused */
+  int4 n;         /* cells per axis (1 on unused axes); .w = total number of cells */
+};
+
+#ifndef PERIODIC_X
+#define PERIODIC_X 0
+#endif
+#ifndef PERIODIC_Y
+#define PERIODIC_Y 0
+#endif
+#ifndef PERIODIC_Z
+#define PERIODIC_Z 0
+#endif
+
+#if DIM == 2
+#define NEIGH_CELLS 9
+#define REALV_X(v) (v).x
+#define REALV_Y(v) (v).y
+#define REALV_Z(v) R(0.0)
+#else
+#define NEIGH_CELLS 27
+#define REALV_X(v) (v).x
+#define REALV_Y(v) (v).y
+#define REALV_Z(v) (v).z
+#endif
+
+/* Cell coordinate along one axis: wrapped when periodic, clamped (and reported) otherwise. */
+int grid_axis(real x, real lo, real inv_cell, int n, int periodic, int *escaped)
+{
+  int c = (int)floor((x - lo) * inv_cell);
+  if (periodic) {
+    c %= n;
+    if (c < 0) c += n;
+  } else if (c < 0 || c >= n) {
+    *escaped = 1;
+    c = clamp(c, 0, n - 1);
+  }
+  return c;
+}
+
+int4 grid_coords(const struct grid *g, realv x, int *escaped)
+{
+  int4 c = (int4)(0, 0, 0, 0);
+  c.x = grid_axis(REALV_X(x), g->lo.x, g->inv_cell.x, g->n.x, PERIODIC_X, escaped);
+  c.y = grid_axis(REALV_Y(x), g->lo.y, g->inv_cell.y, g->n.y, PERIODIC_Y, escaped);
+#if DIM == 3
+  c.z = grid_axis(REALV_Z(x), g->lo.z, g->inv_cell.z, g->n.z, PERIODIC_Z, escaped);
+#endif
+  return c;
+}
+
+int grid_cell_id(const struct grid *g, int4 c)
+{
+  return c.x + g->n.x * (c.y + g->n.y * c.z);
+}
+
+/* One neighbour cell coordinate: wraps a periodic axis (shift = image offset of the neighbour),
+ * returns 0 when the cell is outside a non-periodic axis. */
+int grid_wrap_axis(int *c, int n, int periodic, real len, real *shift)
+{
+  *shift = R(0.0);
+  if (*c >= 0 && *c < n) return 1;
+  if (!periodic) return 0;
+  if (*c < 0) {
+    *c += n;
+    *shift = -len;
+  } else {
+    *c -= n;
+    *shift = len;
+  }
+  return 1;
+}
+
+/* ---- the neighbour loop ----
+ *   struct neigh_iter it;
+ *   neigh_begin(&it, &g, x_i);
+ *   uint j;
+ *   while (neigh_next(&it, &g, cell_start, &j)) {
+ *     realv r_ij = x_i - (pos[j] + it.shift);
+ *     ...
+ *   }
+ * It visits every particle j (i itself included) whose cell touches i's; callers test the
+ * distance against SMOOTH_SUPPORT. */
+struct neigh_iter {
+  int4 home;   /* cell of particle i */
+  int k;       /* neighbour cell being visited, 0 .. NEIGH_CELLS − 1 */
+  uint j, end; /* next particle and end of the current cell */
+  realv shift; /* periodic image offset of the current cell */
+};
+
+void neigh_begin(struct neigh_iter *it, const struct grid *g, realv x)
+{
+  int escaped = 0;
+  it->home = grid_coords(g, x, &escaped);
+  it->k = -1;
+  it->j = 0;
+  it->end = 0;
+  it->shift = (realv)(R(0.0));
+}
+
+int neigh_next(struct neigh_iter *it, const struct grid *g, __global const uint *cell_start,
+               uint *j)
+{
+  while (it->j >= it->end) {
+    if (++it->k >= NEIGH_CELLS) return 0;
+    int cx = it->home.x + it->k % 3 - 1;
+    int cy = it->home.y + (it->k / 3) % 3 - 1;
+    int cz = 0;
+    real sx, sy;
+    if (!grid_wrap_axis(&cx, g->n.x, PERIODIC_X, g->len.x, &sx)) continue;
+    if (!grid_wrap_axis(&cy, g->n.y, PERIODIC_Y, g->len.y, &sy)) continue;
+#if DIM == 2
+    it->shift = (realv)(sx, sy);
+#else
+    real sz;
+    cz = it->home.z + it->k / 9 - 1;
+    if (!grid_wrap_axis(&cz, g->n.z, PERIODIC_Z, g->len.z, &sz)) continue;
+    it->shift = (realv)(sx, sy, sz, R(0.0));
+#endif
+    int id = grid_cell_id(g, (int4)(cx, cy, cz, 0));
+    it->j = cell_start[id];
+    it->end = cell_start[id + 1];
+  }
+  *j = it->j++;
+  return 1;
+}
+
+/* ---- building the list ---- */
+
+__kernel void grid_bin(const uint n, const struct grid g, __global const realv *pos,
+                       __global uint *cell, __global uint *rank, __global uint *count,
+                       __global uint *flags)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  int escaped = 0;
+  int id = grid_cell_id(&g, grid_coords(&g, pos[i], &escaped));
+  if (escaped) flags_raise(flags, CLSPH_FLAG_ESCAPED);
+  cell[i] = (uint)id;
+  rank[i] = atomic_inc(&count[id]);
+}
+
+/* Exclusive scan in three launches: block sums, a scan of the block sums, block rescans. */
+#define GRID_SCAN_BLOCK 64
+
+__kernel void grid_scan_blocks(const uint n, __global const uint *count, __global uint *block_sum)
+{
+  const uint b = get_global_id(0);
+  const uint first = b * GRID_SCAN_BLOCK;
+  if (first >= n) return;
+  const uint last = min(n, first + GRID_SCAN_BLOCK);
+  uint s = 0;
+  for (uint k = first; k < last; ++k) s += count[k];
+  block_sum[b] = s;
+}
+
+__kernel void grid_scan_top(const uint nblocks, __global uint *block_sum)
+{
+  if (get_global_id(0) != 0) return;
+  uint s = 0;
+  for (uint b = 0; b < nblocks; ++b) {
+    uint v = block_sum[b];
+    block_sum[b] = s;
+    s += v;
+  }
+}
+
+__kernel void grid_scan_apply(const uint n, __global const uint *count,
+                              __global const uint *block_sum, __global uint *start)
+{
+  const uint b = get_global_id(0);
+  const uint first = b * GRID_SCAN_BLOCK;
+  if (first >= n) return;
+  const uint last = min(n, first + GRID_SCAN_BLOCK);
+  uint s = block_sum[b];
+  for (uint k = first; k < last; ++k) {
+    start[k] = s;
+    s += count[k];
+  }
+}
+
+__kernel void grid_scatter(const uint n, __global const uint *cell, __global const uint *rank,
+                           __global const uint *start, __global uint *perm)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  perm[start[cell[i]] + rank[i]] = i;
+}
+
+__kernel void grid_order_cells(const uint ncells, __global const uint *start, __global uint *perm)
+{
+  const uint c = get_global_id(0);
+  if (c >= ncells) return;
+  const uint first = start[c], last = start[c + 1];
+  for (uint a = first + 1; a < last; ++a) { /* insertion sort: cells hold a few particles */
+    uint v = perm[a];
+    uint b = a;
+    while (b > first && perm[b - 1] > v) {
+      perm[b] = perm[b - 1];
+      --b;
+    }
+    perm[b] = v;
+  }
+}
+
+/* Reorder a field of `words` 32-bit words per particle: dst[k] = src[perm[k]]. */
+__kernel void grid_gather(const uint n, const uint words, __global const uint *perm,
+                          __global const uint *src, __global uint *dst)
+{
+  const uint k = get_global_id(0);
+  if (k >= n * words) return;
+  const uint i = k / words, w = k - i * words;
+  dst[k] = src[perm[i] * words + w];
+}

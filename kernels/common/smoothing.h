@@ -1,0 +1,59 @@
+/* smoothing.h: the smoothing function W(r) and F(r) = (1/r) dW/dr, so that
+ * ∇_i W_ij = F(|r_ij|) r_ij with r_ij = r_i − r_j.
+ * Switches (host/smoothing.c computes the constants in double):
+ *   SMOOTHING       SMOOTHING_WENDLAND_C2 | SMOOTHING_CUBIC_SPLINE | SMOOTHING_GAUSSIAN
+ *   SMOOTH_INV_H    1/h
+ *   SMOOTH_ALPHA    normalisation divided by h^DIM
+ *   SMOOTH_SUPPORT  radius of the support (2h, 2h, 3h)
+ * Wendland C2: W = α/h^d (1 − q/2)^4 (1 + 2q), q ≤ 2 (Leroy et al. 2014 eq 1; α_2D = 7/4π).
+ * Cubic spline: W = α/h^d [1 − 3q²/2 + 3q³/4] for q < 1, α/h^d (2 − q)³/4 for 1 ≤ q < 2
+ *   (Monaghan 1992; α_2D = 10/7π).
+ * Truncated Gaussian: W = (e^{−s²} − e^{−9}) / (π h² (1 − 10 e^{−9})) in 2-D, s ≤ 3
+ *   (Hosseini & Feng 2011 eq 23). */
+#define SMOOTHING_WENDLAND_C2 1
+#define SMOOTHING_CUBIC_SPLINE 2
+#define SMOOTHING_GAUSSIAN 3
+
+#define SMOOTH_SUPPORT2 (SMOOTH_SUPPORT * SMOOTH_SUPPORT)
+/* Regularisation of 1/r² in Laplacians, η² = 1e-4 h². Morris et al. (1997) used 0.01 h², which
+ * biases the nearest neighbours (r = h/2 at h = 2δr) by 4%; Leroy et al. (eq 10) and Hosseini &
+ * Feng (eq 29) use none. 1e-4 h² keeps coincident particles finite at a 0.04% bias. */
+#define SMOOTH_ETA2 (R(1e-4) / (SMOOTH_INV_H * SMOOTH_INV_H))
+
+/* Both functions cut at r >= SMOOTH_SUPPORT exactly (not at a rounded q), like the neighbour loops. */
+real smoothing_w(real r)
+{
+  if (r >= SMOOTH_SUPPORT) return R(0.0);
+  real q = r * SMOOTH_INV_H;
+#if SMOOTHING == SMOOTHING_WENDLAND_C2
+  real t = fmax(R(1.0) - R(0.5) * q, R(0.0));
+  real t2 = t * t;
+  return SMOOTH_ALPHA * t2 * t2 * (R(1.0) + R(2.0) * q);
+#elif SMOOTHING == SMOOTHING_CUBIC_SPLINE
+  if (q < R(1.0)) return SMOOTH_ALPHA * (R(1.0) - R(1.5) * q * q + R(0.75) * q * q * q);
+  real t = fmax(R(2.0) - q, R(0.0));
+  return SMOOTH_ALPHA * R(0.25) * t * t * t;
+#elif SMOOTHING == SMOOTHING_GAUSSIAN
+  return SMOOTH_ALPHA * fmax(exp(-q * q) - R(1.2340980408667956e-4), R(0.0));
+#else
+#error "unknown SMOOTHING"
+#endif
+}
+
+real smoothing_f(real r)
+{
+  if (r >= SMOOTH_SUPPORT) return R(0.0);
+  real q = r * SMOOTH_INV_H;
+  const real ih2 = SMOOTH_INV_H * SMOOTH_INV_H;
+#if SMOOTHING == SMOOTHING_WENDLAND_C2
+  /* dW/dq = −5 α q (1 − q/2)³ */
+  real t = fmax(R(1.0) - R(0.5) * q, R(0.0));
+  return R(-5.0) * SMOOTH_ALPHA * t * t * t * ih2;
+#elif SMOOTHING == SMOOTHING_CUBIC_SPLINE
+  if (q < R(1.0)) return SMOOTH_ALPHA * (R(-3.0) + R(2.25) * q) * ih2;
+  real t = fmax(R(2.0) - q, R(0.0));
+  return R(-0.75) * SMOOTH_ALPHA * t * t / q * ih2;
+#elif SMOOTHING == SMOOTHING_GAUSSIAN
+  return R(-2.0) * SMOOTH_ALPHA * exp(-q * q) * ih2;
+#endif
+}
