@@ -102,8 +102,8 @@ static enum clsph_status bench_size(const struct dev *dev, const struct cli *cli
   size_t n = lat.n;
   pset_init(&ps, n, n);
   CLSPH_TRY(smoothing_make(SMOOTHING_WENDLAND_C2, 2, 2.0 * dr, &sm));
-  struct grid_spec spec = {.dim = 2, .lo = {0, 0, 0}, .hi = {side * dr, side * dr, 0},
-                           .cell_min = sm.support};
+  struct grid_spec spec = {
+      .dim = 2, .lo = {0, 0, 0}, .hi = {side * dr, side * dr, 0}, .cell_min = sm.support};
   for (int k = 0; k < 2; ++k) {
     CLSPH_TRY(ops_build(dev, &spec, &sm, k, &prog[k]));
     CLSPH_TRY(ops_create(prog[k], k, &ops[k]));
@@ -163,8 +163,8 @@ static enum clsph_status bench_size(const struct dev *dev, const struct cli *cli
   CLSPH_TRY(kern_read(dev, g.d_start, (g.ncells + 1) * sizeof(cl_uint), start));
   long pairs = 0;
   for (int r = 0; r < reps; ++r)
-    t[r] = native_sum(pos, start, n, g.n, g.geom.inv_cell.s[0], sm.h, sm.alpha, dr * dr, ref,
-                      &pairs);
+    t[r] =
+        native_sum(pos, start, n, g.n, g.geom.inv_cell.s[0], sm.h, sm.alpha, dr * dr, ref, &pairs);
   double native = median(t, reps);
   printf("\n%zu particles (%d x %d, jittered lattice, shuffled), %ld pairs within 2h "
          "(%.1f per particle), %zu cells\n",
@@ -199,8 +199,7 @@ static enum clsph_status bench_size(const struct dev *dev, const struct cli *cli
       if (op == OP_SHEPARD) shepard = ts;
       char label[64];
       snprintf(label, sizeof label, "%s%s", ops_name((enum op_kind)op), k ? " (corrected)" : "");
-      printf("  %-26s %12.3f %14.3e %10.2f\n", label, 1e3 * ts, (double)pairs / ts,
-             native / ts);
+      printf("  %-26s %12.3f %14.3e %10.2f\n", label, 1e3 * ts, (double)pairs / ts, native / ts);
     }
   }
   /* the device sum must equal the native one */

@@ -105,7 +105,8 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
       ++i;
     } else if (c.command == NULL) {
       int known = 0;
-      for (size_t k = 0; k < sizeof commands / sizeof *commands; ++k) known |= !strcmp(a, commands[k]);
+      for (size_t k = 0; k < sizeof commands / sizeof *commands; ++k)
+        known |= !strcmp(a, commands[k]);
       CLSPH_CHECK(known, CLSPH_E_INPUT,
                   "unknown command '%s'; commands: devices, demo, bench, help", a);
       c.command = a;

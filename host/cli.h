@@ -7,13 +7,13 @@
 #include "status.h"
 
 struct cli {
-  const char *command;    /* "devices", "demo", "bench", "help" */
-  const char *target;     /* bench: "neighbours" */
-  int device;             /* --device N, -1: $CLSPH_DEVICE or the default */
-  const char *kernel_dir; /* --kernel-dir DIR, NULL: embedded sources */
-  const char *cache_dir;  /* --prog-cache-dir DIR ("" disables), NULL: default */
-  int fast_math;          /* --fast-math */
-  int verbose;            /* --verbose */
+  const char *command;     /* "devices", "demo", "bench", "help" */
+  const char *target;      /* bench: "neighbours" */
+  int device;              /* --device N, -1: $CLSPH_DEVICE or the default */
+  const char *kernel_dir;  /* --kernel-dir DIR, NULL: embedded sources */
+  const char *cache_dir;   /* --prog-cache-dir DIR ("" disables), NULL: default */
+  int fast_math;           /* --fast-math */
+  int verbose;             /* --verbose */
   const char *bench_sizes; /* --bench-sizes 1e4,1e5,1e6 */
   int bench_reps;          /* --bench-reps N */
   double demo_dr;          /* --demo-dr spacing of the demo lattice */

@@ -83,7 +83,8 @@ static enum clsph_status demo_measure(const struct dev *dev, const struct grid_s
   cl_mem P = pset_mem(&ps, i_pos), V = pset_mem(&ps, i_vol);
   CLSPH_TRY(ops_apply(&ops, OP_CORRECTION, dev, &g, n, P, V, NULL, NULL, d_L, NULL));
   CLSPH_TRY(ops_apply(&ops, OP_GRAD_SYM, dev, &g, n, P, V, d_L, pset_mem(&ps, i_f), d_grad, NULL));
-  CLSPH_TRY(ops_apply(&ops, OP_GRAD_ANTISYM, dev, &g, n, P, V, d_L, pset_mem(&ps, i_f), d_ga, NULL));
+  CLSPH_TRY(
+      ops_apply(&ops, OP_GRAD_ANTISYM, dev, &g, n, P, V, d_L, pset_mem(&ps, i_f), d_ga, NULL));
   CLSPH_TRY(ops_apply(&ops, OP_DIV, dev, &g, n, P, V, d_L, pset_mem(&ps, i_u), d_div, NULL));
   CLSPH_TRY(ops_apply(&ops, OP_LAP, dev, &g, n, P, V, d_L, pset_mem(&ps, i_f), d_lap, NULL));
   CLSPH_TRY(kern_read(dev, P, 2 * n * sizeof(real), pos));

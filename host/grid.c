@@ -116,8 +116,8 @@ enum clsph_status grid_sort(struct grid *g, const struct dev *dev, size_t n, cl_
   CLSPH_TRY(kern_launch(dev, g->k_scan_blocks, blocks, &g->t_scan));
   CLSPH_TRY(KERN_SET(g->k_scan_top, KARG(blocks), KARG(g->d_block)));
   CLSPH_TRY(kern_launch_wg(dev, g->k_scan_top, 1, 1, &g->t_scan));
-  CLSPH_TRY(KERN_SET(g->k_scan_apply, KARG(items), KARG(g->d_count), KARG(g->d_block),
-                     KARG(g->d_start)));
+  CLSPH_TRY(
+      KERN_SET(g->k_scan_apply, KARG(items), KARG(g->d_count), KARG(g->d_block), KARG(g->d_start)));
   CLSPH_TRY(kern_launch(dev, g->k_scan_apply, blocks, &g->t_scan));
   /* permutation, made independent of the order of the atomics */
   CLSPH_TRY(KERN_SET(g->k_scatter, KARG(np), KARG(g->d_cell), KARG(g->d_rank), KARG(g->d_start),

@@ -29,16 +29,16 @@ struct grid_dev {
 struct grid {
   struct grid_spec spec;
   struct grid_dev geom;
-  int n[3];            /* cells per axis */
-  size_t ncells;       /* total cells */
-  size_t cap;          /* particles the per-particle buffers hold */
+  int n[3];      /* cells per axis */
+  size_t ncells; /* total cells */
+  size_t cap;    /* particles the per-particle buffers hold */
   cl_kernel k_bin, k_scan_blocks, k_scan_top, k_scan_apply, k_scatter, k_order, k_gather;
-  cl_mem d_count;      /* ncells + 1 counts */
-  cl_mem d_block;      /* block sums of the scan */
-  cl_mem d_start;      /* ncells + 1: cell c holds sorted particles start[c] .. start[c+1] − 1 */
-  cl_mem d_cell;       /* cell of each particle (unsorted order) */
-  cl_mem d_rank;       /* rank of each particle in its cell (unsorted order) */
-  cl_mem d_perm;       /* perm[new] = old */
+  cl_mem d_count; /* ncells + 1 counts */
+  cl_mem d_block; /* block sums of the scan */
+  cl_mem d_start; /* ncells + 1: cell c holds sorted particles start[c] .. start[c+1] − 1 */
+  cl_mem d_cell;  /* cell of each particle (unsorted order) */
+  cl_mem d_rank;  /* rank of each particle in its cell (unsorted order) */
+  cl_mem d_perm;  /* perm[new] = old */
   struct kern_timer t_bin, t_scan, t_scatter, t_order, t_gather; /* device time per stage */
 };
 

@@ -36,8 +36,8 @@ enum clsph_status kern_launch_wg(const struct dev *dev, cl_kernel k, size_t n, s
   size_t global = (n + wg - 1) / wg * wg;
   if (global == 0) goto done;
   int timed = timer != NULL && timer->on;
-  cl_int err = clEnqueueNDRangeKernel(dev->queue, k, 1, NULL, &global, &wg, 0, NULL,
-                                      timed ? &ev : NULL);
+  cl_int err =
+      clEnqueueNDRangeKernel(dev->queue, k, 1, NULL, &global, &wg, 0, NULL, timed ? &ev : NULL);
   if (err != CL_SUCCESS) {
     log_error("clEnqueueNDRangeKernel(%s): %s", kernel_name(k, name, sizeof name),
               dev_cl_error_str(err));

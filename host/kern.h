@@ -10,7 +10,7 @@ struct karg {
   size_t size;
   const void *ptr;
 };
-#define KARG(x) ((struct karg){sizeof(x), &(x)})
+#define KARG(x)           ((struct karg){sizeof(x), &(x)})
 #define KARG_LOCAL(bytes) ((struct karg){(bytes), NULL})
 
 /** @brief Set all arguments of a kernel, in signature order. */
@@ -21,9 +21,9 @@ enum clsph_status kern_set(cl_kernel k, size_t nargs, const struct karg *args);
 
 /** Accumulated device time of one kernel (from profiling events), for benchmarks and --profile. */
 struct kern_timer {
-  int on;          /* record events when set */
-  double seconds;  /* accumulated device time */
-  long launches;   /* launches recorded */
+  int on;         /* record events when set */
+  double seconds; /* accumulated device time */
+  long launches;  /* launches recorded */
 };
 
 /** @brief Launch a 1-D kernel over n items, the global size rounded up to a multiple of dev->wg.

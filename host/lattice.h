@@ -12,10 +12,10 @@
 struct lattice {
   int dim;
   size_t n;
-  size_t stride; /* reals per particle: 2 or 4 */
-  double dr;     /* spacing, m */
+  size_t stride;       /* reals per particle: 2 or 4 */
+  double dr;           /* spacing, m */
   double lo[3], hi[3]; /* the box the lattice fills */
-  void *pos;     /* n * stride reals (real of this build) */
+  void *pos;           /* n * stride reals (real of this build) */
 };
 
 /** @brief Fill the box [lo, lo + cells·dr] with cells[a] particles per axis at cell centres.

@@ -41,7 +41,8 @@ LOG_DEFINE(log_debug, LOG_DEBUG, "clsph: debug: ")
 
 void log_trace(const char *file, int line, const char *func, const char *what)
 {
-  if (current >= LOG_DEBUG) fprintf(stderr, "clsph: debug: %s:%d: %s: %s\n", file, line, func, what);
+  if (current >= LOG_DEBUG)
+    fprintf(stderr, "clsph: debug: %s:%d: %s: %s\n", file, line, func, what);
 }
 
 void log_fatal_assert(const char *file, int line, const char *cond)

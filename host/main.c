@@ -20,9 +20,12 @@ int main(int argc, char **argv)
     cli_usage(stdout);
     return 0;
   }
-  if (strcmp(cli.command, "devices") == 0) st = dev_list();
-  else if (strcmp(cli.command, "demo") == 0) st = demo_run(&cli);
-  else if (strcmp(cli.command, "bench") == 0) st = bench_run(&cli);
+  if (strcmp(cli.command, "devices") == 0)
+    st = dev_list();
+  else if (strcmp(cli.command, "demo") == 0)
+    st = demo_run(&cli);
+  else if (strcmp(cli.command, "bench") == 0)
+    st = bench_run(&cli);
   if (st == CLSPH_E_INPUT) return 2;
   return st == CLSPH_OK ? 0 : 1;
 }

@@ -6,9 +6,12 @@
 #include "smoothing.h"
 
 static const char *const names[OP_COUNT] = {
-    [OP_CORRECTION] = "op_correction", [OP_SHEPARD] = "op_shepard",
-    [OP_INTERP] = "op_interp",         [OP_GRAD_SYM] = "op_grad_sym",
-    [OP_GRAD_ANTISYM] = "op_grad_antisym", [OP_DIV] = "op_div",
+    [OP_CORRECTION] = "op_correction",
+    [OP_SHEPARD] = "op_shepard",
+    [OP_INTERP] = "op_interp",
+    [OP_GRAD_SYM] = "op_grad_sym",
+    [OP_GRAD_ANTISYM] = "op_grad_antisym",
+    [OP_DIV] = "op_div",
     [OP_LAP] = "op_lap",
 };
 

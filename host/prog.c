@@ -211,7 +211,8 @@ static uint64_t cache_key(const struct dev *dev, const char *opts, const struct 
 {
   uint64_t h = 14695981039346656037ull;
   const char *parts[] = {dev->platform_name, dev->name, dev->version, dev->driver, opts};
-  for (size_t i = 0; i < sizeof parts / sizeof *parts; ++i) h = fnv1a(h, parts[i], strlen(parts[i]) + 1);
+  for (size_t i = 0; i < sizeof parts / sizeof *parts; ++i)
+    h = fnv1a(h, parts[i], strlen(parts[i]) + 1);
   for (size_t i = 0; i < set->n; ++i) {
     h = fnv1a(h, &set->len[i], sizeof set->len[i]);
     h = fnv1a(h, set->s[i], set->len[i]);
@@ -304,7 +305,8 @@ static void cache_store(const struct dev *dev, cl_program prog, const char *path
     goto done;
   bin = malloc(size);
   unsigned char *bins[] = {bin};
-  if (bin == NULL || clGetProgramInfo(prog, CL_PROGRAM_BINARIES, sizeof bins, bins, NULL) != CL_SUCCESS)
+  if (bin == NULL ||
+      clGetProgramInfo(prog, CL_PROGRAM_BINARIES, sizeof bins, bins, NULL) != CL_SUCCESS)
     goto done;
   size_t need = strlen(path) + 32;
   tmp = malloc(need);
@@ -317,8 +319,10 @@ static void cache_store(const struct dev *dev, cl_program prog, const char *path
            fwrite(bin, 1, size, f) == size;
   ok = (fclose(f) == 0) && ok;
   f = NULL;
-  if (ok && rename(tmp, path) == 0) log_debug("program cache: stored %s (%s)", path, dev->name);
-  else remove(tmp);
+  if (ok && rename(tmp, path) == 0)
+    log_debug("program cache: stored %s (%s)", path, dev->name);
+  else
+    remove(tmp);
 done:
   if (f != NULL) fclose(f);
   free(tmp);

@@ -24,8 +24,10 @@ enum clsph_status pset_add(struct pset *ps, const struct dev *dev, const char *n
   snprintf(f->name, sizeof f->name, "%s", name);
   f->elem = elem;
   CLSPH_TRY(kern_buffer(dev, ps->cap * elem, NULL, &f->d, name));
-  if (init != NULL) CLSPH_TRY(kern_write(dev, f->d, ps->n * elem, init));
-  else CLSPH_TRY(kern_fill(dev, f->d, &zero, sizeof zero, ps->cap * elem));
+  if (init != NULL)
+    CLSPH_TRY(kern_write(dev, f->d, ps->n * elem, init));
+  else
+    CLSPH_TRY(kern_fill(dev, f->d, &zero, sizeof zero, ps->cap * elem));
   /* a spare buffer for each element size, used by the reordering */
   int have = 0;
   for (int s = 0; s < ps->nscratch; ++s) have |= ps->scratch_elem[s] == elem;

@@ -15,10 +15,10 @@ struct pfield {
 };
 
 struct pset {
-  size_t n, cap;                     /* particles, and the buffers' capacity */
+  size_t n, cap; /* particles, and the buffers' capacity */
   int nfields;
   struct pfield f[PSET_MAX_FIELDS];
-  cl_mem scratch[PSET_MAX_FIELDS];   /* one spare buffer per distinct element size */
+  cl_mem scratch[PSET_MAX_FIELDS]; /* one spare buffer per distinct element size */
   size_t scratch_elem[PSET_MAX_FIELDS];
   int nscratch;
 };

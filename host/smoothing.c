@@ -51,7 +51,8 @@ enum clsph_status smoothing_make(enum smoothing_kind kind, int dim, double h, st
   const double e9 = exp(-9.0);
   double a = 0.0;
   CLSPH_CHECK(dim >= 1 && dim <= 3, CLSPH_E_INPUT, "dimension must be 1, 2 or 3, not %d", dim);
-  CLSPH_CHECK(h > 0.0 && isfinite(h), CLSPH_E_INPUT, "smoothing length must be positive, not %g", h);
+  CLSPH_CHECK(h > 0.0 && isfinite(h), CLSPH_E_INPUT, "smoothing length must be positive, not %g",
+              h);
   switch (kind) {
   case SMOOTHING_WENDLAND_C2:
     a = dim == 1 ? 0.75 : dim == 2 ? 7.0 / (4.0 * pi) : 21.0 / (16.0 * pi);

@@ -1,8 +1,8 @@
 /* flags.h: error bits that kernels atomic_or into d_flags; the host reads them once per step.
  * The values match host/kern.h (enum clsph_flag). */
-#define CLSPH_FLAG_NAN 1u             /* a non-finite value was produced */
-#define CLSPH_FLAG_NEIGH_OVERFLOW 2u  /* a per-particle neighbour table was too small */
-#define CLSPH_FLAG_ESCAPED 4u         /* a particle left the (non-periodic) grid */
+#define CLSPH_FLAG_NAN            1u /* a non-finite value was produced */
+#define CLSPH_FLAG_NEIGH_OVERFLOW 2u /* a per-particle neighbour table was too small */
+#define CLSPH_FLAG_ESCAPED        4u /* a particle left the (non-periodic) grid */
 
 void flags_raise(__global uint *flags, uint bit)
 {

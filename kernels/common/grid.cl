@@ -30,14 +30,14 @@ struct grid {
 
 #if DIM == 2
 #define NEIGH_CELLS 9
-#define REALV_X(v) (v).x
-#define REALV_Y(v) (v).y
-#define REALV_Z(v) R(0.0)
+#define REALV_X(v)  (v).x
+#define REALV_Y(v)  (v).y
+#define REALV_Z(v)  R(0.0)
 #else
 #define NEIGH_CELLS 27
-#define REALV_X(v) (v).x
-#define REALV_Y(v) (v).y
-#define REALV_Z(v) (v).z
+#define REALV_X(v)  (v).x
+#define REALV_Y(v)  (v).y
+#define REALV_Z(v)  (v).z
 #endif
 
 /* Cell coordinate along one axis: wrapped when periodic, clamped (and reported) otherwise. */

@@ -60,8 +60,8 @@ realm mat_identity(void)
 
 realm mat_moment(real vf, realv r)
 {
-  return -vf * (realm)(r.x * r.x, r.x * r.y, r.x * r.z, r.y * r.y, r.y * r.z, r.z * r.z, R(0.0),
-                       R(0.0));
+  return -vf *
+         (realm)(r.x * r.x, r.x * r.y, r.x * r.z, r.y * r.y, r.y * r.z, r.z * r.z, R(0.0), R(0.0));
 }
 
 realm mat_inverse_or_identity(realm m)

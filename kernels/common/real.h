@@ -1,8 +1,8 @@
 /* real.h: precision and dimension switches, first source of every program.
  * Built with -D CLSPH_DOUBLE=0|1 (always) and -D DIM=1|2|3.
- *   real   scalar          realv  position/velocity vector: real (1-D), real2 (2-D), real4 (3-D, .w = 0)
- *   realm  symmetric DIM x DIM matrix: 2-D real4 (xx, xy, yy, 0), 3-D real8 (xx, xy, xz, yy, yz, zz, 0, 0)
- * Literals are written R(0.5) so that a float build never promotes to double. */
+ *   real   scalar          realv  position/velocity vector: real (1-D), real2 (2-D), real4 (3-D, .w
+ * = 0) realm  symmetric DIM x DIM matrix: 2-D real4 (xx, xy, yy, 0), 3-D real8 (xx, xy, xz, yy, yz,
+ * zz, 0, 0) Literals are written R(0.5) so that a float build never promotes to double. */
 #if CLSPH_DOUBLE
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 typedef double real;
@@ -10,14 +10,14 @@ typedef double2 real2;
 typedef double4 real4;
 typedef double8 real8;
 #define REAL_EPS DBL_EPSILON
-#define R(x) x
+#define R(x)     x
 #else
 typedef float real;
 typedef float2 real2;
 typedef float4 real4;
 typedef float8 real8;
 #define REAL_EPS FLT_EPSILON
-#define R(x) x##f
+#define R(x)     x##f
 #endif
 
 #ifndef DIM

@@ -10,9 +10,9 @@
  *   (Monaghan 1992; α_2D = 10/7π).
  * Truncated Gaussian: W = (e^{−s²} − e^{−9}) / (π h² (1 − 10 e^{−9})) in 2-D, s ≤ 3
  *   (Hosseini & Feng 2011 eq 23). */
-#define SMOOTHING_WENDLAND_C2 1
+#define SMOOTHING_WENDLAND_C2  1
 #define SMOOTHING_CUBIC_SPLINE 2
-#define SMOOTHING_GAUSSIAN 3
+#define SMOOTHING_GAUSSIAN     3
 
 #define SMOOTH_SUPPORT2 (SMOOTH_SUPPORT * SMOOTH_SUPPORT)
 /* Regularisation of 1/r² in Laplacians, η² = 1e-4 h². Morris et al. (1997) used 0.01 h², which
@@ -20,7 +20,8 @@
  * Feng (eq 29) use none. 1e-4 h² keeps coincident particles finite at a 0.04% bias. */
 #define SMOOTH_ETA2 (R(1e-4) / (SMOOTH_INV_H * SMOOTH_INV_H))
 
-/* Both functions cut at r >= SMOOTH_SUPPORT exactly (not at a rounded q), like the neighbour loops. */
+/* Both functions cut at r >= SMOOTH_SUPPORT exactly (not at a rounded q), like the neighbour loops.
+ */
 real smoothing_w(real r)
 {
   if (r >= SMOOTH_SUPPORT) return R(0.0);

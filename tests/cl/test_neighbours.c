@@ -21,9 +21,9 @@ struct cloud_case {
   int dim;
   int periodic[3];
   double hi[3];
-  double h;     /* smoothing length; Wendland support 2h */
+  double h; /* smoothing length; Wendland support 2h */
   size_t n;
-  int outside;  /* put particle 0 outside the box (non-periodic axes only) */
+  int outside; /* put particle 0 outside the box (non-periodic axes only) */
 };
 
 /* Is j a neighbour of i by brute force (minimum image on periodic axes)? Returns 1 inside,
@@ -74,7 +74,8 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
   pset_init(&ps, n, n);
   rng_seed(&r, 1234 + n);
   for (size_t i = 0; i < n; ++i) {
-    for (int a = 0; a < c->dim; ++a) pos0[i * stride + (size_t)a] = (real)(c->hi[a] * rng_uniform(&r));
+    for (int a = 0; a < c->dim; ++a)
+      pos0[i * stride + (size_t)a] = (real)(c->hi[a] * rng_uniform(&r));
     id0[i] = (cl_uint)i;
     tag0[i] = (real)(0.5 + (double)i);
   }
@@ -136,8 +137,8 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
   /* neighbour sets against brute force, in original ids */
   cl_uint np = (cl_uint)n, maxn = MAXN;
   cl_mem d_pos = pset_mem(&ps, i_pos);
-  if (KERN_SET(k, KARG(np), KARG(g.geom), KARG(g.d_start), KARG(d_pos), KARG(maxn),
-               KARG(d_count), KARG(d_list)) ||
+  if (KERN_SET(k, KARG(np), KARG(g.geom), KARG(g.d_start), KARG(d_pos), KARG(maxn), KARG(d_count),
+               KARG(d_list)) ||
       kern_launch(dev, k, n, NULL) || kern_read(dev, d_count, n * sizeof(cl_uint), cnt) ||
       kern_read(dev, d_list, n * MAXN * sizeof(cl_uint), list))
     goto fail;
@@ -178,8 +179,8 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
       kern_read(dev, g.d_perm, n * sizeof(cl_uint), perm2))
     goto fail;
   for (size_t i = 0; i < n; ++i) not_repeat += perm2[i] != perm[i];
-  TC_CHECK(not_identity == 0, "%s: re-sorting sorted particles is the identity (%d moved)",
-           c->name, not_identity);
+  TC_CHECK(not_identity == 0, "%s: re-sorting sorted particles is the identity (%d moved)", c->name,
+           not_identity);
   TC_CHECK(not_repeat == 0, "%s: sorting is deterministic (%d differ)", c->name, not_repeat);
   printf("%-26s %zu particles, %zu cells, %.1f neighbours per particle\n", c->name, n, g.ncells,
          (double)pairs / (double)n);

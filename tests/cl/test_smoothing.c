@@ -11,8 +11,8 @@
 #include "smoothing.h"
 #include "tcheck.h"
 
-#define GL_N 20   /* nodes per panel: exact for the polynomial pieces, 1e-15 for the Gaussian */
-#define FD_N 400  /* finite-difference sample radii */
+#define GL_N 20  /* nodes per panel: exact for the polynomial pieces, 1e-15 for the Gaussian */
+#define FD_N 400 /* finite-difference sample radii */
 
 /* Gauss-Legendre nodes and weights on [-1, 1] (Newton on the Legendre polynomial). */
 static void gauss_legendre(int n, double *x, double *w)

@@ -17,8 +17,8 @@ void tc_check(int ok, const char *file, int line, const char *fmt, ...)
 /** @brief |got − want| <= tol, printed with the names. */
 #define TC_NEAR(got, want, tol, ...)                                                               \
   tc_near((double)(got), (double)(want), (double)(tol), __FILE__, __LINE__, __VA_ARGS__)
-void tc_near(double got, double want, double tol, const char *file, int line, const char *fmt,
-             ...) __attribute__((format(printf, 6, 7)));
+void tc_near(double got, double want, double tol, const char *file, int line, const char *fmt, ...)
+    __attribute__((format(printf, 6, 7)));
 
 /** @brief Open the default device with fp64 when this is a double build; exits 77 when there is
  *  none. Also points the program cache at $CLSPH_CACHE_DIR (set by ctest). */

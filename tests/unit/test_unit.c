@@ -1,0 +1,125 @@
+/* test_unit.c: host-only checks (no OpenCL device needed): status names, build options that
+ * carry reals exactly, smoothing constants and input checks, grid input checks, the seeded
+ * random generator and lattices. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "grid.h"
+#include "lattice.h"
+#include "rng.h"
+#include "smoothing.h"
+#include "tcheck.h"
+
+static void check_status(void)
+{
+  for (int a = CLSPH_OK; a <= CLSPH_E_NODEVICE; ++a) {
+    TC_CHECK(strncmp(clsph_status_str((enum clsph_status)a), "CLSPH_", 6) == 0, "status %d named",
+             a);
+    for (int b = CLSPH_OK; b < a; ++b)
+      TC_CHECK(strcmp(clsph_status_str((enum clsph_status)a),
+                      clsph_status_str((enum clsph_status)b)) != 0,
+               "status names %d and %d differ", a, b);
+  }
+  TC_CHECK(strcmp(clsph_status_str((enum clsph_status)999), "CLSPH_E_UNKNOWN") == 0,
+           "unknown status named");
+}
+
+static void check_options(void)
+{
+  struct prog_opts o = {0};
+  const double v = 0.1 + 1.0 / 3.0;
+  TC_CHECK(prog_opts_define_real(&o, "X", v) == CLSPH_OK, "define a real");
+  TC_CHECK(prog_opts_define_int(&o, "N", -7) == CLSPH_OK, "define an integer");
+  TC_CHECK(prog_opts_define(&o, "FLAG", NULL) == CLSPH_OK, "define a flag");
+  const char *p = strstr(o.text, "-D X=R(");
+  TC_CHECK(p != NULL, "real option text: %s", o.text);
+  if (p != NULL) TC_CHECK(strtod(p + 7, NULL) == v, "the real survives the option text exactly");
+  TC_CHECK(strstr(o.text, "-D N=-7") != NULL && strstr(o.text, "-D FLAG") != NULL,
+           "integer and flag options: %s", o.text);
+  prog_opts_free(&o);
+}
+
+static void check_smoothing(void)
+{
+  const double pi = 3.14159265358979323846;
+  struct smoothing s;
+  enum smoothing_kind k;
+  TC_CHECK(smoothing_make(SMOOTHING_WENDLAND_C2, 2, 0.5, &s) == CLSPH_OK, "wendland 2-D");
+  TC_NEAR(s.alpha, 7.0 / (4.0 * pi) / 0.25, 1e-15, "Wendland α_2D/h² (Leroy eq 1)");
+  TC_NEAR(s.support, 1.0, 0.0, "Wendland support 2h");
+  TC_CHECK(smoothing_make(SMOOTHING_GAUSSIAN, 2, 1.0, &s) == CLSPH_OK, "gaussian 2-D");
+  TC_NEAR(s.alpha, 1.0 / (pi * (1.0 - 10.0 * exp(-9.0))), 1e-15, "Gaussian α_2D (Hosseini eq 23)");
+  TC_NEAR(s.support, 3.0, 0.0, "Gaussian support 3h");
+  TC_CHECK(smoothing_make(SMOOTHING_CUBIC_SPLINE, 4, 1.0, &s) == CLSPH_E_INPUT,
+           "dimension 4 refused");
+  TC_CHECK(smoothing_make(SMOOTHING_CUBIC_SPLINE, 2, 0.0, &s) == CLSPH_E_INPUT, "h = 0 refused");
+  TC_CHECK(smoothing_make(SMOOTHING_CUBIC_SPLINE, 2, NAN, &s) == CLSPH_E_INPUT, "h = NaN refused");
+  TC_CHECK(smoothing_kind_from_name("gaussian", &k) == CLSPH_OK && k == SMOOTHING_GAUSSIAN,
+           "name gaussian");
+  TC_CHECK(smoothing_kind_from_name("quintic", &k) == CLSPH_E_INPUT, "unknown name refused");
+}
+
+static void check_grid_input(void)
+{
+  struct grid g;
+  struct dev dev;
+  memset(&dev, 0, sizeof dev);
+  /* every one of these is refused before any device call, so no device is needed */
+  struct grid_spec narrow = {.dim = 2, .hi = {0.29, 1, 0}, .cell_min = 0.1, .periodic = {1, 0}};
+  TC_CHECK(grid_create(&dev, NULL, &narrow, 10, &g) == CLSPH_E_INPUT,
+           "a periodic axis shorter than 3 support radii is refused");
+  struct grid_spec empty = {.dim = 2, .lo = {1, 0, 0}, .hi = {1, 1, 0}, .cell_min = 0.1};
+  TC_CHECK(grid_create(&dev, NULL, &empty, 10, &g) == CLSPH_E_INPUT, "an empty domain is refused");
+  struct grid_spec zero = {.dim = 2, .hi = {1, 1, 0}, .cell_min = 0.0};
+  TC_CHECK(grid_create(&dev, NULL, &zero, 10, &g) == CLSPH_E_INPUT, "a zero cell side is refused");
+  struct grid_spec huge = {.dim = 3, .hi = {1, 1, 1}, .cell_min = 1e-4};
+  TC_CHECK(grid_create(&dev, NULL, &huge, 10, &g) == CLSPH_E_INPUT, "1e12 cells are refused");
+  struct grid_spec d4 = {.dim = 4, .hi = {1, 1, 1}, .cell_min = 0.1};
+  TC_CHECK(grid_create(&dev, NULL, &d4, 10, &g) == CLSPH_E_INPUT, "dimension 4 is refused");
+}
+
+static void check_rng_lattice(void)
+{
+  struct rng a, b;
+  rng_seed(&a, 42);
+  rng_seed(&b, 42);
+  int same = 1;
+  double sum = 0.0;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i) {
+    double x = rng_uniform(&a);
+    same &= x == rng_uniform(&b) && x >= 0.0 && x < 1.0;
+    sum += x;
+  }
+  TC_CHECK(same, "same seed, same sequence, in [0, 1)");
+  /* mean of n uniforms: σ = 1/sqrt(12 n); 5σ */
+  TC_NEAR(sum / n, 0.5, 5.0 / sqrt(12.0 * n), "uniform mean");
+  struct lattice l;
+  const int cells[3] = {7, 5, 1};
+  const double lo[3] = {1, 2, 0};
+  TC_CHECK(lattice_make(2, cells, 0.1, lo, 0.0, 1, 1, &l) == CLSPH_OK && l.n == 35,
+           "7 x 5 lattice");
+  double xmin = 1e9, ymax = -1e9;
+  for (size_t i = 0; i < l.n; ++i) {
+    xmin = fmin(xmin, lattice_x(&l, i, 0));
+    ymax = fmax(ymax, lattice_x(&l, i, 1));
+  }
+  TC_NEAR(xmin, 1.05, 1e-6, "first column half a spacing from the edge");
+  TC_NEAR(ymax, 2.45, 1e-6, "last row half a spacing from the edge");
+  lattice_free(&l);
+  TC_CHECK(lattice_make(2, cells, -0.1, lo, 0.0, 0, 1, &l) == CLSPH_E_INPUT,
+           "negative spacing refused");
+}
+
+int main(void)
+{
+  log_set_level(LOG_ERROR);
+  check_status();
+  check_options();
+  check_smoothing();
+  check_grid_input();
+  check_rng_lattice();
+  return tc_finish("test_unit");
+}
