@@ -35,37 +35,34 @@ static double median(double *v, int n)
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-/* The native reference: the same sum over the same sorted particles and cell table. */
+/* The native reference: the same sum over the same sorted particles and cell table, visiting the
+ * same rows of cells as the device loop (grid.cl). */
 static double native_sum(const real *pos, const cl_uint *start, size_t n, const int nc[2],
-                         double cell_inv, double h, double alpha, double vol, real *out,
+                         double cell_inv, int sub, double h, double alpha, double vol, real *out,
                          long *pairs)
 {
   const real support2 = (real)(4.0 * h * h), inv_h = (real)(1.0 / h), a = (real)alpha;
-  const real v = (real)vol;
+  const real v = (real)vol, ci = (real)cell_inv;
   long count = 0;
   double t0 = omp_get_wtime();
 #pragma omp parallel for schedule(static) reduction(+ : count)
   for (size_t i = 0; i < n; ++i) {
     real xi = pos[2 * i], yi = pos[2 * i + 1];
-    int cx = (int)(xi * (real)cell_inv), cy = (int)(yi * (real)cell_inv);
+    int cx = (int)(xi * ci), cy = (int)(yi * ci);
+    int x0 = cx - sub < 0 ? 0 : cx - sub, x1 = cx + sub >= nc[0] ? nc[0] - 1 : cx + sub;
     real s = 0;
-    for (int dy = -1; dy <= 1; ++dy) {
-      int y = cy + dy;
+    for (int y = cy - sub; y <= cy + sub; ++y) {
       if (y < 0 || y >= nc[1]) continue;
-      for (int dx = -1; dx <= 1; ++dx) {
-        int x = cx + dx;
-        if (x < 0 || x >= nc[0]) continue;
-        int c = x + nc[0] * y;
-        for (cl_uint j = start[c]; j < start[c + 1]; ++j) {
-          real rx = xi - pos[2 * j], ry = yi - pos[2 * j + 1];
-          real r2 = rx * rx + ry * ry;
-          if (r2 >= support2) continue;
-          real q = real_sqrt(r2) * inv_h;
-          real t = 1 - (real)0.5 * q;
-          real t2 = t * t;
-          s += v * a * t2 * t2 * (1 + 2 * q); /* Wendland C2, as in kernels/common/smoothing.h */
-          ++count;
-        }
+      const cl_uint end = start[y * nc[0] + x1 + 1];
+      for (cl_uint j = start[y * nc[0] + x0]; j < end; ++j) {
+        real rx = xi - pos[2 * j], ry = yi - pos[2 * j + 1];
+        real r2 = rx * rx + ry * ry;
+        if (r2 >= support2) continue;
+        real q = real_sqrt(r2) * inv_h;
+        real t = 1 - (real)0.5 * q;
+        real t2 = t * t;
+        s += v * a * t2 * t2 * (1 + 2 * q); /* Wendland C2, as in kernels/common/smoothing.h */
+        ++count;
       }
     }
     out[i] = s;
@@ -103,7 +100,7 @@ static enum clsph_status bench_size(const struct dev *dev, const struct cli *cli
   pset_init(&ps, n, n);
   CLSPH_TRY(smoothing_make(SMOOTHING_WENDLAND_C2, 2, 2.0 * dr, &sm));
   struct grid_spec spec = {
-      .dim = 2, .lo = {0, 0, 0}, .hi = {side * dr, side * dr, 0}, .cell_min = sm.support};
+      .dim = 2, .lo = {0, 0, 0}, .hi = {side * dr, side * dr, 0}, .support = sm.support};
   for (int k = 0; k < 2; ++k) {
     CLSPH_TRY(ops_build(dev, &spec, &sm, k, &prog[k]));
     CLSPH_TRY(ops_create(prog[k], k, &ops[k]));
@@ -163,8 +160,8 @@ static enum clsph_status bench_size(const struct dev *dev, const struct cli *cli
   CLSPH_TRY(kern_read(dev, g.d_start, (g.ncells + 1) * sizeof(cl_uint), start));
   long pairs = 0;
   for (int r = 0; r < reps; ++r)
-    t[r] =
-        native_sum(pos, start, n, g.n, g.geom.inv_cell.s[0], sm.h, sm.alpha, dr * dr, ref, &pairs);
+    t[r] = native_sum(pos, start, n, g.n, g.geom.inv_cell.s[0], GRID_SUB_DEFAULT, sm.h, sm.alpha,
+                      dr * dr, ref, &pairs);
   double native = median(t, reps);
   printf("\n%zu particles (%d x %d, jittered lattice, shuffled), %ld pairs within 2h "
          "(%.1f per particle), %zu cells\n",

@@ -11,6 +11,7 @@ enum clsph_status grid_define(const struct grid_spec *spec, struct prog_opts *o)
   enum clsph_status st = CLSPH_OK;
   static const char *const names[] = {"PERIODIC_X", "PERIODIC_Y", "PERIODIC_Z"};
   CLSPH_TRY(prog_opts_define_int(o, "DIM", spec->dim));
+  CLSPH_TRY(prog_opts_define_int(o, "GRID_SUB", spec->sub > 0 ? spec->sub : GRID_SUB_DEFAULT));
   for (int a = 0; a < spec->dim; ++a)
     if (spec->periodic[a]) CLSPH_TRY(prog_opts_define_int(o, names[a], 1));
 done:
@@ -22,10 +23,14 @@ static enum clsph_status size_cells(const struct grid_spec *spec, struct grid *g
   enum clsph_status st = CLSPH_OK;
   static const char axis[] = "xyz";
   double total = 1.0;
+  const int sub = spec->sub > 0 ? spec->sub : GRID_SUB_DEFAULT;
   CLSPH_CHECK(spec->dim == 2 || spec->dim == 3, CLSPH_E_INPUT,
               "grid: dimension must be 2 or 3, not %d", spec->dim);
-  CLSPH_CHECK(spec->cell_min > 0.0 && isfinite(spec->cell_min), CLSPH_E_INPUT,
-              "grid: the cell side must be positive, not %g", spec->cell_min);
+  CLSPH_CHECK(spec->support > 0.0 && isfinite(spec->support), CLSPH_E_INPUT,
+              "grid: the support radius must be positive, not %g", spec->support);
+  CLSPH_CHECK(sub <= 4, CLSPH_E_INPUT, "grid: %d cells per support radius is too many (1 to 4)",
+              sub);
+  const double side_min = spec->support / sub;
   double lo[4] = {0}, inv[4] = {0}, len[4] = {0};
   cl_int n[4] = {1, 1, 1, 1};
   for (int a = 0; a < spec->dim; ++a) {
@@ -33,14 +38,15 @@ static enum clsph_status size_cells(const struct grid_spec *spec, struct grid *g
     CLSPH_CHECK(ext > 0.0 && isfinite(ext), CLSPH_E_INPUT,
                 "grid: the domain along %c is empty (lo %g, hi %g)", axis[a], spec->lo[a],
                 spec->hi[a]);
-    double cells = spec->periodic[a] ? floor(ext / spec->cell_min) : ceil(ext / spec->cell_min);
+    double cells = spec->periodic[a] ? floor(ext / side_min) : ceil(ext / side_min);
     if (cells < 1.0) cells = 1.0;
-    CLSPH_CHECK(!spec->periodic[a] || cells >= 3.0, CLSPH_E_INPUT,
-                "grid: periodic axis %c is %g long, which is less than 3 support radii (%g); "
+    /* every neighbour cell of a periodic axis must be a different cell: 2 sub + 1 of them */
+    CLSPH_CHECK(!spec->periodic[a] || cells >= 2 * sub + 1, CLSPH_E_INPUT,
+                "grid: periodic axis %c is %g long, which is less than %g support radii (%g); "
                 "enlarge the domain or make the axis non-periodic",
-                axis[a], ext, 3.0 * spec->cell_min);
+                axis[a], ext, (2.0 * sub + 1.0) / sub, (2.0 * sub + 1.0) * side_min);
     CLSPH_CHECK(cells < 1e9, CLSPH_E_INPUT, "grid: too many cells along %c (%g)", axis[a], cells);
-    double side = spec->periodic[a] ? ext / cells : spec->cell_min;
+    double side = spec->periodic[a] ? ext / cells : side_min;
     lo[a] = spec->lo[a];
     inv[a] = 1.0 / side;
     len[a] = cells * side;

@@ -6,14 +6,19 @@
 #include "kern.h"
 #include "prog.h"
 
-/** What the user asks for: a box, a minimum cell side (the support radius), periodic axes. */
+/** What the user asks for: a box, the support radius, periodic axes. */
 struct grid_spec {
   int dim;         /* 2 or 3 */
   double lo[3];    /* lower corner, m */
   double hi[3];    /* upper corner, m (the period of a periodic axis is hi − lo) */
-  double cell_min; /* smallest allowed cell side, m: the support radius */
+  double support;  /* support radius of the smoothing function, m */
   int periodic[3]; /* 1 for a periodic axis */
+  int sub;         /* cells per support radius (0: GRID_SUB_DEFAULT) */
 };
+
+/** Cells per support radius: 2 visits 5 x 5 cells of side ≥ support/2 (about 100 candidates per
+ *  particle in 2-D at h = 2δr) instead of 3 x 3 of side ≥ support (144); see grid.cl. */
+#define GRID_SUB_DEFAULT 2
 
 /** Device view of the grid, passed by value to every neighbour kernel (struct grid in grid.cl). */
 struct grid_dev {

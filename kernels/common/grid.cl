@@ -1,7 +1,7 @@
 /* grid.cl: cell-linked list on the device, and the neighbour loop every operator uses.
  *
- * Cells have a side of at least the support radius, so the neighbours of a particle lie in its
- * own cell and the 3^DIM − 1 around it. Building the list is a stable counting sort:
+ * Cells have a side of at least support / GRID_SUB, so the neighbours of a particle lie within
+ * GRID_SUB cells of its own along each axis. Building the list is a stable counting sort:
  *   grid_bin          cell of each particle, and its rank in the cell (atomic counter)
  *   grid_scan_*       exclusive prefix sum of the counts: start[c] .. start[c+1] is cell c
  *   grid_scatter      perm[new] = old
@@ -9,7 +9,8 @@
  *                     depend on the order the atomics ran in (bit-for-bit reproducible runs)
  *   grid_gather       applies perm to any field (dst[new] = src[perm[new]])
  * Periodic axes (-D PERIODIC_X/Y/Z=1) wrap cells and shift the image: r_ij = r_i − (r_j + shift).
- * A periodic axis needs at least 3 cells (the host checks). */
+ * A periodic axis needs at least 2 GRID_SUB + 1 cells (the host checks), and positions on it must
+ * lie in [lo, lo + len) (the time integration wraps them). */
 
 struct grid {
   real4 lo;       /* lower corner of the cell grid; .w unused */
@@ -29,15 +30,13 @@ struct grid {
 #endif
 
 #if DIM == 2
-#define NEIGH_CELLS 9
-#define REALV_X(v)  (v).x
-#define REALV_Y(v)  (v).y
-#define REALV_Z(v)  R(0.0)
+#define REALV_X(v) (v).x
+#define REALV_Y(v) (v).y
+#define REALV_Z(v) R(0.0)
 #else
-#define NEIGH_CELLS 27
-#define REALV_X(v)  (v).x
-#define REALV_Y(v)  (v).y
-#define REALV_Z(v)  (v).z
+#define REALV_X(v) (v).x
+#define REALV_Y(v) (v).y
+#define REALV_Z(v) (v).z
 #endif
 
 /* Cell coordinate along one axis: wrapped when periodic, clamped (and reported) otherwise. */
@@ -95,47 +94,90 @@ int grid_wrap_axis(int *c, int n, int periodic, real len, real *shift)
  *     realv r_ij = x_i - (pos[j] + it.shift);
  *     ...
  *   }
- * It visits every particle j (i itself included) whose cell touches i's; callers test the
- * distance against SMOOTH_SUPPORT. */
+ * It visits every particle j (i itself included) in the cells within GRID_SUB cells of i's cell
+ * (cells have a side of at least support / GRID_SUB); callers test the distance against
+ * SMOOTH_SUPPORT. Particles are sorted by cell and cells are numbered x fastest, so the
+ * 2 GRID_SUB + 1 cells of a row along x are one contiguous range of particles: the loop runs over
+ * rows (strips), not cells. A row that wraps around a periodic x boundary is two ranges with
+ * different image shifts. */
+#ifndef GRID_SUB
+#define GRID_SUB 2
+#endif
+#define GRID_SPAN (2 * GRID_SUB + 1)
+#if DIM == 2
+#define NEIGH_ROWS GRID_SPAN
+#else
+#define NEIGH_ROWS (GRID_SPAN * GRID_SPAN)
+#endif
+
 struct neigh_iter {
   int4 home;   /* cell of particle i */
-  int k;       /* neighbour cell being visited, 0 .. NEIGH_CELLS − 1 */
-  uint j, end; /* next particle and end of the current cell */
-  realv shift; /* periodic image offset of the current cell */
+  int row;     /* row being visited, 0 .. NEIGH_ROWS − 1 */
+  uint j, end; /* next particle and end of the current range */
+  realv shift; /* periodic image offset of the current range */
+  uint wrap_j; /* second range of a wrapping row: start, end (wrap_j == wrap_end: none) */
+  uint wrap_end;
+  realv wrap_shift; /* and its shift */
 };
 
 void neigh_begin(struct neigh_iter *it, const struct grid *g, realv x)
 {
   int escaped = 0;
   it->home = grid_coords(g, x, &escaped);
-  it->k = -1;
-  it->j = 0;
-  it->end = 0;
-  it->shift = (realv)(R(0.0));
+  it->row = -1;
+  it->j = it->end = 0;
+  it->wrap_j = it->wrap_end = 0;
+  it->shift = it->wrap_shift = (realv)(R(0.0));
 }
 
 int neigh_next(struct neigh_iter *it, const struct grid *g, __global const uint *cell_start,
                uint *j)
 {
   while (it->j >= it->end) {
-    if (++it->k >= NEIGH_CELLS) return 0;
-    int cx = it->home.x + it->k % 3 - 1;
-    int cy = it->home.y + (it->k / 3) % 3 - 1;
+    if (it->wrap_j < it->wrap_end) { /* the other half of a wrapping row */
+      it->j = it->wrap_j;
+      it->end = it->wrap_end;
+      it->shift = it->wrap_shift;
+      it->wrap_j = it->wrap_end;
+      continue;
+    }
+    if (++it->row >= NEIGH_ROWS) return 0;
+    int cy = it->home.y + it->row % GRID_SPAN - GRID_SUB;
     int cz = 0;
-    real sx, sy;
-    if (!grid_wrap_axis(&cx, g->n.x, PERIODIC_X, g->len.x, &sx)) continue;
+    real sy, sz = R(0.0);
     if (!grid_wrap_axis(&cy, g->n.y, PERIODIC_Y, g->len.y, &sy)) continue;
-#if DIM == 2
-    it->shift = (realv)(sx, sy);
-#else
-    real sz;
-    cz = it->home.z + it->k / 9 - 1;
+#if DIM == 3
+    cz = it->home.z + it->row / GRID_SPAN - GRID_SUB;
     if (!grid_wrap_axis(&cz, g->n.z, PERIODIC_Z, g->len.z, &sz)) continue;
-    it->shift = (realv)(sx, sy, sz, R(0.0));
 #endif
-    int id = grid_cell_id(g, (int4)(cx, cy, cz, 0));
-    it->j = cell_start[id];
-    it->end = cell_start[id + 1];
+    const int base = g->n.x * (cy + g->n.y * cz); /* cell id of x = 0 in this row */
+    int x0 = it->home.x - GRID_SUB, x1 = it->home.x + GRID_SUB;
+#if DIM == 2
+    it->shift = (realv)(R(0.0), sy);
+#else
+    it->shift = (realv)(R(0.0), sy, sz, R(0.0));
+#endif
+#if PERIODIC_X
+    if (x0 < 0 || x1 >= g->n.x) { /* wraps: [0, x1 mod n] and [x0 mod n, n − 1] */
+      const real sx = x0 < 0 ? -g->len.x : g->len.x;
+      const int lo = x0 < 0 ? x0 + g->n.x : 0, hi = x0 < 0 ? g->n.x - 1 : x1 - g->n.x;
+      it->wrap_j = cell_start[base + lo];
+      it->wrap_end = cell_start[base + hi + 1];
+      it->wrap_shift = it->shift;
+      if (x0 < 0) { /* the wrapped cells are images at the far end */
+        it->wrap_shift.x = sx;
+        x0 = 0;
+      } else {
+        it->wrap_shift.x = sx;
+        x1 = g->n.x - 1;
+      }
+    }
+#else
+    x0 = max(x0, 0);
+    x1 = min(x1, g->n.x - 1);
+#endif
+    it->j = cell_start[base + x0];
+    it->end = cell_start[base + x1 + 1];
   }
   *j = it->j++;
   return 1;

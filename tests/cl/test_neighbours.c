@@ -24,6 +24,7 @@ struct cloud_case {
   double h; /* smoothing length; Wendland support 2h */
   size_t n;
   int outside; /* put particle 0 outside the box (non-periodic axes only) */
+  int sub;     /* cells per support radius (0: the default) */
 };
 
 /* Is j a neighbour of i by brute force (minimum image on periodic axes)? Returns 1 inside,
@@ -86,8 +87,9 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
     spec.hi[a] = c->hi[a];
     spec.periodic[a] = c->periodic[a];
   }
+  spec.sub = c->sub;
   if (smoothing_make(SMOOTHING_WENDLAND_C2, c->dim, c->h, &sm) != CLSPH_OK) goto fail;
-  spec.cell_min = sm.support;
+  spec.support = sm.support;
   if (grid_define(&spec, &o) || smoothing_define(&sm, &o) ||
       prog_build_extra(dev, sources, "tests/cl/neighbours_test.cl", src, &o, &prog) ||
       prog_kernel(prog, "test_neigh_list", &k) || grid_create(dev, prog, &spec, n, &g))
@@ -182,7 +184,7 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
   TC_CHECK(not_identity == 0, "%s: re-sorting sorted particles is the identity (%d moved)", c->name,
            not_identity);
   TC_CHECK(not_repeat == 0, "%s: sorting is deterministic (%d differ)", c->name, not_repeat);
-  printf("%-26s %zu particles, %zu cells, %.1f neighbours per particle\n", c->name, n, g.ncells,
+  printf("%-28s %zu particles, %zu cells, %.1f neighbours per particle\n", c->name, n, g.ncells,
          (double)pairs / (double)n);
   goto done;
 fail:
@@ -220,13 +222,16 @@ int main(int argc, char **argv)
   tc_open_device(&dev);
   char *src = tc_read_text(argv[1]);
   const struct cloud_case cases[] = {
-      {"2-D walls", 2, {0, 0, 0}, {1.0, 0.7, 0}, 0.025, 4000, 0},
-      {"2-D periodic x", 2, {1, 0, 0}, {1.0, 0.7, 0}, 0.025, 4000, 0},
-      {"2-D periodic x and y", 2, {1, 1, 0}, {0.62, 0.7, 0}, 0.03, 4000, 0},
-      {"2-D periodic, 3 cells", 2, {1, 1, 0}, {0.305, 0.31, 0}, 0.05, 400, 0},
-      {"2-D one particle outside", 2, {0, 0, 0}, {1.0, 1.0, 0}, 0.025, 3000, 1},
-      {"3-D walls", 3, {0, 0, 0}, {1.0, 0.8, 0.6}, 0.06, 4000, 0},
-      {"3-D periodic x, y, z", 3, {1, 1, 1}, {1.0, 0.8, 0.6}, 0.06, 4000, 0},
+      {"2-D walls", 2, {0, 0, 0}, {1.0, 0.7, 0}, 0.025, 4000, 0, 0},
+      {"2-D periodic x", 2, {1, 0, 0}, {1.0, 0.7, 0}, 0.025, 4000, 0, 0},
+      {"2-D periodic x and y", 2, {1, 1, 0}, {0.62, 0.7, 0}, 0.03, 4000, 0, 0},
+      {"2-D periodic, 5 cells", 2, {1, 1, 0}, {0.255, 0.26, 0}, 0.05, 300, 0, 0},
+      {"2-D periodic, 3 big cells", 2, {1, 1, 0}, {0.305, 0.31, 0}, 0.05, 400, 0, 1},
+      {"2-D walls, 3 cells/support", 2, {0, 0, 0}, {1.0, 0.7, 0}, 0.025, 4000, 0, 3},
+      {"2-D one particle outside", 2, {0, 0, 0}, {1.0, 1.0, 0}, 0.025, 3000, 1, 0},
+      {"3-D walls", 3, {0, 0, 0}, {1.0, 0.8, 0.6}, 0.06, 4000, 0, 0},
+      {"3-D periodic x, y, z", 3, {1, 1, 1}, {1.0, 0.8, 0.6}, 0.06, 4000, 0, 0},
+      {"3-D periodic x, big cells", 3, {1, 0, 0}, {1.0, 0.8, 0.6}, 0.06, 4000, 0, 1},
   };
   for (size_t i = 0; i < sizeof cases / sizeof *cases; ++i) run_case(&dev, src, &cases[i]);
   free(src);

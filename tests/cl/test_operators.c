@@ -173,7 +173,7 @@ static void check_regular(const struct dev *dev, enum smoothing_kind kind)
     TC_CHECK(0, "%s: set-up", name);
     goto done;
   }
-  struct grid_spec spec = {.dim = 2, .hi = {1, 1, 0}, .cell_min = sm.support};
+  struct grid_spec spec = {.dim = 2, .hi = {1, 1, 0}, .support = sm.support};
   for (int k = 0; k < 2; ++k)
     if (!run_ops(dev, &lat, &spec, &sm, k, &r[k])) {
       TC_CHECK(0, "%s: operators run (kgc %d)", name, k);
@@ -248,7 +248,7 @@ static void check_jittered(const struct dev *dev)
     goto done;
   }
   struct grid_spec spec = {
-      .dim = 2, .lo = {-dr, -dr, 0}, .hi = {1 + dr, 1 + dr, 0}, .cell_min = sm.support};
+      .dim = 2, .lo = {-dr, -dr, 0}, .hi = {1 + dr, 1 + dr, 0}, .support = sm.support};
   for (int k = 0; k < 2; ++k)
     if (!run_ops(dev, &lat, &spec, &sm, k, &r[k])) {
       TC_CHECK(0, "jittered: operators run (kgc %d)", k);
@@ -294,7 +294,7 @@ static void check_periodic(const struct dev *dev)
     TC_CHECK(0, "periodic: set-up");
     goto done;
   }
-  struct grid_spec spec = {.dim = 2, .hi = {1, 1, 0}, .cell_min = sm.support, .periodic = {1, 1}};
+  struct grid_spec spec = {.dim = 2, .hi = {1, 1, 0}, .support = sm.support, .periodic = {1, 1}};
   if (!run_ops(dev, &lat, &spec, &sm, 0, &r)) {
     TC_CHECK(0, "periodic: operators run");
     goto done;

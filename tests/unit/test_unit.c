@@ -67,16 +67,16 @@ static void check_grid_input(void)
   struct dev dev;
   memset(&dev, 0, sizeof dev);
   /* every one of these is refused before any device call, so no device is needed */
-  struct grid_spec narrow = {.dim = 2, .hi = {0.29, 1, 0}, .cell_min = 0.1, .periodic = {1, 0}};
+  struct grid_spec narrow = {.dim = 2, .hi = {0.249, 1, 0}, .support = 0.1, .periodic = {1, 0}};
   TC_CHECK(grid_create(&dev, NULL, &narrow, 10, &g) == CLSPH_E_INPUT,
-           "a periodic axis shorter than 3 support radii is refused");
-  struct grid_spec empty = {.dim = 2, .lo = {1, 0, 0}, .hi = {1, 1, 0}, .cell_min = 0.1};
+           "a periodic axis shorter than 2.5 support radii is refused");
+  struct grid_spec empty = {.dim = 2, .lo = {1, 0, 0}, .hi = {1, 1, 0}, .support = 0.1};
   TC_CHECK(grid_create(&dev, NULL, &empty, 10, &g) == CLSPH_E_INPUT, "an empty domain is refused");
-  struct grid_spec zero = {.dim = 2, .hi = {1, 1, 0}, .cell_min = 0.0};
+  struct grid_spec zero = {.dim = 2, .hi = {1, 1, 0}, .support = 0.0};
   TC_CHECK(grid_create(&dev, NULL, &zero, 10, &g) == CLSPH_E_INPUT, "a zero cell side is refused");
-  struct grid_spec huge = {.dim = 3, .hi = {1, 1, 1}, .cell_min = 1e-4};
+  struct grid_spec huge = {.dim = 3, .hi = {1, 1, 1}, .support = 1e-4};
   TC_CHECK(grid_create(&dev, NULL, &huge, 10, &g) == CLSPH_E_INPUT, "1e12 cells are refused");
-  struct grid_spec d4 = {.dim = 4, .hi = {1, 1, 1}, .cell_min = 0.1};
+  struct grid_spec d4 = {.dim = 4, .hi = {1, 1, 1}, .support = 0.1};
   TC_CHECK(grid_create(&dev, NULL, &d4, 10, &g) == CLSPH_E_INPUT, "dimension 4 is refused");
 }
 
