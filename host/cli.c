@@ -12,6 +12,9 @@ void cli_usage(FILE *f)
         "clsph is a particle (SPH) flow solver in C11 with OpenCL kernels.\n"
         "\n"
         "commands:\n"
+        "  run CASE              run a case script (cases/NAME.lua); outputs in --out\n"
+        "  info CASE             particle counts, active modules, memory and time step of a\n"
+        "                        case, without running it\n"
         "  devices               list OpenCL platforms and devices (index, type, OpenCL version,\n"
         "                        memory, double precision)\n"
         "  demo                  the default scene: a particle lattice, its device neighbour\n"
@@ -21,6 +24,11 @@ void cli_usage(FILE *f)
         "  help                  this text\n"
         "\n"
         "options:\n"
+        "  --set NAME=VALUE      override a parameter the case declares (repeatable), e.g.\n"
+        "                        --set dr=0.005 --set t_end=0.1\n"
+        "  --out DIR             output folder of `run` (default out/CASE)\n"
+        "  --restart FILE        continue a run from one of its checkpoints\n"
+        "  --quiet               no progress line\n"
         "  --device N            device index from `clsph devices` (default: $CLSPH_DEVICE, else\n"
         "                        the first GPU, else the first CPU)\n"
         "  --kernel-dir DIR      read OpenCL sources from DIR instead of the embedded copy\n"
@@ -33,6 +41,9 @@ void cli_usage(FILE *f)
         "  -h, --help            this text\n"
         "\n"
         "examples:\n"
+        "  clsph run cases/hydrostatic.lua --set dr=0.02 --out out/tank\n"
+        "  clsph info cases/hydrostatic.lua\n"
+        "  clsph run cases/hydrostatic.lua --restart out/tank/checkpoint_000100.h5\n"
         "  clsph devices\n"
         "  clsph demo --device 0\n"
         "  clsph bench neighbours --bench-sizes 1e4,1e5 --bench-reps 5\n",
@@ -68,7 +79,7 @@ done:
 enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
 {
   enum clsph_status st = CLSPH_OK;
-  static const char *const commands[] = {"devices", "demo", "bench", "help"};
+  static const char *const commands[] = {"run", "info", "devices", "demo", "bench", "help"};
   struct cli c;
   memset(&c, 0, sizeof c);
   c.device = -1;
@@ -85,9 +96,18 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
       c.verbose = 1;
     } else if (strcmp(a, "--fast-math") == 0) {
       c.fast_math = 1;
+    } else if (strcmp(a, "--quiet") == 0) {
+      c.quiet = 1;
     } else if (strncmp(a, "--", 2) == 0) {
       CLSPH_CHECK(val != NULL, CLSPH_E_INPUT, "option %s needs a value (see clsph --help)", a);
-      if (strcmp(a, "--device") == 0) {
+      if (strcmp(a, "--set") == 0) {
+        CLSPH_CHECK(c.nsets < CLI_MAX_SETS, CLSPH_E_INPUT, "--set: at most %d", CLI_MAX_SETS);
+        c.sets[c.nsets++] = argv[i + 1];
+      } else if (strcmp(a, "--out") == 0) {
+        c.out_dir = val;
+      } else if (strcmp(a, "--restart") == 0) {
+        c.restart = val;
+      } else if (strcmp(a, "--device") == 0) {
         CLSPH_TRY(parse_int(a, val, 0, 999999, &c.device));
       } else if (strcmp(a, "--kernel-dir") == 0) {
         c.kernel_dir = val;
@@ -108,8 +128,11 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
       for (size_t k = 0; k < sizeof commands / sizeof *commands; ++k)
         known |= !strcmp(a, commands[k]);
       CLSPH_CHECK(known, CLSPH_E_INPUT,
-                  "unknown command '%s'; commands: devices, demo, bench, help", a);
+                  "unknown command '%s'; commands: run, info, devices, demo, bench, help", a);
       c.command = a;
+    } else if ((strcmp(c.command, "run") == 0 || strcmp(c.command, "info") == 0) &&
+               c.case_path == NULL) {
+      c.case_path = a;
     } else if (strcmp(c.command, "bench") == 0 && c.target == NULL) {
       CLSPH_CHECK(strcmp(a, "neighbours") == 0, CLSPH_E_INPUT,
                   "unknown benchmark '%s'; benchmarks: neighbours", a);
@@ -119,6 +142,10 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
     }
   }
   if (c.command == NULL) c.command = "help";
+  CLSPH_CHECK((strcmp(c.command, "run") != 0 && strcmp(c.command, "info") != 0) ||
+                  c.case_path != NULL,
+              CLSPH_E_INPUT, "%s: name the case script, e.g. `clsph %s cases/hydrostatic.lua`",
+              c.command, c.command);
   CLSPH_CHECK(strcmp(c.command, "bench") != 0 || c.target != NULL, CLSPH_E_INPUT,
               "bench: name the benchmark, e.g. `clsph bench neighbours`");
   *out = c;

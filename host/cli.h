@@ -6,8 +6,16 @@
 
 #include "status.h"
 
+#define CLI_MAX_SETS 64
+
 struct cli {
-  const char *command;     /* "devices", "demo", "bench", "help" */
+  const char *command;      /* "run", "info", "devices", "demo", "bench", "help" */
+  const char *case_path;    /* run, info: the case script */
+  char *sets[CLI_MAX_SETS]; /* --set name=value, in order */
+  int nsets;
+  const char *out_dir;     /* --out DIR (default out/<case>) */
+  const char *restart;     /* --restart FILE */
+  int quiet;               /* --quiet: no progress line */
   const char *target;      /* bench: "neighbours" */
   int device;              /* --device N, -1: $CLSPH_DEVICE or the default */
   const char *kernel_dir;  /* --kernel-dir DIR, NULL: embedded sources */
@@ -24,7 +32,11 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out);
 /** @brief The --help text. */
 void cli_usage(FILE *f);
 
-/** @brief `clsph demo`: the default scene (see demo.c). */
+/** @brief `clsph run CASE`: run a case (see run.c). */
+enum clsph_status run_command(const struct cli *cli);
+/** @brief `clsph info CASE`: what a run would do, without running. */
+enum clsph_status info_command(const struct cli *cli);
+/** @brief `clsph demo`: the operator demonstration (see demo.c). */
 enum clsph_status demo_run(const struct cli *cli);
 /** @brief `clsph bench neighbours`. */
 enum clsph_status bench_run(const struct cli *cli);

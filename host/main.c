@@ -20,7 +20,11 @@ int main(int argc, char **argv)
     cli_usage(stdout);
     return 0;
   }
-  if (strcmp(cli.command, "devices") == 0)
+  if (strcmp(cli.command, "run") == 0)
+    st = run_command(&cli);
+  else if (strcmp(cli.command, "info") == 0)
+    st = info_command(&cli);
+  else if (strcmp(cli.command, "devices") == 0)
     st = dev_list();
   else if (strcmp(cli.command, "demo") == 0)
     st = demo_run(&cli);

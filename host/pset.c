@@ -4,6 +4,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "clsph_config.h"
+
 void pset_init(struct pset *ps, size_t n, size_t cap)
 {
   memset(ps, 0, sizeof *ps);
@@ -23,6 +25,10 @@ enum clsph_status pset_add(struct pset *ps, const struct dev *dev, const char *n
   struct pfield *f = &ps->f[ps->nfields];
   snprintf(f->name, sizeof f->name, "%s", name);
   f->elem = elem;
+  f->type = PF_REAL;
+  f->ncomp = (int)(elem / sizeof(real));
+  f->nout = f->ncomp;
+  f->output = 1;
   CLSPH_TRY(kern_buffer(dev, ps->cap * elem, NULL, &f->d, name));
   if (init != NULL)
     CLSPH_TRY(kern_write(dev, f->d, ps->n * elem, init));
@@ -39,6 +45,22 @@ enum clsph_status pset_add(struct pset *ps, const struct dev *dev, const char *n
 done:
   if (st != CLSPH_OK && ps->nfields < PSET_MAX_FIELDS) kern_release(&ps->f[ps->nfields].d);
   return st;
+}
+
+void pset_describe(struct pset *ps, int index, enum pfield_type type, int nout, int output)
+{
+  struct pfield *f = &ps->f[index];
+  f->type = type;
+  f->ncomp = (int)(f->elem / (type == PF_REAL ? sizeof(real) : 4));
+  f->nout = nout > 0 && nout <= f->ncomp ? nout : f->ncomp;
+  f->output = output;
+}
+
+int pset_find(const struct pset *ps, const char *name)
+{
+  for (int k = 0; k < ps->nfields; ++k)
+    if (strcmp(ps->f[k].name, name) == 0) return k;
+  return -1;
 }
 
 cl_mem pset_mem(const struct pset *ps, int index)

@@ -8,10 +8,17 @@
 
 #define PSET_MAX_FIELDS 32
 
+/** Element type of a field, for output. */
+enum pfield_type { PF_REAL = 0, PF_UINT, PF_INT };
+
 struct pfield {
-  char name[32]; /* e.g. "pos", "vel", "p" */
-  size_t elem;   /* bytes per particle, a multiple of 4 */
-  cl_mem d;      /* device buffer, cap * elem bytes */
+  char name[32];         /* e.g. "pos", "vel", "p" */
+  size_t elem;           /* bytes per particle, a multiple of 4 */
+  enum pfield_type type; /* element type */
+  int ncomp;             /* components stored per particle (elem / size of the type) */
+  int nout;              /* components that carry data (3-D positions: 3 of 4), <= ncomp */
+  int output;            /* written to snapshots (all fields go into checkpoints) */
+  cl_mem d;              /* device buffer, cap * elem bytes */
 };
 
 struct pset {
@@ -26,9 +33,14 @@ struct pset {
 /** @brief Empty set of n particles with room for cap. */
 void pset_init(struct pset *ps, size_t n, size_t cap);
 /** @brief Add a field of `elem` bytes per particle, initialised from `init` (n elements) or
- *  zero. @param index receives the field's index for pset_mem(). */
+ *  zero; typed as `ncomp` reals (output: all of them, but 3 of the 4 of a 3-D vector).
+ *  @param index receives the field's index for pset_mem(). */
 enum clsph_status pset_add(struct pset *ps, const struct dev *dev, const char *name, size_t elem,
                            const void *init, int *index);
+/** @brief Set a field's element type and the components that carry data (after pset_add). */
+void pset_describe(struct pset *ps, int index, enum pfield_type type, int nout, int output);
+/** @brief Index of the field called `name`, or −1. */
+int pset_find(const struct pset *ps, const char *name);
 /** @brief Current buffer of a field. */
 cl_mem pset_mem(const struct pset *ps, int index);
 /** @brief Reorder every field by the grid's permutation (after grid_sort). */

@@ -14,6 +14,7 @@ enum clsph_status {
   CLSPH_E_NOFP64,
   CLSPH_E_UNSUPPORTED,
   CLSPH_E_NODEVICE,
+  CLSPH_E_BLOWUP, /* the run stopped: non-finite values, particles lost, time step collapsed */
 };
 
 /** @brief Name of a status code, e.g. "CLSPH_E_CL". */

@@ -1,0 +1,998 @@
+/* case.c: the case-script loader. A case is a Lua 5.4 script run in a sandbox (base, math,
+ * string and table only; no io, os, package, debug, load, loadfile or dofile) whose declarations
+ * (param, domain, particles, scheme, fluid, fill, wall, box_wall, arc, circle, inflow, outflow,
+ * probe, profile, force, run) fill a struct scene. Every declaration checks its keys: an unknown
+ * key is an error naming the script line and the nearest known key. */
+#include "case.h"
+
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <lauxlib.h>
+#include <lua.h>
+#include <lualib.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct case_script {
+  lua_State *L;
+};
+
+/* State of one load, reachable from every declaration function (as its upvalue). */
+struct loader {
+  struct scene *s;
+  int nsets;
+  char (*set_names)[SCENE_NAME];
+  double *set_values;
+  int *set_used;
+  int line_particles; /* lines of the declarations that must appear once (0: not yet) */
+  int line_domain, line_scheme, line_run, line_fluid;
+  int nfill; /* regions declared so far, for default names */
+};
+
+/* ---- small helpers ---- */
+
+static struct loader *loader_of(lua_State *L)
+{
+  return lua_touserdata(L, lua_upvalueindex(1));
+}
+
+static int current_line(lua_State *L)
+{
+  lua_Debug ar;
+  if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "l", &ar)) return ar.currentline;
+  return 0;
+}
+
+/* Edit distance, for "did you mean" suggestions. */
+static int distance(const char *a, const char *b)
+{
+  size_t la = strlen(a), lb = strlen(b);
+  if (la > 63 || lb > 63) return 99;
+  int d[64][64];
+  for (size_t i = 0; i <= la; ++i) d[i][0] = (int)i;
+  for (size_t j = 0; j <= lb; ++j) d[0][j] = (int)j;
+  for (size_t i = 1; i <= la; ++i) {
+    for (size_t j = 1; j <= lb; ++j) {
+      int sub = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+      int del = d[i - 1][j] + 1, ins = d[i][j - 1] + 1;
+      d[i][j] = sub < del ? (sub < ins ? sub : ins) : (del < ins ? del : ins);
+    }
+  }
+  return d[la][lb];
+}
+
+/* "; did you mean 'x'?" for the closest of `known` (NULL-terminated), or the list of them. */
+static void suggest(const char *word, const char *const *known, char *buf, size_t size)
+{
+  const char *best = NULL;
+  int bd = 99;
+  for (int i = 0; known[i] != NULL; ++i) {
+    int d = distance(word, known[i]);
+    if (d < bd) {
+      bd = d;
+      best = known[i];
+    }
+  }
+  if (best != NULL && bd <= 3) {
+    snprintf(buf, size, "; did you mean '%s'?", best);
+    return;
+  }
+  size_t used = (size_t)snprintf(buf, size, "; known:");
+  for (int i = 0; known[i] != NULL && used < size; ++i)
+    used += (size_t)snprintf(buf + used, size - used, " %s", known[i]);
+}
+
+/* Every string key of the table at idx must be one of `known`; integer keys only when allowed. */
+static void check_keys(lua_State *L, int idx, const char *fn, const char *const *known,
+                       int positional)
+{
+  char hint[512];
+  lua_pushnil(L);
+  while (lua_next(L, idx) != 0) {
+    if (lua_type(L, -2) == LUA_TSTRING) {
+      const char *k = lua_tostring(L, -2);
+      int ok = 0;
+      for (int i = 0; known[i] != NULL; ++i) ok |= strcmp(k, known[i]) == 0;
+      if (!ok) {
+        suggest(k, known, hint, sizeof hint);
+        luaL_error(L, "%s: unknown key '%s'%s", fn, k, hint);
+      }
+    } else if (!positional || !lua_isinteger(L, -2)) {
+      luaL_error(L, "%s: unexpected %s key", fn, luaL_typename(L, -2));
+    }
+    lua_pop(L, 1);
+  }
+}
+
+/* Number at t[key] (default when absent). */
+static double get_number(lua_State *L, int idx, const char *fn, const char *key, double def)
+{
+  double v = def;
+  lua_getfield(L, idx, key);
+  if (!lua_isnil(L, -1)) {
+    if (!lua_isnumber(L, -1)) luaL_error(L, "%s: '%s' must be a number", fn, key);
+    v = lua_tonumber(L, -1);
+    if (!isfinite(v)) luaL_error(L, "%s: '%s' must be finite", fn, key);
+  }
+  lua_pop(L, 1);
+  return v;
+}
+
+/* Number at t[i] (required). */
+static double get_index_number(lua_State *L, int idx, const char *fn, int i, const char *what)
+{
+  lua_geti(L, idx, i);
+  if (!lua_isnumber(L, -1)) luaL_error(L, "%s: %s (entry %d) must be a number", fn, what, i);
+  double v = lua_tonumber(L, -1);
+  lua_pop(L, 1);
+  if (!isfinite(v)) luaL_error(L, "%s: %s must be finite", fn, what);
+  return v;
+}
+
+/* A point {x, y} at the top of the stack. */
+static void to_point(lua_State *L, const char *fn, const char *what, double p[2])
+{
+  int t = lua_gettop(L);
+  if (!lua_istable(L, t) || lua_rawlen(L, t) != 2)
+    luaL_error(L, "%s: %s must be a point {x, y}", fn, what);
+  p[0] = get_index_number(L, t, fn, 1, what);
+  p[1] = get_index_number(L, t, fn, 2, what);
+}
+
+/* t[key] as a point; returns 0 when absent. */
+static int get_point(lua_State *L, int idx, const char *fn, const char *key, double p[2])
+{
+  lua_getfield(L, idx, key);
+  int present = !lua_isnil(L, -1);
+  if (present) to_point(L, fn, key, p);
+  lua_pop(L, 1);
+  return present;
+}
+
+/* t[key] as one of `names` (NULL-terminated); returns its index, or def when absent. */
+static int get_choice(lua_State *L, int idx, const char *fn, const char *key,
+                      const char *const *names, int def)
+{
+  char hint[256];
+  int r = def;
+  lua_getfield(L, idx, key);
+  if (!lua_isnil(L, -1)) {
+    if (lua_type(L, -1) != LUA_TSTRING) luaL_error(L, "%s: '%s' must be a name", fn, key);
+    const char *v = lua_tostring(L, -1);
+    r = -1;
+    for (int i = 0; names[i] != NULL; ++i)
+      if (strcmp(v, names[i]) == 0) r = i;
+    if (r < 0) {
+      suggest(v, names, hint, sizeof hint);
+      luaL_error(L, "%s: '%s' is not a valid %s%s", fn, v, key, hint);
+    }
+  }
+  lua_pop(L, 1);
+  return r;
+}
+
+static void get_name(lua_State *L, int idx, const char *fn, const char *key, char *out,
+                     const char *def)
+{
+  lua_getfield(L, idx, key);
+  if (lua_isnil(L, -1)) {
+    snprintf(out, SCENE_NAME, "%s", def);
+  } else {
+    if (lua_type(L, -1) != LUA_TSTRING) luaL_error(L, "%s: '%s' must be a string", fn, key);
+    size_t len = 0;
+    const char *v = lua_tolstring(L, -1, &len);
+    if (len == 0 || len >= SCENE_NAME)
+      luaL_error(L, "%s: '%s' must have 1 to %d characters", fn, key, SCENE_NAME - 1);
+    snprintf(out, SCENE_NAME, "%s", v);
+  }
+  lua_pop(L, 1);
+}
+
+/* Grow an array of `size`-byte items by one; the new item is zeroed. */
+static void *grow(lua_State *L, void **arr, int *count, size_t size)
+{
+  char *p = realloc(*arr, (size_t)(*count + 1) * size);
+  if (p == NULL) luaL_error(L, "out of memory");
+  memset(p + (size_t)*count * size, 0, size);
+  *arr = p;
+  return p + (size_t)(*count)++ * size;
+}
+
+static void once(lua_State *L, int *line, const char *fn)
+{
+  if (*line != 0) luaL_error(L, "%s: declared twice (first on line %d)", fn, *line);
+  *line = current_line(L);
+}
+
+static void need_table(lua_State *L, const char *fn)
+{
+  if (lua_gettop(L) != 1 || !lua_istable(L, 1))
+    luaL_error(L, "%s: expects one table, e.g. %s { ... }", fn, fn);
+}
+
+/* ---- declarations ---- */
+
+static int l_param(lua_State *L)
+{
+  struct loader *ld = loader_of(L);
+  struct scene *s = ld->s;
+  need_table(L, "param");
+  lua_pushnil(L);
+  while (lua_next(L, 1) != 0) {
+    if (lua_type(L, -2) != LUA_TSTRING) luaL_error(L, "param: names must be strings");
+    const char *name = lua_tostring(L, -2);
+    if (!lua_isnumber(L, -1)) luaL_error(L, "param: '%s' must have a number as default", name);
+    if (strlen(name) >= SCENE_NAME) luaL_error(L, "param: name '%s' is too long", name);
+    for (int i = 0; i < s->nparams; ++i)
+      if (strcmp(s->params[i].name, name) == 0) luaL_error(L, "param: '%s' declared twice", name);
+    struct scene_param *p = grow(L, (void **)&s->params, &s->nparams, sizeof *p);
+    snprintf(p->name, SCENE_NAME, "%s", name);
+    p->value = lua_tonumber(L, -1);
+    for (int k = 0; k < ld->nsets; ++k) {
+      if (strcmp(ld->set_names[k], name) == 0) {
+        p->value = ld->set_values[k];
+        p->overridden = 1;
+        ld->set_used[k] = 1;
+      }
+    }
+    lua_pushnumber(L, p->value); /* the script sees the value in force */
+    lua_setglobal(L, name);
+    lua_pop(L, 1);
+  }
+  return 0;
+}
+
+static int l_domain(lua_State *L)
+{
+  static const char *const keys[] = {"periodic", NULL};
+  static const char *const periodic[] = {"none", "x", "y", "xy", NULL};
+  struct loader *ld = loader_of(L);
+  need_table(L, "domain");
+  once(L, &ld->line_domain, "domain");
+  check_keys(L, 1, "domain", keys, 1);
+  if (lua_rawlen(L, 1) != 4) luaL_error(L, "domain: give the box as { x0, y0, x1, y1 }");
+  struct scene *s = ld->s;
+  s->lo[0] = get_index_number(L, 1, "domain", 1, "x0");
+  s->lo[1] = get_index_number(L, 1, "domain", 2, "y0");
+  s->hi[0] = get_index_number(L, 1, "domain", 3, "x1");
+  s->hi[1] = get_index_number(L, 1, "domain", 4, "y1");
+  if (!(s->hi[0] > s->lo[0] && s->hi[1] > s->lo[1]))
+    luaL_error(L, "domain: the box {%f, %f, %f, %f} is empty (x1 > x0 and y1 > y0 needed)",
+               s->lo[0], s->lo[1], s->hi[0], s->hi[1]);
+  int p = get_choice(L, 1, "domain", "periodic", periodic, 0);
+  s->periodic[0] = p == 1 || p == 3;
+  s->periodic[1] = p == 2 || p == 3;
+  return 0;
+}
+
+static int l_particles(lua_State *L)
+{
+  static const char *const keys[] = {"dr", "h_over_dr", "smoothing", NULL};
+  static const char *const kinds[] = {"wendland", "cubic_spline", "gaussian", NULL};
+  struct loader *ld = loader_of(L);
+  need_table(L, "particles");
+  once(L, &ld->line_particles, "particles");
+  check_keys(L, 1, "particles", keys, 0);
+  struct scene *s = ld->s;
+  s->dr = get_number(L, 1, "particles", "dr", NAN);
+  if (!(s->dr > 0.0)) luaL_error(L, "particles: dr must be a positive spacing, not %f", s->dr);
+  s->h_over_dr = get_number(L, 1, "particles", "h_over_dr", 0.0);
+  if (s->h_over_dr < 0.0 || s->h_over_dr > 10.0)
+    luaL_error(L, "particles: h_over_dr must be in (0, 10], not %f", s->h_over_dr);
+  int k = get_choice(L, 1, "particles", "smoothing", kinds, -1);
+  if (k >= 0) snprintf(s->smoothing, SCENE_NAME, "%s", kinds[k]);
+  return 0;
+}
+
+static int l_scheme(lua_State *L)
+{
+  struct loader *ld = loader_of(L);
+  struct scene *s = ld->s;
+  once(L, &ld->line_scheme, "scheme");
+  if (lua_gettop(L) == 1 && lua_type(L, 1) == LUA_TSTRING) {
+    snprintf(s->scheme, SCENE_NAME, "%s", lua_tostring(L, 1));
+    return 0;
+  }
+  need_table(L, "scheme");
+  lua_geti(L, 1, 1);
+  if (lua_type(L, -1) != LUA_TSTRING)
+    luaL_error(L, "scheme: name the scheme first: scheme { \"name\", ... }");
+  snprintf(s->scheme, SCENE_NAME, "%s", lua_tostring(L, -1));
+  lua_pop(L, 1);
+  lua_pushnil(L);
+  while (lua_next(L, 1) != 0) {
+    if (lua_type(L, -2) == LUA_TSTRING) {
+      struct scene_option *o = grow(L, (void **)&s->options, &s->noptions, sizeof *o);
+      snprintf(o->key, SCENE_NAME, "%s", lua_tostring(L, -2));
+      if (lua_type(L, -1) == LUA_TNUMBER) {
+        o->is_number = 1;
+        o->number = lua_tonumber(L, -1);
+      } else if (lua_type(L, -1) == LUA_TSTRING) {
+        snprintf(o->text, SCENE_NAME, "%s", lua_tostring(L, -1));
+      } else if (lua_type(L, -1) == LUA_TBOOLEAN) {
+        o->is_number = 1;
+        o->number = lua_toboolean(L, -1);
+      } else {
+        luaL_error(L, "scheme: option '%s' must be a number, a name or a boolean", o->key);
+      }
+    } else if (!lua_isinteger(L, -2) || lua_tointeger(L, -2) != 1) {
+      luaL_error(L, "scheme: give options as name = value");
+    }
+    lua_pop(L, 1);
+  }
+  return 0;
+}
+
+static int l_fluid(lua_State *L)
+{
+  static const char *const keys[] = {"density", "viscosity", "gravity", "body_force", NULL};
+  struct loader *ld = loader_of(L);
+  need_table(L, "fluid");
+  once(L, &ld->line_fluid, "fluid");
+  check_keys(L, 1, "fluid", keys, 0);
+  struct scene *s = ld->s;
+  s->rho0 = get_number(L, 1, "fluid", "density", 1000.0);
+  s->nu = get_number(L, 1, "fluid", "viscosity", 0.0);
+  if (!(s->rho0 > 0.0)) luaL_error(L, "fluid: density must be positive, not %f", s->rho0);
+  if (s->nu < 0.0) luaL_error(L, "fluid: viscosity must not be negative, not %f", s->nu);
+  get_point(L, 1, "fluid", "gravity", s->gravity);
+  get_point(L, 1, "fluid", "body_force", s->body_force);
+  return 0;
+}
+
+static int l_fill(lua_State *L)
+{
+  static const char *const keys[] = {"polygon", "name", NULL};
+  struct loader *ld = loader_of(L);
+  struct scene *s = ld->s;
+  need_table(L, "fill");
+  check_keys(L, 1, "fill", keys, 1);
+  char defname[SCENE_NAME];
+  snprintf(defname, sizeof defname, "fill %d", ++ld->nfill);
+  struct scene_region *r = grow(L, (void **)&s->regions, &s->nregions, sizeof *r);
+  r->line = current_line(L);
+  get_name(L, 1, "fill", "name", r->name, defname);
+  lua_getfield(L, 1, "polygon");
+  if (!lua_isnil(L, -1)) {
+    int t = lua_gettop(L);
+    if (!lua_istable(L, t) || lua_rawlen(L, t) < 3)
+      luaL_error(L, "fill: polygon needs at least 3 points {x, y}");
+    if (lua_rawlen(L, 1) != 0) luaL_error(L, "fill: give either a rectangle or a polygon");
+    int n = (int)lua_rawlen(L, t);
+    r->pts = calloc(2 * (size_t)n, sizeof *r->pts);
+    if (r->pts == NULL) luaL_error(L, "out of memory");
+    r->npts = n;
+    for (int i = 0; i < n; ++i) {
+      lua_geti(L, t, i + 1);
+      to_point(L, "fill", "a polygon point", &r->pts[2 * i]);
+      lua_pop(L, 1);
+    }
+  } else {
+    if (lua_rawlen(L, 1) != 4)
+      luaL_error(L, "fill: give a rectangle { x0, y0, x1, y1 } or polygon = { {x, y}, ... }");
+    double x0 = get_index_number(L, 1, "fill", 1, "x0"),
+           y0 = get_index_number(L, 1, "fill", 2, "y0");
+    double x1 = get_index_number(L, 1, "fill", 3, "x1"),
+           y1 = get_index_number(L, 1, "fill", 4, "y1");
+    if (!(x1 > x0 && y1 > y0))
+      luaL_error(L, "fill: the rectangle {%f, %f, %f, %f} is empty", x0, y0, x1, y1);
+    r->pts = calloc(8, sizeof *r->pts);
+    if (r->pts == NULL) luaL_error(L, "out of memory");
+    r->npts = 4;
+    const double q[8] = {x0, y0, x1, y0, x1, y1, x0, y1};
+    memcpy(r->pts, q, sizeof q);
+  }
+  lua_pop(L, 1);
+  return 0;
+}
+
+/* Signed area (positive when counter-clockwise). */
+static double signed_area(const double *p, int n)
+{
+  double a = 0.0;
+  for (int i = 0; i < n; ++i) {
+    int j = (i + 1) % n;
+    a += p[2 * i] * p[2 * j + 1] - p[2 * j] * p[2 * i + 1];
+  }
+  return 0.5 * a;
+}
+
+static void reverse_points(double *p, int n)
+{
+  for (int i = 0; i < n / 2; ++i) {
+    for (int c = 0; c < 2; ++c) {
+      double t = p[2 * i + c];
+      p[2 * i + c] = p[2 * (n - 1 - i) + c];
+      p[2 * (n - 1 - i) + c] = t;
+    }
+  }
+}
+
+/* Motion keys shared by every wall declaration. */
+static void wall_motion(lua_State *L, const char *fn, struct scene_wall *w)
+{
+  int has_v = get_point(L, 1, fn, "velocity", w->velocity);
+  lua_getfield(L, 1, "omega");
+  int has_w = !lua_isnil(L, -1);
+  lua_pop(L, 1);
+  if (has_v && has_w) luaL_error(L, "%s: give either velocity (sliding) or omega (rotating)", fn);
+  if (has_w) {
+    w->omega = get_number(L, 1, fn, "omega", 0.0);
+    if (!get_point(L, 1, fn, "centre", w->centre))
+      luaL_error(L, "%s: a rotating wall (omega) needs its centre = {x, y}", fn);
+    w->motion = SCENE_ROTATING;
+  } else if (has_v) {
+    w->motion = SCENE_SLIDING;
+  }
+}
+
+/* Orient a wall so that the fluid is on its left (see scene.h). */
+static void orient(lua_State *L, const char *fn, struct scene_wall *w, int fluid_choice)
+{
+  /* choices: 0 default, 1 inside, 2 outside, 3 left, 4 right */
+  if (w->closed) {
+    if (fluid_choice >= 3) luaL_error(L, "%s: a closed wall holds the fluid inside or outside", fn);
+    double a = signed_area(w->pts, w->npts);
+    if (fabs(a) == 0.0) luaL_error(L, "%s: the closed wall encloses no area", fn);
+    int want_ccw = fluid_choice != 2;
+    if ((a > 0.0) != want_ccw) reverse_points(w->pts, w->npts);
+  } else {
+    if (fluid_choice == 1 || fluid_choice == 2)
+      luaL_error(L, "%s: an open wall has its fluid on the left or the right", fn);
+    if (fluid_choice == 4) reverse_points(w->pts, w->npts);
+  }
+}
+
+static const char *const fluid_sides[] = {"", "inside", "outside", "left", "right", NULL};
+
+static int l_wall(lua_State *L)
+{
+  static const char *const keys[] = {"closed", "fluid",  "group", "velocity",
+                                     "omega",  "centre", NULL};
+  struct loader *ld = loader_of(L);
+  struct scene *s = ld->s;
+  need_table(L, "wall");
+  check_keys(L, 1, "wall", keys, 1);
+  int n = (int)lua_rawlen(L, 1);
+  if (n < 2) luaL_error(L, "wall: a polyline needs at least 2 points {x, y}, this one has %d", n);
+  struct scene_wall *w = grow(L, (void **)&s->walls, &s->nwalls, sizeof *w);
+  w->line = current_line(L);
+  get_name(L, 1, "wall", "group", w->group, "walls");
+  lua_getfield(L, 1, "closed");
+  w->closed = lua_toboolean(L, -1);
+  lua_pop(L, 1);
+  if (w->closed && n < 3) luaL_error(L, "wall: a closed wall needs at least 3 points");
+  w->pts = calloc(2 * (size_t)n, sizeof *w->pts);
+  if (w->pts == NULL) luaL_error(L, "out of memory");
+  w->npts = n;
+  for (int i = 0; i < n; ++i) {
+    lua_geti(L, 1, i + 1);
+    to_point(L, "wall", "a point", &w->pts[2 * i]);
+    lua_pop(L, 1);
+  }
+  wall_motion(L, "wall", w);
+  orient(L, "wall", w, get_choice(L, 1, "wall", "fluid", fluid_sides, 0));
+  return 0;
+}
+
+static int l_box_wall(lua_State *L)
+{
+  static const char *const keys[] = {"group", "lid_velocity", "lid_group", NULL};
+  struct loader *ld = loader_of(L);
+  struct scene *s = ld->s;
+  need_table(L, "box_wall");
+  check_keys(L, 1, "box_wall", keys, 1);
+  if (lua_rawlen(L, 1) != 4) luaL_error(L, "box_wall: give the box as { x0, y0, x1, y1 }");
+  double x0 = get_index_number(L, 1, "box_wall", 1, "x0"),
+         y0 = get_index_number(L, 1, "box_wall", 2, "y0");
+  double x1 = get_index_number(L, 1, "box_wall", 3, "x1"),
+         y1 = get_index_number(L, 1, "box_wall", 4, "y1");
+  if (!(x1 > x0 && y1 > y0))
+    luaL_error(L, "box_wall: the box {%f, %f, %f, %f} is empty", x0, y0, x1, y1);
+  double lid[2] = {0, 0};
+  int has_lid = get_point(L, 1, "box_wall", "lid_velocity", lid);
+  int line = current_line(L);
+  struct scene_wall *w = grow(L, (void **)&s->walls, &s->nwalls, sizeof *w);
+  w->line = line;
+  get_name(L, 1, "box_wall", "group", w->group, "walls");
+  if (!has_lid) { /* one closed counter-clockwise polyline: fluid inside */
+    const double q[8] = {x0, y0, x1, y0, x1, y1, x0, y1};
+    w->closed = 1;
+    w->npts = 4;
+    w->pts = malloc(sizeof q);
+    if (w->pts == NULL) luaL_error(L, "out of memory");
+    memcpy(w->pts, q, sizeof q);
+    return 0;
+  }
+  /* left, bottom, right as one open polyline (fluid on its left), and the sliding lid */
+  const double q[8] = {x0, y1, x0, y0, x1, y0, x1, y1};
+  w->npts = 4;
+  w->pts = malloc(sizeof q);
+  if (w->pts == NULL) luaL_error(L, "out of memory");
+  memcpy(w->pts, q, sizeof q);
+  struct scene_wall *t = grow(L, (void **)&s->walls, &s->nwalls, sizeof *t);
+  t->line = line;
+  get_name(L, 1, "box_wall", "lid_group", t->group, "lid");
+  t->npts = 2;
+  t->pts = malloc(4 * sizeof *t->pts);
+  if (t->pts == NULL) luaL_error(L, "out of memory");
+  t->pts[0] = x1;
+  t->pts[1] = y1;
+  t->pts[2] = x0;
+  t->pts[3] = y1;
+  t->motion = SCENE_SLIDING;
+  t->velocity[0] = lid[0];
+  t->velocity[1] = lid[1];
+  return 0;
+}
+
+/* arc and circle: a polyline with vertices about dr apart (particles {} must come first). */
+static int arc_common(lua_State *L, int full)
+{
+  static const char *const arc_keys[] = {"centre", "radius",   "from",  "to", "fluid",
+                                         "group",  "velocity", "omega", NULL};
+  static const char *const circle_keys[] = {"centre",   "radius", "fluid", "group",
+                                            "velocity", "omega",  NULL};
+  const char *fn = full ? "circle" : "arc";
+  struct loader *ld = loader_of(L);
+  struct scene *s = ld->s;
+  need_table(L, fn);
+  check_keys(L, 1, fn, full ? circle_keys : arc_keys, 0);
+  if (ld->line_particles == 0) luaL_error(L, "%s: declare particles { dr = ... } first", fn);
+  double c[2];
+  if (!get_point(L, 1, fn, "centre", c)) luaL_error(L, "%s: needs centre = {x, y}", fn);
+  double r = get_number(L, 1, fn, "radius", NAN);
+  if (!(r > 0.0)) luaL_error(L, "%s: radius must be positive, not %f", fn, r);
+  double a0 = full ? 0.0 : get_number(L, 1, fn, "from", NAN);
+  double a1 = full ? 2.0 * 3.14159265358979323846 : get_number(L, 1, fn, "to", NAN);
+  if (!full && !(a1 > a0)) luaL_error(L, "arc: needs from < to (radians, counter-clockwise)");
+  int side = get_choice(L, 1, fn, "fluid", fluid_sides, full ? 2 : 1);
+  if (side != 1 && side != 2) luaL_error(L, "%s: fluid must be \"inside\" or \"outside\"", fn);
+  int segs = (int)ceil(r * (a1 - a0) / s->dr);
+  if (segs < (full ? 8 : 1)) segs = full ? 8 : 1;
+  int n = full ? segs : segs + 1;
+  struct scene_wall *w = grow(L, (void **)&s->walls, &s->nwalls, sizeof *w);
+  w->line = current_line(L);
+  get_name(L, 1, fn, "group", w->group, "walls");
+  w->closed = full;
+  w->npts = n;
+  w->pts = calloc(2 * (size_t)n, sizeof *w->pts);
+  if (w->pts == NULL) luaL_error(L, "out of memory");
+  for (int i = 0; i < n; ++i) {
+    double a = a0 + (a1 - a0) * i / segs;
+    w->pts[2 * i] = c[0] + r * cos(a);
+    w->pts[2 * i + 1] = c[1] + r * sin(a);
+  }
+  if (!full && side == 2) reverse_points(w->pts, n); /* counter-clockwise keeps the centre left */
+  wall_motion(L, fn, w);
+  if (full) orient(L, fn, w, side);
+  return 0;
+}
+
+static int l_arc(lua_State *L)
+{
+  return arc_common(L, 0);
+}
+
+static int l_circle(lua_State *L)
+{
+  return arc_common(L, 1);
+}
+
+static int section_common(lua_State *L, enum scene_section_kind kind)
+{
+  static const char *const in_keys[] = {"velocity", "profile", "layers", "name", NULL};
+  static const char *const out_keys[] = {"layers", "name", NULL};
+  static const char *const profiles[] = {"", "uniform", "parabolic", NULL};
+  const char *fn = kind == SCENE_INFLOW ? "inflow" : "outflow";
+  struct loader *ld = loader_of(L);
+  struct scene *s = ld->s;
+  need_table(L, fn);
+  check_keys(L, 1, fn, kind == SCENE_INFLOW ? in_keys : out_keys, 1);
+  if (lua_rawlen(L, 1) != 2)
+    luaL_error(L, "%s: give the section as { {x0, y0}, {x1, y1}, ... }", fn);
+  struct scene_section *c = grow(L, (void **)&s->sections, &s->nsections, sizeof *c);
+  c->kind = kind;
+  c->line = current_line(L);
+  get_name(L, 1, fn, "name", c->name, fn);
+  lua_geti(L, 1, 1);
+  to_point(L, fn, "the first end", c->a);
+  lua_pop(L, 1);
+  lua_geti(L, 1, 2);
+  to_point(L, fn, "the second end", c->b);
+  lua_pop(L, 1);
+  if (c->a[0] == c->b[0] && c->a[1] == c->b[1]) luaL_error(L, "%s: the section has no width", fn);
+  c->layers = (int)get_number(L, 1, fn, "layers", 3);
+  if (c->layers < 1 || c->layers > 8) luaL_error(L, "%s: layers must be 1 to 8", fn);
+  if (kind == SCENE_INFLOW) {
+    c->velocity = get_number(L, 1, fn, "velocity", NAN);
+    if (!isfinite(c->velocity)) luaL_error(L, "inflow: needs velocity = (m/s)");
+    int p = get_choice(L, 1, fn, "profile", profiles, 1);
+    c->profile = p == 2 ? SCENE_PARABOLIC : SCENE_UNIFORM;
+  }
+  return 0;
+}
+
+static int l_inflow(lua_State *L)
+{
+  return section_common(L, SCENE_INFLOW);
+}
+
+static int l_outflow(lua_State *L)
+{
+  return section_common(L, SCENE_OUTFLOW);
+}
+
+static int l_probe(lua_State *L)
+{
+  static const char *const keys[] = {"name", "at", NULL};
+  struct loader *ld = loader_of(L);
+  struct scene *s = ld->s;
+  need_table(L, "probe");
+  check_keys(L, 1, "probe", keys, 1);
+  struct scene_probe *p = grow(L, (void **)&s->probes, &s->nprobes, sizeof *p);
+  lua_geti(L, 1, 1);
+  if (lua_type(L, -1) == LUA_TSTRING) {
+    snprintf(p->name, SCENE_NAME, "%s", lua_tostring(L, -1));
+    lua_pop(L, 1);
+    lua_geti(L, 1, 2);
+    to_point(L, "probe", "the point", p->x);
+    lua_pop(L, 1);
+  } else {
+    lua_pop(L, 1);
+    get_name(L, 1, "probe", "name", p->name, "");
+    if (p->name[0] == '\0' || !get_point(L, 1, "probe", "at", p->x))
+      luaL_error(L, "probe: give { \"name\", {x, y} } or { name = ..., at = {x, y} }");
+  }
+  return 0;
+}
+
+static int l_profile(lua_State *L)
+{
+  static const char *const keys[] = {"name", "from", "to", "points", NULL};
+  struct loader *ld = loader_of(L);
+  struct scene *s = ld->s;
+  need_table(L, "profile");
+  check_keys(L, 1, "profile", keys, 1);
+  struct scene_profile_line *p = grow(L, (void **)&s->profiles, &s->nprofiles, sizeof *p);
+  lua_geti(L, 1, 1);
+  if (lua_type(L, -1) == LUA_TSTRING) snprintf(p->name, SCENE_NAME, "%s", lua_tostring(L, -1));
+  lua_pop(L, 1);
+  if (p->name[0] == '\0') get_name(L, 1, "profile", "name", p->name, "");
+  if (p->name[0] == '\0') luaL_error(L, "profile: needs a name");
+  if (!get_point(L, 1, "profile", "from", p->a) || !get_point(L, 1, "profile", "to", p->b))
+    luaL_error(L, "profile: needs from = {x, y} and to = {x, y}");
+  double np = get_number(L, 1, "profile", "points", 101);
+  if (np < 2 || np > 1e5 || np != floor(np)) luaL_error(L, "profile: points must be 2 to 100000");
+  p->npts = (int)np;
+  return 0;
+}
+
+static void add_force(lua_State *L, struct scene *s, int idx)
+{
+  if (lua_type(L, idx) != LUA_TSTRING) luaL_error(L, "force: wall groups are names");
+  char(*f)[SCENE_NAME] = grow(L, (void **)&s->forces, &s->nforces, sizeof *f);
+  snprintf(*f, SCENE_NAME, "%s", lua_tostring(L, idx));
+}
+
+/* force "lid" or force { "lid", "walls" } */
+static int l_force(lua_State *L)
+{
+  struct loader *ld = loader_of(L);
+  if (lua_gettop(L) == 1 && lua_istable(L, 1)) {
+    int n = (int)lua_rawlen(L, 1);
+    if (n == 0) luaL_error(L, "force: name the wall groups, e.g. force { \"lid\" }");
+    for (int i = 1; i <= n; ++i) {
+      lua_geti(L, 1, i);
+      add_force(L, ld->s, lua_gettop(L));
+      lua_pop(L, 1);
+    }
+  } else if (lua_gettop(L) == 1) {
+    add_force(L, ld->s, 1);
+  } else {
+    luaL_error(L, "force: name the wall groups, e.g. force { \"lid\" }");
+  }
+  return 0;
+}
+
+static int l_run(lua_State *L)
+{
+  static const char *const keys[] = {"t_end", "output_every", "checkpoint_every", "cfl", NULL};
+  struct loader *ld = loader_of(L);
+  struct scene *s = ld->s;
+  need_table(L, "run");
+  once(L, &ld->line_run, "run");
+  check_keys(L, 1, "run", keys, 0);
+  s->t_end = get_number(L, 1, "run", "t_end", NAN);
+  /* t_end is always a parameter, so --set t_end=... shortens any run */
+  int declared = 0;
+  for (int i = 0; i < s->nparams; ++i) declared |= strcmp(s->params[i].name, "t_end") == 0;
+  if (!declared) {
+    struct scene_param *p = grow(L, (void **)&s->params, &s->nparams, sizeof *p);
+    snprintf(p->name, SCENE_NAME, "t_end");
+    p->value = s->t_end;
+    for (int k = 0; k < ld->nsets; ++k) {
+      if (strcmp(ld->set_names[k], "t_end") == 0) {
+        p->value = ld->set_values[k];
+        p->overridden = 1;
+        ld->set_used[k] = 1;
+      }
+    }
+  }
+  s->t_end = scene_param(s, "t_end", s->t_end);
+  if (!(s->t_end > 0.0)) luaL_error(L, "run: t_end must be a positive time, not %f", s->t_end);
+  s->output_every = get_number(L, 1, "run", "output_every", 0.0);
+  s->checkpoint_every = get_number(L, 1, "run", "checkpoint_every", 0.0);
+  s->cfl = get_number(L, 1, "run", "cfl", 1.0);
+  if (s->output_every < 0.0 || s->checkpoint_every < 0.0)
+    luaL_error(L, "run: output_every and checkpoint_every must not be negative");
+  if (!(s->cfl > 0.0)) luaL_error(L, "run: cfl must be positive, not %f", s->cfl);
+  return 0;
+}
+
+/* ---- loading ---- */
+
+static enum clsph_status parse_sets(int nsets, char *const *sets, struct loader *ld)
+{
+  enum clsph_status st = CLSPH_OK;
+  ld->nsets = nsets;
+  ld->set_names = calloc((size_t)nsets + 1, sizeof *ld->set_names);
+  ld->set_values = calloc((size_t)nsets + 1, sizeof *ld->set_values);
+  ld->set_used = calloc((size_t)nsets + 1, sizeof *ld->set_used);
+  CLSPH_CHECK(ld->set_names && ld->set_values && ld->set_used, CLSPH_E_NOMEM, "out of memory");
+  for (int k = 0; k < nsets; ++k) {
+    const char *eq = strchr(sets[k], '=');
+    size_t len = eq != NULL ? (size_t)(eq - sets[k]) : 0;
+    CLSPH_CHECK(eq != NULL && len > 0 && len < SCENE_NAME, CLSPH_E_INPUT,
+                "--set %s: write name=value, e.g. --set dr=0.005", sets[k]);
+    memcpy(ld->set_names[k], sets[k], len);
+    ld->set_names[k][len] = '\0';
+    char *end = NULL;
+    errno = 0;
+    ld->set_values[k] = strtod(eq + 1, &end);
+    CLSPH_CHECK(errno == 0 && end != eq + 1 && *end == '\0' && isfinite(ld->set_values[k]),
+                CLSPH_E_INPUT, "--set %s: '%s' is not a number", sets[k], eq + 1);
+    for (int j = 0; j < k; ++j)
+      CLSPH_CHECK(strcmp(ld->set_names[j], ld->set_names[k]) != 0, CLSPH_E_INPUT,
+                  "--set %s: '%s' is set twice", sets[k], ld->set_names[k]);
+  }
+done:
+  return st;
+}
+
+static void open_sandbox(lua_State *L)
+{
+  static const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},
+                                  {LUA_MATHLIBNAME, luaopen_math},
+                                  {LUA_STRLIBNAME, luaopen_string},
+                                  {LUA_TABLIBNAME, luaopen_table}};
+  for (size_t i = 0; i < sizeof libs / sizeof *libs; ++i) {
+    luaL_requiref(L, libs[i].name, libs[i].func, 1);
+    lua_pop(L, 1);
+  }
+  static const char *const removed[] = {"dofile", "loadfile", "load", "require", "collectgarbage"};
+  for (size_t i = 0; i < sizeof removed / sizeof *removed; ++i) {
+    lua_pushnil(L);
+    lua_setglobal(L, removed[i]);
+  }
+}
+
+static void register_api(lua_State *L, struct loader *ld)
+{
+  static const luaL_Reg api[] = {
+      {"param", l_param},   {"domain", l_domain},     {"particles", l_particles},
+      {"scheme", l_scheme}, {"fluid", l_fluid},       {"fill", l_fill},
+      {"wall", l_wall},     {"box_wall", l_box_wall}, {"arc", l_arc},
+      {"circle", l_circle}, {"inflow", l_inflow},     {"outflow", l_outflow},
+      {"probe", l_probe},   {"profile", l_profile},   {"force", l_force},
+      {"run", l_run},
+  };
+  for (size_t i = 0; i < sizeof api / sizeof *api; ++i) {
+    lua_pushlightuserdata(L, ld);
+    lua_pushcclosure(L, api[i].func, 1);
+    lua_setglobal(L, api[i].name);
+  }
+}
+
+static int cmp_param(const void *a, const void *b)
+{
+  return strcmp(((const struct scene_param *)a)->name, ((const struct scene_param *)b)->name);
+}
+
+/* After the script: what must be there, and --set names nobody declared. */
+static enum clsph_status finish(const char *path, struct loader *ld)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct scene *s = ld->s;
+  const char **names = NULL;
+  char hint[512];
+  CLSPH_CHECK(ld->line_domain, CLSPH_E_INPUT, "%s: declares no domain { x0, y0, x1, y1 }", path);
+  CLSPH_CHECK(ld->line_particles, CLSPH_E_INPUT, "%s: declares no particles { dr = ... }", path);
+  CLSPH_CHECK(ld->line_scheme, CLSPH_E_INPUT, "%s: declares no scheme \"name\"", path);
+  CLSPH_CHECK(ld->line_run, CLSPH_E_INPUT, "%s: declares no run { t_end = ... }", path);
+  CLSPH_CHECK(s->nregions > 0, CLSPH_E_INPUT, "%s: declares no fluid region (fill { ... })", path);
+  names = calloc((size_t)s->nparams + 1, sizeof *names);
+  CLSPH_CHECK(names != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (int i = 0; i < s->nparams; ++i) names[i] = s->params[i].name;
+  for (int k = 0; k < ld->nsets; ++k) {
+    if (ld->set_used[k]) continue;
+    suggest(ld->set_names[k], names, hint, sizeof hint);
+    CLSPH_CHECK(0, CLSPH_E_INPUT, "--set %s: %s declares no parameter '%s'%s", ld->set_names[k],
+                path, ld->set_names[k], hint);
+  }
+  if (!s->rho0) s->rho0 = 1000.0; /* no fluid {} declaration: water at rest */
+  qsort(s->params, (size_t)s->nparams, sizeof *s->params, cmp_param);
+done:
+  free(names);
+  return st;
+}
+
+enum clsph_status case_load(const char *path, int nsets, char *const *sets, struct scene *out,
+                            struct case_script **script)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct scene s;
+  struct loader ld;
+  lua_State *L = NULL;
+  memset(&s, 0, sizeof s);
+  memset(&ld, 0, sizeof ld);
+  ld.s = &s;
+
+  CLSPH_CHECK(strlen(path) < sizeof s.case_path, CLSPH_E_INPUT, "case path too long: %s", path);
+  snprintf(s.case_path, sizeof s.case_path, "%s", path);
+  const char *base = strrchr(path, '/');
+  base = base != NULL ? base + 1 : path;
+  snprintf(s.name, sizeof s.name, "%s", base);
+  char *dot = strrchr(s.name, '.');
+  if (dot != NULL && strcmp(dot, ".lua") == 0) *dot = '\0';
+  s.dim = 2;
+  CLSPH_TRY(parse_sets(nsets, sets, &ld));
+
+  L = luaL_newstate();
+  CLSPH_CHECK(L != NULL, CLSPH_E_NOMEM, "cannot create a Lua state");
+  open_sandbox(L);
+  register_api(L, &ld);
+  int err = luaL_loadfilex(L, path, "t"); /* text only: no precompiled chunks */
+  if (err == LUA_ERRFILE) {
+    log_error("cannot read case %s: %s", path, lua_tostring(L, -1));
+    st = CLSPH_E_IO;
+    goto done;
+  }
+  if (err == LUA_OK) err = lua_pcall(L, 0, 0, 0);
+  if (err != LUA_OK) {
+    log_error("%s", lua_tostring(L, -1));
+    st = CLSPH_E_INPUT;
+    goto done;
+  }
+  CLSPH_TRY(finish(path, &ld));
+  *out = s;
+  memset(&s, 0, sizeof s);
+  if (script != NULL) {
+    struct case_script *cs = malloc(sizeof *cs);
+    CLSPH_CHECK(cs != NULL, CLSPH_E_NOMEM, "out of memory");
+    cs->L = L;
+    L = NULL;
+    *script = cs;
+  }
+done:
+  if (L != NULL) lua_close(L);
+  scene_free(&s);
+  free(ld.set_names);
+  free(ld.set_values);
+  free(ld.set_used);
+  return st;
+}
+
+/* ---- metrics ---- */
+
+static const struct case_sim_api *api_of(lua_State *L)
+{
+  return lua_touserdata(L, lua_upvalueindex(1));
+}
+
+static int kind_of(lua_State *L, int idx)
+{
+  static const char *const kinds[] = {"fluid", "vertex", "dummy", "inflow", "outflow", NULL};
+  if (lua_isnoneornil(L, idx)) return 0;
+  const char *k = luaL_checkstring(L, idx);
+  if (strcmp(k, "all") == 0) return -1;
+  for (int i = 0; kinds[i] != NULL; ++i)
+    if (strcmp(k, kinds[i]) == 0) return i;
+  return luaL_error(L, "unknown particle kind '%s' (fluid, vertex, dummy, inflow, outflow, all)",
+                    k);
+}
+
+/* sim.min/max/mean(field [, component [, kind]]) over fluid particles unless a kind is given */
+static int l_stat(lua_State *L, int which)
+{
+  const struct case_sim_api *api = api_of(L);
+  const char *field = luaL_checkstring(L, 1);
+  int comp = (int)luaL_optinteger(L, 2, 1) - 1;
+  int kind = kind_of(L, 3);
+  double v[3];
+  if (api->stats(api->ctx, field, comp, kind, &v[0], &v[1], &v[2]) != CLSPH_OK)
+    return luaL_error(L, "sim: no statistics for field '%s' component %d", field, comp + 1);
+  lua_pushnumber(L, v[which]);
+  return 1;
+}
+
+static int l_min(lua_State *L)
+{
+  return l_stat(L, 0);
+}
+
+static int l_max(lua_State *L)
+{
+  return l_stat(L, 1);
+}
+
+static int l_mean(lua_State *L)
+{
+  return l_stat(L, 2);
+}
+
+/* sim.sample(field, x, y [, component]) */
+static int l_sample(lua_State *L)
+{
+  const struct case_sim_api *api = api_of(L);
+  const char *field = luaL_checkstring(L, 1);
+  double x = luaL_checknumber(L, 2), y = luaL_checknumber(L, 3), v = 0.0;
+  int comp = (int)luaL_optinteger(L, 4, 1) - 1;
+  if (api->sample(api->ctx, field, comp, x, y, &v) != CLSPH_OK)
+    return luaL_error(L, "sim.sample: cannot sample '%s' at (%f, %f)", field, x, y);
+  lua_pushnumber(L, v);
+  return 1;
+}
+
+enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api *api,
+                               struct cJSON *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  lua_State *L = cs->L;
+  int top = lua_gettop(L);
+  lua_getglobal(L, "metrics");
+  if (lua_isnil(L, -1)) goto done;
+  CLSPH_CHECK(lua_isfunction(L, -1), CLSPH_E_INPUT, "metrics must be a function");
+  lua_newtable(L);
+  lua_pushnumber(L, api->time);
+  lua_setfield(L, -2, "time");
+  lua_pushinteger(L, api->steps);
+  lua_setfield(L, -2, "steps");
+  lua_pushnumber(L, api->particles);
+  lua_setfield(L, -2, "particles");
+  static const luaL_Reg fns[] = {
+      {"min", l_min}, {"max", l_max}, {"mean", l_mean}, {"sample", l_sample}};
+  for (size_t i = 0; i < sizeof fns / sizeof *fns; ++i) {
+    lua_pushlightuserdata(L, (void *)(size_t)api);
+    lua_pushcclosure(L, fns[i].func, 1);
+    lua_setfield(L, -2, fns[i].name);
+  }
+  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+    log_error("metrics: %s", lua_tostring(L, -1));
+    st = CLSPH_E_INPUT;
+    goto done;
+  }
+  CLSPH_CHECK(lua_istable(L, -1), CLSPH_E_INPUT, "metrics must return a table of name = number");
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    if (lua_type(L, -2) != LUA_TSTRING || !lua_isnumber(L, -1)) {
+      log_error("metrics: every entry must be name = number");
+      st = CLSPH_E_INPUT;
+      goto done;
+    }
+    cJSON_AddNumberToObject(out, lua_tostring(L, -2), lua_tonumber(L, -1));
+    lua_pop(L, 1);
+  }
+done:
+  lua_settop(L, top);
+  return st;
+}
+
+void case_close(struct case_script *cs)
+{
+  if (cs == NULL) return;
+  lua_close(cs->L);
+  free(cs);
+}

@@ -1,0 +1,38 @@
+/* case.h: case scripts (cases/NAME.lua) run in a Lua 5.4 sandbox and turned into a scene. */
+#ifndef CLSPH_CASE_H
+#define CLSPH_CASE_H
+
+#include "scene.h"
+#include "status.h"
+
+struct case_script;
+struct cJSON;
+
+/** What a case's `metrics(sim)` function can ask of the finished run. */
+struct case_sim_api {
+  void *ctx;        /* passed back to the callbacks */
+  double time;      /* simulated time, s */
+  long steps;       /* time steps */
+  double particles; /* particle count */
+  /** Statistics of component `comp` of a field over the particles of `kind` (−1: all). */
+  enum clsph_status (*stats)(void *ctx, const char *field, int comp, int kind, double *min,
+                             double *max, double *mean);
+  /** Interpolated value of component `comp` of a field at a point. */
+  enum clsph_status (*sample)(void *ctx, const char *field, int comp, double x, double y,
+                              double *value);
+};
+
+/** @brief Run a case script and fill the scene.
+ *  @param sets   --set overrides, "name=value" each; a name the case does not declare is refused
+ *                with the nearest declared names
+ *  @param script receives the Lua state (kept for metrics); NULL to close it at once */
+enum clsph_status case_load(const char *path, int nsets, char *const *sets, struct scene *out,
+                            struct case_script **script);
+/** @brief Run the case's `metrics(sim)` function, if it has one, adding its numbers to `out`
+ *  (a JSON object). */
+enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api *api,
+                               struct cJSON *out);
+/** @brief Close the Lua state (NULL is fine). */
+void case_close(struct case_script *cs);
+
+#endif /* CLSPH_CASE_H */

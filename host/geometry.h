@@ -1,0 +1,52 @@
+/* geometry.h: turns a scene description into particles and wall elements (see geometry.c). */
+#ifndef CLSPH_GEOMETRY_H
+#define CLSPH_GEOMETRY_H
+
+#include <stddef.h>
+
+#include "scene.h"
+#include "status.h"
+
+/** Particle kinds, in the order the particles are stored. */
+enum particle_kind {
+  KIND_FLUID = 0,  /* free fluid particle */
+  KIND_VERTEX = 1, /* USAW vertex particle: a truncated fluid particle on the wall (Leroy 2014) */
+  KIND_DUMMY = 2,  /* dummy wall particle inside the solid */
+  KIND_INFLOW = 3, /* inflow layer particle (outside an inflow section) */
+  KIND_OUTFLOW = 4 /* outflow layer particle (outside an outflow section) */
+};
+
+/** Particles (host arrays, double precision) and USAW segments. Fluid particles come first. */
+struct geom {
+  size_t n;       /* particles of every kind */
+  size_t nfluid;  /* the first nfluid are KIND_FLUID */
+  double *x;      /* n x 2, position, m */
+  double *v;      /* n x 2, initial velocity (the wall velocity for wall particles), m/s */
+  double *normal; /* n x 2, unit normal into the fluid (vertex, dummy, inflow/outflow); 0 else */
+  double *theta;  /* n, vertex particles: angle of the fluid sector at the vertex, rad (π on a
+                     straight wall, π/2 in a box corner, 3π/2 at a convex solid corner); else 0 */
+  double *dist;   /* n, dummy particles: distance to the nearest wall point, m; else 0 */
+  int *kind;      /* n, enum particle_kind */
+  int *group;     /* n, index of the wall (scene walls[]) or section, −1 for fluid */
+  size_t nseg;    /* USAW segments */
+  size_t *seg_v;  /* nseg x 2, the vertex particles at each end (indices into the arrays above) */
+  double *seg_normal; /* nseg x 2, unit normal into the fluid */
+  double *seg_len;    /* nseg, length, m */
+  int *seg_wall;      /* nseg, index of the wall in scene walls[] */
+};
+
+/** @brief Build the particles of a scene: fluid first (rows of increasing y, then x), then the
+ *  wall particles, then the inflow/outflow layers of each section (conventions: geometry.c).
+ *  @param s      the scene (dr, regions, walls with the fluid on their left, sections)
+ *  @param model  "usaw": vertex particles and segments; "dummy": `layers` layers of dummy
+ *                particles; "none": fluid (and inflow/outflow layers) only
+ *  @param layers dummy layers, >= 1 for "dummy" (ignored otherwise)
+ *  @param out    overwritten (free it first); zeroed on failure
+ *  @return CLSPH_E_INPUT with a message naming the case file and line for invalid geometry,
+ *          CLSPH_E_NOMEM */
+enum clsph_status geometry_build(const struct scene *s, const char *model, int layers,
+                                 struct geom *out);
+/** @brief Free the arrays (safe on a zeroed struct). */
+void geometry_free(struct geom *g);
+
+#endif /* CLSPH_GEOMETRY_H */

@@ -1,0 +1,127 @@
+/* scene.h: the scene description a case script produces (host/case.c) and the geometry generator
+ * (host/geometry.c) turns into particles. Plain data: every length in m, velocity in m/s, time in
+ * s, SI throughout. 2-D for now (points are x, y pairs). */
+#ifndef CLSPH_SCENE_H
+#define CLSPH_SCENE_H
+
+#include <stddef.h>
+
+#define SCENE_NAME 64 /* longest name (group, probe, parameter, option) + 1 */
+
+/** A parameter declared by `param { name = default }`, possibly overridden by --set. */
+struct scene_param {
+  char name[SCENE_NAME];
+  double value;
+  int overridden; /* set from the command line */
+};
+
+/** A scheme option: a number or a name (`scheme { "isph-usaw", shifting = 0.7 }`). */
+struct scene_option {
+  char key[SCENE_NAME];
+  int is_number;
+  double number;
+  char text[SCENE_NAME];
+};
+
+/** A fluid region filled at spacing dr on the lattice lo + (k + 1/2) dr. */
+struct scene_region {
+  char name[SCENE_NAME]; /* "fill 1", or the name the case gives */
+  int npts;              /* polygon vertices (a rectangle is a 4-vertex polygon) */
+  double *pts;           /* npts x 2, counter-clockwise or not (either works) */
+  int line;              /* line of the case script that declared it */
+};
+
+enum scene_motion {
+  SCENE_FIXED = 0,
+  SCENE_SLIDING,  /* every wall point moves with `velocity` but the geometry stays (lid) */
+  SCENE_ROTATING, /* velocity = omega × (x − centre); the geometry turns */
+};
+
+/** A wall: a polyline (an arc or a circle arrives here already divided into vertices).
+ *  Orientation convention: the fluid is on the LEFT of the direction of travel, so the inward
+ *  normal of an edge from a to b is (−(b−a)_y, (b−a)_x)/|b−a| (a counter-clockwise closed
+ *  polyline holds its fluid inside). The case loader orients every wall this way. */
+struct scene_wall {
+  char group[SCENE_NAME]; /* force group ("walls" unless named) */
+  int npts;               /* vertices, >= 2 */
+  double *pts;            /* npts x 2 */
+  int closed;             /* the last vertex joins the first */
+  enum scene_motion motion;
+  double velocity[2]; /* sliding velocity, m/s */
+  double centre[2];   /* rotation centre, m */
+  double omega;       /* angular velocity, rad/s, counter-clockwise positive */
+  int line;           /* line of the case script */
+};
+
+enum scene_section_kind { SCENE_INFLOW = 1, SCENE_OUTFLOW };
+enum scene_profile { SCENE_UNIFORM = 1, SCENE_PARABOLIC };
+
+/** An inflow or outflow section: the segment a-b across the channel; the flow enters (inflow) or
+ *  leaves (outflow) along its normal pointing into the fluid (left of a->b). */
+struct scene_section {
+  enum scene_section_kind kind;
+  char name[SCENE_NAME];
+  double a[2], b[2];
+  enum scene_profile profile;
+  double velocity; /* mean (uniform) or peak (parabolic) normal speed, m/s; outflow: unused */
+  int layers;      /* particle layers outside the section (3 unless given) */
+  int line;
+};
+
+struct scene_probe {
+  char name[SCENE_NAME];
+  double x[2];
+};
+
+struct scene_profile_line {
+  char name[SCENE_NAME];
+  double a[2], b[2];
+  int npts; /* sample points from a to b inclusive */
+};
+
+/** Everything a case declares. Anything it does not state is off. */
+struct scene {
+  char case_path[1024];  /* the script */
+  char name[SCENE_NAME]; /* case name: the script's file name without .lua */
+  int dim;               /* 2 */
+  double lo[2], hi[2];   /* domain box, m (periodic axes: the period) */
+  int periodic[2];
+  double dr;                  /* particle spacing, m */
+  double h_over_dr;           /* smoothing length / dr (scheme default unless given) */
+  char smoothing[SCENE_NAME]; /* smoothing function name ("" = the scheme's default) */
+  double rho0;                /* reference density, kg/m^3 */
+  double nu;                  /* kinematic viscosity, m^2/s */
+  double gravity[2];          /* m/s^2 */
+  double body_force[2];       /* acceleration, m/s^2 (e.g. a pressure-gradient drive) */
+  char scheme[SCENE_NAME];
+  int noptions;
+  struct scene_option *options;
+  char wall_model[SCENE_NAME]; /* "usaw" or "dummy": the scheme decides; "" until then */
+  int dummy_layers;            /* layers of dummy particles (dummy walls) */
+  double t_end;                /* end time, s (the parameter t_end) */
+  double output_every;         /* snapshot cadence, s (0: only the last) */
+  double checkpoint_every;     /* checkpoint cadence, s (0: only the last) */
+  double cfl;                  /* time-step factor (1 = the scheme's bounds) */
+  int nparams;
+  struct scene_param *params;
+  int nregions;
+  struct scene_region *regions;
+  int nwalls;
+  struct scene_wall *walls;
+  int nsections;
+  struct scene_section *sections;
+  int nprobes;
+  struct scene_probe *probes;
+  int nprofiles;
+  struct scene_profile_line *profiles;
+  int nforces;
+  char (*forces)[SCENE_NAME]; /* wall groups whose force is recorded */
+};
+
+/** @brief Free everything a scene owns (safe on a zeroed scene). */
+void scene_free(struct scene *s);
+
+/** @brief Value of a parameter, or `fallback` when the case declares none of that name. */
+double scene_param(const struct scene *s, const char *name, double fallback);
+
+#endif /* CLSPH_SCENE_H */

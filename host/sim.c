@@ -1,0 +1,874 @@
+/* sim.c: set-up of a simulation from a scene, and the time loop with its outputs.
+ *
+ * Each step: sort the particles by cell (every field reordered), ask the scheme for its largest
+ * stable step, cut it to land exactly on the next output or checkpoint time, step, and read the
+ * error flags. Outputs in the output folder:
+ *   snap_NNNNNN.h5 + snapshots.xdmf   particle fields at the output cadence (ParaView)
+ *   checkpoint_NNNNNN.h5              at the checkpoint cadence and at the end (--restart)
+ *   probes.csv, profile_<name>.csv    interpolated fields at the output cadence
+ *   forces.csv                        wall-group forces at the output cadence
+ *   summary.json                      what ran, its cost, its status and the case's metrics */
+#include "sim.h"
+
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "../solvers/scheme.h"
+#include "case.h"
+#include "clsph_config.h"
+#include "kern.h"
+
+static const char *const common_sources[] = {OPS_SOURCES, "common/reduce.cl", "common/probe.cl"};
+
+static double now(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* ---- set-up ---- */
+
+static enum clsph_status check_options(const struct scene *s, const struct scheme_ops *sc)
+{
+  enum clsph_status st = CLSPH_OK;
+  for (int i = 0; i < s->noptions; ++i) {
+    int known = 0;
+    for (int k = 0; sc->options[k] != NULL; ++k)
+      known |= !strcmp(sc->options[k], s->options[i].key);
+    if (known) continue;
+    char list[512];
+    size_t used = 0;
+    list[0] = '\0';
+    for (int k = 0; sc->options[k] != NULL && used < sizeof list; ++k)
+      used +=
+          (size_t)snprintf(list + used, sizeof list - used, "%s%s", k ? ", " : "", sc->options[k]);
+    CLSPH_CHECK(0, CLSPH_E_INPUT, "%s: scheme '%s' has no option '%s' (options: %s)", s->case_path,
+                sc->name, s->options[i].key, used ? list : "none");
+  }
+done:
+  return st;
+}
+
+static const struct scene_option *find_option(const struct scene *s, const char *key)
+{
+  for (int i = 0; i < s->noptions; ++i)
+    if (strcmp(s->options[i].key, key) == 0) return &s->options[i];
+  return NULL;
+}
+
+static enum clsph_status build_program(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct prog_opts o = {0};
+  const char **sources = NULL;
+  size_t nc = sizeof common_sources / sizeof *common_sources, ns = 0;
+  while (sim->scheme->sources[ns] != NULL) ++ns;
+  sources = calloc(nc + ns + 1, sizeof *sources);
+  CLSPH_CHECK(sources != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t i = 0; i < nc; ++i) sources[i] = common_sources[i];
+  for (size_t i = 0; i < ns; ++i) sources[nc + i] = sim->scheme->sources[i];
+  CLSPH_TRY(grid_define(&sim->gspec, &o));
+  CLSPH_TRY(smoothing_define(&sim->sm, &o));
+  if (sim->scheme->define != NULL) CLSPH_TRY(sim->scheme->define(sim, &o));
+  CLSPH_TRY(prog_build(sim->dev, sources, &o, &sim->prog));
+done:
+  free(sources);
+  prog_opts_free(&o);
+  return st;
+}
+
+/* The common fields: position, velocity, kind, id, volume. */
+static enum clsph_status add_fields(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct geom *g = &sim->geom;
+  const size_t n = g->n, stride = 2;
+  real *xv = calloc(2 * stride * n + n, sizeof *xv);
+  cl_uint *u = calloc(2 * n, sizeof *u);
+  CLSPH_CHECK(xv != NULL && u != NULL, CLSPH_E_NOMEM, "out of memory for %zu particles", n);
+  real *v = xv + stride * n, *vol = xv + 2 * stride * n;
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t a = 0; a < 2; ++a) {
+      xv[stride * i + a] = (real)g->x[2 * i + a];
+      v[stride * i + a] = (real)g->v[2 * i + a];
+    }
+    vol[i] = (real)(sim->scene->dr * sim->scene->dr);
+    u[i] = (cl_uint)g->kind[i];
+    u[n + i] = (cl_uint)i;
+  }
+  pset_init(&sim->ps, n, n);
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, "pos", stride * sizeof(real), xv, &sim->f_pos));
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, "vel", stride * sizeof(real), v, &sim->f_vel));
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, "kind", sizeof(cl_uint), u, &sim->f_kind));
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, "id", sizeof(cl_uint), u + n, &sim->f_id));
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, "vol", sizeof(real), vol, &sim->f_vol));
+  pset_describe(&sim->ps, sim->f_kind, PF_UINT, 1, 1);
+  pset_describe(&sim->ps, sim->f_id, PF_UINT, 1, 1);
+done:
+  free(u);
+  free(xv);
+  return st;
+}
+
+enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, struct sim *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim sim;
+  const cl_uint zero = 0;
+  memset(&sim, 0, sizeof sim);
+  sim.dev = dev;
+  sim.scene = scene;
+  snprintf(sim.status, sizeof sim.status, "ok");
+
+  CLSPH_TRY(scheme_find(scene->scheme, &sim.scheme));
+  CLSPH_TRY(check_options(scene, sim.scheme));
+  /* smoothing function and length */
+  enum smoothing_kind kind;
+  CLSPH_TRY(smoothing_kind_from_name(scene->smoothing[0] ? scene->smoothing : sim.scheme->smoothing,
+                                     &kind));
+  double hr = scene->h_over_dr > 0.0 ? scene->h_over_dr : sim.scheme->h_over_dr;
+  CLSPH_TRY(smoothing_make(kind, 2, hr * scene->dr, &sim.sm));
+  /* particles */
+  const char *model = sim.scheme->wall_model;
+  const struct scene_option *wo = find_option(scene, "walls");
+  if (wo != NULL) {
+    CLSPH_CHECK(!wo->is_number && (!strcmp(wo->text, "usaw") || !strcmp(wo->text, "dummy") ||
+                                   !strcmp(wo->text, "none")),
+                CLSPH_E_INPUT, "%s: scheme option walls must be \"usaw\", \"dummy\" or \"none\"",
+                scene->case_path);
+    model = wo->text;
+  }
+  const struct scene_option *lo = find_option(scene, "wall_layers");
+  int layers = lo != NULL && lo->is_number ? (int)lo->number : 3;
+  CLSPH_TRY(geometry_build(scene, model, layers, &sim.geom));
+  /* the cell grid: the domain, with room for wall and section layers on non-periodic axes */
+  sim.gspec.dim = 2;
+  sim.gspec.support = sim.sm.support;
+  double margin = (layers + 4) * scene->dr + sim.sm.support;
+  for (int a = 0; a < 2; ++a) {
+    sim.gspec.periodic[a] = scene->periodic[a];
+    sim.gspec.lo[a] = scene->lo[a] - (scene->periodic[a] ? 0.0 : margin);
+    sim.gspec.hi[a] = scene->hi[a] + (scene->periodic[a] ? 0.0 : margin);
+  }
+  for (size_t i = 0; i < sim.geom.n; ++i)
+    for (int a = 0; a < 2; ++a)
+      CLSPH_CHECK(scene->periodic[a] || (sim.geom.x[2 * i + a] >= sim.gspec.lo[a] &&
+                                         sim.geom.x[2 * i + a] < sim.gspec.hi[a]),
+                  CLSPH_E_INPUT, "%s: a particle at (%g, %g) lies outside the domain",
+                  scene->case_path, sim.geom.x[2 * i], sim.geom.x[2 * i + 1]);
+  /* device state */
+  CLSPH_TRY(build_program(&sim));
+  CLSPH_TRY(add_fields(&sim));
+  CLSPH_TRY(grid_create(dev, sim.prog, &sim.gspec, sim.ps.cap, &sim.grid));
+  CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &sim.d_flags, "flags"));
+  CLSPH_TRY(prog_kernel(sim.prog, "probe_sample", &sim.k_probe));
+  CLSPH_TRY(prog_kernel(sim.prog, "reduce_max_speed", &sim.k_max_speed));
+  CLSPH_TRY(kern_buffer(dev, (sim.ps.cap / 64 + 2) * sizeof(real), NULL, &sim.d_partial,
+                        "reduction partials"));
+  if (sim.scheme->create != NULL) CLSPH_TRY(sim.scheme->create(&sim, &sim.state));
+  CLSPH_TRY(sim_sort(&sim));
+  *out = sim;
+  memset(&sim, 0, sizeof sim);
+done:
+  sim_destroy(&sim);
+  return st;
+}
+
+enum clsph_status sim_sort(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  CLSPH_TRY(
+      grid_sort(&sim->grid, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos), sim->d_flags));
+  CLSPH_TRY(pset_reorder(&sim->ps, &sim->grid, sim->dev));
+done:
+  return st;
+}
+
+enum clsph_status sim_check_flags(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_uint flags = 0;
+  CLSPH_TRY(kern_read(sim->dev, sim->d_flags, sizeof flags, &flags));
+  if (flags & 1u)
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a non-finite value (NaN or Inf) at step %ld, t = %.9g s", sim->step,
+             sim->time);
+  else if (flags & 4u)
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a particle left the domain at step %ld, t = %.9g s", sim->step, sim->time);
+  else if (flags & 2u)
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a particle has more neighbours than its table holds at step %ld", sim->step);
+  if (flags != 0) {
+    log_error("%s", sim->status);
+    st = CLSPH_E_BLOWUP;
+  }
+done:
+  return st;
+}
+
+enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax)
+{
+  enum clsph_status st = CLSPH_OK;
+  real *part = NULL;
+  cl_uint n = (cl_uint)sim->ps.n;
+  cl_int only = kind;
+  size_t groups = (sim->ps.n + 63) / 64;
+  cl_mem vel = pset_mem(&sim->ps, sim->f_vel), kd = pset_mem(&sim->ps, sim->f_kind);
+  part = malloc(groups * sizeof *part);
+  CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(KERN_SET(sim->k_max_speed, KARG(n), KARG(vel), KARG(kd), KARG(only),
+                     KARG(sim->d_partial), KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_max_speed, sim->ps.n, 64, NULL));
+  CLSPH_TRY(kern_read(sim->dev, sim->d_partial, groups * sizeof *part, part));
+  double m = 0.0;
+  for (size_t g = 0; g < groups; ++g) m = fmax(m, (double)part[g]);
+  *vmax = m;
+done:
+  free(part);
+  return st;
+}
+
+enum clsph_status sim_sample(struct sim *sim, int field, size_t np, const double *at, double *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct pfield *f = &sim->ps.f[field];
+  real *buf = NULL;
+  cl_mem d_at = NULL, d_out = NULL;
+  cl_uint ncomp = (cl_uint)f->ncomp, npts = (cl_uint)np;
+  CLSPH_CHECK(f->type == PF_REAL && f->ncomp <= 4, CLSPH_E_INPUT,
+              "field '%s' cannot be interpolated", f->name);
+  buf = calloc(np * (2 + ncomp), sizeof *buf);
+  CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t p = 0; p < 2 * np; ++p) buf[p] = (real)at[p];
+  CLSPH_TRY(kern_buffer(sim->dev, 2 * np * sizeof(real), buf, &d_at, "sample points"));
+  CLSPH_TRY(kern_buffer(sim->dev, ncomp * np * sizeof(real), NULL, &d_out, "samples"));
+  cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vol = pset_mem(&sim->ps, sim->f_vol);
+  cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
+  CLSPH_TRY(KERN_SET(sim->k_probe, KARG(npts), KARG(d_at), KARG(sim->grid.geom),
+                     KARG(sim->grid.d_start), KARG(pos), KARG(vol), KARG(kind), KARG(f->d),
+                     KARG(ncomp), KARG(d_out)));
+  CLSPH_TRY(kern_launch(sim->dev, sim->k_probe, np, NULL));
+  CLSPH_TRY(kern_read(sim->dev, d_out, ncomp * np * sizeof(real), buf + 2 * np));
+  for (size_t k = 0; k < ncomp * np; ++k) out[k] = (double)buf[2 * np + k];
+done:
+  kern_release(&d_out);
+  kern_release(&d_at);
+  free(buf);
+  return st;
+}
+
+/* ---- info ---- */
+
+enum clsph_status sim_info(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  size_t count[5] = {0, 0, 0, 0, 0};
+  for (size_t i = 0; i < sim->geom.n; ++i)
+    if (sim->geom.kind[i] >= 0 && sim->geom.kind[i] < 5) ++count[sim->geom.kind[i]];
+  size_t per = 0;
+  for (int k = 0; k < sim->ps.nfields; ++k) per += sim->ps.f[k].elem;
+  size_t spare = 0;
+  for (int k = 0; k < sim->ps.nscratch; ++k) spare += sim->ps.scratch_elem[k];
+  size_t grid_bytes = 2 * (sim->grid.ncells + 1) * sizeof(cl_uint) + 3 * sim->ps.cap * 4;
+  double dt = HUGE_VAL;
+  if (sim->scheme->max_dt != NULL) CLSPH_TRY(sim->scheme->max_dt(sim, sim->state, &dt));
+  dt *= s->cfl;
+  printf("case %s (%s)\n", s->name, s->case_path);
+  printf("scheme %s: %s\n", sim->scheme->name, sim->scheme->summary);
+  printf("particles: %zu (fluid %zu, wall vertices %zu, dummy %zu, inflow %zu, outflow %zu), "
+         "%zu wall segments\n",
+         sim->geom.n, count[0], count[1], count[2], count[3], count[4], sim->geom.nseg);
+  printf("spacing dr = %g m, smoothing %s, h = %g m (%g dr), support %g m\n", s->dr,
+         smoothing_name(sim->sm.kind), sim->sm.h, sim->sm.h / s->dr, sim->sm.support);
+  printf("active: walls %s, periodic %s%s%s, gravity %s, body force %s, probes %d, profiles %d, "
+         "forces %d\n",
+         sim->geom.nseg ? "usaw"
+         : count[2]     ? "dummy"
+                        : "none",
+         s->periodic[0] || s->periodic[1] ? "" : "none", s->periodic[0] ? "x" : "",
+         s->periodic[1] ? "y" : "", s->gravity[0] || s->gravity[1] ? "on" : "off",
+         s->body_force[0] || s->body_force[1] ? "on" : "off", s->nprobes, s->nprofiles, s->nforces);
+  for (int i = 0; i < s->noptions; ++i) {
+    if (s->options[i].is_number)
+      printf("option %s = %g\n", s->options[i].key, s->options[i].number);
+    else
+      printf("option %s = %s\n", s->options[i].key, s->options[i].text);
+  }
+  printf("fields:");
+  for (int k = 0; k < sim->ps.nfields; ++k)
+    printf(" %s (%zu B)", sim->ps.f[k].name, sim->ps.f[k].elem);
+  printf("\nmemory: %zu B per particle (+ %zu B reorder spare), %.1f MiB in all with the grid of "
+         "%zu cells\n",
+         per, spare, (double)((per + spare) * sim->ps.cap + grid_bytes) / (1024.0 * 1024.0),
+         sim->grid.ncells);
+  if (isfinite(dt))
+    printf("time step %.6g s (cfl %g): about %.0f steps to t_end = %g s\n", dt, s->cfl,
+           ceil(s->t_end / dt), s->t_end);
+  else
+    printf("time step: set by the outputs (the scheme has no stability bound); t_end = %g s\n",
+           s->t_end);
+done:
+  return st;
+}
+
+/* ---- outputs ---- */
+
+struct run_out {
+  char dir[1024];
+  struct io_series series;
+  FILE *probes, *forces;
+  FILE **profiles;
+  int nsnap;
+};
+
+static enum clsph_status path_in(const struct run_out *o, const char *name, char *buf, size_t size)
+{
+  enum clsph_status st = CLSPH_OK;
+  int w = snprintf(buf, size, "%s/%s", o->dir, name);
+  CLSPH_CHECK(w > 0 && (size_t)w < size, CLSPH_E_INPUT, "output path too long: %s/%s", o->dir,
+              name);
+done:
+  return st;
+}
+
+/* Create the folder (and its parents) and prove it can be written, before anything runs. */
+static enum clsph_status prepare_dir(const char *dir)
+{
+  enum clsph_status st = CLSPH_OK;
+  char path[1100];
+  CLSPH_CHECK(strlen(dir) > 0 && strlen(dir) < 1024, CLSPH_E_INPUT, "--out: bad folder name");
+  snprintf(path, sizeof path, "%s", dir);
+  for (char *p = path + 1; *p != '\0'; ++p) {
+    if (*p != '/') continue;
+    *p = '\0';
+    mkdir(path, 0755);
+    *p = '/';
+  }
+  if (mkdir(path, 0755) != 0 && errno != EEXIST) {
+    log_error("output folder %s cannot be created: %s", dir, strerror(errno));
+    st = CLSPH_E_IO;
+    goto done;
+  }
+  snprintf(path, sizeof path, "%s/.clsph-write-test", dir);
+  FILE *f = fopen(path, "w");
+  if (f == NULL) {
+    log_error("output folder %s cannot be written: %s", dir, strerror(errno));
+    st = CLSPH_E_IO;
+    goto done;
+  }
+  fclose(f);
+  remove(path);
+done:
+  return st;
+}
+
+/* Real fields that probes and profiles record (not position or volume). */
+static int sampled(const struct pfield *f)
+{
+  return f->type == PF_REAL && f->output && strcmp(f->name, "pos") != 0 &&
+         strcmp(f->name, "vol") != 0 && f->ncomp <= 4;
+}
+
+static void csv_field_header(FILE *f, const struct pset *ps, const char *prefix)
+{
+  for (int k = 0; k < ps->nfields; ++k) {
+    const struct pfield *p = &ps->f[k];
+    if (!sampled(p)) continue;
+    for (int c = 0; c < p->nout; ++c) {
+      if (p->nout == 1)
+        fprintf(f, ",%s%s", prefix, p->name);
+      else
+        fprintf(f, ",%s%s_%c", prefix, p->name, "xyzw"[c]);
+    }
+  }
+}
+
+static enum clsph_status open_series(struct sim *sim, struct run_out *o, int append)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  char path[1200], name[SCENE_NAME + 32], prefix[SCENE_NAME + 2];
+  const char *mode = append ? "a" : "w";
+  if (s->nprobes > 0) {
+    CLSPH_TRY(path_in(o, "probes.csv", path, sizeof path));
+    o->probes = fopen(path, mode);
+    CLSPH_CHECK(o->probes != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
+    if (!append) {
+      fprintf(o->probes, "time");
+      for (int p = 0; p < s->nprobes; ++p) {
+        snprintf(prefix, sizeof prefix, "%s:", s->probes[p].name);
+        csv_field_header(o->probes, &sim->ps, prefix);
+      }
+      fprintf(o->probes, "\n");
+    }
+  }
+  if (s->nprofiles > 0) {
+    o->profiles = calloc((size_t)s->nprofiles, sizeof *o->profiles);
+    CLSPH_CHECK(o->profiles != NULL, CLSPH_E_NOMEM, "out of memory");
+  }
+  for (int p = 0; p < s->nprofiles; ++p) {
+    snprintf(name, sizeof name, "profile_%s.csv", s->profiles[p].name);
+    CLSPH_TRY(path_in(o, name, path, sizeof path));
+    o->profiles[p] = fopen(path, mode);
+    CLSPH_CHECK(o->profiles[p] != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
+    if (!append) {
+      fprintf(o->profiles[p], "time,s,x,y");
+      csv_field_header(o->profiles[p], &sim->ps, "");
+      fprintf(o->profiles[p], "\n");
+    }
+  }
+  if (s->nforces > 0) {
+    CLSPH_TRY(path_in(o, "forces.csv", path, sizeof path));
+    o->forces = fopen(path, mode);
+    CLSPH_CHECK(o->forces != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
+    if (!append) {
+      fprintf(o->forces, "time");
+      for (int g = 0; g < s->nforces; ++g)
+        fprintf(o->forces, ",%s:fx,%s:fy", s->forces[g], s->forces[g]);
+      fprintf(o->forces, "\n");
+    }
+  }
+done:
+  return st;
+}
+
+/* Sample every recorded field at np points; one row of values per point into rows. */
+static enum clsph_status sample_all(struct sim *sim, size_t np, const double *at, double *rows,
+                                    int ncols)
+{
+  enum clsph_status st = CLSPH_OK;
+  double *tmp = malloc(4 * np * sizeof *tmp);
+  int col = 0;
+  CLSPH_CHECK(tmp != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (int k = 0; k < sim->ps.nfields; ++k) {
+    const struct pfield *p = &sim->ps.f[k];
+    if (!sampled(p)) continue;
+    CLSPH_TRY(sim_sample(sim, k, np, at, tmp));
+    for (size_t i = 0; i < np; ++i)
+      for (int c = 0; c < p->nout; ++c)
+        rows[i * (size_t)ncols + (size_t)(col + c)] = tmp[i * (size_t)p->ncomp + (size_t)c];
+    col += p->nout;
+  }
+done:
+  free(tmp);
+  return st;
+}
+
+static int sampled_columns(const struct pset *ps)
+{
+  int n = 0;
+  for (int k = 0; k < ps->nfields; ++k)
+    if (sampled(&ps->f[k])) n += ps->f[k].nout;
+  return n;
+}
+
+static enum clsph_status write_series(struct sim *sim, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  const int nc = sampled_columns(&sim->ps);
+  double *at = NULL, *rows = NULL;
+  if (s->nprobes > 0) {
+    at = malloc(2 * (size_t)s->nprobes * sizeof *at);
+    rows = malloc((size_t)s->nprobes * (size_t)(nc + 1) * sizeof *rows);
+    CLSPH_CHECK(at != NULL && rows != NULL, CLSPH_E_NOMEM, "out of memory");
+    for (int p = 0; p < s->nprobes; ++p) {
+      at[2 * p] = s->probes[p].x[0];
+      at[2 * p + 1] = s->probes[p].x[1];
+    }
+    CLSPH_TRY(sample_all(sim, (size_t)s->nprobes, at, rows, nc));
+    fprintf(o->probes, "%.17g", sim->time);
+    for (int i = 0; i < s->nprobes * nc; ++i) fprintf(o->probes, ",%.9g", rows[i]);
+    fprintf(o->probes, "\n");
+    fflush(o->probes);
+    free(at);
+    free(rows);
+    at = rows = NULL;
+  }
+  for (int p = 0; p < s->nprofiles; ++p) {
+    const struct scene_profile_line *pl = &s->profiles[p];
+    size_t np = (size_t)pl->npts;
+    at = malloc(2 * np * sizeof *at);
+    rows = malloc(np * (size_t)(nc + 1) * sizeof *rows);
+    CLSPH_CHECK(at != NULL && rows != NULL, CLSPH_E_NOMEM, "out of memory");
+    for (size_t i = 0; i < np; ++i) {
+      double t = (double)i / (double)(np - 1);
+      at[2 * i] = pl->a[0] + t * (pl->b[0] - pl->a[0]);
+      at[2 * i + 1] = pl->a[1] + t * (pl->b[1] - pl->a[1]);
+    }
+    CLSPH_TRY(sample_all(sim, np, at, rows, nc));
+    double len = hypot(pl->b[0] - pl->a[0], pl->b[1] - pl->a[1]);
+    for (size_t i = 0; i < np; ++i) {
+      fprintf(o->profiles[p], "%.17g,%.9g,%.9g,%.9g", sim->time, len * (double)i / (double)(np - 1),
+              at[2 * i], at[2 * i + 1]);
+      for (int c = 0; c < nc; ++c)
+        fprintf(o->profiles[p], ",%.9g", rows[i * (size_t)nc + (size_t)c]);
+      fprintf(o->profiles[p], "\n");
+    }
+    fflush(o->profiles[p]);
+    free(at);
+    free(rows);
+    at = rows = NULL;
+  }
+  if (s->nforces > 0) {
+    fprintf(o->forces, "%.17g", sim->time);
+    for (int g = 0; g < s->nforces; ++g) {
+      double f[2];
+      CLSPH_TRY(sim->scheme->wall_force(sim, sim->state, s->forces[g], f));
+      fprintf(o->forces, ",%.9g,%.9g", f[0], f[1]);
+    }
+    fprintf(o->forces, "\n");
+    fflush(o->forces);
+  }
+done:
+  free(at);
+  free(rows);
+  return st;
+}
+
+static void meta_of(const struct sim *sim, struct io_meta *m)
+{
+  memset(m, 0, sizeof *m);
+  m->case_name = sim->scene->name;
+  m->case_path = sim->scene->case_path;
+  m->scheme = sim->scheme->name;
+  m->precision = CLSPH_PRECISION_NAME;
+  m->version = CLSPH_VERSION;
+  m->time = sim->time;
+  m->step = sim->step;
+  m->dt = sim->dt;
+  m->dim = 2;
+  m->params = sim->scene->params;
+  m->nparams = sim->scene->nparams;
+}
+
+static enum clsph_status write_snapshot(struct sim *sim, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  char name[64], path[1200];
+  struct io_meta m;
+  meta_of(sim, &m);
+  snprintf(name, sizeof name, "snap_%06d.h5", o->nsnap);
+  CLSPH_TRY(path_in(o, name, path, sizeof path));
+  CLSPH_TRY(io_snapshot_write(path, sim->dev, &sim->ps, &m));
+  CLSPH_TRY(io_series_add(&o->series, name, sim->time, sim->ps.n));
+  CLSPH_TRY(path_in(o, "snapshots.xdmf", path, sizeof path));
+  CLSPH_TRY(io_xdmf_write(path, &o->series, &sim->ps, 2));
+  CLSPH_TRY(write_series(sim, o));
+  ++o->nsnap;
+done:
+  return st;
+}
+
+static enum clsph_status write_checkpoint(struct sim *sim, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  char name[64], path[1200];
+  struct io_meta m;
+  meta_of(sim, &m);
+  snprintf(name, sizeof name, "checkpoint_%06ld.h5", sim->step);
+  CLSPH_TRY(path_in(o, name, path, sizeof path));
+  CLSPH_TRY(io_checkpoint_write(path, sim->dev, &sim->ps, &m, NULL, 0));
+  log_debug("checkpoint %s at t = %g s", path, sim->time);
+done:
+  return st;
+}
+
+static void close_out(const struct scene *s, struct run_out *o)
+{
+  if (o->probes != NULL) fclose(o->probes);
+  if (o->forces != NULL) fclose(o->forces);
+  for (int p = 0; o->profiles != NULL && p < s->nprofiles; ++p)
+    if (o->profiles[p] != NULL) fclose(o->profiles[p]);
+  free(o->profiles);
+  io_series_free(&o->series);
+}
+
+/* ---- progress ---- */
+
+struct progress {
+  int tty, quiet;
+  double start, last;
+};
+
+static void progress_show(const struct sim *sim, struct progress *pr, int final)
+{
+  double t = now();
+  if (pr->quiet || (!final && t - pr->last < (pr->tty ? 0.2 : 5.0))) return;
+  pr->last = t;
+  double frac = sim->scene->t_end > 0.0 ? sim->time / sim->scene->t_end : 1.0;
+  double el = t - pr->start, rate = el > 0.0 ? (double)sim->step / el : 0.0;
+  double eta = frac > 0.0 ? el * (1.0 - frac) / frac : 0.0;
+  char solver[96] = "";
+  if (sim->solver_steps > 0)
+    snprintf(solver, sizeof solver, "  solver %ld its (res %.1e)", sim->solver_its,
+             sim->solver_res);
+  if (pr->tty) {
+    char bar[21];
+    int fill = (int)(20.0 * fmin(frac, 1.0));
+    for (int i = 0; i < 20; ++i) bar[i] = i < fill ? '=' : ' ';
+    bar[20] = '\0';
+    fprintf(stderr, "\r[%s] t %.4g/%.4g s  step %ld  %.1f steps/s%s  ETA %.0f s   ", bar, sim->time,
+            sim->scene->t_end, sim->step, rate, solver, eta);
+    if (final) fputc('\n', stderr);
+  } else {
+    fprintf(stderr, "t %.6g/%.6g s (%.0f%%)  step %ld  %.1f steps/s%s  ETA %.0f s\n", sim->time,
+            sim->scene->t_end, 100.0 * frac, sim->step, rate, solver, eta);
+  }
+}
+
+/* ---- metrics ---- */
+
+struct metric_ctx {
+  struct sim *sim;
+};
+
+static enum clsph_status metric_stats(void *ctx, const char *field, int comp, int kind, double *mn,
+                                      double *mx, double *mean)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ((struct metric_ctx *)ctx)->sim;
+  real *v = NULL;
+  cl_uint *k = NULL;
+  int idx = pset_find(&sim->ps, field);
+  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  const struct pfield *f = &sim->ps.f[idx];
+  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
+              field, f->nout);
+  size_t n = sim->ps.n;
+  v = malloc(n * f->elem);
+  k = malloc(n * sizeof *k);
+  CLSPH_CHECK(v != NULL && k != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(kern_read(sim->dev, f->d, n * f->elem, v));
+  CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_kind), n * sizeof *k, k));
+  double a = HUGE_VAL, b = -HUGE_VAL, s = 0.0;
+  size_t c = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (kind >= 0 && k[i] != (cl_uint)kind) continue;
+    double x;
+    if (f->type == PF_REAL)
+      x = (double)v[i * (size_t)f->ncomp + (size_t)comp];
+    else
+      x = (double)((const cl_uint *)(const void *)v)[i * (size_t)f->ncomp + (size_t)comp];
+    a = fmin(a, x);
+    b = fmax(b, x);
+    s += x;
+    ++c;
+  }
+  CLSPH_CHECK(c > 0, CLSPH_E_INPUT, "metrics: no particle of that kind");
+  *mn = a;
+  *mx = b;
+  *mean = s / (double)c;
+done:
+  free(k);
+  free(v);
+  return st;
+}
+
+static enum clsph_status metric_sample(void *ctx, const char *field, int comp, double x, double y,
+                                       double *value)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ((struct metric_ctx *)ctx)->sim;
+  double at[2] = {x, y}, out[4];
+  int idx = pset_find(&sim->ps, field);
+  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  CLSPH_CHECK(comp >= 0 && comp < sim->ps.f[idx].nout, CLSPH_E_INPUT,
+              "metrics: field '%s' has %d components", field, sim->ps.f[idx].nout);
+  CLSPH_TRY(sim_sample(sim, idx, 1, at, out));
+  *value = out[comp];
+done:
+  return st;
+}
+
+/* ---- summary ---- */
+
+static enum clsph_status write_summary(struct sim *sim, const struct run_out *o, double wall,
+                                       struct case_script *script)
+{
+  enum clsph_status st = CLSPH_OK;
+  char path[1200];
+  char *text = NULL;
+  FILE *f = NULL;
+  cJSON *root = cJSON_CreateObject();
+  CLSPH_CHECK(root != NULL, CLSPH_E_NOMEM, "out of memory");
+  cJSON_AddStringToObject(root, "case", sim->scene->name);
+  cJSON_AddStringToObject(root, "case_path", sim->scene->case_path);
+  cJSON_AddStringToObject(root, "scheme", sim->scheme->name);
+  cJSON_AddStringToObject(root, "precision", CLSPH_PRECISION_NAME);
+  cJSON_AddStringToObject(root, "device", sim->dev->name);
+  cJSON_AddStringToObject(root, "clsph_version", CLSPH_VERSION);
+  cJSON_AddNumberToObject(root, "particles", (double)sim->ps.n);
+  cJSON_AddNumberToObject(root, "fluid_particles", (double)sim->geom.nfluid);
+  cJSON_AddNumberToObject(root, "steps", (double)sim->step);
+  cJSON_AddNumberToObject(root, "sim_time", sim->time);
+  cJSON_AddNumberToObject(root, "wall_seconds", wall);
+  cJSON_AddNumberToObject(root, "particle_steps_per_second",
+                          wall > 0.0 ? (double)sim->ps.n * (double)sim->step / wall : 0.0);
+  cJSON_AddStringToObject(root, "status", sim->status);
+  cJSON_AddNumberToObject(root, "snapshots", o->nsnap);
+  cJSON *params = cJSON_AddObjectToObject(root, "parameters");
+  for (int i = 0; i < sim->scene->nparams; ++i)
+    cJSON_AddNumberToObject(params, sim->scene->params[i].name, sim->scene->params[i].value);
+  if (sim->solver_steps > 0) {
+    cJSON *sv = cJSON_AddObjectToObject(root, "solver");
+    cJSON_AddNumberToObject(sv, "iterations_mean",
+                            (double)sim->solver_its_sum / (double)sim->solver_steps);
+    cJSON_AddNumberToObject(sv, "iterations_max", (double)sim->solver_its_max);
+  }
+  cJSON *metrics = cJSON_AddObjectToObject(root, "metrics");
+  CLSPH_CHECK(params != NULL && metrics != NULL, CLSPH_E_NOMEM, "out of memory");
+  if (script != NULL && strcmp(sim->status, "ok") == 0) {
+    struct metric_ctx ctx = {sim};
+    struct case_sim_api api = {&ctx,         sim->time,    sim->step, (double)sim->ps.n,
+                               metric_stats, metric_sample};
+    enum clsph_status ms = case_metrics(script, &api, metrics);
+    if (ms != CLSPH_OK) snprintf(sim->status, sizeof sim->status, "metrics failed");
+    cJSON_ReplaceItemInObject(root, "status", cJSON_CreateString(sim->status));
+  }
+  text = cJSON_Print(root);
+  CLSPH_CHECK(text != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(path_in(o, "summary.json", path, sizeof path));
+  f = fopen(path, "w");
+  CLSPH_CHECK(f != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
+  CLSPH_CHECK(fputs(text, f) >= 0 && fputc('\n', f) != EOF, CLSPH_E_IO, "cannot write %s", path);
+done:
+  if (f != NULL && fclose(f) != 0 && st == CLSPH_OK) {
+    log_error("cannot write %s", path);
+    st = CLSPH_E_IO;
+  }
+  free(text);
+  cJSON_Delete(root);
+  return st;
+}
+
+/* ---- the time loop ---- */
+
+/* The next multiple of `every` after time t (a function of t alone, so a restart agrees). */
+static double next_mark(double t, double every)
+{
+  if (!(every > 0.0)) return HUGE_VAL;
+  double k = floor(t / every + 1e-9);
+  double m = (k + 1.0) * every;
+  return m > t ? m : m + every;
+}
+
+enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
+                          struct case_script *script)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  struct run_out o;
+  struct progress pr;
+  memset(&o, 0, sizeof o);
+  memset(&pr, 0, sizeof pr);
+  double start = now();
+
+  CLSPH_CHECK(s->nforces == 0 || sim->scheme->wall_force != NULL, CLSPH_E_INPUT,
+              "%s: force { ... } asks for wall forces, which scheme '%s' does not compute",
+              s->case_path, sim->scheme->name);
+  for (int g = 0; g < s->nforces; ++g) {
+    int found = 0;
+    for (int w = 0; w < s->nwalls; ++w) found |= strcmp(s->walls[w].group, s->forces[g]) == 0;
+    CLSPH_CHECK(found, CLSPH_E_INPUT, "%s: force: no wall group '%s'", s->case_path, s->forces[g]);
+  }
+  CLSPH_TRY(prepare_dir(opt->out_dir));
+  snprintf(o.dir, sizeof o.dir, "%s", opt->out_dir);
+  if (opt->restart != NULL) {
+    struct io_meta expect, got;
+    meta_of(sim, &expect);
+    memset(&got, 0, sizeof got);
+    void *blob = NULL;
+    size_t blob_bytes = 0;
+    CLSPH_TRY(
+        io_checkpoint_read(opt->restart, sim->dev, &sim->ps, &expect, &got, &blob, &blob_bytes));
+    free(blob);
+    sim->time = got.time;
+    sim->step = got.step;
+    sim->dt = got.dt;
+    o.nsnap = s->output_every > 0.0 ? (int)floor(sim->time / s->output_every + 1e-9) + 1 : 1;
+    log_info("restarting from %s at t = %.9g s, step %ld", opt->restart, sim->time, sim->step);
+  }
+  CLSPH_TRY(open_series(sim, &o, 0));
+  pr.tty = isatty(2);
+  pr.quiet = opt->quiet;
+  pr.start = now();
+  if (opt->restart == NULL) CLSPH_TRY(write_snapshot(sim, &o));
+
+  const double t_end = s->t_end;
+  while (sim->time < t_end) {
+    CLSPH_TRY(sim_sort(sim));
+    double dt = HUGE_VAL;
+    if (sim->scheme->max_dt != NULL) CLSPH_TRY(sim->scheme->max_dt(sim, sim->state, &dt));
+    dt *= s->cfl;
+    if (!(dt > 0.0) || (isfinite(dt) && dt < 1e-12 * fmax(t_end, 1.0))) {
+      snprintf(sim->status, sizeof sim->status,
+               "blow-up: the time step collapsed to %g s at step %ld, t = %.9g s", dt, sim->step,
+               sim->time);
+      log_error("%s", sim->status);
+      st = CLSPH_E_BLOWUP;
+      goto done;
+    }
+    /* land exactly on the next output, checkpoint or end */
+    double target = fmin(t_end, fmin(next_mark(sim->time, s->output_every),
+                                     next_mark(sim->time, s->checkpoint_every)));
+    int lands = sim->time + dt >= target * (1.0 - 1e-12);
+    if (lands) dt = target - sim->time;
+    CLSPH_TRY(sim->scheme->step(sim, sim->state, dt));
+    sim->time = lands ? target : sim->time + dt;
+    sim->dt = dt;
+    ++sim->step;
+    if (sim->solver_its > 0) {
+      sim->solver_its_sum += sim->solver_its;
+      sim->solver_steps += 1;
+      if (sim->solver_its > sim->solver_its_max) sim->solver_its_max = sim->solver_its;
+    }
+    CLSPH_TRY(sim_check_flags(sim));
+    int at_end = sim->time >= t_end;
+    if (lands && (at_end || (s->output_every > 0.0 &&
+                             fabs(remainder(sim->time, s->output_every)) < 1e-9 * s->output_every)))
+      CLSPH_TRY(write_snapshot(sim, &o));
+    if (lands &&
+        (at_end || (s->checkpoint_every > 0.0 &&
+                    fabs(remainder(sim->time, s->checkpoint_every)) < 1e-9 * s->checkpoint_every)))
+      CLSPH_TRY(write_checkpoint(sim, &o));
+    progress_show(sim, &pr, 0);
+  }
+  progress_show(sim, &pr, 1);
+done:
+  if (st != CLSPH_OK && strcmp(sim->status, "ok") == 0)
+    snprintf(sim->status, sizeof sim->status, "failed: %s", clsph_status_str(st));
+  if (o.dir[0] != '\0') {
+    enum clsph_status ws = write_summary(sim, &o, now() - start, script);
+    if (st == CLSPH_OK) st = ws;
+    if (st == CLSPH_OK && strcmp(sim->status, "ok") != 0) st = CLSPH_E_INPUT;
+  }
+  close_out(s, &o);
+  return st;
+}
+
+void sim_destroy(struct sim *sim)
+{
+  if (sim->scheme != NULL && sim->scheme->destroy != NULL) sim->scheme->destroy(sim->state);
+  sim->state = NULL;
+  if (sim->k_probe != NULL) clReleaseKernel(sim->k_probe);
+  if (sim->k_max_speed != NULL) clReleaseKernel(sim->k_max_speed);
+  sim->k_probe = sim->k_max_speed = NULL;
+  kern_release(&sim->d_partial);
+  kern_release(&sim->d_flags);
+  grid_destroy(&sim->grid);
+  pset_destroy(&sim->ps);
+  if (sim->prog != NULL) clReleaseProgram(sim->prog);
+  sim->prog = NULL;
+  geometry_free(&sim->geom);
+}

@@ -1,0 +1,66 @@
+/* sim.h: a simulation: the scene's particles on the device, the scheme, and the time loop with its
+ * outputs (snapshots, checkpoints, probes, profiles, forces) and blow-up checks. */
+#ifndef CLSPH_SIM_H
+#define CLSPH_SIM_H
+
+#include "geometry.h"
+#include "io.h"
+#include "ops.h"
+#include "pset.h"
+#include "scene.h"
+#include "smoothing.h"
+
+struct scheme_ops;
+struct case_script;
+
+/** Options of a run from the command line. */
+struct sim_options {
+  const char *out_dir; /* output folder (created) */
+  const char *restart; /* checkpoint to continue from, or NULL */
+  int quiet;           /* no progress line */
+};
+
+struct sim {
+  const struct dev *dev;
+  const struct scene *scene;
+  const struct scheme_ops *scheme;
+  void *state;      /* the scheme's */
+  struct geom geom; /* host copy of the generated particles and wall segments */
+  struct smoothing sm;
+  struct grid_spec gspec;
+  struct grid grid;
+  cl_program prog; /* common kernels + the scheme's */
+  struct pset ps;
+  int f_pos, f_vel, f_kind, f_id, f_vol; /* fields every scheme has (indices in ps) */
+  cl_mem d_flags;                        /* error bits raised by kernels (kernels/common/flags.h) */
+  cl_kernel k_probe;                     /* interpolation at arbitrary points */
+  cl_kernel k_max_speed;                 /* reduction */
+  cl_mem d_partial;                      /* per-work-group partial results of reductions */
+  double time, dt;                       /* simulated time and last step, s */
+  long step;
+  long solver_its;   /* the pressure solver's iterations of the last step (schemes set) */
+  double solver_res; /* and its final relative residual */
+  long solver_its_sum, solver_its_max, solver_steps;
+  char status[256]; /* "ok" or why the run stopped */
+};
+
+/** @brief Set up a simulation of a scene: geometry, program, fields, scheme. Nothing is written. */
+enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, struct sim *out);
+/** @brief Print particle counts, active modules, memory per particle and the first time step. */
+enum clsph_status sim_info(struct sim *sim);
+/** @brief Run to the end time, writing the outputs into opt->out_dir (see README). */
+enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
+                          struct case_script *script);
+/** @brief Sort the particles by cell and reorder every field (before each step). */
+enum clsph_status sim_sort(struct sim *sim);
+/** @brief Read the error flags; a raised flag ends the run with a reason in sim->status. */
+enum clsph_status sim_check_flags(struct sim *sim);
+/** @brief Largest speed over the particles of one kind (−1: all), reduced on the device. */
+enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax);
+/** @brief Interpolate component `comp` of a real field at np points (host array of 2 doubles per
+ *  point); `out` gets ncomp values per point. */
+enum clsph_status sim_sample(struct sim *sim, int field, size_t np, const double *at, double *out);
+/** @brief Release everything. */
+void sim_destroy(struct sim *sim);
+
+#endif /* CLSPH_SIM_H */

@@ -1,0 +1,34 @@
+/* reduce.cl: reductions. Each work-group writes one partial result; the host finishes in double
+ * (STYLE: reductions keep partial sums per work-group). Work-groups have REDUCE_WG items, a power
+ * of two. */
+#ifndef REDUCE_WG
+#define REDUCE_WG 64
+#endif
+
+/* Tree reduction of the local array to its first element (max). */
+void reduce_local_max(__local real *s)
+{
+  const uint l = get_local_id(0);
+  for (uint w = REDUCE_WG / 2; w > 0; w >>= 1) {
+    barrier(CLK_LOCAL_MEM_FENCE);
+    if (l < w) s[l] = fmax(s[l], s[l + w]);
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+}
+
+/* Largest speed |v| over the particles of kind `kind` (all kinds when kind < 0); also raises
+ * CLSPH_FLAG_NAN for a non-finite velocity. */
+__kernel void reduce_max_speed(const uint n, __global const realv *vel, __global const uint *kind,
+                               const int only, __global real *partial, __global uint *flags)
+{
+  __local real s[REDUCE_WG];
+  const uint i = get_global_id(0), l = get_local_id(0);
+  real v = R(0.0);
+  if (i < n && (only < 0 || kind[i] == (uint)only)) {
+    v = length(vel[i]);
+    if (!isfinite(v)) flags_raise(flags, CLSPH_FLAG_NAN);
+  }
+  s[l] = v;
+  reduce_local_max(s);
+  if (l == 0) partial[get_group_id(0)] = s[0];
+}

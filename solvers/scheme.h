@@ -1,0 +1,37 @@
+/* scheme.h: the one interface every scheme implements. A scheme is one solvers/<name>/ folder
+ * (host side) and one kernels/<name>/ folder (device side), listed in solvers/registry.c. */
+#ifndef CLSPH_SCHEME_H
+#define CLSPH_SCHEME_H
+
+#include "prog.h"
+
+struct sim;
+
+struct scheme_ops {
+  const char *name;           /* "isph-usaw" */
+  const char *summary;        /* one line with its reference */
+  const char *const *sources; /* kernels after the common ones, NULL-terminated */
+  const char *wall_model;     /* what the geometry makes: "usaw", "dummy" or "none" */
+  const char *smoothing;      /* default smoothing function name */
+  double h_over_dr;           /* default smoothing length / spacing */
+  const char *const *options; /* option names the scheme accepts, NULL-terminated */
+  /** -D switches of the scheme's kernels (NULL: none). */
+  enum clsph_status (*define)(const struct sim *sim, struct prog_opts *o);
+  /** Add the scheme's particle fields and kernels; called after the common fields exist. */
+  enum clsph_status (*create)(struct sim *sim, void **state);
+  /** Advance by dt (the particles are sorted by cell and the cell table is current). */
+  enum clsph_status (*step)(struct sim *sim, void *state, double dt);
+  /** Largest stable time step now, s (before the case's cfl factor). */
+  enum clsph_status (*max_dt)(struct sim *sim, void *state, double *dt);
+  /** Force of the fluid on the walls of group `group` (index in scene walls), N/m (NULL: the
+   *  scheme computes no wall forces). */
+  enum clsph_status (*wall_force)(struct sim *sim, void *state, const char *group, double f[2]);
+  void (*destroy)(void *state);
+};
+
+/** @brief The scheme called `name`; an unknown name is reported with the list of schemes. */
+enum clsph_status scheme_find(const char *name, const struct scheme_ops **out);
+/** @brief Print the schemes, one line each. */
+void scheme_print_list(void);
+
+#endif /* CLSPH_SCHEME_H */

@@ -1,0 +1,68 @@
+# Case scripts, runs and their outputs. Every shipped case loads and `clsph info` succeeds; each
+# kind of bad input is refused with its message and a non-zero exit; small runs end to end.
+set(CASE_DIR ${CMAKE_CURRENT_SOURCE_DIR}/case)
+file(GLOB shipped_cases CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/cases/*.lua)
+foreach(c IN LISTS shipped_cases)
+  get_filename_component(n ${c} NAME_WE)
+  clsph_cli_test(case_info_${n} ARGS info ${c} RC 0 REGEX "particles: [0-9]+ \\(fluid [1-9]"
+                 REGEX2 "memory: [0-9]+ B per particle")
+endforeach()
+
+clsph_cli_test(case_lua_error ARGS info ${CASE_DIR}/bad_syntax.lua RC 2
+               REGEX "bad_syntax.lua:[0-9]+:")
+clsph_cli_test(case_unknown_key ARGS info ${CASE_DIR}/bad_key.lua RC 2
+               REGEX "bad_key.lua:5: fill: unknown key 'nmae'; did you mean 'name'\\?")
+clsph_cli_test(case_unknown_set ARGS info ${CMAKE_SOURCE_DIR}/cases/free_fall.lua --set dx=0.1
+               RC 2 REGEX "--set dx: .*declares no parameter 'dx'; did you mean 'dr'\\?")
+clsph_cli_test(case_bad_set_value ARGS info ${CMAKE_SOURCE_DIR}/cases/free_fall.lua --set dr=fine
+               RC 2 REGEX "--set dr=fine: 'fine' is not a number")
+clsph_cli_test(case_bad_dr ARGS info ${CASE_DIR}/bad_dr.lua RC 2
+               REGEX "bad_dr.lua:3: particles: dr must be a positive spacing")
+clsph_cli_test(case_sandbox_io ARGS info ${CASE_DIR}/bad_sandbox.lua RC 2
+               REGEX "bad_sandbox.lua:2: .*global 'io'")
+clsph_cli_test(case_sandbox_os ARGS info ${CASE_DIR}/bad_os.lua RC 2
+               REGEX "bad_os.lua:1: .*global 'os'")
+clsph_cli_test(case_sandbox_load ARGS info ${CASE_DIR}/bad_load.lua RC 2
+               REGEX "bad_load.lua:1: .*global 'load'")
+clsph_cli_test(case_unknown_scheme ARGS info ${CASE_DIR}/bad_scheme.lua RC 2
+               REGEX "unknown scheme 'isph-magic'; schemes: none, ballistic")
+clsph_cli_test(case_unknown_option ARGS info ${CASE_DIR}/bad_option.lua RC 2
+               REGEX "scheme 'none' has no option 'shifting'")
+clsph_cli_test(case_empty_region ARGS info ${CASE_DIR}/bad_empty_region.lua RC 2
+               REGEX "bad_empty_region.lua:5:.*'speck'")
+clsph_cli_test(case_fluid_in_wall ARGS info ${CASE_DIR}/bad_overlap.lua RC 2
+               REGEX "bad_overlap.lua:[56]:.*everywhere")
+clsph_cli_test(case_short_wall ARGS info ${CASE_DIR}/bad_wall.lua RC 2
+               REGEX "bad_wall.lua:4: wall: a polyline needs at least 2 points")
+clsph_cli_test(case_outflow_no_fluid ARGS info ${CASE_DIR}/bad_outflow.lua RC 2
+               REGEX "bad_outflow.lua:7:.*exit")
+clsph_cli_test(case_missing_file ARGS info ${CASE_DIR}/no_such_case.lua RC nonzero
+               REGEX "cannot read case")
+clsph_cli_test(case_unwritable_out RC nonzero
+               ARGS run ${CMAKE_SOURCE_DIR}/cases/free_fall.lua --out /proc/clsph-cannot-write
+               REGEX "output folder /proc/clsph-cannot-write cannot be")
+
+# Runs end to end (ballistic: exact answers known; the bounds are O(dt/t) Euler errors).
+function(clsph_run_test name case)
+  cmake_parse_arguments(T "" "" "SETS;BOUNDS" ${ARGN})
+  string(REPLACE ";" "|" sets "${T_SETS}")
+  string(REPLACE ";" "|" bounds "${T_BOUNDS}")
+  clsph_add_test(${name} LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
+                 -DCASE=${case} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/${name} "-DSETS=${sets}"
+                 "-DBOUNDS=${bounds}" -P ${CASE_DIR}/run_case.cmake)
+endfunction()
+clsph_run_test(run_free_fall ${CMAKE_SOURCE_DIR}/cases/free_fall.lua SETS dr=0.04
+               BOUNDS "drop_error<0.15" "speed_error<1e-4")
+clsph_run_test(run_periodic_drift ${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua SETS dr=0.05
+               BOUNDS "speed_error<1e-4" "x_min>-1e-9" "x_max<1")
+clsph_run_test(run_geometry_showcase ${CMAKE_SOURCE_DIR}/cases/geometry_showcase.lua)
+
+clsph_add_test(restart_bit_for_bit LABELS case COMMAND ${CMAKE_COMMAND}
+               -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/free_fall.lua
+               -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart "-DSETS=dr=0.04|t_end=0.1"
+               -P ${CASE_DIR}/restart.cmake)
+clsph_add_test(restart_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
+               -DCASE_A=${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua
+               -DCASE_B=${CMAKE_SOURCE_DIR}/cases/free_fall.lua
+               -DNOT_CHECKPOINT=${CMAKE_SOURCE_DIR}/README.md
+               -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart_refused -P ${CASE_DIR}/restart_refused.cmake)

@@ -1,0 +1,1 @@
+local chunk = load("return 1")
