@@ -66,3 +66,10 @@ clsph_add_test(restart_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TA
                -DCASE_B=${CMAKE_SOURCE_DIR}/cases/free_fall.lua
                -DNOT_CHECKPOINT=${CMAKE_SOURCE_DIR}/README.md
                -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart_refused -P ${CASE_DIR}/restart_refused.cmake)
+# A run that blows up stops with the step and the reason and exits non-zero (ballistic particles
+# fall through the floor, which they do not see, and leave the domain).
+clsph_cli_test(run_blowup_escape RC 1
+               ARGS run ${CMAKE_SOURCE_DIR}/cases/free_fall.lua --set t_end=3 --set dr=0.05
+                    --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/blowup
+               REGEX "blow-up: a particle left the domain at step [0-9]+")
+clsph_cli_test(run_needs_case ARGS run RC 2 REGEX "run: name the case script")
