@@ -1,0 +1,43 @@
+/* csr.cl: operators stored per step as compressed sparse rows (the "stored" way of applying a
+ * pressure operator): row i holds its diagonal first, then one entry per neighbour within the
+ * support in the order of the neighbour loop (grid.cl), so a scheme's coefficient kernel and
+ * csr_count agree on the layout. Row starts come from the exclusive scan of grid.cl. */
+
+/* count[i] = 1 (diagonal) + neighbours j ≠ i within the support */
+__kernel void csr_count(const uint n, const struct grid g, __global const uint *cell_start,
+                        __global const realv *pos, __global uint *count)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  const realv x = pos[i];
+  uint c = 1;
+  struct neigh_iter it;
+  neigh_begin(&it, &g, x);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = x - (pos[j] + it.shift);
+    if (dot(r, r) < SMOOTH_SUPPORT2 && j != i) ++c;
+  }
+  count[i] = c;
+}
+
+/* y <- A x */
+__kernel void csr_spmv(const uint n, __global const uint *row, __global const uint *col,
+                       __global const real *val, __global const real *x, __global real *y)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  real s = R(0.0);
+  const uint end = row[i + 1];
+  for (uint k = row[i]; k < end; ++k) s += val[k] * x[col[k]];
+  y[i] = s;
+}
+
+/* d <- diag(A) */
+__kernel void csr_diag(const uint n, __global const uint *row, __global const real *val,
+                       __global real *d)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  d[i] = val[row[i]];
+}

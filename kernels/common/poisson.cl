@@ -1,0 +1,88 @@
+/* poisson.cl: the Morris Laplacian as a pressure operator, with and without the kernel-gradient
+ * correction (-D KGC=1), and Dirichlet rows:
+ *   (A x)_i = Σ_j 2 V_j (x_i − x_j) r_ij·L_i∇_i W_ij / (r_ij² + η²)    (Morris et al. 1997;
+ *                                                                       Hosseini & Feng eq 29)
+ *   (A x)_i = x_i   for a Dirichlet row (dirichlet[i] != 0: a free-surface, outflow or boundary
+ *                    particle whose value the right-hand side prescribes)
+ * Three entry points share one pair term: poisson_apply (recomputes the kernel terms at every
+ * application), poisson_coeffs (writes them once into the CSR layout of csr.cl) and
+ * poisson_diag (the diagonal, for Jacobi). With KGC the matrix is not symmetric. */
+real poisson_pair(realm L_i, real vol_j, realv r, real r2)
+{
+  return R(2.0) * vol_j * dot(r, op_grad_w(L_i, smoothing_f(sqrt(r2)), r)) / (r2 + SMOOTH_ETA2);
+}
+
+__kernel void poisson_apply(OP_ARGS, __global const uint *dirichlet, __global const real *x,
+                            __global real *y)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  if (dirichlet[i] != 0u) {
+    y[i] = x[i];
+    return;
+  }
+  const realv xi = pos[i];
+  const real x_i = x[i];
+  const realm L_i = OP_LOAD_L(i);
+  real s = R(0.0);
+  struct neigh_iter it;
+  neigh_begin(&it, &g, xi);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = xi - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    s += poisson_pair(L_i, vol[j], r, r2) * (x_i - x[j]);
+  }
+  y[i] = s;
+}
+
+__kernel void poisson_coeffs(OP_ARGS, __global const uint *dirichlet, __global const uint *row,
+                             __global uint *col, __global real *val)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  const int fixed = dirichlet[i] != 0u;
+  const realv xi = pos[i];
+  const realm L_i = OP_LOAD_L(i);
+  uint k = row[i] + 1;
+  real diag = R(0.0);
+  struct neigh_iter it;
+  neigh_begin(&it, &g, xi);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = xi - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    real c = fixed ? R(0.0) : poisson_pair(L_i, vol[j], r, r2);
+    diag += c;
+    col[k] = j;
+    val[k] = -c;
+    ++k;
+  }
+  col[row[i]] = i;
+  val[row[i]] = fixed ? R(1.0) : diag;
+}
+
+__kernel void poisson_diag(OP_ARGS, __global const uint *dirichlet, __global real *d)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  if (dirichlet[i] != 0u) {
+    d[i] = R(1.0);
+    return;
+  }
+  const realv xi = pos[i];
+  const realm L_i = OP_LOAD_L(i);
+  real s = R(0.0);
+  struct neigh_iter it;
+  neigh_begin(&it, &g, xi);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = xi - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    s += poisson_pair(L_i, vol[j], r, r2);
+  }
+  d[i] = s;
+}

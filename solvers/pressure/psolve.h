@@ -1,0 +1,110 @@
+/* psolve.h: the pressure solve, on the device. A scheme supplies its operator (struct psolve_op);
+ * the solver is a matrix-free preconditioned BiCGStab (van der Vorst 1992) whose operator is a
+ * kernel launch over neighbours, either recomputing the kernel terms at every application or
+ * applying coefficients stored once per step in a CSR layout; dot products are device reductions
+ * and a few scalars per iteration come back to the host. UMFPACK (SuiteSparse) on the same
+ * operator, assembled on the host, is the reference and the "direct" solver of small scenes. */
+#ifndef CLSPH_PSOLVE_H
+#define CLSPH_PSOLVE_H
+
+#include "kern.h"
+#include "prog.h"
+
+/** The operator of a linear system A x = b over the particles, supplied by a scheme. */
+struct psolve_op {
+  void *ctx;
+  size_t n; /* unknowns */
+  /** y = A x, recomputing the kernel terms. */
+  enum clsph_status (*apply)(void *ctx, cl_mem x, cl_mem y);
+  /** d = diag(A). */
+  enum clsph_status (*diagonal)(void *ctx, cl_mem d);
+  /** count[i] = entries of row i (the diagonal first, then the neighbours; csr.cl). */
+  enum clsph_status (*row_counts)(void *ctx, cl_mem count);
+  /** Write the entries of every row at row[i] .. row[i+1] − 1 (column, value). */
+  enum clsph_status (*coefficients)(void *ctx, cl_mem row, cl_mem col, cl_mem val);
+};
+
+enum psolve_method { PSOLVE_BICGSTAB = 0, PSOLVE_DIRECT };
+enum psolve_apply { PSOLVE_STORED = 0, PSOLVE_RECOMPUTE };
+enum psolve_precond { PSOLVE_JACOBI = 0, PSOLVE_NONE, PSOLVE_JACOBI_SWEEPS };
+enum psolve_singular {
+  PSOLVE_REGULAR = 0, /* the system has a unique solution (Dirichlet rows somewhere) */
+  PSOLVE_REINFORCE,   /* A + ε diag(A): Leroy et al. 2014 sec 3.3, "a slight reinforcement" */
+  PSOLVE_MEAN         /* consistent singular system: mean-free right-hand side and solution */
+};
+
+/** Options (defaults from psolve_defaults()). */
+struct psolve_options {
+  enum psolve_method method;
+  enum psolve_apply apply;
+  enum psolve_precond precond;
+  int sweeps; /* Jacobi sweeps per application of PSOLVE_JACOBI_SWEEPS */
+  enum psolve_singular singular;
+  double reinforce; /* ε of PSOLVE_REINFORCE */
+  double rtol;      /* stop when ||b − A x|| <= rtol ||b|| */
+  double atol;      /* or when ||b − A x|| <= atol */
+  int max_it;       /* iterations per solve */
+  int max_failures; /* consecutive non-converged solves before the run stops */
+};
+
+/** Reasons: > 0 converged, < 0 failed. */
+enum psolve_reason {
+  PSOLVE_CONVERGED_RTOL = 1,
+  PSOLVE_CONVERGED_ATOL = 2,
+  PSOLVE_DIVERGED_ITS = -1,       /* max_it reached */
+  PSOLVE_DIVERGED_BREAKDOWN = -2, /* rho or omega vanished again right after a restart */
+  PSOLVE_DIVERGED_NANORINF = -3,  /* a dot product or norm is not finite */
+};
+
+struct psolve_result {
+  enum psolve_reason reason;
+  int its;        /* iterations (operator applications / 2) */
+  double rnorm;   /* final ||b − A x|| / ||b|| */
+  int restarts;   /* breakdown restarts */
+  double seconds; /* wall time of the solve (setup of the stored layout included) */
+};
+
+struct psolve {
+  const struct dev *dev;
+  struct psolve_options opt;
+  size_t cap;   /* vector length the buffers hold */
+  int failures; /* consecutive non-converged solves */
+  cl_kernel k_dot, k_dot2, k_sum, k_axpy, k_waxpy, k_axpbypz, k_p, k_scale, k_sweep, k_add_diag,
+      k_shift, k_invert, k_spmv, k_csr_diag, k_scan_blocks, k_scan_top, k_scan_apply;
+  cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags;
+  cl_mem d_row, d_col, d_val, d_count, d_block; /* stored layout */
+  size_t nnz_cap;
+  int ngroups; /* work-groups of the reductions */
+  double *h_partial;
+  struct kern_timer t_apply; /* device time of operator applications (benchmarks) */
+};
+
+/** @brief Default options: BiCGStab, stored coefficients, Jacobi, rtol 1e-8 (double builds) or
+ *  1e-5 (float builds, whose dot products bottom out near 1e-6), 1000 iterations, 10 failures. */
+void psolve_defaults(struct psolve_options *o);
+/** @brief Set an option by name (`solver = "direct"`, `solver_rtol = 1e-6`, ...): key is one of
+ *  solver, apply, precond, sweeps, singular, reinforce, rtol, atol, max_it. */
+enum clsph_status psolve_set(struct psolve_options *o, const char *key, const char *text,
+                             double number);
+/** @brief Kernels (from a program built with PSOLVE_SOURCES) and work vectors for n unknowns. */
+enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n,
+                                const struct psolve_options *opt, struct psolve *out);
+/** @brief Solve A x = b; x holds the initial guess (the previous step's solution) and gets the
+ *  solution. A solve that does not converge is a warning with its residual; max_failures of them
+ *  in a row stop the run (CLSPH_E_BLOWUP). */
+enum clsph_status psolve_solve(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
+                               struct psolve_result *res);
+/** @brief Assemble the operator on the host (CSR, columns sorted, in double) from the stored
+ *  layout; the arrays are malloc'd. Used by the direct solver and the tests. */
+enum clsph_status psolve_assemble(struct psolve *ps, const struct psolve_op *op, size_t **row,
+                                  int **col, double **val);
+/** @brief Solve with UMFPACK on the host (the reference). */
+enum clsph_status psolve_direct(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
+                                struct psolve_result *res);
+/** @brief Release. */
+void psolve_destroy(struct psolve *ps);
+
+/** Kernel sources the solver needs after the neighbour sources (GRID_SOURCES). */
+#define PSOLVE_SOURCES "common/blas1.cl", "common/csr.cl"
+
+#endif /* CLSPH_PSOLVE_H */
