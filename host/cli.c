@@ -21,6 +21,9 @@ void cli_usage(FILE *f)
         "                        search and the SPH operators against exact derivatives\n"
         "  bench neighbours      neighbour search and operator sweeps for 1e4, 1e5, 1e6\n"
         "                        particles, against a native OpenMP loop\n"
+        "  bench psolve          pressure solves of 1e3 .. 1e6 unknowns: BiCGStab (stored or\n"
+        "                        recomputed operator, two preconditioners) and UMFPACK; writes\n"
+        "                        --out/psolve.csv and psolve.png\n"
         "  help                  this text\n"
         "\n"
         "options:\n"
@@ -36,6 +39,7 @@ void cli_usage(FILE *f)
         "  --fast-math           allow -cl-fast-relaxed-math (off by default)\n"
         "  --bench-sizes LIST    particle counts for `bench`, e.g. 1e4,1e5 (default 1e4,1e5,1e6)\n"
         "  --bench-reps N        repetitions per figure; the median is printed (default 7)\n"
+        "  --bench-direct-max N  largest UMFPACK solve of `bench psolve` (default 2e5)\n"
         "  --demo-dr DR          lattice spacing of the demo on the unit square (default 0.01)\n"
         "  --verbose             debug messages (build options, cache hits)\n"
         "  -h, --help            this text\n"
@@ -84,7 +88,8 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
   memset(&c, 0, sizeof c);
   c.device = -1;
   c.bench_reps = 7;
-  c.bench_sizes = "1e4,1e5,1e6";
+  c.bench_sizes = NULL;
+  c.bench_direct_max = 2e5;
   c.demo_dr = 0.01;
 
   for (int i = 1; i < argc; ++i) {
@@ -115,6 +120,8 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
         c.cache_dir = val;
       } else if (strcmp(a, "--bench-sizes") == 0) {
         c.bench_sizes = val;
+      } else if (strcmp(a, "--bench-direct-max") == 0) {
+        CLSPH_TRY(parse_real(a, val, &c.bench_direct_max));
       } else if (strcmp(a, "--bench-reps") == 0) {
         CLSPH_TRY(parse_int(a, val, 1, 1000, &c.bench_reps));
       } else if (strcmp(a, "--demo-dr") == 0) {
@@ -134,14 +141,17 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
                c.case_path == NULL) {
       c.case_path = a;
     } else if (strcmp(c.command, "bench") == 0 && c.target == NULL) {
-      CLSPH_CHECK(strcmp(a, "neighbours") == 0, CLSPH_E_INPUT,
-                  "unknown benchmark '%s'; benchmarks: neighbours", a);
+      CLSPH_CHECK(strcmp(a, "neighbours") == 0 || strcmp(a, "psolve") == 0, CLSPH_E_INPUT,
+                  "unknown benchmark '%s'; benchmarks: neighbours, psolve", a);
       c.target = a;
     } else {
       CLSPH_CHECK(0, CLSPH_E_INPUT, "unexpected argument '%s' (see clsph --help)", a);
     }
   }
   if (c.command == NULL) c.command = "help";
+  if (c.bench_sizes == NULL)
+    c.bench_sizes =
+        c.target != NULL && strcmp(c.target, "psolve") == 0 ? "1e3,1e4,1e5,1e6" : "1e4,1e5,1e6";
   CLSPH_CHECK((strcmp(c.command, "run") != 0 && strcmp(c.command, "info") != 0) ||
                   c.case_path != NULL,
               CLSPH_E_INPUT, "%s: name the case script, e.g. `clsph %s cases/hydrostatic.lua`",

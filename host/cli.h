@@ -24,6 +24,7 @@ struct cli {
   int verbose;             /* --verbose */
   const char *bench_sizes; /* --bench-sizes 1e4,1e5,1e6 */
   int bench_reps;          /* --bench-reps N */
+  double bench_direct_max; /* --bench-direct-max N: largest UMFPACK solve of `bench psolve` */
   double demo_dr;          /* --demo-dr spacing of the demo lattice */
 };
 
@@ -40,5 +41,7 @@ enum clsph_status info_command(const struct cli *cli);
 enum clsph_status demo_run(const struct cli *cli);
 /** @brief `clsph bench neighbours`. */
 enum clsph_status bench_run(const struct cli *cli);
+/** @brief `clsph bench psolve`. */
+enum clsph_status bench_psolve(const struct cli *cli);
 
 #endif /* CLSPH_CLI_H */

@@ -28,6 +28,8 @@ int main(int argc, char **argv)
     st = dev_list();
   else if (strcmp(cli.command, "demo") == 0)
     st = demo_run(&cli);
+  else if (strcmp(cli.command, "bench") == 0 && strcmp(cli.target, "psolve") == 0)
+    st = bench_psolve(&cli);
   else if (strcmp(cli.command, "bench") == 0)
     st = bench_run(&cli);
   if (st == CLSPH_E_INPUT) return 2;

@@ -24,6 +24,7 @@
 #include "case.h"
 #include "clsph_config.h"
 #include "kern.h"
+#include "psolve.h"
 
 static const char *const common_sources[] = {OPS_SOURCES, "common/reduce.cl", "common/probe.cl"};
 
@@ -854,6 +855,27 @@ done:
     if (st == CLSPH_OK && strcmp(sim->status, "ok") != 0) st = CLSPH_E_INPUT;
   }
   close_out(s, &o);
+  return st;
+}
+
+enum clsph_status sim_psolve_options(const struct sim *sim, struct psolve_options *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  psolve_defaults(o);
+  for (int i = 0; i < s->noptions; ++i) {
+    const struct scene_option *opt = &s->options[i];
+    const char *key = NULL;
+    if (strcmp(opt->key, "solver") == 0)
+      key = "solver";
+    else if (strncmp(opt->key, "solver_", 7) == 0)
+      key = opt->key + 7;
+    if (key == NULL) continue;
+    enum clsph_status os = psolve_set(o, key, opt->is_number ? NULL : opt->text,
+                                      opt->is_number ? opt->number : (double)NAN);
+    CLSPH_CHECK(os == CLSPH_OK, os, "%s: in scheme option %s", s->case_path, opt->key);
+  }
+done:
   return st;
 }
 

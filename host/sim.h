@@ -60,6 +60,10 @@ enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax);
 /** @brief Interpolate component `comp` of a real field at np points (host array of 2 doubles per
  *  point); `out` gets ncomp values per point. */
 enum clsph_status sim_sample(struct sim *sim, int field, size_t np, const double *at, double *out);
+struct psolve_options;
+/** @brief The pressure-solver options a case sets through its scheme options (`solver =
+ *  "direct"`, `solver_rtol = 1e-6`, ...), over the defaults. */
+enum clsph_status sim_psolve_options(const struct sim *sim, struct psolve_options *o);
 /** @brief Release everything. */
 void sim_destroy(struct sim *sim);
 

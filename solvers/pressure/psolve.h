@@ -86,6 +86,12 @@ void psolve_defaults(struct psolve_options *o);
  *  solver, apply, precond, sweeps, singular, reinforce, rtol, atol, max_it. */
 enum clsph_status psolve_set(struct psolve_options *o, const char *key, const char *text,
                              double number);
+/** Scheme options that reach the solver (a scheme lists them among its options): `solver` is
+ *  psolve_set's "solver", `solver_X` its "X". */
+#define PSOLVE_OPTION_NAMES                                                                        \
+  "solver", "solver_apply", "solver_precond", "solver_sweeps", "solver_singular",                  \
+      "solver_reinforce", "solver_rtol", "solver_atol", "solver_max_it"
+
 /** @brief Kernels (from a program built with PSOLVE_SOURCES) and work vectors for n unknowns. */
 enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n,
                                 const struct psolve_options *opt, struct psolve *out);

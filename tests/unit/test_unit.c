@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "grid.h"
+#include "psolve.h"
 #include "lattice.h"
 #include "rng.h"
 #include "smoothing.h"
@@ -113,6 +114,23 @@ static void check_rng_lattice(void)
            "negative spacing refused");
 }
 
+static void check_solver_options(void)
+{
+  struct psolve_options o;
+  psolve_defaults(&o);
+  TC_CHECK(o.method == PSOLVE_BICGSTAB && o.precond == PSOLVE_JACOBI && o.max_it > 0,
+           "solver defaults: BiCGStab with Jacobi");
+  TC_CHECK(psolve_set(&o, "solver", "direct", 0) == CLSPH_OK && o.method == PSOLVE_DIRECT,
+           "solver = \"direct\" selects UMFPACK");
+  TC_CHECK(psolve_set(&o, "rtol", NULL, 1e-6) == CLSPH_OK && o.rtol == 1e-6, "solver_rtol");
+  TC_CHECK(psolve_set(&o, "solver", "gmres", 0) == CLSPH_E_INPUT, "an unknown solver is refused");
+  TC_CHECK(psolve_set(&o, "rtol", NULL, 2.0) == CLSPH_E_INPUT, "rtol >= 1 is refused");
+  TC_CHECK(psolve_set(&o, "max_it", NULL, 0) == CLSPH_E_INPUT, "max_it 0 is refused");
+  TC_CHECK(psolve_set(&o, "singular", "mean", 0) == CLSPH_OK && o.singular == PSOLVE_MEAN,
+           "solver_singular = \"mean\"");
+  TC_CHECK(psolve_set(&o, "colour", "red", 0) == CLSPH_E_INPUT, "an unknown option is refused");
+}
+
 int main(void)
 {
   log_set_level(LOG_ERROR);
@@ -121,5 +139,6 @@ int main(void)
   check_smoothing();
   check_grid_input();
   check_rng_lattice();
+  check_solver_options();
   return tc_finish("test_unit");
 }
