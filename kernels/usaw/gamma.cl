@@ -1,0 +1,112 @@
+/* gamma.cl: wall renormalisation of the unified semi-analytical walls (Leroy et al. 2014),
+ * computed analytically for the 2-D Wendland C2 kernel (eqs 55-62, clean transcription in
+ * shared/notes/usaw_gamma.md), and its gradient per segment (eq 6).
+ *
+ *   γ_a = 1 − Σ_s γ̃_as                                                            (56)
+ *   γ̃_as = sign(d)/(4π) [sign(y2) ψ(q_a0, ζ2) − sign(y1) ψ(q_a0, ζ1)]              (60)
+ *   ζ_i = min(½ √(q̃_a0² + y_i²/h²), 1),  q̃_a0 = min(q_a0, 2)                        (59)
+ *   ψ(q, ζ) = q √(ζ² − q²/4) P(q, ζ) − (5q²/8 + 21)(q⁵/16) arccosh(2ζ/q)
+ *             + 2 arctan √(4ζ²/q² − 1)                                              (61)
+ *   ∇γ_as = n_s ∫_s w(r_a − r') dl'                                                 (6)
+ * For segment s from v1 to v2 with unit normal n_s into the fluid: r_0 is the foot of the
+ * perpendicular from r_a, d = n_s·(r_a − r_0), q_a0 = |d|/h, y_i = (v_i − r_0)·t_s. On the line
+ * of a segment (q_a0 → 0) γ̃_as = (sign y2 − sign y1)/4 (eq 62): ½ on the segment, 0 beyond it.
+ * At a vertex particle itself that rule would count both adjacent segments as reach-planes, so a
+ * vertex takes its own γ_v = θ_v/2π (Table 2), θ_v the fluid angle the geometry computed.
+ * Segments live in their own cell grid (struct grid g_seg, binned by midpoint, cells of at least
+ * (support + reach the longest segment) / GRID_SUB). */
+#ifndef USAW_GL
+#define USAW_GL 8 /* Gauss-Legendre points of the segment integral of eq 6 */
+#endif
+
+real usaw_sign(real x)
+{
+  return x > R(0.0) ? R(1.0) : (x < R(0.0) ? R(-1.0) : R(0.0));
+}
+
+/* eq 61 */
+real usaw_psi(real q, real z)
+{
+  const real q2 = q * q;
+  const real s = sqrt(fmax(z * z - R(0.25) * q2, R(0.0)));
+  const real c = R(5.0) / R(8.0) * q2 + R(21.0);
+  const real p = ((((R(-4.0) / R(3.0) * z + R(7.0)) * z - (R(5.0) / R(12.0) * q2 + R(14.0))) * z +
+                   R(7.0) / R(3.0) * (q2 + R(5.0))) *
+                      z -
+                  R(0.25) * c * q2) *
+                     z +
+                 R(7.0) / R(6.0) * q2 * q2 + R(35.0) / R(6.0) * q2 - R(7.0);
+  const real q5 = q2 * q2 * q;
+  return q * s * p - c * q5 / R(16.0) * acosh(fmax(R(2.0) * z / q, R(1.0))) +
+         R(2.0) * atan(sqrt(fmax(R(4.0) * z * z / q2 - R(1.0), R(0.0))));
+}
+
+/* γ̃_as of the segment a→b (normal n into the fluid) seen from x (eqs 58-60, 62). */
+real usaw_gamma_seg(realv x, realv a, realv b, realv n)
+{
+  const real inv_h = SMOOTH_INV_H;
+  realv t = b - a;
+  const real len = length(t);
+  t /= len;
+  const real d = dot(x - a, n);
+  const real q0 = fabs(d) * inv_h;
+  if (q0 >= R(2.0)) return R(0.0);
+  const real ya = -dot(x - a, t), yb = ya + len; /* ends along t from the foot r_0 */
+  if (q0 < R(1e-9)) return R(0.25) * (usaw_sign(yb) - usaw_sign(ya)); /* eq 62 */
+  const real za = fmin(R(0.5) * sqrt(q0 * q0 + ya * ya * inv_h * inv_h), R(1.0));
+  const real zb = fmin(R(0.5) * sqrt(q0 * q0 + yb * yb * inv_h * inv_h), R(1.0));
+  return usaw_sign(d) / (R(4.0) * R(3.14159265358979323846)) *
+         (usaw_sign(yb) * usaw_psi(q0, zb) - usaw_sign(ya) * usaw_psi(q0, za));
+}
+
+/* ∇γ_as = n ∫ w over the part of the segment inside the support (eq 6), Gauss-Legendre. */
+realv usaw_grad_gamma_seg(realv x, realv a, realv b, realv n)
+{
+  const real gx[8] = {R(-0.9602898564975363), R(-0.7966664774136267), R(-0.5255324099163290),
+                      R(-0.1834346424956498), R(0.1834346424956498),  R(0.5255324099163290),
+                      R(0.7966664774136267),  R(0.9602898564975363)};
+  const real gw[8] = {R(0.1012285362903763), R(0.2223810344533745), R(0.3137066661225691),
+                      R(0.3626837833783620), R(0.3626837833783620), R(0.3137066661225691),
+                      R(0.2223810344533745), R(0.1012285362903763)};
+  realv t = b - a;
+  const real len = length(t);
+  t /= len;
+  const real d = dot(x - a, n);
+  const real reach2 = SMOOTH_SUPPORT2 - d * d;
+  if (reach2 <= R(0.0)) return (realv)(R(0.0));
+  const real reach = sqrt(reach2), yfoot = dot(x - a, t); /* foot at a + yfoot t */
+  const real lo = fmax(R(0.0), yfoot - reach), hi = fmin(len, yfoot + reach);
+  if (hi <= lo) return (realv)(R(0.0));
+  real s = R(0.0);
+  for (int k = 0; k < USAW_GL; ++k) {
+    real y = R(0.5) * (lo + hi) + R(0.5) * (hi - lo) * gx[k];
+    real dy = y - yfoot;
+    s += gw[k] * smoothing_w(sqrt(d * d + dy * dy));
+  }
+  return R(0.5) * (hi - lo) * s * n;
+}
+
+/* γ_a and ∇γ_a = Σ_s ∇γ_as (eq 7) of every particle, from the segments near it; 1 and 0 away
+ * from the walls; θ_v/2π at a vertex particle (theta > 0). */
+__kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const uint *seg_start,
+                         __global const realv *seg_a, __global const realv *seg_b,
+                         __global const realv *seg_n, __global const realv *pos,
+                         __global const real *theta, __global real *gamma,
+                         __global realv *grad_gamma)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  const realv x = pos[i];
+  real g = R(1.0);
+  realv gg = (realv)(R(0.0));
+  struct neigh_iter it;
+  neigh_begin(&it, &g_seg, x);
+  uint s;
+  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+    const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, nn = seg_n[s];
+    g -= usaw_gamma_seg(x, a, b, nn);
+    gg += usaw_grad_gamma_seg(x, a, b, nn);
+  }
+  gamma[i] = theta[i] > R(0.0) ? theta[i] / (R(2.0) * R(3.14159265358979323846)) : g;
+  grad_gamma[i] = gg;
+}

@@ -1,0 +1,83 @@
+/* walls.c: USAW wall segments on the device (see walls.h). */
+#include "walls.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "clsph_config.h"
+
+enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
+                                    const struct usaw_segments *segs, const struct grid_spec *box,
+                                    struct usaw_walls *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct usaw_walls w;
+  real *buf = NULL;
+  const cl_uint zero = 0;
+  const size_t n = segs->n, vs = (size_t)(box->dim == 2 ? 2 : 4);
+  memset(&w, 0, sizeof w);
+  CLSPH_CHECK(box->dim == 2, CLSPH_E_UNSUPPORTED, "USAW walls are 2-D");
+  buf = calloc(4 * vs * (n > 0 ? n : 1), sizeof *buf);
+  CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory for %zu segments", n);
+  double lmax = 0.0;
+  for (size_t s = 0; s < n; ++s)
+    lmax =
+        fmax(lmax, hypot(segs->b[2 * s] - segs->a[2 * s], segs->b[2 * s + 1] - segs->a[2 * s + 1]));
+  /* the segments' grid: a segment within the support of a particle has its midpoint within
+   * support + length/2 of it */
+  struct grid_spec gs = *box;
+  gs.support = box->support + 0.5 * lmax;
+  CLSPH_TRY(grid_create(dev, prog, &gs, n > 0 ? n : 1, &w.g));
+  real *mid = buf, *a = buf + vs * n, *b = buf + 2 * vs * n, *nn = buf + 3 * vs * n;
+  for (size_t s = 0; s < n; ++s) {
+    for (size_t c = 0; c < 2; ++c) {
+      a[vs * s + c] = (real)segs->a[2 * s + c];
+      b[vs * s + c] = (real)segs->b[2 * s + c];
+      nn[vs * s + c] = (real)segs->normal[2 * s + c];
+      mid[vs * s + c] = (real)(0.5 * (segs->a[2 * s + c] + segs->b[2 * s + c]));
+    }
+  }
+  pset_init(&w.ps, n, n > 0 ? n : 1);
+  CLSPH_TRY(pset_add(&w.ps, dev, "mid", vs * sizeof(real), mid, &w.f_mid));
+  CLSPH_TRY(pset_add(&w.ps, dev, "a", vs * sizeof(real), a, &w.f_a));
+  CLSPH_TRY(pset_add(&w.ps, dev, "b", vs * sizeof(real), b, &w.f_b));
+  CLSPH_TRY(pset_add(&w.ps, dev, "n", vs * sizeof(real), nn, &w.f_n));
+  CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &w.d_flags, "segment flags"));
+  CLSPH_TRY(prog_kernel(prog, "usaw_gamma", &w.k_gamma));
+  if (n > 0) {
+    CLSPH_TRY(grid_sort(&w.g, dev, n, pset_mem(&w.ps, w.f_mid), w.d_flags));
+    CLSPH_TRY(pset_reorder(&w.ps, &w.g, dev));
+  } else {
+    CLSPH_TRY(kern_fill(dev, w.g.d_start, &zero, sizeof zero, (w.g.ncells + 1) * sizeof zero));
+  }
+  *out = w;
+  memset(&w, 0, sizeof w);
+done:
+  usaw_walls_destroy(&w);
+  free(buf);
+  return st;
+}
+
+enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, size_t n,
+                                   cl_mem d_pos, cl_mem d_theta, cl_mem d_gamma,
+                                   cl_mem d_grad_gamma)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_uint np = (cl_uint)n;
+  cl_mem a = pset_mem(&w->ps, w->f_a), b = pset_mem(&w->ps, w->f_b), nn = pset_mem(&w->ps, w->f_n);
+  CLSPH_TRY(KERN_SET(w->k_gamma, KARG(np), KARG(w->g.geom), KARG(w->g.d_start), KARG(a), KARG(b),
+                     KARG(nn), KARG(d_pos), KARG(d_theta), KARG(d_gamma), KARG(d_grad_gamma)));
+  CLSPH_TRY(kern_launch(dev, w->k_gamma, n, NULL));
+done:
+  return st;
+}
+
+void usaw_walls_destroy(struct usaw_walls *w)
+{
+  if (w->k_gamma != NULL) clReleaseKernel(w->k_gamma);
+  w->k_gamma = NULL;
+  kern_release(&w->d_flags);
+  pset_destroy(&w->ps);
+  grid_destroy(&w->g);
+}

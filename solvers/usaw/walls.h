@@ -1,0 +1,39 @@
+/* walls.h: the wall segments of the unified semi-analytical walls (Leroy et al. 2014) on the
+ * device, shared by isph-usaw and wcsph-usaw: their fields, their own cell grid (binned by
+ * midpoint), and the analytic wall renormalisation γ_a and ∇γ_a (kernels/usaw/gamma.cl). */
+#ifndef CLSPH_USAW_WALLS_H
+#define CLSPH_USAW_WALLS_H
+
+#include "grid.h"
+#include "pset.h"
+
+/** Kernel sources after the grid and smoothing sources. */
+#define USAW_SOURCES "usaw/gamma.cl"
+
+/** Segments on the host, one per entry: ends a and b, unit normal into the fluid. */
+struct usaw_segments {
+  size_t n;
+  const double *a, *b, *normal; /* n x 2 each */
+};
+
+struct usaw_walls {
+  struct grid g;  /* the segments' grid: cells of at least (support + max length/2)/GRID_SUB */
+  struct pset ps; /* segment fields: mid, a, b, n (realv) */
+  int f_mid, f_a, f_b, f_n;
+  cl_kernel k_gamma;
+  cl_mem d_flags;
+};
+
+/** @brief Upload the segments and sort them into their grid.
+ *  @param box the particles' grid spec (domain, periodic axes, support) */
+enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
+                                    const struct usaw_segments *segs, const struct grid_spec *box,
+                                    struct usaw_walls *out);
+/** @brief γ_a and ∇γ_a of n particles at d_pos (theta: θ_v of vertex particles, 0 elsewhere). */
+enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, size_t n,
+                                   cl_mem d_pos, cl_mem d_theta, cl_mem d_gamma,
+                                   cl_mem d_grad_gamma);
+/** @brief Release. */
+void usaw_walls_destroy(struct usaw_walls *w);
+
+#endif /* CLSPH_USAW_WALLS_H */
