@@ -27,6 +27,19 @@ done:
   return st;
 }
 
+enum clsph_status kern_set_at(cl_kernel k, cl_uint index, struct karg a)
+{
+  enum clsph_status st = CLSPH_OK;
+  char name[128];
+  cl_int err = clSetKernelArg(k, index, a.size, a.ptr);
+  if (err != CL_SUCCESS) {
+    log_error("clSetKernelArg(%s, argument %u): %s", kernel_name(k, name, sizeof name), index,
+              dev_cl_error_str(err));
+    st = CLSPH_E_CL;
+  }
+  return st;
+}
+
 enum clsph_status kern_launch_wg(const struct dev *dev, cl_kernel k, size_t n, size_t wg,
                                  struct kern_timer *timer)
 {

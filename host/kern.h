@@ -15,6 +15,8 @@ struct karg {
 
 /** @brief Set all arguments of a kernel, in signature order. */
 enum clsph_status kern_set(cl_kernel k, size_t nargs, const struct karg *args);
+/** @brief Set one argument (for kernels whose arguments are set in several steps). */
+enum clsph_status kern_set_at(cl_kernel k, cl_uint index, struct karg a);
 #define KERN_SET(k, ...)                                                                           \
   kern_set((k), sizeof((struct karg[]){__VA_ARGS__}) / sizeof(struct karg),                        \
            (struct karg[]){__VA_ARGS__})

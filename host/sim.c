@@ -172,6 +172,9 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &sim.d_flags, "flags"));
   CLSPH_TRY(prog_kernel(sim.prog, "probe_sample", &sim.k_probe));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_max_speed", &sim.k_max_speed));
+  CLSPH_TRY(prog_kernel(sim.prog, "reduce_count", &sim.k_count));
+  CLSPH_TRY(prog_kernel(sim.prog, "grid_invert", &sim.k_invert));
+  CLSPH_TRY(kern_buffer(dev, sim.ps.cap * sizeof(cl_uint), NULL, &sim.d_inv, "inverse index"));
   CLSPH_TRY(kern_buffer(dev, (sim.ps.cap / 64 + 2) * sizeof(real), NULL, &sim.d_partial,
                         "reduction partials"));
   if (sim.scheme->create != NULL) CLSPH_TRY(sim.scheme->create(&sim, &sim.state));
@@ -189,7 +192,30 @@ enum clsph_status sim_sort(struct sim *sim)
   CLSPH_TRY(
       grid_sort(&sim->grid, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos), sim->d_flags));
   CLSPH_TRY(pset_reorder(&sim->ps, &sim->grid, sim->dev));
+  cl_uint n = (cl_uint)sim->ps.n;
+  cl_mem id = pset_mem(&sim->ps, sim->f_id);
+  CLSPH_TRY(KERN_SET(sim->k_invert, KARG(n), KARG(id), KARG(sim->d_inv)));
+  CLSPH_TRY(kern_launch(sim->dev, sim->k_invert, sim->ps.n, NULL));
 done:
+  return st;
+}
+
+enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count)
+{
+  enum clsph_status st = CLSPH_OK;
+  real *part = NULL;
+  cl_uint n = (cl_uint)sim->ps.n;
+  size_t groups = (sim->ps.n + 63) / 64;
+  part = malloc(groups * sizeof *part);
+  CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(KERN_SET(sim->k_count, KARG(n), KARG(d_field), KARG(sim->d_partial)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_count, sim->ps.n, 64, NULL));
+  CLSPH_TRY(kern_read(sim->dev, sim->d_partial, groups * sizeof *part, part));
+  double c = 0.0;
+  for (size_t g = 0; g < groups; ++g) c += (double)part[g];
+  *count = c;
+done:
+  free(part);
   return st;
 }
 
@@ -885,7 +911,10 @@ void sim_destroy(struct sim *sim)
   sim->state = NULL;
   if (sim->k_probe != NULL) clReleaseKernel(sim->k_probe);
   if (sim->k_max_speed != NULL) clReleaseKernel(sim->k_max_speed);
-  sim->k_probe = sim->k_max_speed = NULL;
+  if (sim->k_count != NULL) clReleaseKernel(sim->k_count);
+  if (sim->k_invert != NULL) clReleaseKernel(sim->k_invert);
+  sim->k_probe = sim->k_max_speed = sim->k_count = sim->k_invert = NULL;
+  kern_release(&sim->d_inv);
   kern_release(&sim->d_partial);
   kern_release(&sim->d_flags);
   grid_destroy(&sim->grid);

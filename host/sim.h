@@ -36,7 +36,10 @@ struct sim {
   cl_kernel k_probe;                     /* interpolation at arbitrary points */
   cl_kernel k_max_speed;                 /* reduction */
   cl_mem d_partial;                      /* per-work-group partial results of reductions */
-  double time, dt;                       /* simulated time and last step, s */
+  cl_kernel k_count;                     /* reduction: nonzero entries of a uint field */
+  cl_kernel k_invert;                    /* inv[id[k]] = k */
+  cl_mem d_inv;    /* current index of each original particle index (after sim_sort) */
+  double time, dt; /* simulated time and last step, s */
   long step;
   long solver_its;   /* the pressure solver's iterations of the last step (schemes set) */
   double solver_res; /* and its final relative residual */
@@ -57,6 +60,8 @@ enum clsph_status sim_sort(struct sim *sim);
 enum clsph_status sim_check_flags(struct sim *sim);
 /** @brief Largest speed over the particles of one kind (−1: all), reduced on the device. */
 enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax);
+/** @brief Number of nonzero entries of a uint field, reduced on the device. */
+enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count);
 /** @brief Interpolate component `comp` of a real field at np points (host array of 2 doubles per
  *  point); `out` gets ncomp values per point. */
 enum clsph_status sim_sample(struct sim *sim, int field, size_t np, const double *at, double *out);

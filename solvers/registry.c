@@ -6,8 +6,10 @@
 
 extern const struct scheme_ops scheme_none;
 extern const struct scheme_ops scheme_ballistic;
+extern const struct scheme_ops scheme_isph_usaw;
 
-static const struct scheme_ops *const schemes[] = {&scheme_none, &scheme_ballistic};
+static const struct scheme_ops *const schemes[] = {&scheme_none, &scheme_ballistic,
+                                                   &scheme_isph_usaw};
 
 enum clsph_status scheme_find(const char *name, const struct scheme_ops **out)
 {

@@ -25,7 +25,7 @@ clsph_cli_test(case_sandbox_os ARGS info ${CASE_DIR}/bad_os.lua RC 2
 clsph_cli_test(case_sandbox_load ARGS info ${CASE_DIR}/bad_load.lua RC 2
                REGEX "bad_load.lua:1: .*global 'load'")
 clsph_cli_test(case_unknown_scheme ARGS info ${CASE_DIR}/bad_scheme.lua RC 2
-               REGEX "unknown scheme 'isph-magic'; schemes: none, ballistic")
+               REGEX "unknown scheme 'isph-magic'; schemes: none, ballistic, isph-usaw")
 clsph_cli_test(case_unknown_option ARGS info ${CASE_DIR}/bad_option.lua RC 2
                REGEX "scheme 'none' has no option 'shifting'")
 clsph_cli_test(case_empty_region ARGS info ${CASE_DIR}/bad_empty_region.lua RC 2

@@ -270,3 +270,11 @@ __kernel void grid_gather(const uint n, const uint words, __global const uint *p
   const uint i = k / words, w = k - i * words;
   dst[k] = src[perm[i] * words + w];
 }
+
+/* inv[id[k]] = k: where the particle of each original index is now (after a reorder). */
+__kernel void grid_invert(const uint n, __global const uint *id, __global uint *inv)
+{
+  const uint k = get_global_id(0);
+  if (k >= n) return;
+  inv[id[k]] = k;
+}

@@ -32,3 +32,24 @@ __kernel void reduce_max_speed(const uint n, __global const realv *vel, __global
   reduce_local_max(s);
   if (l == 0) partial[get_group_id(0)] = s[0];
 }
+
+/* Sum of a work-group's local values (tree). */
+void reduce_local_sum(__local real *s)
+{
+  const uint l = get_local_id(0);
+  for (uint w = REDUCE_WG / 2; w > 0; w >>= 1) {
+    barrier(CLK_LOCAL_MEM_FENCE);
+    if (l < w) s[l] += s[l + w];
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+}
+
+/* Number of nonzero entries of a uint field (e.g. free-surface flags). */
+__kernel void reduce_count(const uint n, __global const uint *field, __global real *partial)
+{
+  __local real s[REDUCE_WG];
+  const uint i = get_global_id(0), l = get_local_id(0);
+  s[l] = i < n && field[i] != 0u ? R(1.0) : R(0.0);
+  reduce_local_sum(s);
+  if (l == 0) partial[get_group_id(0)] = s[0];
+}

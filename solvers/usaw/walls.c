@@ -14,6 +14,7 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   enum clsph_status st = CLSPH_OK;
   struct usaw_walls w;
   real *buf = NULL;
+  cl_uint *ids = NULL;
   const cl_uint zero = 0;
   const size_t n = segs->n, vs = (size_t)(box->dim == 2 ? 2 : 4);
   memset(&w, 0, sizeof w);
@@ -43,6 +44,14 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   CLSPH_TRY(pset_add(&w.ps, dev, "a", vs * sizeof(real), a, &w.f_a));
   CLSPH_TRY(pset_add(&w.ps, dev, "b", vs * sizeof(real), b, &w.f_b));
   CLSPH_TRY(pset_add(&w.ps, dev, "n", vs * sizeof(real), nn, &w.f_n));
+  ids = calloc(2 * (n > 0 ? n : 1), sizeof *ids);
+  CLSPH_CHECK(ids != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t s = 0; segs->v != NULL && s < n; ++s) {
+    ids[s] = (cl_uint)segs->v[2 * s];
+    ids[n + s] = (cl_uint)segs->v[2 * s + 1];
+  }
+  CLSPH_TRY(pset_add(&w.ps, dev, "v1", sizeof(cl_uint), ids, &w.f_v1));
+  CLSPH_TRY(pset_add(&w.ps, dev, "v2", sizeof(cl_uint), ids + n, &w.f_v2));
   CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &w.d_flags, "segment flags"));
   CLSPH_TRY(prog_kernel(prog, "usaw_gamma", &w.k_gamma));
   if (n > 0) {
@@ -55,6 +64,7 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   memset(&w, 0, sizeof w);
 done:
   usaw_walls_destroy(&w);
+  free(ids);
   free(buf);
   return st;
 }

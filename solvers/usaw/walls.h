@@ -10,16 +10,18 @@
 /** Kernel sources after the grid and smoothing sources. */
 #define USAW_SOURCES "usaw/gamma.cl"
 
-/** Segments on the host, one per entry: ends a and b, unit normal into the fluid. */
+/** Segments on the host, one per entry: ends a and b, unit normal into the fluid, and the
+ *  original indices (ids) of the vertex particles at a and b (or NULL). */
 struct usaw_segments {
   size_t n;
   const double *a, *b, *normal; /* n x 2 each */
+  const size_t *v;              /* n x 2 vertex particle ids, or NULL */
 };
 
 struct usaw_walls {
   struct grid g;  /* the segments' grid: cells of at least (support + max length/2)/GRID_SUB */
   struct pset ps; /* segment fields: mid, a, b, n (realv) */
-  int f_mid, f_a, f_b, f_n;
+  int f_mid, f_a, f_b, f_n, f_v1, f_v2;
   cl_kernel k_gamma;
   cl_mem d_flags;
 };

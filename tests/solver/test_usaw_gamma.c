@@ -132,7 +132,7 @@ int main(void)
     n[2 * s] = 0.0;
     n[2 * s + 1] = 1.0;
   }
-  struct usaw_segments wall = {NSEG, a, b, n};
+  struct usaw_segments wall = {NSEG, a, b, n, NULL};
   const struct probe wp[] = {{"d = 0", 0.003, 0.0, 0, 0.500000},
                              {"d = 0.25h", 0.003, 0.25 * h, 0, 0.678883},
                              {"d = 0.5h", 0.003, 0.5 * h, 0, 0.823497},
@@ -156,7 +156,7 @@ int main(void)
     n[2 * k] = 1.0;
     n[2 * k + 1] = 0.0;
   }
-  struct usaw_segments corner = {2 * NSEG, a, b, n};
+  struct usaw_segments corner = {2 * NSEG, a, b, n, NULL};
   const struct probe cp[] = {{"(0.5h, 0.5h)", 0.5 * h, 0.5 * h, 0, 0.677299},
                              {"(1.0h, 0.3h)", 1.0 * h, 0.3 * h, 0, 0.690482},
                              {"(0.2h, 1.5h)", 0.2 * h, 1.5 * h, 0, 0.644385},

@@ -1,0 +1,41 @@
+-- Hydrostatic tank with a free surface (Leroy et al. 2014, sec 4): water at rest in an open
+-- tank. After t_end = 5 s the pressure must be within 1% of ρ g (H − z) for particles deeper
+-- than 3 dr, the largest speed below 1e-3 √(g H), and no particle may have crossed a wall.
+param { dr = 0.02, t_end = 5, depth = 1, width = 1 }
+
+local g = 9.81
+domain { 0, 0, width, 1.5 * depth }
+particles { dr = dr }
+scheme "isph-usaw"
+fluid { density = 1000, viscosity = 1e-6, gravity = {0, -g} }
+wall { {0, 1.5 * depth}, {0, 0}, {width, 0}, {width, 1.5 * depth}, fluid = "left",
+       group = "tank" }
+fill { 0, 0, width, depth, name = "water" }
+probe { "bottom", {width / 2, 2 * dr} }
+profile { "column", from = {width / 2, 0}, to = {width / 2, depth}, points = 41 }
+force { "tank" }
+run { t_end = t_end, output_every = t_end / 10 }
+
+function metrics(sim)
+  -- pressure against ρ g (H − z), sampled on a grid deeper than 3 dr (relative to the local value)
+  local worst = 0
+  for i = 1, 9 do
+    for j = 1, 9 do
+      local x = width * i / 10
+      local z = (depth - 3 * dr) * (j - 0.5) / 9
+      local exact = 1000 * g * (depth - z)
+      local e = math.abs(sim.sample("p", x, z) - exact) / exact
+      if e > worst then worst = e end
+    end
+  end
+  local speed = 0
+  for c = 1, 2 do
+    speed = math.max(speed, math.abs(sim.min("vel", c)), math.abs(sim.max("vel", c)))
+  end
+  local outside = 0
+  if sim.min("pos", 1) < 0 or sim.max("pos", 1) > width or sim.min("pos", 2) < 0 then
+    outside = 1
+  end
+  return { pressure_error = worst, speed_ratio = speed / math.sqrt(g * depth),
+           crossed_wall = outside }
+end

@@ -1,0 +1,54 @@
+/* free_surface.cl (isph-usaw): free-surface particles get the Dirichlet condition p̃ = 0.
+ * A particle is at the free surface when the divergence of the position (eq 9 applied to r)
+ *   D_a{r} = −(1/γ_a) Σ_b V_b r_ab·∇w_ab + (1/γ_a) Σ_s r_as·∇γ_as ≤ 1.5   (2-D, sec 3.2)
+ * except when it is about to hit a wall vertex v (eq 39):
+ *   |r_av| + δt (u_a · r_av)/|r_av| < h q_max / 8,
+ * so that jets hitting a wall keep their pressure and do not cross it. Wall vertices: see below.
+ * normal gets the outward unit normal −G{1}/|G{1}| (eq 37), for the free-surface position. */
+__kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
+                                const real dt, __global uint *free_surface, __global real *divr,
+                                __global realv *normal)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  if (kind[i] > ISPH_VERTEX) {
+    free_surface[i] = 0u;
+    return;
+  }
+  const realv x = pos[i], u = vel[i];
+  real d = R(0.0);
+  int hitting = 0;
+  uint wet = 0;               /* fluid neighbours */
+  realv gc = (realv)(R(0.0)); /* γ G{1} (eq 37): points into the fluid */
+  struct neigh_iter it;
+  neigh_begin(&it, &g, x);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = x - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
+    d -= vol[j] * smoothing_f(sqrt(r2)) * r2; /* r_ab·∇w_ab = F r² */
+    wet += kind[j] == ISPH_FLUID;
+    gc += vol[j] * smoothing_f(sqrt(r2)) * r;
+    if (kind[i] == ISPH_FLUID && kind[j] == ISPH_VERTEX) {
+      real dist = sqrt(r2);
+      if (dist + dt * dot(u, r) / dist < SMOOTH_SUPPORT / R(8.0)) hitting = 1; /* eq 39 */
+    }
+  }
+  neigh_begin(&it, &g_seg, x);
+  uint s;
+  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+    const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
+    const realv gg = usaw_grad_gamma_seg(x, a, b, seg_n[s]);
+    d += dot(x - R(0.5) * (a + b), gg);
+    gc -= gg;
+  }
+  d /= gam[i];
+  divr[i] = d;
+  const real lc = length(gc);
+  normal[i] = lc > R(0.0) ? -gc / lc : (realv)(R(0.0)); /* outward normal of the fluid */
+  /* A wall vertex is a Dirichlet row only when it is dry (no fluid within its support): one
+   * next to the free surface would impose p̃ = 0 below the fluid's top row and pull the fluid
+   * into the wall; with fluid around, its row of eq 44 extrapolates the pressure to the wall. */
+  free_surface[i] = kind[i] == ISPH_VERTEX ? wet == 0u : d <= R(1.5) && !hitting;
+}

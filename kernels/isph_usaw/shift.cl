@@ -1,0 +1,72 @@
+/* shift.cl (isph-usaw): particle shifting (eqs 35-38). Fluid particles farther than h q_max/2
+ * from every free-surface particle move by
+ *   δr_a = −C h² G_a{1},   G_a{1} = (1/γ_a) Σ_b V_b ∇w_ab − (1/γ_a) Σ_s ∇γ_as      (36-37)
+ * (the segment term keeps them off the walls; C = 0.7 for the Wendland kernel), and their
+ * velocity follows to first order (eq 38):
+ *   u_a += G−_a{ũ}·δr_a = −(1/γ_a) Σ_b V_b u_ab (∇w_ab·δr_a) + (1/γ_a) Σ_s u_as (∇γ_as·δr_a). */
+__kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
+                         __global const uint *free_surface, const real c_shift,
+                         __global realv *shift, __global realv *vel_out)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  const realv x = pos[i], u = vel[i];
+  shift[i] = (realv)(R(0.0));
+  vel_out[i] = u;
+  if (kind[i] != ISPH_FLUID) return;
+  const real near2 = R(0.25) * SMOOTH_SUPPORT2; /* (h q_max / 2)² */
+  realv gc = (realv)(R(0.0));
+  struct neigh_iter it;
+  neigh_begin(&it, &g, x);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = x - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || kind[j] > ISPH_VERTEX) continue;
+    if (free_surface[j] && r2 < near2) return; /* near the free surface: no shift */
+    if (j != i) gc += vol[j] * smoothing_f(sqrt(r2)) * r;
+  }
+  neigh_begin(&it, &g_seg, x);
+  uint s;
+  while (neigh_next(&it, &g_seg, seg_start, &s))
+    gc -= usaw_grad_gamma_seg(x, seg_a[s] + it.shift, seg_b[s] + it.shift, seg_n[s]);
+  const real h = R(1.0) / SMOOTH_INV_H;
+  const realv dr = -c_shift * h * h * gc / gam[i];
+  /* first-order velocity correction (eq 38) */
+  realv du = (realv)(R(0.0));
+  neigh_begin(&it, &g, x);
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = x - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
+    du -= vol[j] * (u - vel[j]) * (smoothing_f(sqrt(r2)) * dot(r, dr));
+  }
+  neigh_begin(&it, &g_seg, x);
+  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+    const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
+    const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
+    du += (u - us) * dot(usaw_grad_gamma_seg(x, a, b, seg_n[s]), dr);
+  }
+  shift[i] = dr;
+  vel_out[i] = u + du / gam[i];
+}
+
+/* r += δr, u = corrected u (after isph_shift, which reads the unshifted positions) */
+__kernel void isph_apply_shift(const uint n, const struct grid g, __global realv *pos,
+                               __global const realv *shift, __global realv *vel,
+                               __global const realv *vel_new, __global uint *flags)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  realv x = pos[i] + shift[i];
+#if PERIODIC_X
+  x.x = isph_wrap(x.x, g.lo.x, g.len.x);
+#endif
+#if PERIODIC_Y
+  x.y = isph_wrap(x.y, g.lo.y, g.len.y);
+#endif
+  const realv u = vel_new[i];
+  if (!all(isfinite(x)) || !all(isfinite(u))) flags_raise(flags, CLSPH_FLAG_NAN);
+  pos[i] = x;
+  vel[i] = u;
+}

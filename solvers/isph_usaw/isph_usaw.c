@@ -1,0 +1,427 @@
+/* isph_usaw.c: incompressible SPH with unified semi-analytical walls (Leroy et al. 2014),
+ * laminar. One time step (sec 3.2, eqs 30-38):
+ *   1. r* = r^n + δt/2 u^n                                      (30, move.cl)
+ *   2. γ_a analytically (eqs 55-62) for the particles near a wall (usaw/gamma.cl)
+ *   3. u* = u^n + δt [(1/ρ) L{µ, u} + g + f]                    (31 with 15, predict.cl)
+ *   4. free surface: D{r} ≤ 1.5 unless about to hit a wall (eq 39, free_surface.cl)
+ *   5. Morris Σ 2V F (P_a − P_b) = γ (ρ/δt) D{u*} + 2 Σ_s (∇P)_s·∇γ_as, P = p̃ + ρgz   (44, ppe.cl)
+ *      solved on the device by BiCGStab (solvers/pressure), P = ρgz on free-surface rows;
+ *      a flow with no free surface is singular: the diagonal is reinforced (sec 3.3)
+ *   6. ũ = u* − (δt/ρ) G+{p̃}                                     (32, project.cl)
+ *   7. r̃ = r* + δt/2 ũ                                           (34)
+ *   8. shifting δr = −C h² G{1} away from the free surface, u += G−{ũ}·δr   (35-38, shift.cl)
+ * Time step (48-49): min(0.2 h/u_ref, 0.125 h²/ν, 0.25 √(h/|a|)). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../scheme.h"
+#include "clsph_config.h"
+#include "poisson_op.h"
+#include "sim.h"
+#include "walls.h"
+
+struct isph {
+  struct usaw_walls walls;
+  struct poisson_op po;
+  struct psolve ps;
+  struct psolve_options popt;
+  int f_p, f_P, f_ustar, f_visc, f_gam, f_ggam, f_free, f_theta, f_shift, f_vnew, f_rhs, f_divr,
+      f_normal;
+  cl_kernel k_half, k_predict, k_free, k_rhs, k_pressure, k_project, k_shift, k_apply;
+  double c_shift;   /* shifting coefficient (0: off) */
+  double fs_offset; /* distance of the free surface beyond its particles, in dr */
+  double u_wall;    /* largest wall speed, m/s */
+  double acc;       /* largest acceleration of the last step, m/s² */
+};
+
+static const char *const sources[] = {"common/blas1.cl",      "common/csr.cl",
+                                      "common/poisson.cl",    "usaw/gamma.cl",
+                                      "isph_usaw/common.cl",  "isph_usaw/move.cl",
+                                      "isph_usaw/predict.cl", "isph_usaw/free_surface.cl",
+                                      "isph_usaw/ppe.cl",     "isph_usaw/project.cl",
+                                      "isph_usaw/shift.cl",   NULL};
+static const char *const options[] = {"shifting", "pressure_gradient", "free_surface_offset",
+                                      PSOLVE_OPTION_NAMES, NULL};
+
+/* -D switches: the pressure-gradient form of the projection. */
+static enum clsph_status isph_define(const struct sim *sim, struct prog_opts *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  /* Default: the symmetric gradient of P (eq 8). The antisymmetric form of eq 32 conserves
+   * momentum but carries 2 p̃_a (Σ_b V_b ∇w_ab − ∇γ_a)/γ_a, the lattice's quadrature error of
+   * ∇γ times twice the pressure: near a wall under 1 m of water that is O(g), and the
+   * hydrostatic tank blows up within 0.2 s at δr = 0.05 m. The symmetric form of P keeps it at
+   * rest (largest speed 5e-4 m/s after 5 s). */
+  int sym = 1;
+  for (int i = 0; i < sim->scene->noptions; ++i) {
+    const struct scene_option *op = &sim->scene->options[i];
+    if (strcmp(op->key, "pressure_gradient") != 0) continue;
+    CLSPH_CHECK(!op->is_number &&
+                    (!strcmp(op->text, "antisymmetric") || !strcmp(op->text, "symmetric")),
+                CLSPH_E_INPUT,
+                "%s: pressure_gradient must be \"antisymmetric\" (eq 5) or \"symmetric\" (eq 8)",
+                sim->scene->case_path);
+    sym = strcmp(op->text, "symmetric") == 0;
+  }
+  CLSPH_TRY(prog_opts_define_int(o, "ISPH_GRAD_SYM", sym));
+done:
+  return st;
+}
+
+#if CLSPH_DOUBLE
+typedef cl_double2 host_realv;
+#else
+typedef cl_float2 host_realv;
+#endif
+
+static host_realv vec2(double x, double y)
+{
+  host_realv v;
+  v.s[0] = (real)x;
+  v.s[1] = (real)y;
+  return v;
+}
+
+/* The particle and segment arguments every stage starts with; returns the next index. */
+static enum clsph_status prefix(struct sim *sim, struct isph *is, cl_kernel k, cl_uint *next)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  struct usaw_walls *w = &is->walls;
+  cl_uint n = (cl_uint)ps->n;
+  cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
+  cl_mem kind = pset_mem(ps, sim->f_kind), gam = pset_mem(ps, is->f_gam);
+  cl_mem sa = pset_mem(&w->ps, w->f_a), sb = pset_mem(&w->ps, w->f_b);
+  cl_mem sn = pset_mem(&w->ps, w->f_n), v1 = pset_mem(&w->ps, w->f_v1);
+  cl_mem v2 = pset_mem(&w->ps, w->f_v2);
+  CLSPH_TRY(KERN_SET(k, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
+                     KARG(vol), KARG(kind), KARG(gam), KARG(w->g.geom), KARG(w->g.d_start),
+                     KARG(sa), KARG(sb), KARG(sn), KARG(v1), KARG(v2), KARG(sim->d_inv)));
+  *next = 15;
+done:
+  return st;
+}
+
+static enum clsph_status arg(cl_kernel k, cl_uint *i, size_t size, const void *v)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct karg a = {size, v};
+  CLSPH_TRY(kern_set_at(k, (*i)++, a));
+done:
+  return st;
+}
+
+static enum clsph_status isph_create(struct sim *sim, void **state)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct isph *is = calloc(1, sizeof *is);
+  const struct geom *geo = &sim->geom;
+  real *theta = NULL;
+  CLSPH_CHECK(is != NULL, CLSPH_E_NOMEM, "isph-usaw: out of memory");
+  CLSPH_CHECK(sim->sm.kind == SMOOTHING_WENDLAND_C2, CLSPH_E_INPUT,
+              "%s: isph-usaw computes γ analytically for the Wendland C2 kernel only",
+              sim->scene->case_path);
+  is->c_shift = 0.7; /* Leroy et al. 2014 sec 3.2, for the Wendland kernel */
+  /* The paper imposes p̃ = 0 on the free-surface particles (the default). A particle stands for
+   * the cell of side δr around it, so the fluid ends δr/2 beyond the last particles:
+   * free_surface_offset = 0.5 imposes p̃ = 0 there, along the outward normal −G{1}/|G{1}|, which
+   * brings the hydrostatic pressure from ρgδr/2 short (14% at 3δr deep) to within 0.3%, but the
+   * normal of the particles at the wall corners tilts and the surface starts to slosh (largest
+   * speed 0.15 m/s after 5 s at δr = 0.05 m, against 5e-4 m/s with the paper's p̃ = 0). */
+  is->fs_offset = 0.0;
+  for (int i = 0; i < sim->scene->noptions; ++i) {
+    const struct scene_option *o = &sim->scene->options[i];
+    if (strcmp(o->key, "shifting") == 0) {
+      CLSPH_CHECK(o->is_number && o->number >= 0.0 && o->number <= 2.0, CLSPH_E_INPUT,
+                  "%s: shifting must be a coefficient from 0 (off) to 2", sim->scene->case_path);
+      is->c_shift = o->number;
+    }
+    if (strcmp(o->key, "free_surface_offset") == 0) {
+      CLSPH_CHECK(o->is_number && o->number >= 0.0 && o->number <= 1.0, CLSPH_E_INPUT,
+                  "%s: free_surface_offset must be 0 to 1 (spacings)", sim->scene->case_path);
+      is->fs_offset = o->number;
+    }
+  }
+  CLSPH_TRY(sim_psolve_options(sim, &is->popt));
+  /* vertex angles the analytic γ handles: a fluid sector of 5° to 355° */
+  theta = calloc(geo->n, sizeof *theta);
+  CLSPH_CHECK(theta != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t i = 0; i < geo->n; ++i) {
+    if (geo->kind[i] != KIND_VERTEX) continue;
+    double t = geo->theta[i], deg = t * 180.0 / 3.14159265358979323846;
+    CLSPH_CHECK(
+        deg >= 5.0 && deg <= 355.0, CLSPH_E_INPUT,
+        "%s: the wall vertex at (%g, %g) has a fluid angle of %.1f°, outside the 5° to 355° "
+        "the analytic γ handles",
+        sim->scene->case_path, geo->x[2 * i], geo->x[2 * i + 1], deg);
+    theta[i] = (real)t;
+    is->u_wall = fmax(is->u_wall, hypot(geo->v[2 * i], geo->v[2 * i + 1]));
+  }
+  for (size_t i = 0; i < geo->n; ++i)
+    CLSPH_CHECK(geo->kind[i] <= KIND_VERTEX, CLSPH_E_INPUT,
+                "%s: isph-usaw has no inflow or outflow sections", sim->scene->case_path);
+  /* fields */
+  struct pset *ps = &sim->ps;
+  const size_t rv = 2 * sizeof(real);
+  CLSPH_TRY(pset_add(ps, sim->dev, "p", sizeof(real), NULL, &is->f_p));
+  CLSPH_TRY(pset_add(ps, sim->dev, "gamma", sizeof(real), NULL, &is->f_gam));
+  CLSPH_TRY(pset_add(ps, sim->dev, "free_surface", sizeof(cl_uint), NULL, &is->f_free));
+  CLSPH_TRY(pset_add(ps, sim->dev, "div_r", sizeof(real), NULL, &is->f_divr));
+  pset_describe(ps, is->f_free, PF_UINT, 1, 1);
+  const struct {
+    const char *name;
+    size_t elem;
+    int *f;
+  } hidden[] = {{"P", sizeof(real), &is->f_P},     {"ustar", rv, &is->f_ustar},
+                {"visc", rv, &is->f_visc},         {"grad_gamma", rv, &is->f_ggam},
+                {"shift", rv, &is->f_shift},       {"vel_new", rv, &is->f_vnew},
+                {"rhs", sizeof(real), &is->f_rhs}, {"normal", rv, &is->f_normal}};
+  for (size_t k = 0; k < sizeof hidden / sizeof *hidden; ++k) {
+    CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
+    pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
+  }
+  CLSPH_TRY(pset_add(ps, sim->dev, "theta", sizeof(real), theta, &is->f_theta));
+  /* Volumes: the fluid lattice (first row δr/2 from the wall) tiles the fluid domain, so the
+   * wall vertices carry no volume of their own in the sums over b ∈ P (they would count the
+   * strip along the wall twice); their values enter through the segments (eq 5-10). */
+  for (size_t k = 0; k < geo->n; ++k)
+    theta[k] = geo->kind[k] == KIND_VERTEX ? (real)0 : (real)(sim->scene->dr * sim->scene->dr);
+  CLSPH_TRY(kern_write(sim->dev, pset_mem(ps, sim->f_vol), geo->n * sizeof(real), theta));
+  pset_describe(ps, is->f_theta, PF_REAL, 0, 0);
+  /* segments, kernels, solver */
+  struct usaw_segments segs = {geo->nseg, NULL, NULL, geo->seg_normal, geo->seg_v};
+  double *ab = calloc(4 * (geo->nseg + 1), sizeof *ab);
+  CLSPH_CHECK(ab != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t s = 0; s < geo->nseg; ++s)
+    for (int c = 0; c < 2; ++c) {
+      ab[2 * s + (size_t)c] = geo->x[2 * geo->seg_v[2 * s] + (size_t)c];
+      ab[2 * geo->nseg + 2 * s + (size_t)c] = geo->x[2 * geo->seg_v[2 * s + 1] + (size_t)c];
+    }
+  segs.a = ab;
+  segs.b = ab + 2 * geo->nseg;
+  st = usaw_walls_create(sim->dev, sim->prog, &segs, &sim->gspec, &is->walls);
+  free(ab);
+  CLSPH_TRY(st);
+  struct {
+    cl_kernel *k;
+    const char *name;
+  } ks[] = {{&is->k_half, "isph_half_move"},    {&is->k_predict, "isph_predict"},
+            {&is->k_free, "isph_free_surface"}, {&is->k_rhs, "isph_ppe_rhs"},
+            {&is->k_pressure, "isph_pressure"}, {&is->k_project, "isph_project"},
+            {&is->k_shift, "isph_shift"},       {&is->k_apply, "isph_apply_shift"}};
+  for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
+    CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
+  CLSPH_TRY(poisson_op_create(sim->dev, sim->prog, &is->po));
+  CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &is->popt, &is->ps));
+  *state = is;
+  is = NULL;
+done:
+  free(theta);
+  if (is != NULL) {
+    usaw_walls_destroy(&is->walls);
+    free(is);
+  }
+  return st;
+}
+
+static enum clsph_status half_move(struct sim *sim, struct isph *is, double dt)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_uint n = (cl_uint)sim->ps.n;
+  real hdt = (real)(0.5 * dt);
+  cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
+  cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
+  CLSPH_TRY(KERN_SET(is->k_half, KARG(n), KARG(hdt), KARG(sim->grid.geom), KARG(pos), KARG(vel),
+                     KARG(kind), KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch(sim->dev, is->k_half, sim->ps.n, NULL));
+done:
+  return st;
+}
+
+static enum clsph_status gamma_now(struct sim *sim, struct isph *is)
+{
+  return usaw_walls_gamma(&is->walls, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos),
+                          pset_mem(&sim->ps, is->f_theta), pset_mem(&sim->ps, is->f_gam),
+                          pset_mem(&sim->ps, is->f_ggam));
+}
+
+static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct isph *is = state;
+  const struct scene *sc = sim->scene;
+  struct pset *ps = &sim->ps;
+  cl_uint i;
+  const real rdt = (real)dt, rho = (real)sc->rho0, nu = (real)sc->nu, dr = (real)sc->dr;
+  const real c = (real)is->c_shift;
+  const host_realv accel =
+      vec2(sc->gravity[0] + sc->body_force[0], sc->gravity[1] + sc->body_force[1]);
+  const host_realv grav = vec2(sc->gravity[0], sc->gravity[1]);
+  double vmax0 = 0.0, vmax1 = 0.0;
+
+  CLSPH_TRY(sim_max_speed(sim, 0, &vmax0));
+  /* 1. half move, neighbours and γ at r* */
+  CLSPH_TRY(half_move(sim, is, dt));
+  CLSPH_TRY(sim_sort(sim));
+  CLSPH_TRY(gamma_now(sim, is));
+  cl_mem vel = pset_mem(ps, sim->f_vel), ustar = pset_mem(ps, is->f_ustar);
+  cl_mem visc = pset_mem(ps, is->f_visc), fs = pset_mem(ps, is->f_free);
+  cl_mem rhs = pset_mem(ps, is->f_rhs), P = pset_mem(ps, is->f_P), p = pset_mem(ps, is->f_p);
+  cl_mem pos = pset_mem(ps, sim->f_pos);
+  /* 2. prediction */
+  CLSPH_TRY(prefix(sim, is, is->k_predict, &i));
+  CLSPH_TRY(arg(is->k_predict, &i, sizeof vel, &vel));
+  CLSPH_TRY(arg(is->k_predict, &i, sizeof rdt, &rdt));
+  CLSPH_TRY(arg(is->k_predict, &i, sizeof nu, &nu));
+  CLSPH_TRY(arg(is->k_predict, &i, sizeof dr, &dr));
+  CLSPH_TRY(arg(is->k_predict, &i, sizeof accel, &accel));
+  CLSPH_TRY(arg(is->k_predict, &i, sizeof ustar, &ustar));
+  CLSPH_TRY(arg(is->k_predict, &i, sizeof visc, &visc));
+  CLSPH_TRY(kern_launch(sim->dev, is->k_predict, ps->n, NULL));
+  /* 3. free surface */
+  cl_mem divr = pset_mem(ps, is->f_divr);
+  CLSPH_TRY(prefix(sim, is, is->k_free, &i));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof vel, &vel));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof rdt, &rdt));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof fs, &fs));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof divr, &divr));
+  cl_mem nrm = pset_mem(ps, is->f_normal);
+  CLSPH_TRY(arg(is->k_free, &i, sizeof nrm, &nrm));
+  CLSPH_TRY(kern_launch(sim->dev, is->k_free, ps->n, NULL));
+  double nfree = 0.0;
+  CLSPH_TRY(sim_count(sim, fs, &nfree));
+  /* 4. pressure equation: P = p̃ + ρgz, previous P as the initial guess */
+  CLSPH_TRY(prefix(sim, is, is->k_rhs, &i));
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof ustar, &ustar));
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof visc, &visc));
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof fs, &fs));
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof rho, &rho));
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof rdt, &rdt));
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof grav, &grav));
+  const real off = (real)(is->fs_offset * sc->dr);
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof nrm, &nrm));
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof off, &off));
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof rhs, &rhs));
+  CLSPH_TRY(kern_launch(sim->dev, is->k_rhs, ps->n, NULL));
+  is->ps.opt.singular = nfree > 0.0 ? is->popt.singular : PSOLVE_REINFORCE;
+  poisson_op_bind(&is->po, &sim->grid, ps->n, pos, pset_mem(ps, sim->f_vol), NULL, fs);
+  struct psolve_result res;
+  CLSPH_TRY(psolve_solve(&is->ps, &is->po.op, rhs, P, &res));
+  sim->solver_its = res.its;
+  sim->solver_res = res.rnorm;
+  cl_uint n = (cl_uint)ps->n;
+  CLSPH_TRY(KERN_SET(is->k_pressure, KARG(n), KARG(pos), KARG(P), KARG(rho), KARG(grav), KARG(p)));
+  CLSPH_TRY(kern_launch(sim->dev, is->k_pressure, ps->n, NULL));
+  /* 5. projection, second half move */
+  CLSPH_TRY(prefix(sim, is, is->k_project, &i));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof ustar, &ustar));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof P, &P));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof p, &p));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof rho, &rho));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof rdt, &rdt));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof grav, &grav));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof fs, &fs));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof vel, &vel));
+  CLSPH_TRY(kern_launch(sim->dev, is->k_project, ps->n, NULL));
+  CLSPH_TRY(half_move(sim, is, dt));
+  /* 6. shifting at r̃ */
+  if (is->c_shift > 0.0) {
+    CLSPH_TRY(sim_sort(sim));
+    CLSPH_TRY(gamma_now(sim, is));
+    vel = pset_mem(ps, sim->f_vel);
+    fs = pset_mem(ps, is->f_free);
+    pos = pset_mem(ps, sim->f_pos);
+    cl_mem shift = pset_mem(ps, is->f_shift), vnew = pset_mem(ps, is->f_vnew);
+    CLSPH_TRY(prefix(sim, is, is->k_shift, &i));
+    CLSPH_TRY(arg(is->k_shift, &i, sizeof vel, &vel));
+    CLSPH_TRY(arg(is->k_shift, &i, sizeof fs, &fs));
+    CLSPH_TRY(arg(is->k_shift, &i, sizeof c, &c));
+    CLSPH_TRY(arg(is->k_shift, &i, sizeof shift, &shift));
+    CLSPH_TRY(arg(is->k_shift, &i, sizeof vnew, &vnew));
+    CLSPH_TRY(kern_launch(sim->dev, is->k_shift, ps->n, NULL));
+    CLSPH_TRY(KERN_SET(is->k_apply, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(shift),
+                       KARG(vel), KARG(vnew), KARG(sim->d_flags)));
+    CLSPH_TRY(kern_launch(sim->dev, is->k_apply, ps->n, NULL));
+  }
+  CLSPH_TRY(sim_max_speed(sim, 0, &vmax1));
+  is->acc = fabs(vmax1 - vmax0) / dt;
+done:
+  return st;
+}
+
+static enum clsph_status isph_max_dt(struct sim *sim, void *state, double *dt)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct isph *is = state;
+  const struct scene *s = sim->scene;
+  const double h = sim->sm.h;
+  double vmax = 0.0;
+  CLSPH_TRY(sim_max_speed(sim, 0, &vmax));
+  double uref = fmax(vmax, is->u_wall);
+  double a =
+      fmax(hypot(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]), is->acc);
+  double d = HUGE_VAL;
+  if (uref > 0.0) d = fmin(d, 0.2 * h / uref);         /* CFL (49) */
+  if (s->nu > 0.0) d = fmin(d, 0.125 * h * h / s->nu); /* viscous (49) */
+  if (a > 0.0) d = fmin(d, 0.25 * sqrt(h / a));        /* force (49) */
+  *dt = d;
+done:
+  return st;
+}
+
+/* Pressure force of the fluid on the walls of a group: Σ_s −p̃_s n_s |s| (the viscous stress is
+ * not included). */
+static enum clsph_status isph_wall_force(struct sim *sim, void *state, const char *group,
+                                         double f[2])
+{
+  enum clsph_status st = CLSPH_OK;
+  struct isph *is = state;
+  const struct geom *geo = &sim->geom;
+  real *p = malloc(sim->ps.n * sizeof *p);
+  cl_uint *inv = malloc(sim->ps.n * sizeof *inv);
+  CLSPH_CHECK(p != NULL && inv != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, is->f_p), sim->ps.n * sizeof *p, p));
+  CLSPH_TRY(kern_read(sim->dev, sim->d_inv, sim->ps.n * sizeof *inv, inv));
+  f[0] = f[1] = 0.0;
+  for (size_t s = 0; s < geo->nseg; ++s) {
+    if (strcmp(sim->scene->walls[geo->seg_wall[s]].group, group) != 0) continue;
+    double ps = 0.5 * ((double)p[inv[geo->seg_v[2 * s]]] + (double)p[inv[geo->seg_v[2 * s + 1]]]);
+    f[0] -= ps * geo->seg_normal[2 * s] * geo->seg_len[s];
+    f[1] -= ps * geo->seg_normal[2 * s + 1] * geo->seg_len[s];
+  }
+done:
+  free(inv);
+  free(p);
+  return st;
+}
+
+static void isph_destroy(void *state)
+{
+  struct isph *is = state;
+  if (is == NULL) return;
+  cl_kernel *ks[] = {&is->k_half,     &is->k_predict, &is->k_free,  &is->k_rhs,
+                     &is->k_pressure, &is->k_project, &is->k_shift, &is->k_apply};
+  for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
+    if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
+  psolve_destroy(&is->ps);
+  poisson_op_destroy(&is->po);
+  usaw_walls_destroy(&is->walls);
+  free(is);
+}
+
+const struct scheme_ops scheme_isph_usaw = {
+    .name = "isph-usaw",
+    .summary = "incompressible SPH, unified semi-analytical walls (Leroy et al. 2014)",
+    .sources = sources,
+    .wall_model = "usaw",
+    .smoothing = "wendland",
+    .h_over_dr = 2.0,
+    .options = options,
+    .define = isph_define,
+    .create = isph_create,
+    .step = isph_step,
+    .max_dt = isph_max_dt,
+    .wall_force = isph_wall_force,
+    .destroy = isph_destroy,
+};
