@@ -1,12 +1,15 @@
 -- Hydrostatic tank with a free surface (Leroy et al. 2014, sec 4): water at rest in an open
 -- tank. After t_end = 5 s the pressure must be within 1% of ρ g (H − z) for particles deeper
 -- than 3 dr, the largest speed below 1e-3 √(g H), and no particle may have crossed a wall.
-param { dr = 0.02, t_end = 5, depth = 1, width = 1 }
+-- pressure_error compares with ρ g (H − z); pressure_error_particles with ρ g (H − dr/2 − z),
+-- the hydrostatic pressure under the paper's p̃ = 0 on the top particles (half a spacing below
+-- the water's surface; isph-usaw option free_surface_offset = 0.5 moves it to the surface).
+param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0 }
 
 local g = 9.81
 domain { 0, 0, width, 1.5 * depth }
 particles { dr = dr }
-scheme "isph-usaw"
+scheme { "isph-usaw", free_surface_offset = surface_offset }
 fluid { density = 1000, viscosity = 1e-6, gravity = {0, -g} }
 wall { {0, 1.5 * depth}, {0, 0}, {width, 0}, {width, 1.5 * depth}, fluid = "left",
        group = "tank" }
@@ -18,14 +21,16 @@ run { t_end = t_end, output_every = t_end / 10 }
 
 function metrics(sim)
   -- pressure against ρ g (H − z), sampled on a grid deeper than 3 dr (relative to the local value)
-  local worst = 0
+  local worst, worst_p = 0, 0
   for i = 1, 9 do
     for j = 1, 9 do
       local x = width * i / 10
       local z = (depth - 3 * dr) * (j - 0.5) / 9
+      local p = sim.sample("p", x, z)
       local exact = 1000 * g * (depth - z)
-      local e = math.abs(sim.sample("p", x, z) - exact) / exact
-      if e > worst then worst = e end
+      local exact_p = 1000 * g * (depth - dr / 2 - z)
+      worst = math.max(worst, math.abs(p - exact) / exact)
+      worst_p = math.max(worst_p, math.abs(p - exact_p) / exact_p)
     end
   end
   local speed = 0
@@ -36,6 +41,7 @@ function metrics(sim)
   if sim.min("pos", 1) < 0 or sim.max("pos", 1) > width or sim.min("pos", 2) < 0 then
     outside = 1
   end
-  return { pressure_error = worst, speed_ratio = speed / math.sqrt(g * depth),
+  return { pressure_error = worst, pressure_error_particles = worst_p,
+           speed_ratio = speed / math.sqrt(g * depth),
            crossed_wall = outside }
 end
