@@ -946,6 +946,129 @@ static int l_sample(lua_State *L)
   return 1;
 }
 
+/* Columns `coord` and `value` of a reference CSV ('#' comment lines, then a header row). */
+static int read_reference(lua_State *L, const char *path, const char *coord, const char *value,
+                          double **xs, double **vs)
+{
+  FILE *f = fopen(path, "r");
+  char line[4096];
+  int ci = -1, vi = -1, n = 0, cap = 0;
+  double *a = NULL, *b = NULL;
+  if (f == NULL) return luaL_error(L, "profile_error: cannot read %s", path);
+  while (fgets(line, sizeof line, f) != NULL) {
+    if (line[0] == '#' || line[0] == '\n') continue;
+    char *save = NULL;
+    int col = 0;
+    if (ci < 0 && vi < 0) { /* header */
+      for (char *t = strtok_r(line, ",\r\n", &save); t != NULL;
+           t = strtok_r(NULL, ",\r\n", &save), ++col) {
+        if (strcmp(t, coord) == 0) ci = col;
+        if (strcmp(t, value) == 0) vi = col;
+      }
+      if (ci < 0 || vi < 0) {
+        fclose(f);
+        return luaL_error(L, "profile_error: %s has no column '%s' or '%s'", path, coord, value);
+      }
+      continue;
+    }
+    double c = NAN, v = NAN;
+    for (char *t = strtok_r(line, ",\r\n", &save); t != NULL;
+         t = strtok_r(NULL, ",\r\n", &save), ++col) {
+      if (col == ci) c = strtod(t, NULL);
+      if (col == vi) v = strtod(t, NULL);
+    }
+    if (n == cap) {
+      cap = cap ? 2 * cap : 32;
+      double *na = realloc(a, (size_t)cap * sizeof *a), *nb = realloc(b, (size_t)cap * sizeof *b);
+      if (na == NULL || nb == NULL) {
+        free(na ? na : a);
+        free(nb ? nb : b);
+        fclose(f);
+        return luaL_error(L, "out of memory");
+      }
+      a = na;
+      b = nb;
+    }
+    a[n] = c;
+    b[n] = v;
+    ++n;
+  }
+  fclose(f);
+  *xs = a;
+  *vs = b;
+  return n;
+}
+
+/* rms, max = sim.profile_error{ field =, component =, csv =, coordinate =, value =,
+ *                               x = (or y =), scale = , skip_walls = true }
+ * Samples the field along the line x = const (coordinate y) or y = const (coordinate x) at the
+ * reference points and returns the RMS and largest deviation divided by scale; points on the
+ * walls (coordinate 0 or 1 of the reference) are skipped when skip_walls. */
+static int l_profile_error(lua_State *L)
+{
+  const struct case_sim_api *api = api_of(L);
+  luaL_checktype(L, 1, LUA_TTABLE);
+  lua_getfield(L, 1, "field");
+  const char *field = luaL_checkstring(L, -1);
+  lua_getfield(L, 1, "csv");
+  const char *csv = luaL_checkstring(L, -1);
+  lua_getfield(L, 1, "coordinate");
+  const char *coord = luaL_checkstring(L, -1);
+  lua_getfield(L, 1, "value");
+  const char *value = luaL_checkstring(L, -1);
+  lua_getfield(L, 1, "component");
+  int comp = (int)luaL_optinteger(L, -1, 1) - 1;
+  lua_getfield(L, 1, "scale");
+  double scale = luaL_optnumber(L, -1, 1.0);
+  lua_getfield(L, 1, "x");
+  int along_y = !lua_isnil(L, -1);
+  double at = along_y ? luaL_checknumber(L, -1) : 0.0;
+  lua_getfield(L, 1, "y");
+  if (!along_y) at = luaL_checknumber(L, -1);
+  lua_getfield(L, 1, "skip_walls");
+  int skip = lua_isnil(L, -1) || lua_toboolean(L, -1);
+  char path[2048];
+  snprintf(path, sizeof path, "%s", csv);
+  FILE *probe = fopen(path, "r");
+  if (probe == NULL)
+    snprintf(path, sizeof path, "%s/%s", CLSPH_SOURCE_DIR, csv);
+  else
+    fclose(probe);
+  double *xs = NULL, *vs = NULL;
+  int n = read_reference(L, path, coord, value, &xs, &vs);
+  double *xy = malloc(2 * (size_t)(n + 1) * sizeof *xy),
+         *got = malloc((size_t)(n + 1) * sizeof *got);
+  int m = 0;
+  for (int k = 0; k < n && xy != NULL; ++k) {
+    if (skip && (xs[k] <= 0.0 || xs[k] >= 1.0)) continue;
+    xy[2 * m] = along_y ? at : xs[k];
+    xy[2 * m + 1] = along_y ? xs[k] : at;
+    vs[m] = vs[k];
+    ++m;
+  }
+  if (xy == NULL || got == NULL || m == 0 ||
+      api->sample_many(api->ctx, field, comp, m, xy, got) != CLSPH_OK) {
+    free(xs);
+    free(vs);
+    free(xy);
+    free(got);
+    return luaL_error(L, "profile_error: cannot sample '%s' at the points of %s", field, path);
+  }
+  double ss = 0.0, mx = 0.0;
+  for (int k = 0; k < m; ++k) {
+    double d = fabs(got[k] - vs[k]) / scale;
+    ss += d * d;
+    mx = fmax(mx, d);
+  }
+  free(xs);
+  free(vs);
+  free(xy);
+  free(got);
+  lua_pushnumber(L, sqrt(ss / m));
+  lua_pushnumber(L, mx);
+  return 2;
+}
+
 enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api *api,
                                struct cJSON *out)
 {
@@ -962,8 +1085,11 @@ enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api
   lua_setfield(L, -2, "steps");
   lua_pushnumber(L, api->particles);
   lua_setfield(L, -2, "particles");
-  static const luaL_Reg fns[] = {
-      {"min", l_min}, {"max", l_max}, {"mean", l_mean}, {"sample", l_sample}};
+  static const luaL_Reg fns[] = {{"min", l_min},
+                                 {"max", l_max},
+                                 {"mean", l_mean},
+                                 {"sample", l_sample},
+                                 {"profile_error", l_profile_error}};
   for (size_t i = 0; i < sizeof fns / sizeof *fns; ++i) {
     lua_pushlightuserdata(L, (void *)(size_t)api);
     lua_pushcclosure(L, fns[i].func, 1);

@@ -17,6 +17,9 @@ struct case_sim_api {
   /** Statistics of component `comp` of a field over the particles of `kind` (−1: all). */
   enum clsph_status (*stats)(void *ctx, const char *field, int comp, int kind, double *min,
                              double *max, double *mean);
+  /** Interpolated values of component `comp` of a field at np points (x, y pairs). */
+  enum clsph_status (*sample_many)(void *ctx, const char *field, int comp, int np, const double *xy,
+                                   double *values);
   /** Interpolated value of component `comp` of a field at a point. */
   enum clsph_status (*sample)(void *ctx, const char *field, int comp, double x, double y,
                               double *value);

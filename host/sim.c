@@ -718,6 +718,26 @@ done:
   return st;
 }
 
+static enum clsph_status metric_sample_many(void *ctx, const char *field, int comp, int np,
+                                            const double *xy, double *values)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ((struct metric_ctx *)ctx)->sim;
+  double *out = NULL;
+  int idx = pset_find(&sim->ps, field);
+  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  const struct pfield *f = &sim->ps.f[idx];
+  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
+              field, f->nout);
+  out = malloc((size_t)np * (size_t)f->ncomp * sizeof *out);
+  CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(sim_sample(sim, idx, (size_t)np, xy, out));
+  for (int k = 0; k < np; ++k) values[k] = out[(size_t)k * (size_t)f->ncomp + (size_t)comp];
+done:
+  free(out);
+  return st;
+}
+
 /* ---- summary ---- */
 
 static enum clsph_status write_summary(struct sim *sim, const struct run_out *o, double wall,
@@ -757,8 +777,8 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
   CLSPH_CHECK(params != NULL && metrics != NULL, CLSPH_E_NOMEM, "out of memory");
   if (script != NULL && strcmp(sim->status, "ok") == 0) {
     struct metric_ctx ctx = {sim};
-    struct case_sim_api api = {&ctx,         sim->time,    sim->step, (double)sim->ps.n,
-                               metric_stats, metric_sample};
+    struct case_sim_api api = {&ctx,         sim->time,          sim->step,    (double)sim->ps.n,
+                               metric_stats, metric_sample_many, metric_sample};
     enum clsph_status ms = case_metrics(script, &api, metrics);
     if (ms != CLSPH_OK) snprintf(sim->status, sizeof sim->status, "metrics failed");
     cJSON_ReplaceItemInObject(root, "status", cJSON_CreateString(sim->status));

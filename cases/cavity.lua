@@ -1,0 +1,27 @@
+-- Lid-driven cavity (Leroy et al. 2014 sec 4.1): a unit square box whose lid slides at U = 1,
+-- Re = U L / ν. Centreline profiles u(y) at x = 1/2 and v(x) at y = 1/2 against Ghia, Ghia &
+-- Shin 1982 (tests/data), RMS and largest deviation in units of U. The paper's resolutions:
+-- 120² (Re 100), 200² (Re 400), 240² (Re 1000).
+param { re = 100, n = 120, t_end = 30 }
+
+local U = 1
+domain { 0, 0, 1, 1 }
+particles { dr = 1 / n }
+scheme "isph-usaw"
+fluid { density = 1, viscosity = U / re }
+box_wall { 0, 0, 1, 1, lid_velocity = {U, 0} }
+fill { 0, 0, 1, 1, name = "fluid" }
+profile { "u_centreline", from = {0.5, 0}, to = {0.5, 1}, points = 101 }
+profile { "v_centreline", from = {0, 0.5}, to = {1, 0.5}, points = 101 }
+force { "lid" }
+run { t_end = t_end, output_every = t_end / 10 }
+
+function metrics(sim)
+  local column = "Re" .. math.floor(re + 0.5)
+  local u_rms, u_max = sim.profile_error { field = "vel", component = 1, x = 0.5,
+    csv = "tests/data/ghia1982_u_centreline.csv", coordinate = "y", value = "u_" .. column }
+  local v_rms, v_max = sim.profile_error { field = "vel", component = 2, y = 0.5,
+    csv = "tests/data/ghia1982_v_centreline.csv", coordinate = "x", value = "v_" .. column }
+  return { u_rms_vs_ghia = u_rms, u_max_vs_ghia = u_max, v_rms_vs_ghia = v_rms,
+           v_max_vs_ghia = v_max }
+end
