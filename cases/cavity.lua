@@ -2,7 +2,7 @@
 -- Re = U L / ν. Centreline profiles u(y) at x = 1/2 and v(x) at y = 1/2 against Ghia, Ghia &
 -- Shin 1982 (tests/data), RMS and largest deviation in units of U. The paper's resolutions:
 -- 120² (Re 100), 200² (Re 400), 240² (Re 1000).
-param { re = 100, n = 120, t_end = 30 }
+param { re = 100, n = 120, t_end = 30, cfl = 1 }
 
 local U = 1
 domain { 0, 0, 1, 1 }
@@ -14,7 +14,7 @@ fill { 0, 0, 1, 1, name = "fluid" }
 profile { "u_centreline", from = {0.5, 0}, to = {0.5, 1}, points = 101 }
 profile { "v_centreline", from = {0, 0.5}, to = {1, 0.5}, points = 101 }
 force { "lid" }
-run { t_end = t_end, output_every = t_end / 10 }
+run { t_end = t_end, output_every = t_end / 10, cfl = cfl }
 
 function metrics(sim)
   local column = "Re" .. math.floor(re + 0.5)
