@@ -4,12 +4,17 @@
 -- pressure_error compares with ρ g (H − z); pressure_error_particles with ρ g (H − dr/2 − z),
 -- the hydrostatic pressure under the paper's p̃ = 0 on the top particles (half a spacing below
 -- the water's surface; isph-usaw option free_surface_offset = 0.5 moves it to the surface).
-param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0 }
+-- --set wcsph=1 runs the weakly-compressible baseline.
+param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0, wcsph = 0 }
 
 local g = 9.81
 domain { 0, 0, width, 1.5 * depth }
 particles { dr = dr }
-scheme { "isph-usaw", free_surface_offset = surface_offset }
+if wcsph == 1 then -- the baseline: c0 = 10 √(g H)
+  scheme { "wcsph-usaw", sound_speed = 10 * math.sqrt(g * depth) }
+else
+  scheme { "isph-usaw", free_surface_offset = surface_offset }
+end
 fluid { density = 1000, viscosity = 1e-6, gravity = {0, -g} }
 wall { {0, 1.5 * depth}, {0, 0}, {width, 0}, {width, 1.5 * depth}, fluid = "left",
        group = "tank" }

@@ -2,14 +2,6 @@
  *   r* = r^n + δt/2 u^n,   r̃^{n+1} = r* + δt/2 ũ^{n+1},
  * for fluid particles only (vertex particles move with their wall, wall.cl). A non-finite
  * position raises CLSPH_FLAG_NAN; periodic axes wrap. */
-real isph_wrap(real x, real lo, real len)
-{
-  real t = x - lo;
-  t -= len * floor(t / len);
-  if (t >= len) t -= len;
-  return lo + t;
-}
-
 __kernel void isph_half_move(const uint n, const real half_dt, const struct grid g,
                              __global realv *pos, __global const realv *vel,
                              __global const uint *kind, __global uint *flags)

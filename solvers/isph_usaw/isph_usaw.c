@@ -2,7 +2,7 @@
  * laminar. One time step (sec 3.2, eqs 30-38):
  *   1. r* = r^n + δt/2 u^n                                      (30, move.cl)
  *   2. γ_a analytically (eqs 55-62) for the particles near a wall (usaw/gamma.cl)
- *   3. u* = u^n + δt [(1/ρ) L{µ, u} + g + f]                    (31 with 15, predict.cl)
+ *   3. u* = u^n + δt [(1/ρ) L{µ, u} + g + f]                    (31 with 15, usaw/viscous.cl)
  *   4. free surface: D{r} ≤ 1.5 unless about to hit a wall (eq 39, free_surface.cl)
  *   5. Morris Σ 2V F (P_a − P_b) = γ (ρ/δt) D{u*} + 2 Σ_s (∇P)_s·∇γ_as, P = p̃ + ρgz   (44, ppe.cl)
  *      solved on the device by BiCGStab (solvers/pressure), P = ρgz on free-surface rows;
@@ -35,12 +35,10 @@ struct isph {
   double acc;       /* largest acceleration of the last step, m/s² */
 };
 
-static const char *const sources[] = {"common/blas1.cl",      "common/csr.cl",
-                                      "common/poisson.cl",    "usaw/gamma.cl",
-                                      "isph_usaw/common.cl",  "isph_usaw/move.cl",
-                                      "isph_usaw/predict.cl", "isph_usaw/free_surface.cl",
-                                      "isph_usaw/ppe.cl",     "isph_usaw/project.cl",
-                                      "isph_usaw/shift.cl",   NULL};
+static const char *const sources[] = {
+    "common/blas1.cl",  "common/csr.cl",        "common/poisson.cl",  "usaw/gamma.cl",
+    "usaw/common.cl",   "isph_usaw/move.cl",    "usaw/viscous.cl",    "isph_usaw/free_surface.cl",
+    "isph_usaw/ppe.cl", "isph_usaw/project.cl", "isph_usaw/shift.cl", NULL};
 static const char *const options[] = {"shifting", "pressure_gradient", "free_surface_offset",
                                       PSOLVE_OPTION_NAMES, NULL};
 
@@ -206,7 +204,7 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   struct {
     cl_kernel *k;
     const char *name;
-  } ks[] = {{&is->k_half, "isph_half_move"},    {&is->k_predict, "isph_predict"},
+  } ks[] = {{&is->k_half, "isph_half_move"},    {&is->k_predict, "usaw_predict"},
             {&is->k_free, "isph_free_surface"}, {&is->k_rhs, "isph_ppe_rhs"},
             {&is->k_pressure, "isph_pressure"}, {&is->k_project, "isph_project"},
             {&is->k_shift, "isph_shift"},       {&is->k_apply, "isph_apply_shift"}};
@@ -373,30 +371,13 @@ done:
   return st;
 }
 
-/* Pressure force of the fluid on the walls of a group: Σ_s −p̃_s n_s |s| (the viscous stress is
- * not included). */
+/* Pressure force of the fluid on the walls of a group (walls.c). */
 static enum clsph_status isph_wall_force(struct sim *sim, void *state, const char *group,
                                          double f[2])
 {
-  enum clsph_status st = CLSPH_OK;
   struct isph *is = state;
-  const struct geom *geo = &sim->geom;
-  real *p = malloc(sim->ps.n * sizeof *p);
-  cl_uint *inv = malloc(sim->ps.n * sizeof *inv);
-  CLSPH_CHECK(p != NULL && inv != NULL, CLSPH_E_NOMEM, "out of memory");
-  CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, is->f_p), sim->ps.n * sizeof *p, p));
-  CLSPH_TRY(kern_read(sim->dev, sim->d_inv, sim->ps.n * sizeof *inv, inv));
-  f[0] = f[1] = 0.0;
-  for (size_t s = 0; s < geo->nseg; ++s) {
-    if (strcmp(sim->scene->walls[geo->seg_wall[s]].group, group) != 0) continue;
-    double ps = 0.5 * ((double)p[inv[geo->seg_v[2 * s]]] + (double)p[inv[geo->seg_v[2 * s + 1]]]);
-    f[0] -= ps * geo->seg_normal[2 * s] * geo->seg_len[s];
-    f[1] -= ps * geo->seg_normal[2 * s + 1] * geo->seg_len[s];
-  }
-done:
-  free(inv);
-  free(p);
-  return st;
+  return usaw_pressure_force(sim->dev, &sim->geom, sim->scene, sim->ps.n,
+                             pset_mem(&sim->ps, is->f_p), sim->d_inv, group, f);
 }
 
 static void isph_destroy(void *state)

@@ -36,7 +36,7 @@ void psolve_defaults(struct psolve_options *o)
   o->precond = PSOLVE_JACOBI;
   o->sweeps = 2;
   o->singular = PSOLVE_REGULAR;
-  o->reinforce = 1e-6;
+  o->reinforce = CLSPH_DOUBLE ? 1e-6 : 1e-4; /* float: 1e-6 is below its resolution */
   o->rtol = CLSPH_DOUBLE ? 1e-8 : 1e-5;
   o->atol = 0.0;
   o->max_it = 1000;

@@ -6,6 +6,8 @@
 #include <string.h>
 
 #include "clsph_config.h"
+#include "geometry.h"
+#include "scene.h"
 
 enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
                                     const struct usaw_segments *segs, const struct grid_spec *box,
@@ -80,6 +82,29 @@ enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, 
                      KARG(nn), KARG(d_pos), KARG(d_theta), KARG(d_gamma), KARG(d_grad_gamma)));
   CLSPH_TRY(kern_launch(dev, w->k_gamma, n, NULL));
 done:
+  return st;
+}
+
+enum clsph_status usaw_pressure_force(const struct dev *dev, const struct geom *geo,
+                                      const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_inv,
+                                      const char *group, double f[2])
+{
+  enum clsph_status st = CLSPH_OK;
+  real *p = malloc(n * sizeof *p);
+  cl_uint *inv = malloc(n * sizeof *inv);
+  CLSPH_CHECK(p != NULL && inv != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(kern_read(dev, d_p, n * sizeof *p, p));
+  CLSPH_TRY(kern_read(dev, d_inv, n * sizeof *inv, inv));
+  f[0] = f[1] = 0.0;
+  for (size_t s = 0; s < geo->nseg; ++s) {
+    if (strcmp(sc->walls[geo->seg_wall[s]].group, group) != 0) continue;
+    double ps = 0.5 * ((double)p[inv[geo->seg_v[2 * s]]] + (double)p[inv[geo->seg_v[2 * s + 1]]]);
+    f[0] -= ps * geo->seg_normal[2 * s] * geo->seg_len[s];
+    f[1] -= ps * geo->seg_normal[2 * s + 1] * geo->seg_len[s];
+  }
+done:
+  free(inv);
+  free(p);
   return st;
 }
 

@@ -35,6 +35,14 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
 enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, size_t n,
                                    cl_mem d_pos, cl_mem d_theta, cl_mem d_gamma,
                                    cl_mem d_grad_gamma);
+struct geom;
+struct scene;
+/** @brief Pressure force of the fluid on the walls of a group, Σ_s −p_s n_s |s| with p_s the mean
+ *  of the segment's vertex pressures (the viscous stress is not included); reads p and the
+ *  inverse index (current index of each original particle) back from the device. */
+enum clsph_status usaw_pressure_force(const struct dev *dev, const struct geom *geo,
+                                      const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_inv,
+                                      const char *group, double f[2]);
 /** @brief Release. */
 void usaw_walls_destroy(struct usaw_walls *w);
 

@@ -1,4 +1,4 @@
-/* common.cl (isph-usaw): the USAW operators of Leroy et al. 2014 over particles b ∈ P (fluid and
+/* common.cl (USAW schemes): the USAW operators of Leroy et al. 2014 over particles b ∈ P (fluid and
  * vertex particles) and segments s, shared by the stages of the scheme.
  *   G+_a{A} = (1/γ_a) Σ_b V_b (A_a + A_b) ∇w_ab − (1/γ_a) Σ_s (A_a + A_s) ∇γ_as      (5)
  *   G−_a{A} = −(1/γ_a) Σ_b V_b A_ab ∇w_ab + (1/γ_a) Σ_s A_as ∇γ_as                  (8)
@@ -20,3 +20,12 @@
 #define USAW_PART_ARGS                                                                             \
   const uint n, const struct grid g, __global const uint *cell_start, __global const realv *pos,   \
       __global const real *vol, __global const uint *kind, __global const real *gam
+
+/* Position on a periodic axis wrapped into [lo, lo + len). */
+real isph_wrap(real x, real lo, real len)
+{
+  real t = x - lo;
+  t -= len * floor(t / len);
+  if (t >= len) t -= len; /* round-off of the line above */
+  return lo + t;
+}

@@ -1,4 +1,4 @@
-/* predict.cl (isph-usaw): the velocity prediction without pressure (eq 31),
+/* viscous.cl (USAW schemes): the velocity prediction without pressure (eq 31),
  *   u*_a = u^n_a + δt [ (1/ρ) L_a{µ, u} + g + f ],
  * with the laminar USAW viscous term (eq 15)
  *   (1/ρ) L_a{µ, u} = (2ν/γ_a) Σ_b V_b u_ab r_ab·∇w_ab / r_ab²
@@ -7,7 +7,7 @@
  * (eq 16), δr_as = max(r_as·n_s, δr) (eq 17). It runs for vertex particles too: their u* enters
  * the wall condition of the pressure equation through the segments (eq 43). acc gets
  * (u* − u^n)/δt − g − f, the viscous acceleration, which the wall condition needs. */
-__kernel void isph_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel, const real dt,
+__kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel, const real dt,
                            const real nu, const real dr, const realv accel, __global realv *ustar,
                            __global realv *visc)
 {

@@ -1,0 +1,64 @@
+/* density.cl (wcsph-usaw): the weakly-compressible baseline of Leroy et al. 2014 on the same
+ * walls. Density by the continuity equation with the USAW divergence (eq 9) and a Ferrari
+ * et al. (2009) density diffusion,
+ *   dρ_a/dt = (ρ_a/γ_a) [Σ_b V_b u_ab·∇w_ab − Σ_s u_as·∇γ_as]
+ *             + (c0/γ_a) Σ_b V_b (ρ_a − ρ_b + ρ0 g·r_ab/c0²) r_ab·∇w_ab / r_ab,
+ * (the term ρ0 g·r_ab/c0² leaves the hydrostatic stratification undiffused: diffusing it drains
+ * the density of the particles along the bottom, as in Fourtakas et al. 2019), the linear
+ * equation of state p = c0² (ρ − ρ0) + p_bg, and the wall vertices' pressure as the
+ * Shepard mean of the fluid's, carried hydrostatically to the wall (Ferrand et al. 2013):
+ *   p_v = Σ_b V_b (p_b + ρ_b g·(r_v − r_b)) w_vb / Σ_b V_b w_vb. */
+__kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
+                               __global const real *rho, const real c0, const realv gravity,
+                               const real rho0_c2, __global real *drho)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  drho[i] = R(0.0);
+  if (kind[i] != ISPH_FLUID) return;
+  const realv x = pos[i], u = vel[i];
+  const real ra = rho[i];
+  real div = R(0.0), diff = R(0.0);
+  struct neigh_iter it;
+  neigh_begin(&it, &g, x);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = x - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] != ISPH_FLUID) continue;
+    real rr = sqrt(r2), f = smoothing_f(rr);
+    div += vol[j] * f * dot(u - vel[j], r);
+    /* the hydrostatic part of the density difference is not diffused: ρ_H,a − ρ_H,b = −ρ0 g·r/c0²
+     */
+    diff += vol[j] * (ra - rho[j] + rho0_c2 * dot(gravity, r)) * f * rr; /* r·∇w / r = F r */
+  }
+  neigh_begin(&it, &g_seg, x);
+  uint s;
+  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+    const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
+    const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
+    div -= dot(u - us, usaw_grad_gamma_seg(x, a, b, seg_n[s]));
+  }
+  drho[i] = (ra * div + c0 * diff) / gam[i];
+}
+
+__kernel void wcsph_vertex_pressure(USAW_PART_ARGS, __global const real *rho, const realv gravity,
+                                    __global real *p)
+{
+  const uint i = get_global_id(0);
+  if (i >= n || kind[i] != ISPH_VERTEX) return;
+  const realv x = pos[i];
+  real s = R(0.0), ws = R(0.0);
+  struct neigh_iter it;
+  neigh_begin(&it, &g, x);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = x - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || kind[j] != ISPH_FLUID) continue;
+    real w = vol[j] * smoothing_w(sqrt(r2));
+    s += w * (p[j] + rho[j] * dot(gravity, r)); /* r = r_v − r_b */
+    ws += w;
+  }
+  p[i] = ws > R(0.0) ? s / ws : R(0.0);
+}

@@ -1,0 +1,289 @@
+/* wcsph_usaw.c: the weakly-compressible baseline of Leroy et al. 2014 (their WCSPH-USAW): the
+ * same unified semi-analytical walls and operators as isph-usaw, with density by continuity
+ * (and Ferrari density diffusion), a linear equation of state with a background pressure, and
+ * an explicit time step (kernels/wcsph_usaw/). One step at r^n:
+ *   γ; wall-vertex pressure; dρ/dt; u* = u^n + δt (a_visc + g + f); u^{n+1} = u* − δt/ρ G+{p};
+ *   r, ρ, V = m/ρ, p.
+ * Options: sound_speed c0 (m/s; default 10 times the largest of the wall speed and √(g H)),
+ * background_pressure p_bg (Pa, default 0; the paper uses one for the cavity).
+ * Time step (48-49) with u_ref = c0: min(0.2 h/c0, 0.125 h²/ν, 0.25 √(h/|a|)). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../scheme.h"
+#include "clsph_config.h"
+#include "sim.h"
+#include "walls.h"
+
+struct wcsph {
+  struct usaw_walls walls;
+  int f_rho, f_drho, f_p, f_gam, f_ggam, f_theta, f_ustar, f_visc;
+  cl_kernel k_cont, k_vertex, k_predict, k_velocity, k_advance;
+  double c0, p_bg, mass;
+  double diffusion; /* factor of the Ferrari density diffusion (1: as published, 0: off) */
+};
+
+static const char *const sources[] = {"usaw/gamma.cl",        "usaw/common.cl",
+                                      "usaw/viscous.cl",      "wcsph_usaw/density.cl",
+                                      "wcsph_usaw/update.cl", NULL};
+static const char *const options[] = {"sound_speed", "background_pressure", "density_diffusion",
+                                      NULL};
+
+#if CLSPH_DOUBLE
+typedef cl_double2 host_realv;
+#else
+typedef cl_float2 host_realv;
+#endif
+
+static host_realv vec2(double x, double y)
+{
+  host_realv v;
+  v.s[0] = (real)x;
+  v.s[1] = (real)y;
+  return v;
+}
+
+static enum clsph_status prefix(struct sim *sim, struct wcsph *ws, cl_kernel k, int with_segments,
+                                cl_uint *next)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  struct usaw_walls *w = &ws->walls;
+  cl_uint n = (cl_uint)ps->n;
+  cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
+  cl_mem kind = pset_mem(ps, sim->f_kind), gam = pset_mem(ps, ws->f_gam);
+  CLSPH_TRY(KERN_SET(k, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
+                     KARG(vol), KARG(kind), KARG(gam)));
+  *next = 7;
+  if (with_segments) {
+    cl_mem sa = pset_mem(&w->ps, w->f_a), sb = pset_mem(&w->ps, w->f_b);
+    cl_mem sn = pset_mem(&w->ps, w->f_n), v1 = pset_mem(&w->ps, w->f_v1);
+    cl_mem v2 = pset_mem(&w->ps, w->f_v2);
+    struct karg a[] = {KARG(w->g.geom), KARG(w->g.d_start), KARG(sa), KARG(sb),
+                       KARG(sn),        KARG(v1),           KARG(v2), KARG(sim->d_inv)};
+    for (size_t i = 0; i < sizeof a / sizeof *a; ++i) CLSPH_TRY(kern_set_at(k, (*next)++, a[i]));
+  }
+done:
+  return st;
+}
+
+#define ARG(k, i, x) CLSPH_TRY(kern_set_at((k), (i)++, KARG(x)))
+
+static enum clsph_status wcsph_create(struct sim *sim, void **state)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct wcsph *ws = calloc(1, sizeof *ws);
+  const struct geom *geo = &sim->geom;
+  const struct scene *sc = sim->scene;
+  real *buf = NULL;
+  double *ab = NULL;
+  CLSPH_CHECK(ws != NULL, CLSPH_E_NOMEM, "wcsph-usaw: out of memory");
+  CLSPH_CHECK(sim->sm.kind == SMOOTHING_WENDLAND_C2, CLSPH_E_INPUT,
+              "%s: wcsph-usaw computes γ analytically for the Wendland C2 kernel only",
+              sc->case_path);
+  double u_wall = 0.0;
+  for (size_t i = 0; i < geo->n; ++i) {
+    CLSPH_CHECK(geo->kind[i] <= KIND_VERTEX, CLSPH_E_INPUT,
+                "%s: wcsph-usaw has no inflow or outflow sections", sc->case_path);
+    if (geo->kind[i] == KIND_VERTEX) u_wall = fmax(u_wall, hypot(geo->v[2 * i], geo->v[2 * i + 1]));
+  }
+  double gh = sqrt(hypot(sc->gravity[0], sc->gravity[1]) * (sc->hi[1] - sc->lo[1]));
+  ws->c0 = 10.0 * fmax(u_wall, gh); /* Leroy et al. 2014: 10 U */
+  ws->diffusion = 1.0;
+  for (int i = 0; i < sc->noptions; ++i) {
+    const struct scene_option *o = &sc->options[i];
+    if (strcmp(o->key, "sound_speed") == 0) {
+      CLSPH_CHECK(o->is_number && o->number > 0.0, CLSPH_E_INPUT,
+                  "%s: sound_speed must be a positive speed (m/s)", sc->case_path);
+      ws->c0 = o->number;
+    } else if (strcmp(o->key, "density_diffusion") == 0) {
+      CLSPH_CHECK(o->is_number && o->number >= 0.0 && o->number <= 1.0, CLSPH_E_INPUT,
+                  "%s: density_diffusion must be a factor from 0 (off) to 1", sc->case_path);
+      ws->diffusion = o->number;
+    } else if (strcmp(o->key, "background_pressure") == 0) {
+      CLSPH_CHECK(o->is_number && o->number >= 0.0, CLSPH_E_INPUT,
+                  "%s: background_pressure must be a pressure >= 0 (Pa)", sc->case_path);
+      ws->p_bg = o->number;
+    }
+  }
+  CLSPH_CHECK(ws->c0 > 0.0, CLSPH_E_INPUT,
+              "%s: wcsph-usaw needs a sound speed: set the scheme option sound_speed (m/s)",
+              sc->case_path);
+  ws->mass = sc->rho0 * sc->dr * sc->dr;
+  /* fields: density, pressure, and the USAW helpers */
+  struct pset *ps = &sim->ps;
+  const size_t rv = 2 * sizeof(real);
+  buf = calloc(2 * geo->n + 1, sizeof *buf);
+  CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory");
+  /* hydrostatic start: p = ρ0 |g| (z_top − z) + p_bg, ρ = ρ0 + (p − p_bg)/c0², z along −g and
+   * z_top half a spacing above the highest fluid particle */
+  double gn = hypot(sc->gravity[0], sc->gravity[1]), up[2] = {0.0, 0.0}, ztop = -HUGE_VAL;
+  if (gn > 0.0) {
+    up[0] = -sc->gravity[0] / gn;
+    up[1] = -sc->gravity[1] / gn;
+  }
+  for (size_t i = 0; i < geo->nfluid; ++i)
+    ztop = fmax(ztop, up[0] * geo->x[2 * i] + up[1] * geo->x[2 * i + 1] + 0.5 * sc->dr);
+  for (size_t i = 0; i < geo->n; ++i) {
+    double z = up[0] * geo->x[2 * i] + up[1] * geo->x[2 * i + 1];
+    double ph = geo->kind[i] == KIND_FLUID && gn > 0.0 ? sc->rho0 * gn * (ztop - z) : 0.0;
+    buf[i] = (real)(sc->rho0 + ph / (ws->c0 * ws->c0));
+    buf[geo->n + i] = (real)(ws->p_bg + ph);
+  }
+  CLSPH_TRY(pset_add(ps, sim->dev, "rho", sizeof(real), buf, &ws->f_rho));
+  CLSPH_TRY(pset_add(ps, sim->dev, "p", sizeof(real), buf + geo->n, &ws->f_p));
+  CLSPH_TRY(pset_add(ps, sim->dev, "gamma", sizeof(real), NULL, &ws->f_gam));
+  for (size_t i = 0; i < geo->n; ++i)
+    buf[i] = geo->kind[i] == KIND_VERTEX ? (real)geo->theta[i] : 0;
+  CLSPH_TRY(pset_add(ps, sim->dev, "theta", sizeof(real), buf, &ws->f_theta));
+  pset_describe(ps, ws->f_theta, PF_REAL, 0, 0);
+  const struct {
+    const char *name;
+    size_t elem;
+    int *f;
+  } hidden[] = {{"drho", sizeof(real), &ws->f_drho},
+                {"grad_gamma", rv, &ws->f_ggam},
+                {"ustar", rv, &ws->f_ustar},
+                {"visc", rv, &ws->f_visc}};
+  for (size_t k = 0; k < sizeof hidden / sizeof *hidden; ++k) {
+    CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
+    pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
+  }
+  /* volumes: m/ρ0 for the fluid, none for the wall vertices (as in isph-usaw) */
+  for (size_t k = 0; k < geo->n; ++k)
+    buf[k] = geo->kind[k] == KIND_VERTEX ? (real)0 : (real)(sc->dr * sc->dr);
+  CLSPH_TRY(kern_write(sim->dev, pset_mem(ps, sim->f_vol), geo->n * sizeof(real), buf));
+  /* segments */
+  ab = calloc(4 * (geo->nseg + 1), sizeof *ab);
+  CLSPH_CHECK(ab != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t s = 0; s < geo->nseg; ++s)
+    for (int c = 0; c < 2; ++c) {
+      ab[2 * s + (size_t)c] = geo->x[2 * geo->seg_v[2 * s] + (size_t)c];
+      ab[2 * geo->nseg + 2 * s + (size_t)c] = geo->x[2 * geo->seg_v[2 * s + 1] + (size_t)c];
+    }
+  struct usaw_segments segs = {geo->nseg, ab, ab + 2 * geo->nseg, geo->seg_normal, geo->seg_v};
+  CLSPH_TRY(usaw_walls_create(sim->dev, sim->prog, &segs, &sim->gspec, &ws->walls));
+  CLSPH_TRY(prog_kernel(sim->prog, "wcsph_continuity", &ws->k_cont));
+  CLSPH_TRY(prog_kernel(sim->prog, "wcsph_vertex_pressure", &ws->k_vertex));
+  CLSPH_TRY(prog_kernel(sim->prog, "usaw_predict", &ws->k_predict));
+  CLSPH_TRY(prog_kernel(sim->prog, "wcsph_velocity", &ws->k_velocity));
+  CLSPH_TRY(prog_kernel(sim->prog, "wcsph_advance", &ws->k_advance));
+  *state = ws;
+  ws = NULL;
+done:
+  free(ab);
+  free(buf);
+  if (ws != NULL) {
+    usaw_walls_destroy(&ws->walls);
+    free(ws);
+  }
+  return st;
+}
+
+static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct wcsph *ws = state;
+  const struct scene *sc = sim->scene;
+  struct pset *ps = &sim->ps;
+  cl_uint i;
+  const real rdt = (real)dt, nu = (real)sc->nu, dr = (real)sc->dr, c0 = (real)ws->c0;
+  const real mass = (real)ws->mass, rho0 = (real)sc->rho0, pbg = (real)ws->p_bg;
+  const host_realv accel =
+      vec2(sc->gravity[0] + sc->body_force[0], sc->gravity[1] + sc->body_force[1]);
+  const host_realv grav = vec2(sc->gravity[0], sc->gravity[1]);
+  cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
+  cl_mem kind = pset_mem(ps, sim->f_kind), vol = pset_mem(ps, sim->f_vol);
+  cl_mem rho = pset_mem(ps, ws->f_rho), drho = pset_mem(ps, ws->f_drho), p = pset_mem(ps, ws->f_p);
+  cl_mem ustar = pset_mem(ps, ws->f_ustar), visc = pset_mem(ps, ws->f_visc);
+  cl_uint n = (cl_uint)ps->n;
+  CLSPH_TRY(usaw_walls_gamma(&ws->walls, sim->dev, ps->n, pos, pset_mem(ps, ws->f_theta),
+                             pset_mem(ps, ws->f_gam), pset_mem(ps, ws->f_ggam)));
+  /* wall-vertex pressure, density rate, prediction, pressure force, advance */
+  CLSPH_TRY(prefix(sim, ws, ws->k_vertex, 0, &i));
+  ARG(ws->k_vertex, i, rho);
+  ARG(ws->k_vertex, i, grav);
+  ARG(ws->k_vertex, i, p);
+  CLSPH_TRY(kern_launch(sim->dev, ws->k_vertex, ps->n, NULL));
+  CLSPH_TRY(prefix(sim, ws, ws->k_cont, 1, &i));
+  ARG(ws->k_cont, i, vel);
+  ARG(ws->k_cont, i, rho);
+  const real cd = (real)(ws->diffusion * ws->c0), r0c2 = (real)(sc->rho0 / (ws->c0 * ws->c0));
+  ARG(ws->k_cont, i, cd);
+  ARG(ws->k_cont, i, grav);
+  ARG(ws->k_cont, i, r0c2);
+  ARG(ws->k_cont, i, drho);
+  CLSPH_TRY(kern_launch(sim->dev, ws->k_cont, ps->n, NULL));
+  CLSPH_TRY(prefix(sim, ws, ws->k_predict, 1, &i));
+  ARG(ws->k_predict, i, vel);
+  ARG(ws->k_predict, i, rdt);
+  ARG(ws->k_predict, i, nu);
+  ARG(ws->k_predict, i, dr);
+  ARG(ws->k_predict, i, accel);
+  ARG(ws->k_predict, i, ustar);
+  ARG(ws->k_predict, i, visc);
+  CLSPH_TRY(kern_launch(sim->dev, ws->k_predict, ps->n, NULL));
+  CLSPH_TRY(prefix(sim, ws, ws->k_velocity, 1, &i));
+  ARG(ws->k_velocity, i, ustar);
+  ARG(ws->k_velocity, i, p);
+  ARG(ws->k_velocity, i, rho);
+  ARG(ws->k_velocity, i, rdt);
+  ARG(ws->k_velocity, i, vel);
+  CLSPH_TRY(kern_launch(sim->dev, ws->k_velocity, ps->n, NULL));
+  CLSPH_TRY(KERN_SET(ws->k_advance, KARG(n), KARG(sim->grid.geom), KARG(rdt), KARG(mass),
+                     KARG(rho0), KARG(c0), KARG(pbg), KARG(kind), KARG(pos), KARG(vel), KARG(rho),
+                     KARG(drho), KARG(vol), KARG(p), KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch(sim->dev, ws->k_advance, ps->n, NULL));
+done:
+  return st;
+}
+
+static enum clsph_status wcsph_max_dt(struct sim *sim, void *state, double *dt)
+{
+  struct wcsph *ws = state;
+  const struct scene *s = sim->scene;
+  const double h = sim->sm.h;
+  double a = hypot(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]);
+  double d = 0.2 * h / ws->c0;                         /* CFL with u_ref = c0 (49) */
+  if (s->nu > 0.0) d = fmin(d, 0.125 * h * h / s->nu); /* viscous (49) */
+  if (a > 0.0) d = fmin(d, 0.25 * sqrt(h / a));        /* force (49) */
+  *dt = d;
+  return CLSPH_OK;
+}
+
+/* Pressure force of the fluid on the walls of a group (walls.c). */
+static enum clsph_status wcsph_wall_force(struct sim *sim, void *state, const char *group,
+                                          double f[2])
+{
+  struct wcsph *ws = state;
+  return usaw_pressure_force(sim->dev, &sim->geom, sim->scene, sim->ps.n,
+                             pset_mem(&sim->ps, ws->f_p), sim->d_inv, group, f);
+}
+
+static void wcsph_destroy(void *state)
+{
+  struct wcsph *ws = state;
+  if (ws == NULL) return;
+  cl_kernel *ks[] = {&ws->k_cont, &ws->k_vertex, &ws->k_predict, &ws->k_velocity, &ws->k_advance};
+  for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
+    if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
+  usaw_walls_destroy(&ws->walls);
+  free(ws);
+}
+
+const struct scheme_ops scheme_wcsph_usaw = {
+    .name = "wcsph-usaw",
+    .summary =
+        "weakly-compressible SPH, unified semi-analytical walls (Leroy et al. 2014 baseline)",
+    .sources = sources,
+    .wall_model = "usaw",
+    .smoothing = "wendland",
+    .h_over_dr = 2.0,
+    .options = options,
+    .create = wcsph_create,
+    .step = wcsph_step,
+    .max_dt = wcsph_max_dt,
+    .wall_force = wcsph_wall_force,
+    .destroy = wcsph_destroy,
+};
