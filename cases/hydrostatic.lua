@@ -2,10 +2,10 @@
 -- tank. After t_end = 5 s the pressure must be within 1% of ρ g (H − z) for particles deeper
 -- than 3 dr, the largest speed below 1e-3 √(g H), and no particle may have crossed a wall.
 -- pressure_error compares with ρ g (H − z); pressure_error_particles with ρ g (H − dr/2 − z),
--- the hydrostatic pressure under the paper's p̃ = 0 on the top particles (half a spacing below
--- the water's surface; isph-usaw option free_surface_offset = 0.5 moves it to the surface).
+-- the hydrostatic pressure under p̃ = 0 on the top particles themselves, the paper's literal
+-- reading (--set surface_offset=0; isph-usaw imposes p̃ = 0 half a spacing beyond them).
 -- --set wcsph=1 runs the weakly-compressible baseline.
-param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0, wcsph = 0 }
+param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0.5, wcsph = 0 }
 
 local g = 9.81
 domain { 0, 0, width, 1.5 * depth }

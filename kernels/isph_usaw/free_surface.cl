@@ -4,7 +4,7 @@
  * except when it is about to hit a wall vertex v (eq 39):
  *   |r_av| + δt (u_a · r_av)/|r_av| < h q_max / 8,
  * so that jets hitting a wall keep their pressure and do not cross it. Wall vertices: see below.
- * normal gets the outward unit normal −G{1}/|G{1}| (eq 37), for the free-surface position. */
+ * normal gets the outward unit normal of the surface (for free_surface_offset). */
 __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
                                 const real dt, __global uint *free_surface, __global real *divr,
                                 __global realv *normal)
@@ -19,7 +19,8 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
   real d = R(0.0);
   int hitting = 0;
   uint wet = 0;               /* fluid neighbours */
-  realv gc = (realv)(R(0.0)); /* γ G{1} (eq 37): points into the fluid */
+  realv gf = (realv)(R(0.0)); /* Σ_b V_b ∇w_ab: into the fluid (and the walls) */
+  realv gw = (realv)(R(0.0)); /* ∇γ_a = Σ_s ∇γ_as: away from the walls */
   struct neigh_iter it;
   neigh_begin(&it, &g, x);
   uint j;
@@ -29,7 +30,7 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
     if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
     d -= vol[j] * smoothing_f(sqrt(r2)) * r2; /* r_ab·∇w_ab = F r² */
     wet += kind[j] == ISPH_FLUID;
-    gc += vol[j] * smoothing_f(sqrt(r2)) * r;
+    gf += vol[j] * smoothing_f(sqrt(r2)) * r;
     if (kind[i] == ISPH_FLUID && kind[j] == ISPH_VERTEX) {
       real dist = sqrt(r2);
       if (dist + dt * dot(u, r) / dist < SMOOTH_SUPPORT / R(8.0)) hitting = 1; /* eq 39 */
@@ -41,12 +42,18 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv gg = usaw_grad_gamma_seg(x, a, b, seg_n[s]);
     d += dot(x - R(0.5) * (a + b), gg);
-    gc -= gg;
+    gw += gg;
   }
   d /= gam[i];
   divr[i] = d;
-  const real lc = length(gc);
-  normal[i] = lc > R(0.0) ? -gc / lc : (realv)(R(0.0)); /* outward normal of the fluid */
+  /* outward normal of the free surface: the concentration gradient of the fluid alone, less its
+   * component across a nearby wall (where the surface meets the wall, the missing neighbours
+   * behind the wall are not missing fluid) */
+  realv nf = -gf;
+  const real lw = length(gw);
+  if (lw > R(0.0)) nf -= dot(nf, gw / lw) * (gw / lw);
+  const real lf = length(nf);
+  normal[i] = lf > R(0.0) ? nf / lf : (realv)(R(0.0));
   /* A wall vertex is a Dirichlet row only when it is dry (no fluid within its support): one
    * next to the free surface would impose p̃ = 0 below the fluid's top row and pull the fluid
    * into the wall; with fluid around, its row of eq 44 extrapolates the pressure to the wall. */
