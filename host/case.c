@@ -699,7 +699,8 @@ static int l_force(lua_State *L)
 
 static int l_run(lua_State *L)
 {
-  static const char *const keys[] = {"t_end", "output_every", "checkpoint_every", "cfl", NULL};
+  static const char *const keys[] = {"t_end", "output_every", "checkpoint_every",
+                                     "cfl",   "dt",           NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "run");
@@ -729,6 +730,8 @@ static int l_run(lua_State *L)
   if (s->output_every < 0.0 || s->checkpoint_every < 0.0)
     luaL_error(L, "run: output_every and checkpoint_every must not be negative");
   if (!(s->cfl > 0.0)) luaL_error(L, "run: cfl must be positive, not %f", s->cfl);
+  s->dt = get_number(L, 1, "run", "dt", 0.0);
+  if (s->dt < 0.0) luaL_error(L, "run: dt must be a positive time step, not %f", s->dt);
   return 0;
 }
 

@@ -102,6 +102,7 @@ struct scene {
   double output_every;         /* snapshot cadence, s (0: only the last) */
   double checkpoint_every;     /* checkpoint cadence, s (0: only the last) */
   double cfl;                  /* time-step factor (1 = the scheme's bounds) */
+  double dt;                   /* fixed time step, s (0: from the scheme's bounds) */
   int nparams;
   struct scene_param *params;
   int nregions;

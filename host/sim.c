@@ -858,6 +858,19 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
     double dt = HUGE_VAL;
     if (sim->scheme->max_dt != NULL) CLSPH_TRY(sim->scheme->max_dt(sim, sim->state, &dt));
     dt *= s->cfl;
+    if (s->dt > 0.0) { /* a fixed time step must stay within the scheme's bounds */
+      if (s->dt > dt * (1.0 + 1e-9)) {
+        snprintf(sim->status, sizeof sim->status,
+                 "the fixed time step %g s exceeds the stability bound %g s of %s (cfl %g) at "
+                 "step %ld, t = %.9g s",
+                 s->dt, dt, sim->scheme->name, s->cfl, sim->step, sim->time);
+        log_error("%s: %s; use a smaller run { dt } or a larger cfl knowingly", s->case_path,
+                  sim->status);
+        st = sim->step == 0 ? CLSPH_E_INPUT : CLSPH_E_BLOWUP;
+        goto done;
+      }
+      dt = s->dt;
+    }
     if (!(dt > 0.0) || (isfinite(dt) && dt < 1e-12 * fmax(t_end, 1.0))) {
       snprintf(sim->status, sizeof sim->status,
                "blow-up: the time step collapsed to %g s at step %ld, t = %.9g s", dt, sim->step,

@@ -92,3 +92,6 @@ clsph_run_test(run_cavity_coarse ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 
 # wcsph-usaw, the baseline, on the same coarse cavity (measured RMS 0.121 U for u, 0.043 U for v).
 clsph_run_test(run_cavity_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 t_end=10 wcsph=1
                BOUNDS "u_rms_vs_ghia<0.16" "v_rms_vs_ghia<0.06")
+clsph_cli_test(case_time_step_above_bound RC 2
+               ARGS run ${CASE_DIR}/bad_dt.lua --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/bad_dt
+               REGEX "fixed time step 0.5 s exceeds the stability bound [0-9.e-]+ s of isph-usaw")
