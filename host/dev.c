@@ -273,3 +273,11 @@ void dev_close(struct dev *dev)
   dev->queue = NULL;
   dev->ctx = NULL;
 }
+
+real2 dev_real2(double x, double y)
+{
+  real2 v;
+  v.s[0] = (real)x;
+  v.s[1] = (real)y;
+  return v;
+}

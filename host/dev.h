@@ -9,12 +9,17 @@
 #include "clsph_config.h"
 #include "status.h"
 
-/* Host view of the device real4 (16 or 32 bytes, aligned like the device type). */
+/* Host views of the device real2 and real4 (aligned like the device types). */
 #if CLSPH_DOUBLE
+typedef cl_double2 real2;
 typedef cl_double4 real4;
 #else
+typedef cl_float2 real2;
 typedef cl_float4 real4;
 #endif
+
+/** @brief A real2 kernel argument from two doubles. */
+real2 dev_real2(double x, double y);
 
 /** An open device: the context and the in-order queue every launch goes through. */
 struct dev {

@@ -34,12 +34,7 @@ static enum clsph_status ballistic_step(struct sim *sim, void *state, double dt)
   const struct scene *s = sim->scene;
   cl_uint n = (cl_uint)sim->ps.n;
   real rdt = (real)dt;
-#if CLSPH_DOUBLE
-  cl_double2 accel = {{s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]}};
-#else
-  cl_float2 accel = {
-      {(float)(s->gravity[0] + s->body_force[0]), (float)(s->gravity[1] + s->body_force[1])}};
-#endif
+  real2 accel = dev_real2(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]);
   cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
   cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
   CLSPH_TRY(KERN_SET(b->k_step, KARG(n), KARG(rdt), KARG(accel), KARG(sim->grid.geom), KARG(pos),

@@ -67,20 +67,6 @@ done:
   return st;
 }
 
-#if CLSPH_DOUBLE
-typedef cl_double2 host_realv;
-#else
-typedef cl_float2 host_realv;
-#endif
-
-static host_realv vec2(double x, double y)
-{
-  host_realv v;
-  v.s[0] = (real)x;
-  v.s[1] = (real)y;
-  return v;
-}
-
 /* The particle and segment arguments every stage starts with; returns the next index. */
 static enum clsph_status prefix(struct sim *sim, struct isph *is, cl_kernel k, cl_uint *next)
 {
@@ -187,19 +173,7 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   CLSPH_TRY(kern_write(sim->dev, pset_mem(ps, sim->f_vol), geo->n * sizeof(real), theta));
   pset_describe(ps, is->f_theta, PF_REAL, 0, 0);
   /* segments, kernels, solver */
-  struct usaw_segments segs = {geo->nseg, NULL, NULL, geo->seg_normal, geo->seg_v};
-  double *ab = calloc(4 * (geo->nseg + 1), sizeof *ab);
-  CLSPH_CHECK(ab != NULL, CLSPH_E_NOMEM, "out of memory");
-  for (size_t s = 0; s < geo->nseg; ++s)
-    for (int c = 0; c < 2; ++c) {
-      ab[2 * s + (size_t)c] = geo->x[2 * geo->seg_v[2 * s] + (size_t)c];
-      ab[2 * geo->nseg + 2 * s + (size_t)c] = geo->x[2 * geo->seg_v[2 * s + 1] + (size_t)c];
-    }
-  segs.a = ab;
-  segs.b = ab + 2 * geo->nseg;
-  st = usaw_walls_create(sim->dev, sim->prog, &segs, &sim->gspec, &is->walls);
-  free(ab);
-  CLSPH_TRY(st);
+  CLSPH_TRY(usaw_walls_from_geom(sim->dev, sim->prog, geo, &sim->gspec, &is->walls));
   struct {
     cl_kernel *k;
     const char *name;
@@ -252,9 +226,9 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   cl_uint i;
   const real rdt = (real)dt, rho = (real)sc->rho0, nu = (real)sc->nu, dr = (real)sc->dr;
   const real c = (real)is->c_shift;
-  const host_realv accel =
-      vec2(sc->gravity[0] + sc->body_force[0], sc->gravity[1] + sc->body_force[1]);
-  const host_realv grav = vec2(sc->gravity[0], sc->gravity[1]);
+  const real2 accel =
+      dev_real2(sc->gravity[0] + sc->body_force[0], sc->gravity[1] + sc->body_force[1]);
+  const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
   double vmax0 = 0.0, vmax1 = 0.0;
 
   CLSPH_TRY(sim_max_speed(sim, 0, &vmax0));

@@ -85,6 +85,25 @@ done:
   return st;
 }
 
+enum clsph_status usaw_walls_from_geom(const struct dev *dev, cl_program prog,
+                                       const struct geom *geo, const struct grid_spec *box,
+                                       struct usaw_walls *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  double *ab = calloc(4 * (geo->nseg + 1), sizeof *ab);
+  CLSPH_CHECK(ab != NULL, CLSPH_E_NOMEM, "out of memory for %zu segments", geo->nseg);
+  for (size_t s = 0; s < geo->nseg; ++s) /* the ends are the vertex particles' positions */
+    for (size_t c = 0; c < 2; ++c) {
+      ab[2 * s + c] = geo->x[2 * geo->seg_v[2 * s] + c];
+      ab[2 * geo->nseg + 2 * s + c] = geo->x[2 * geo->seg_v[2 * s + 1] + c];
+    }
+  struct usaw_segments segs = {geo->nseg, ab, ab + 2 * geo->nseg, geo->seg_normal, geo->seg_v};
+  CLSPH_TRY(usaw_walls_create(dev, prog, &segs, box, out));
+done:
+  free(ab);
+  return st;
+}
+
 enum clsph_status usaw_pressure_force(const struct dev *dev, const struct geom *geo,
                                       const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_inv,
                                       const char *group, double f[2])

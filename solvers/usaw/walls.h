@@ -37,6 +37,10 @@ enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, 
                                    cl_mem d_grad_gamma);
 struct geom;
 struct scene;
+/** @brief usaw_walls_create() with the segments of a generated geometry (geometry.h). */
+enum clsph_status usaw_walls_from_geom(const struct dev *dev, cl_program prog,
+                                       const struct geom *geo, const struct grid_spec *box,
+                                       struct usaw_walls *out);
 /** @brief Pressure force of the fluid on the walls of a group, Σ_s −p_s n_s |s| with p_s the mean
  *  of the segment's vertex pressures (the viscous stress is not included); reads p and the
  *  inverse index (current index of each original particle) back from the device. */

@@ -30,20 +30,6 @@ static const char *const sources[] = {"usaw/gamma.cl",        "usaw/common.cl",
 static const char *const options[] = {"sound_speed", "background_pressure", "density_diffusion",
                                       NULL};
 
-#if CLSPH_DOUBLE
-typedef cl_double2 host_realv;
-#else
-typedef cl_float2 host_realv;
-#endif
-
-static host_realv vec2(double x, double y)
-{
-  host_realv v;
-  v.s[0] = (real)x;
-  v.s[1] = (real)y;
-  return v;
-}
-
 static enum clsph_status prefix(struct sim *sim, struct wcsph *ws, cl_kernel k, int with_segments,
                                 cl_uint *next)
 {
@@ -77,7 +63,6 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   const struct geom *geo = &sim->geom;
   const struct scene *sc = sim->scene;
   real *buf = NULL;
-  double *ab = NULL;
   CLSPH_CHECK(ws != NULL, CLSPH_E_NOMEM, "wcsph-usaw: out of memory");
   CLSPH_CHECK(sim->sm.kind == SMOOTHING_WENDLAND_C2, CLSPH_E_INPUT,
               "%s: wcsph-usaw computes γ analytically for the Wendland C2 kernel only",
@@ -155,15 +140,7 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
     buf[k] = geo->kind[k] == KIND_VERTEX ? (real)0 : (real)(sc->dr * sc->dr);
   CLSPH_TRY(kern_write(sim->dev, pset_mem(ps, sim->f_vol), geo->n * sizeof(real), buf));
   /* segments */
-  ab = calloc(4 * (geo->nseg + 1), sizeof *ab);
-  CLSPH_CHECK(ab != NULL, CLSPH_E_NOMEM, "out of memory");
-  for (size_t s = 0; s < geo->nseg; ++s)
-    for (int c = 0; c < 2; ++c) {
-      ab[2 * s + (size_t)c] = geo->x[2 * geo->seg_v[2 * s] + (size_t)c];
-      ab[2 * geo->nseg + 2 * s + (size_t)c] = geo->x[2 * geo->seg_v[2 * s + 1] + (size_t)c];
-    }
-  struct usaw_segments segs = {geo->nseg, ab, ab + 2 * geo->nseg, geo->seg_normal, geo->seg_v};
-  CLSPH_TRY(usaw_walls_create(sim->dev, sim->prog, &segs, &sim->gspec, &ws->walls));
+  CLSPH_TRY(usaw_walls_from_geom(sim->dev, sim->prog, geo, &sim->gspec, &ws->walls));
   CLSPH_TRY(prog_kernel(sim->prog, "wcsph_continuity", &ws->k_cont));
   CLSPH_TRY(prog_kernel(sim->prog, "wcsph_vertex_pressure", &ws->k_vertex));
   CLSPH_TRY(prog_kernel(sim->prog, "usaw_predict", &ws->k_predict));
@@ -172,7 +149,6 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   *state = ws;
   ws = NULL;
 done:
-  free(ab);
   free(buf);
   if (ws != NULL) {
     usaw_walls_destroy(&ws->walls);
@@ -190,9 +166,9 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   cl_uint i;
   const real rdt = (real)dt, nu = (real)sc->nu, dr = (real)sc->dr, c0 = (real)ws->c0;
   const real mass = (real)ws->mass, rho0 = (real)sc->rho0, pbg = (real)ws->p_bg;
-  const host_realv accel =
-      vec2(sc->gravity[0] + sc->body_force[0], sc->gravity[1] + sc->body_force[1]);
-  const host_realv grav = vec2(sc->gravity[0], sc->gravity[1]);
+  const real2 accel =
+      dev_real2(sc->gravity[0] + sc->body_force[0], sc->gravity[1] + sc->body_force[1]);
+  const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem kind = pset_mem(ps, sim->f_kind), vol = pset_mem(ps, sim->f_vol);
   cl_mem rho = pset_mem(ps, ws->f_rho), drho = pset_mem(ps, ws->f_drho), p = pset_mem(ps, ws->f_p);
