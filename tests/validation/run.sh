@@ -14,5 +14,10 @@ run() { # name case sets...
   "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet || true
 }
 run hydrostatic_isph_usaw hydrostatic
-run cavity_re100_n120_isph_usaw cavity re=100 n=120 t_end=30
-cmake -DRUNS="$out" -DOUT=tests/validation/RESULTS.md -P tests/validation/results.cmake
+for n in 20 30 40 60 120; do # convergence study, Re = 100 (the paper's resolution: 120)
+  run cavity_re100_n${n}_isph_usaw cavity re=100 n=$n t_end=10
+done
+for n in 20 40; do
+  run cavity_re100_n${n}_wcsph_usaw cavity re=100 n=$n t_end=10 wcsph=1
+done
+python3 tests/validation/results.py "$out" tests/validation/RESULTS.md
