@@ -35,6 +35,14 @@ static double now(void)
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* Work-groups of 64 of a reduction over n particles: at most 64, so a few dozen partial results
+ * come back to the host per reduction (reduce.cl). */
+static size_t reduce_groups(size_t n)
+{
+  size_t g = (n + 63) / 64;
+  return g < 1 ? 1 : (g > 64 ? 64 : g);
+}
+
 /* ---- set-up ---- */
 
 static enum clsph_status check_options(const struct scene *s, const struct scheme_ops *sc)
@@ -205,11 +213,11 @@ enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count)
   enum clsph_status st = CLSPH_OK;
   real *part = NULL;
   cl_uint n = (cl_uint)sim->ps.n;
-  size_t groups = (sim->ps.n + 63) / 64;
+  size_t groups = reduce_groups(sim->ps.n);
   part = malloc(groups * sizeof *part);
   CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
   CLSPH_TRY(KERN_SET(sim->k_count, KARG(n), KARG(d_field), KARG(sim->d_partial)));
-  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_count, sim->ps.n, 64, NULL));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_count, groups * 64, 64, NULL));
   CLSPH_TRY(kern_read(sim->dev, sim->d_partial, groups * sizeof *part, part));
   double c = 0.0;
   for (size_t g = 0; g < groups; ++g) c += (double)part[g];
@@ -248,13 +256,13 @@ enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax)
   real *part = NULL;
   cl_uint n = (cl_uint)sim->ps.n;
   cl_int only = kind;
-  size_t groups = (sim->ps.n + 63) / 64;
+  size_t groups = reduce_groups(sim->ps.n);
   cl_mem vel = pset_mem(&sim->ps, sim->f_vel), kd = pset_mem(&sim->ps, sim->f_kind);
   part = malloc(groups * sizeof *part);
   CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
   CLSPH_TRY(KERN_SET(sim->k_max_speed, KARG(n), KARG(vel), KARG(kd), KARG(only),
                      KARG(sim->d_partial), KARG(sim->d_flags)));
-  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_max_speed, sim->ps.n, 64, NULL));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_max_speed, groups * 64, 64, NULL));
   CLSPH_TRY(kern_read(sim->dev, sim->d_partial, groups * sizeof *part, part));
   double m = 0.0;
   for (size_t g = 0; g < groups; ++g) m = fmax(m, (double)part[g]);

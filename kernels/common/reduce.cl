@@ -1,6 +1,6 @@
-/* reduce.cl: reductions. Each work-group writes one partial result; the host finishes in double
- * (STYLE: reductions keep partial sums per work-group). Work-groups have REDUCE_WG items, a power
- * of two. */
+/* reduce.cl: reductions. They run on a fixed number of work-groups of REDUCE_WG items (a power
+ * of two), each item walking a strided slice, and each work-group writes one partial result: a
+ * few dozen values that the host finishes in double (STYLE: partial sums per work-group). */
 #ifndef REDUCE_WG
 #define REDUCE_WG 64
 #endif
@@ -22,11 +22,13 @@ __kernel void reduce_max_speed(const uint n, __global const realv *vel, __global
                                const int only, __global real *partial, __global uint *flags)
 {
   __local real s[REDUCE_WG];
-  const uint i = get_global_id(0), l = get_local_id(0);
+  const uint l = get_local_id(0);
   real v = R(0.0);
-  if (i < n && (only < 0 || kind[i] == (uint)only)) {
-    v = length(vel[i]);
-    if (!isfinite(v)) flags_raise(flags, CLSPH_FLAG_NAN);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    if (only >= 0 && kind[i] != (uint)only) continue;
+    real speed = length(vel[i]);
+    if (!isfinite(speed)) flags_raise(flags, CLSPH_FLAG_NAN);
+    v = fmax(v, speed);
   }
   s[l] = v;
   reduce_local_max(s);
@@ -48,8 +50,11 @@ void reduce_local_sum(__local real *s)
 __kernel void reduce_count(const uint n, __global const uint *field, __global real *partial)
 {
   __local real s[REDUCE_WG];
-  const uint i = get_global_id(0), l = get_local_id(0);
-  s[l] = i < n && field[i] != 0u ? R(1.0) : R(0.0);
+  const uint l = get_local_id(0);
+  real c = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0))
+    c += field[i] != 0u ? R(1.0) : R(0.0);
+  s[l] = c;
   reduce_local_sum(s);
   if (l == 0) partial[get_group_id(0)] = s[0];
 }
