@@ -252,12 +252,17 @@ done:
 
 enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax)
 {
+  return sim_max_norm(sim, pset_mem(&sim->ps, sim->f_vel), kind, vmax);
+}
+
+enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *vmax)
+{
   enum clsph_status st = CLSPH_OK;
   real *part = NULL;
   cl_uint n = (cl_uint)sim->ps.n;
   cl_int only = kind;
   size_t groups = reduce_groups(sim->ps.n);
-  cl_mem vel = pset_mem(&sim->ps, sim->f_vel), kd = pset_mem(&sim->ps, sim->f_kind);
+  cl_mem vel = d_vec, kd = pset_mem(&sim->ps, sim->f_kind);
   part = malloc(groups * sizeof *part);
   CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
   CLSPH_TRY(KERN_SET(sim->k_max_speed, KARG(n), KARG(vel), KARG(kd), KARG(only),

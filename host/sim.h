@@ -60,6 +60,8 @@ enum clsph_status sim_sort(struct sim *sim);
 enum clsph_status sim_check_flags(struct sim *sim);
 /** @brief Largest speed over the particles of one kind (−1: all), reduced on the device. */
 enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax);
+/** @brief Largest norm of a vector field (2 reals per particle) over one kind (−1: all). */
+enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *vmax);
 /** @brief Number of nonzero entries of a uint field, reduced on the device. */
 enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count);
 /** @brief Interpolate component `comp` of a real field at np points (host array of 2 doubles per

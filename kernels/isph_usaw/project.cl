@@ -15,7 +15,7 @@
 __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ustar,
                            __global const real *P, __global const real *pt, const real rho,
                            const real dt, const realv gravity, __global const uint *free_surface,
-                           __global realv *vel)
+                           __global realv *vel, __global realv *acc)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ISPH_FLUID) return;
@@ -57,8 +57,10 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   }
 #if ISPH_GRAD_SYM
   /* ∇p̃ = ∇P + ρ g, so the gravity of u* cancels exactly: ũ = u* − δt g − (δt/ρ) G−{P} */
-  vel[i] = ustar[i] - dt * gravity - dt / rho * grad / gam[i];
+  const realv u_new = ustar[i] - dt * gravity - dt / rho * grad / gam[i];
 #else
-  vel[i] = ustar[i] - dt / rho * grad / gam[i];
+  const realv u_new = ustar[i] - dt / rho * grad / gam[i];
 #endif
+  acc[i] = (u_new - vel[i]) / dt; /* the particle's acceleration, for the force bound (49) */
+  vel[i] = u_new;
 }
