@@ -27,5 +27,5 @@ function metrics(sim)
   local v_rms, v_max = sim.profile_error { field = "vel", component = 2, y = 0.5,
     csv = "tests/data/ghia1982_v_centreline.csv", coordinate = "x", value = "v_" .. column }
   return { u_rms_vs_ghia = u_rms, u_max_vs_ghia = u_max, v_rms_vs_ghia = v_rms,
-           v_max_vs_ghia = v_max }
+           v_max_vs_ghia = v_max, wall_crossing_steps = sim.wall_crossing_steps }
 end

@@ -1088,6 +1088,10 @@ enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api
   lua_setfield(L, -2, "steps");
   lua_pushnumber(L, api->particles);
   lua_setfield(L, -2, "particles");
+  lua_pushinteger(L, api->wall_steps);
+  lua_setfield(L, -2, "wall_crossing_steps");
+  lua_pushinteger(L, api->wall_most);
+  lua_setfield(L, -2, "wall_crossings_most");
   static const luaL_Reg fns[] = {{"min", l_min},
                                  {"max", l_max},
                                  {"mean", l_mean},

@@ -14,6 +14,8 @@ struct case_sim_api {
   double time;      /* simulated time, s */
   long steps;       /* time steps */
   double particles; /* particle count */
+  long wall_steps;  /* steps at which a fluid particle was behind a wall */
+  long wall_most;   /* most fluid particles behind a wall at one step */
   /** Statistics of component `comp` of a field over the particles of `kind` (−1: all). */
   enum clsph_status (*stats)(void *ctx, const char *field, int comp, int kind, double *min,
                              double *max, double *mean);

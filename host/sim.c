@@ -131,7 +131,6 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
 {
   enum clsph_status st = CLSPH_OK;
   struct sim sim;
-  const cl_uint zero = 0;
   memset(&sim, 0, sizeof sim);
   sim.dev = dev;
   sim.scene = scene;
@@ -177,7 +176,9 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(build_program(&sim));
   CLSPH_TRY(add_fields(&sim));
   CLSPH_TRY(grid_create(dev, sim.prog, &sim.gspec, sim.ps.cap, &sim.grid));
-  CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &sim.d_flags, "flags"));
+  const cl_uint zeros[2] = {0, 0}; /* the bits, and the count of particles behind a wall */
+  CLSPH_TRY(kern_buffer(dev, sizeof zeros, zeros, &sim.d_flags, "flags"));
+  sim.wall_first_step = -1;
   CLSPH_TRY(prog_kernel(sim.prog, "probe_sample", &sim.k_probe));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_max_speed", &sim.k_max_speed));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_count", &sim.k_count));
@@ -230,8 +231,21 @@ done:
 enum clsph_status sim_check_flags(struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
-  cl_uint flags = 0;
-  CLSPH_TRY(kern_read(sim->dev, sim->d_flags, sizeof flags, &flags));
+  cl_uint f[2] = {0, 0};
+  CLSPH_TRY(kern_read(sim->dev, sim->d_flags, sizeof f, f));
+  cl_uint flags = f[0];
+  if (flags & 8u) { /* counted, not fatal: the case's metrics and the harness judge it */
+    if (sim->wall_steps++ == 0) {
+      sim->wall_first_step = sim->step;
+      sim->wall_first_time = sim->time;
+      log_warn("%u fluid particle(s) behind a wall at step %ld, t = %.9g s", f[1], sim->step,
+               sim->time);
+    }
+    if ((long)f[1] > sim->wall_most) sim->wall_most = (long)f[1];
+    const cl_uint zeros[2] = {flags & ~8u, 0};
+    CLSPH_TRY(kern_write(sim->dev, sim->d_flags, sizeof zeros, zeros));
+    flags &= ~8u;
+  }
   if (flags & 1u)
     snprintf(sim->status, sizeof sim->status,
              "blow-up: a non-finite value (NaN or Inf) at step %ld, t = %.9g s", sim->step,
@@ -786,12 +800,19 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
                             (double)sim->solver_its_sum / (double)sim->solver_steps);
     cJSON_AddNumberToObject(sv, "iterations_max", (double)sim->solver_its_max);
   }
+  cJSON *wc = cJSON_AddObjectToObject(root, "wall_crossings");
+  CLSPH_CHECK(wc != NULL, CLSPH_E_NOMEM, "out of memory");
+  cJSON_AddNumberToObject(wc, "steps", (double)sim->wall_steps);
+  cJSON_AddNumberToObject(wc, "most_at_one_step", (double)sim->wall_most);
+  cJSON_AddNumberToObject(wc, "first_step", (double)sim->wall_first_step);
+  if (sim->wall_first_step >= 0) cJSON_AddNumberToObject(wc, "first_time", sim->wall_first_time);
   cJSON *metrics = cJSON_AddObjectToObject(root, "metrics");
   CLSPH_CHECK(params != NULL && metrics != NULL, CLSPH_E_NOMEM, "out of memory");
   if (script != NULL && strcmp(sim->status, "ok") == 0) {
     struct metric_ctx ctx = {sim};
-    struct case_sim_api api = {&ctx,         sim->time,          sim->step,    (double)sim->ps.n,
-                               metric_stats, metric_sample_many, metric_sample};
+    struct case_sim_api api = {
+        &ctx,           sim->time,    sim->step,          (double)sim->ps.n, sim->wall_steps,
+        sim->wall_most, metric_stats, metric_sample_many, metric_sample};
     enum clsph_status ms = case_metrics(script, &api, metrics);
     if (ms != CLSPH_OK) snprintf(sim->status, sizeof sim->status, "metrics failed");
     cJSON_ReplaceItemInObject(root, "status", cJSON_CreateString(sim->status));

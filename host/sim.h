@@ -32,18 +32,22 @@ struct sim {
   cl_program prog; /* common kernels + the scheme's */
   struct pset ps;
   int f_pos, f_vel, f_kind, f_id, f_vol; /* fields every scheme has (indices in ps) */
-  cl_mem d_flags;                        /* error bits raised by kernels (kernels/common/flags.h) */
-  cl_kernel k_probe;                     /* interpolation at arbitrary points */
-  cl_kernel k_max_speed;                 /* reduction */
-  cl_mem d_partial;                      /* per-work-group partial results of reductions */
-  cl_kernel k_count;                     /* reduction: nonzero entries of a uint field */
-  cl_kernel k_invert;                    /* inv[id[k]] = k */
-  cl_mem d_inv;    /* current index of each original particle index (after sim_sort) */
-  double time, dt; /* simulated time and last step, s */
+  cl_mem d_flags;        /* error bits raised by kernels (kernels/common/flags.h), then a counter */
+  cl_kernel k_probe;     /* interpolation at arbitrary points */
+  cl_kernel k_max_speed; /* reduction */
+  cl_mem d_partial;      /* per-work-group partial results of reductions */
+  cl_kernel k_count;     /* reduction: nonzero entries of a uint field */
+  cl_kernel k_invert;    /* inv[id[k]] = k */
+  cl_mem d_inv;          /* current index of each original particle index (after sim_sort) */
+  double time, dt;       /* simulated time and last step, s */
   long step;
   long solver_its;   /* the pressure solver's iterations of the last step (schemes set) */
   double solver_res; /* and its final relative residual */
   long solver_its_sum, solver_its_max, solver_steps;
+  /* fluid particles found behind a wall (CLSPH_FLAG_WALL): steps with any, most at one step, and
+   * the first such step (−1: none) and its time; over this run (since its start or restart) */
+  long wall_steps, wall_most, wall_first_step;
+  double wall_first_time;
   char status[256]; /* "ok" or why the run stopped */
 };
 
@@ -56,7 +60,8 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
                           struct case_script *script);
 /** @brief Sort the particles by cell and reorder every field (before each step). */
 enum clsph_status sim_sort(struct sim *sim);
-/** @brief Read the error flags; a raised flag ends the run with a reason in sim->status. */
+/** @brief Read the error flags; a raised flag ends the run with a reason in sim->status, except
+ *  CLSPH_FLAG_WALL (a fluid particle behind a wall), which is counted and cleared. */
 enum clsph_status sim_check_flags(struct sim *sim);
 /** @brief Largest speed over the particles of one kind (−1: all), reduced on the device. */
 enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax);

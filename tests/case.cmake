@@ -87,9 +87,11 @@ clsph_run_test(run_hydrostatic_coarse ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
 # RMS 0.116 U for u and 0.031 U for v at this resolution; the bounds leave 30% for the float
 # build and the time stepping). The paper's resolutions are validation runs outside CI.
 clsph_run_test(run_cavity_coarse ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 t_end=10
-               BOUNDS "u_rms_vs_ghia<0.15" "v_rms_vs_ghia<0.045")
+               BOUNDS "u_rms_vs_ghia<0.15" "v_rms_vs_ghia<0.045" "wall_crossing_steps<0.5")
 
 # wcsph-usaw, the baseline, on the same coarse cavity (measured RMS 0.121 U for u, 0.043 U for v).
+# Its particles do cross the walls near the lid's corners (about 700 of 5000 steps have one or two
+# fluid particles behind a wall; one seen 7e-4 dr deep): measured and reported, not bounded here.
 clsph_run_test(run_cavity_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 t_end=10 wcsph=1
                BOUNDS "u_rms_vs_ghia<0.16" "v_rms_vs_ghia<0.06")
 clsph_cli_test(case_time_step_above_bound RC 2

@@ -3,6 +3,7 @@
 #define CLSPH_FLAG_NAN            1u /* a non-finite value was produced */
 #define CLSPH_FLAG_NEIGH_OVERFLOW 2u /* a per-particle neighbour table was too small */
 #define CLSPH_FLAG_ESCAPED        4u /* a particle left the (non-periodic) grid */
+#define CLSPH_FLAG_WALL           8u /* a fluid particle is behind a wall segment */
 
 void flags_raise(__global uint *flags, uint bit)
 {

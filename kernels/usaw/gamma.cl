@@ -87,18 +87,25 @@ realv usaw_grad_gamma_seg(realv x, realv a, realv b, realv n)
 }
 
 /* γ_a and ∇γ_a = Σ_s ∇γ_as (eq 7) of every particle, from the segments near it; 1 and 0 away
- * from the walls; θ_v/2π at a vertex particle (theta > 0). */
+ * from the walls; θ_v/2π at a vertex particle (theta > 0).
+ * The same loop checks that no fluid particle has crossed a wall: a particle is on the solid side
+ * when it is behind the nearest segment, (r_a − c)·n_s < 0 with c its closest point on s. Where
+ * several segments share the nearest point (a corner), the particle is in the fluid when it is in
+ * front of any of them; a closest point at the free end of an open wall decides nothing. A
+ * crossing raises CLSPH_FLAG_WALL and counts in flags[1]. */
 __kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const uint *seg_start,
                          __global const realv *seg_a, __global const realv *seg_b,
                          __global const realv *seg_n, __global const realv *pos,
                          __global const real *theta, __global real *gamma,
-                         __global realv *grad_gamma)
+                         __global realv *grad_gamma, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
   const realv x = pos[i];
   real g = R(1.0);
   realv gg = (realv)(R(0.0));
+  real dmin = INFINITY, side = -INFINITY; /* nearest distance², best signed distance there */
+  int decided = 0;
   struct neigh_iter it;
   neigh_begin(&it, &g_seg, x);
   uint s;
@@ -106,7 +113,26 @@ __kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const u
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, nn = seg_n[s];
     g -= usaw_gamma_seg(x, a, b, nn);
     gg += usaw_grad_gamma_seg(x, a, b, nn);
+    const realv t = b - a;
+    const real u = clamp(dot(x - a, t) / dot(t, t), R(0.0), R(1.0));
+    const realv c = u <= R(0.0) ? a : (u >= R(1.0) ? b : a + u * t); /* corners bit-exact */
+    const real d2 = dot(x - c, x - c), sd = dot(x - c, nn);
+    const real tie = R(1e-6) * dot(t, t);
+    const int interior = u > R(0.0) && u < R(1.0);
+    if (d2 < dmin - tie) { /* a strictly nearer segment */
+      dmin = d2;
+      side = sd;
+      decided = interior;
+    } else if (d2 <= dmin + tie) { /* a corner shared with the nearest one */
+      side = fmax(side, sd);
+      decided = 1;
+    }
   }
-  gamma[i] = theta[i] > R(0.0) ? theta[i] / (R(2.0) * R(3.14159265358979323846)) : g;
+  const int vertex = theta[i] > R(0.0);
+  gamma[i] = vertex ? theta[i] / (R(2.0) * R(3.14159265358979323846)) : g;
   grad_gamma[i] = gg;
+  if (!vertex && decided && side < R(0.0)) {
+    flags_raise(flags, CLSPH_FLAG_WALL);
+    atomic_inc(flags + 1);
+  }
 }

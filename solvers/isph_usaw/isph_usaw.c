@@ -214,7 +214,7 @@ static enum clsph_status gamma_now(struct sim *sim, struct isph *is)
 {
   return usaw_walls_gamma(&is->walls, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos),
                           pset_mem(&sim->ps, is->f_theta), pset_mem(&sim->ps, is->f_gam),
-                          pset_mem(&sim->ps, is->f_ggam));
+                          pset_mem(&sim->ps, is->f_ggam), sim->d_flags);
 }
 
 static enum clsph_status isph_step(struct sim *sim, void *state, double dt)

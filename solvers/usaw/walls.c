@@ -73,13 +73,13 @@ done:
 
 enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, size_t n,
                                    cl_mem d_pos, cl_mem d_theta, cl_mem d_gamma,
-                                   cl_mem d_grad_gamma)
+                                   cl_mem d_grad_gamma, cl_mem d_flags)
 {
   enum clsph_status st = CLSPH_OK;
   cl_uint np = (cl_uint)n;
   cl_mem a = pset_mem(&w->ps, w->f_a), b = pset_mem(&w->ps, w->f_b), nn = pset_mem(&w->ps, w->f_n);
   CLSPH_TRY(KERN_SET(w->k_gamma, KARG(np), KARG(w->g.geom), KARG(w->g.d_start), KARG(a), KARG(b),
-                     KARG(nn), KARG(d_pos), KARG(d_theta), KARG(d_gamma), KARG(d_grad_gamma)));
+                     KARG(nn), KARG(d_pos), KARG(d_theta), KARG(d_gamma), KARG(d_grad_gamma), KARG(d_flags)));
   CLSPH_TRY(kern_launch(dev, w->k_gamma, n, NULL));
 done:
   return st;

@@ -31,10 +31,11 @@ struct usaw_walls {
 enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
                                     const struct usaw_segments *segs, const struct grid_spec *box,
                                     struct usaw_walls *out);
-/** @brief γ_a and ∇γ_a of n particles at d_pos (theta: θ_v of vertex particles, 0 elsewhere). */
+/** @brief γ_a and ∇γ_a of n particles at d_pos (theta: θ_v of vertex particles, 0 elsewhere);
+ *  raises CLSPH_FLAG_WALL in d_flags where a fluid particle is behind a wall. */
 enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, size_t n,
                                    cl_mem d_pos, cl_mem d_theta, cl_mem d_gamma,
-                                   cl_mem d_grad_gamma);
+                                   cl_mem d_grad_gamma, cl_mem d_flags);
 struct geom;
 struct scene;
 /** @brief usaw_walls_create() with the segments of a generated geometry (geometry.h). */

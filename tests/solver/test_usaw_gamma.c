@@ -2,7 +2,9 @@
  * (Leroy et al. 2014 eqs 55-62), on the device, against the reference values of
  * shared/notes/usaw_gamma.md (h = 0.02; checked there against brute-force quadrature of eq 3):
  * a straight wall at several distances, a 90° corner at three points and its vertex (θ/2π).
- * Its gradient Σ_s ∇γ_as (eqs 6-7) must equal the finite-difference gradient of γ. */
+ * Its gradient Σ_s ∇γ_as (eqs 6-7) must equal the finite-difference gradient of γ.
+ * The same kernel flags a fluid particle behind a wall: checked on both sides of a straight wall,
+ * of a concave and of a convex corner, and beyond the free end of an open wall. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,9 +25,10 @@ struct probe {
 /* γ and ∇γ at np points. */
 static int evaluate(const struct dev *dev, cl_program prog, const struct usaw_segments *segs,
                     const struct grid_spec *box, size_t np, const double *xy, const double *theta,
-                    double *gamma, double *grad)
+                    double *gamma, double *grad, unsigned *flags)
 {
   struct usaw_walls w;
+  cl_uint f = 0;
   cl_mem d_pos = NULL, d_theta = NULL, d_g = NULL, d_gg = NULL;
   real *buf = calloc(6 * np, sizeof *buf);
   int ok = 0;
@@ -40,7 +43,9 @@ static int evaluate(const struct dev *dev, cl_program prog, const struct usaw_se
       kern_buffer(dev, np * sizeof(real), buf + 2 * np, &d_theta, "theta") ||
       kern_buffer(dev, np * sizeof(real), NULL, &d_g, "gamma") ||
       kern_buffer(dev, 2 * np * sizeof(real), NULL, &d_gg, "grad gamma") ||
-      usaw_walls_gamma(&w, dev, np, d_pos, d_theta, d_g, d_gg) ||
+      kern_fill(dev, w.d_flags, &f, sizeof f, sizeof f) ||
+      usaw_walls_gamma(&w, dev, np, d_pos, d_theta, d_g, d_gg, w.d_flags) ||
+      kern_read(dev, w.d_flags, sizeof f, &f) ||
       kern_read(dev, d_g, np * sizeof(real), buf + 3 * np) ||
       kern_read(dev, d_gg, 2 * np * sizeof(real), buf + 4 * np))
     goto done;
@@ -49,6 +54,7 @@ static int evaluate(const struct dev *dev, cl_program prog, const struct usaw_se
     grad[2 * i] = (double)buf[4 * np + 2 * i];
     grad[2 * i + 1] = (double)buf[4 * np + 2 * i + 1];
   }
+  if (flags != NULL) *flags = f;
   ok = 1;
 done:
   kern_release(&d_gg);
@@ -78,7 +84,7 @@ static void check(const struct dev *dev, cl_program prog, const char *what,
       th[5 * i + (size_t)k] = k == 0 ? p[i].theta : 0.0;
     }
   }
-  if (!evaluate(dev, prog, segs, box, m, xy, th, g, gg)) {
+  if (!evaluate(dev, prog, segs, box, m, xy, th, g, gg, NULL)) {
     TC_CHECK(0, "%s: evaluation runs", what);
     goto done;
   }
@@ -103,6 +109,18 @@ done:
   free(g);
   free(th);
   free(xy);
+}
+
+/* One point against the walls: is it flagged as behind a wall (CLSPH_FLAG_WALL = 8)? */
+static void crossing(const struct dev *dev, cl_program prog, const char *what,
+                     const struct usaw_segments *segs, const struct grid_spec *box, double x,
+                     double y, int behind)
+{
+  double xy[2] = {x, y}, th = 0.0, g, gg[2];
+  unsigned f = 0;
+  TC_CHECK(evaluate(dev, prog, segs, box, 1, xy, &th, &g, gg, &f), "%s: evaluation runs", what);
+  TC_CHECK(((f & 8u) != 0) == behind, "%s: (%g, %g) is %s a wall (flags %u)", what, x, y,
+           behind ? "behind" : "not behind", f);
 }
 
 int main(void)
@@ -139,6 +157,11 @@ int main(void)
                              {"d = h", 0.003, h, 0, 0.971491},
                              {"d = 1.5h", 0.003, 1.5 * h, 0, 0.999130}};
   check(&dev, prog, "wall", &wall, &box, wp, sizeof wp / sizeof *wp, h);
+  /* 1e-4 h from the wall either way: far above the round-off of either precision */
+  crossing(&dev, prog, "wall, in front", &wall, &box, 0.003, 1e-4 * h, 0);
+  crossing(&dev, prog, "wall, behind", &wall, &box, 0.003, -1e-4 * h, 1);
+  crossing(&dev, prog, "wall, deep behind", &wall, &box, 0.013, -1.5 * h, 1);
+  crossing(&dev, prog, "wall, past its free end", &wall, &box, -0.21, -0.005, 0);
 
   /* a 90° corner: fluid in x > 0, y > 0; walls along both axes */
   for (int s = 0; s < NSEG; ++s) {
@@ -162,6 +185,23 @@ int main(void)
                              {"(0.2h, 1.5h)", 0.2 * h, 1.5 * h, 0, 0.644385},
                              {"vertex", 0.0, 0.0, 0.5 * pi, 0.250000}};
   check(&dev, prog, "corner", &corner, &box, cp, sizeof cp / sizeof *cp, h);
+  /* the concave corner of a tank (fluid in the quadrant): behind either wall, or both */
+  crossing(&dev, prog, "tank corner, inside", &corner, &box, 0.2 * dr, 0.1 * dr, 0);
+  crossing(&dev, prog, "tank corner, behind x = 0", &corner, &box, -0.1 * dr, 0.5 * dr, 1);
+  crossing(&dev, prog, "tank corner, behind both", &corner, &box, -0.1 * dr, -0.2 * dr, 1);
+  /* the same walls reversed make a convex solid corner (a wedge's apex, solid in the quadrant):
+   * points beside the apex are nearest to the shared vertex and in the fluid */
+  for (int s = 0; s < 2 * NSEG; ++s) {
+    for (int c = 0; c < 2; ++c) {
+      double t = a[2 * s + c];
+      a[2 * s + c] = b[2 * s + c];
+      b[2 * s + c] = t;
+      n[2 * s + c] = -n[2 * s + c];
+    }
+  }
+  crossing(&dev, prog, "apex, beside", &corner, &box, -0.3 * dr, -0.1 * dr, 0);
+  crossing(&dev, prog, "apex, diagonal", &corner, &box, -0.2 * dr, -0.2 * dr, 0);
+  crossing(&dev, prog, "apex, inside the solid", &corner, &box, 0.3 * dr, 0.1 * dr, 1);
 
   clReleaseProgram(prog);
   prog_opts_free(&o);
