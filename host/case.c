@@ -699,8 +699,8 @@ static int l_force(lua_State *L)
 
 static int l_run(lua_State *L)
 {
-  static const char *const keys[] = {"t_end", "output_every", "checkpoint_every",
-                                     "cfl",   "dt",           NULL};
+  static const char *const keys[] = {
+      "t_end", "output_every", "checkpoint_every", "cfl", "dt", "sample_every", NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "run");
@@ -726,6 +726,8 @@ static int l_run(lua_State *L)
   if (!(s->t_end > 0.0)) luaL_error(L, "run: t_end must be a positive time, not %f", s->t_end);
   s->output_every = get_number(L, 1, "run", "output_every", 0.0);
   s->checkpoint_every = get_number(L, 1, "run", "checkpoint_every", 0.0);
+  s->sample_every = get_number(L, 1, "run", "sample_every", 0.0);
+  if (s->sample_every < 0.0) luaL_error(L, "run: sample_every must not be negative");
   s->cfl = get_number(L, 1, "run", "cfl", 1.0);
   if (s->output_every < 0.0 || s->checkpoint_every < 0.0)
     luaL_error(L, "run: output_every and checkpoint_every must not be negative");

@@ -100,6 +100,7 @@ struct scene {
   int dummy_layers;            /* layers of dummy particles (dummy walls) */
   double t_end;                /* end time, s (the parameter t_end) */
   double output_every;         /* snapshot cadence, s (0: only the last) */
+  double sample_every;         /* cadence of probes.csv and forces.csv, s (0: with snapshots) */
   double checkpoint_every;     /* checkpoint cadence, s (0: only the last) */
   double cfl;                  /* time-step factor (1 = the scheme's bounds) */
   double dt;                   /* fixed time step, s (0: from the scheme's bounds) */

@@ -383,6 +383,10 @@ struct run_out {
   FILE *probes, *forces;
   FILE **profiles;
   int nsnap;
+  /* per force group, over the samples written: the largest |F| (time, fx, fy) and the last F */
+  struct force_stat {
+    double peak, peak_time, peak_f[2], last[2];
+  } * force_stats;
 };
 
 static enum clsph_status path_in(const struct run_out *o, const char *name, char *buf, size_t size)
@@ -483,6 +487,8 @@ static enum clsph_status open_series(struct sim *sim, struct run_out *o, int app
   }
   if (s->nforces > 0) {
     CLSPH_TRY(path_in(o, "forces.csv", path, sizeof path));
+    o->force_stats = calloc((size_t)s->nforces, sizeof *o->force_stats);
+    CLSPH_CHECK(o->force_stats != NULL, CLSPH_E_NOMEM, "out of memory");
     o->forces = fopen(path, mode);
     CLSPH_CHECK(o->forces != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
     if (!append) {
@@ -526,13 +532,16 @@ static int sampled_columns(const struct pset *ps)
   return n;
 }
 
-static enum clsph_status write_series(struct sim *sim, struct run_out *o)
+/* What write_series writes: the time series (probes.csv, forces.csv), the profiles, or both. */
+enum { SERIES_TIME = 1, SERIES_PROFILES = 2 };
+
+static enum clsph_status write_series(struct sim *sim, struct run_out *o, int what)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
   const int nc = sampled_columns(&sim->ps);
   double *at = NULL, *rows = NULL;
-  if (s->nprobes > 0) {
+  if (s->nprobes > 0 && (what & SERIES_TIME)) {
     at = malloc(2 * (size_t)s->nprobes * sizeof *at);
     rows = malloc((size_t)s->nprobes * (size_t)(nc + 1) * sizeof *rows);
     CLSPH_CHECK(at != NULL && rows != NULL, CLSPH_E_NOMEM, "out of memory");
@@ -549,7 +558,7 @@ static enum clsph_status write_series(struct sim *sim, struct run_out *o)
     free(rows);
     at = rows = NULL;
   }
-  for (int p = 0; p < s->nprofiles; ++p) {
+  for (int p = 0; p < s->nprofiles && (what & SERIES_PROFILES); ++p) {
     const struct scene_profile_line *pl = &s->profiles[p];
     size_t np = (size_t)pl->npts;
     at = malloc(2 * np * sizeof *at);
@@ -574,12 +583,19 @@ static enum clsph_status write_series(struct sim *sim, struct run_out *o)
     free(rows);
     at = rows = NULL;
   }
-  if (s->nforces > 0) {
+  if (s->nforces > 0 && (what & SERIES_TIME)) {
     fprintf(o->forces, "%.17g", sim->time);
     for (int g = 0; g < s->nforces; ++g) {
       double f[2];
       CLSPH_TRY(sim->scheme->wall_force(sim, sim->state, s->forces[g], f));
       fprintf(o->forces, ",%.9g,%.9g", f[0], f[1]);
+      struct force_stat *fs = &o->force_stats[g];
+      if (hypot(f[0], f[1]) > fs->peak) {
+        fs->peak = hypot(f[0], f[1]);
+        fs->peak_time = sim->time;
+        memcpy(fs->peak_f, f, sizeof f);
+      }
+      memcpy(fs->last, f, sizeof f);
     }
     fprintf(o->forces, "\n");
     fflush(o->forces);
@@ -618,7 +634,11 @@ static enum clsph_status write_snapshot(struct sim *sim, struct run_out *o)
   CLSPH_TRY(io_series_add(&o->series, name, sim->time, sim->ps.n));
   CLSPH_TRY(path_in(o, "snapshots.xdmf", path, sizeof path));
   CLSPH_TRY(io_xdmf_write(path, &o->series, &sim->ps, 2));
-  CLSPH_TRY(write_series(sim, o));
+  /* with run { sample_every }, the time series keep their own cadence (see sim_run) */
+  CLSPH_TRY(write_series(sim, o,
+                         sim->scene->sample_every > 0.0 && sim->time > 0.0
+                             ? SERIES_PROFILES
+                             : SERIES_TIME | SERIES_PROFILES));
   ++o->nsnap;
 done:
   return st;
@@ -645,6 +665,7 @@ static void close_out(const struct scene *s, struct run_out *o)
   for (int p = 0; o->profiles != NULL && p < s->nprofiles; ++p)
     if (o->profiles[p] != NULL) fclose(o->profiles[p]);
   free(o->profiles);
+  free(o->force_stats);
   io_series_free(&o->series);
 }
 
@@ -800,6 +821,21 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
                             (double)sim->solver_its_sum / (double)sim->solver_steps);
     cJSON_AddNumberToObject(sv, "iterations_max", (double)sim->solver_its_max);
   }
+  if (o->force_stats != NULL) { /* over the samples of forces.csv written by this run */
+    cJSON *fo = cJSON_AddObjectToObject(root, "forces");
+    CLSPH_CHECK(fo != NULL, CLSPH_E_NOMEM, "out of memory");
+    for (int g = 0; g < sim->scene->nforces; ++g) {
+      const struct force_stat *fs = &o->force_stats[g];
+      cJSON *e = cJSON_AddObjectToObject(fo, sim->scene->forces[g]);
+      CLSPH_CHECK(e != NULL, CLSPH_E_NOMEM, "out of memory");
+      cJSON_AddNumberToObject(e, "peak", fs->peak);
+      cJSON_AddNumberToObject(e, "peak_time", fs->peak_time);
+      cJSON_AddNumberToObject(e, "peak_fx", fs->peak_f[0]);
+      cJSON_AddNumberToObject(e, "peak_fy", fs->peak_f[1]);
+      cJSON_AddNumberToObject(e, "last_fx", fs->last[0]);
+      cJSON_AddNumberToObject(e, "last_fy", fs->last[1]);
+    }
+  }
   cJSON *wc = cJSON_AddObjectToObject(root, "wall_crossings");
   CLSPH_CHECK(wc != NULL, CLSPH_E_NOMEM, "out of memory");
   cJSON_AddNumberToObject(wc, "steps", (double)sim->wall_steps);
@@ -929,6 +965,10 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
     }
     CLSPH_TRY(sim_check_flags(sim));
     int at_end = sim->time >= t_end;
+    /* time series at their own cadence: the first step at or past each multiple of sample_every */
+    if (s->sample_every > 0.0 && floor(sim->time / s->sample_every * (1.0 + 1e-12)) >
+                                     floor((sim->time - dt) / s->sample_every * (1.0 + 1e-12)))
+      CLSPH_TRY(write_series(sim, &o, SERIES_TIME));
     if (lands && (at_end || (s->output_every > 0.0 &&
                              fabs(remainder(sim->time, s->output_every)) < 1e-9 * s->output_every)))
       CLSPH_TRY(write_snapshot(sim, &o));
