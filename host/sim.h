@@ -44,6 +44,7 @@ struct sim {
   long solver_its;   /* the pressure solver's iterations of the last step (schemes set) */
   double solver_res; /* and its final relative residual */
   long solver_its_sum, solver_its_max, solver_steps;
+  double wall;      /* wall-clock time of the last sim_run (summary.json wall_seconds), s */
   char status[256]; /* "ok" or why the run stopped */
 };
 
@@ -51,7 +52,9 @@ struct sim {
 enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, struct sim *out);
 /** @brief Print particle counts, active modules, memory per particle and the first time step. */
 enum clsph_status sim_info(struct sim *sim);
-/** @brief Run to the end time, writing the outputs into opt->out_dir (see README). */
+/** @brief Run to the end time, writing the outputs into opt->out_dir (see README). A profile on
+ *  the device (--profile) records from the start of the run to its end (the window of sim->wall)
+ *  and goes into summary.json. */
 enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
                           struct case_script *script);
 /** @brief Sort the particles by cell and reorder every field (before each step). */
