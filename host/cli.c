@@ -31,7 +31,10 @@ void cli_usage(FILE *f)
         "                        --set dr=0.005 --set t_end=0.1\n"
         "  --out DIR             output folder of `run` (default out/CASE)\n"
         "  --restart FILE        continue a run from one of its checkpoints\n"
-        "  --quiet               no progress line\n"
+        "  --quiet               no progress line (and no --profile table)\n"
+        "  --profile             time every kernel launch and transfer of `run` on the device\n"
+        "                        (OpenCL profiling events): a table by kernel at the end, and\n"
+        "                        \"profile\" in summary.json\n"
         "  --device N            device index from `clsph devices` (default: $CLSPH_DEVICE, else\n"
         "                        the first GPU, else the first CPU)\n"
         "  --kernel-dir DIR      read OpenCL sources from DIR instead of the embedded copy\n"
@@ -48,6 +51,7 @@ void cli_usage(FILE *f)
         "  clsph run cases/hydrostatic.lua --set dr=0.02 --out out/tank\n"
         "  clsph info cases/hydrostatic.lua\n"
         "  clsph run cases/hydrostatic.lua --restart out/tank/checkpoint_000100.h5\n"
+        "  clsph run cases/cavity.lua --set n=40 --set t_end=0.5 --profile\n"
         "  clsph devices\n"
         "  clsph demo --device 0\n"
         "  clsph bench neighbours --bench-sizes 1e4,1e5 --bench-reps 5\n",
@@ -103,6 +107,8 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
       c.fast_math = 1;
     } else if (strcmp(a, "--quiet") == 0) {
       c.quiet = 1;
+    } else if (strcmp(a, "--profile") == 0) {
+      c.profile = 1;
     } else if (strncmp(a, "--", 2) == 0) {
       CLSPH_CHECK(val != NULL, CLSPH_E_INPUT, "option %s needs a value (see clsph --help)", a);
       if (strcmp(a, "--set") == 0) {

@@ -16,6 +16,7 @@ struct cli {
   const char *out_dir;     /* --out DIR (default out/<case>) */
   const char *restart;     /* --restart FILE */
   int quiet;               /* --quiet: no progress line */
+  int profile;             /* --profile: device time per kernel of a run */
   const char *target;      /* bench: "neighbours" */
   int device;              /* --device N, -1: $CLSPH_DEVICE or the default */
   const char *kernel_dir;  /* --kernel-dir DIR, NULL: embedded sources */

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "kern.h"
+
 const char *dev_cl_error_str(cl_int err)
 {
   switch (err) {
@@ -268,6 +270,7 @@ done:
 
 void dev_close(struct dev *dev)
 {
+  kern_profile_free(&dev->profile);
   if (dev->queue != NULL) clReleaseCommandQueue(dev->queue);
   if (dev->ctx != NULL) clReleaseContext(dev->ctx);
   dev->queue = NULL;

@@ -9,6 +9,8 @@
 #include "clsph_config.h"
 #include "status.h"
 
+struct kern_profile; /* kern.h */
+
 /* Host views of the device real2 and real4 (aligned like the device types). */
 #if CLSPH_DOUBLE
 typedef cl_double2 real2;
@@ -26,17 +28,18 @@ struct dev {
   cl_platform_id platform;
   cl_device_id id;
   cl_context ctx;
-  cl_command_queue queue;  /* in order, with profiling enabled */
-  int index;               /* index in the `clsph devices` list */
-  char name[256];          /* device name */
-  char platform_name[256]; /* platform name */
-  char version[256];       /* device OpenCL version string */
-  char driver[256];        /* driver version */
-  cl_device_type type;     /* CL_DEVICE_TYPE_GPU, _CPU, ... */
-  int fp64;                /* 1 when cl_khr_fp64 is usable */
-  size_t max_wg;           /* largest work-group size */
-  size_t wg;               /* work-group size used for 1-D launches */
-  cl_ulong global_mem;     /* bytes */
+  cl_command_queue queue;       /* in order, with profiling enabled */
+  int index;                    /* index in the `clsph devices` list */
+  char name[256];               /* device name */
+  char platform_name[256];      /* platform name */
+  char version[256];            /* device OpenCL version string */
+  char driver[256];             /* driver version */
+  cl_device_type type;          /* CL_DEVICE_TYPE_GPU, _CPU, ... */
+  int fp64;                     /* 1 when cl_khr_fp64 is usable */
+  size_t max_wg;                /* largest work-group size */
+  size_t wg;                    /* work-group size used for 1-D launches */
+  cl_ulong global_mem;          /* bytes */
+  struct kern_profile *profile; /* device time per kernel (--profile, kern.h); NULL: off */
 };
 
 /** @brief Symbolic name of an OpenCL error code, e.g. "CL_OUT_OF_RESOURCES". */
@@ -74,7 +77,7 @@ enum clsph_status dev_list(void);
  *  @param out    filled on success; release with dev_close(). */
 enum clsph_status dev_open(int index, int need_fp64, struct dev *out);
 
-/** @brief Release the queue and context. Safe on a zeroed struct. */
+/** @brief Release the profile, the queue and the context. Safe on a zeroed struct. */
 void dev_close(struct dev *dev);
 
 #endif /* CLSPH_DEV_H */

@@ -7,7 +7,8 @@
  *   checkpoint_NNNNNN.h5              at the checkpoint cadence and at the end (--restart)
  *   probes.csv, profile_<name>.csv    interpolated fields at the output cadence
  *   forces.csv                        wall-group forces at the output cadence
- *   summary.json                      what ran, its cost, its status and the case's metrics */
+ *   summary.json                      what ran, its cost (with --profile, the device time per
+ *                                     kernel), its status and the case's metrics */
 #include "sim.h"
 
 #include <cjson/cJSON.h>
@@ -788,6 +789,32 @@ done:
 
 /* ---- summary ---- */
 
+/* "profile": the run's device time per kernel, slowest first (--profile). */
+static enum clsph_status summary_profile(cJSON *root, struct kern_profile *p, double wall)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct kern_profile_entry *e = NULL;
+  size_t n = 0;
+  double device = 0.0;
+  CLSPH_TRY(kern_profile_entries(p, &e, &n, &device));
+  cJSON *prof = cJSON_AddObjectToObject(root, "profile");
+  int ok = prof != NULL && cJSON_AddNumberToObject(prof, "device_seconds", device) != NULL &&
+           cJSON_AddNumberToObject(prof, "wall_seconds", wall) != NULL;
+  cJSON *kernels = ok ? cJSON_AddArrayToObject(prof, "kernels") : NULL;
+  ok = kernels != NULL;
+  for (size_t i = 0; i < n && ok; ++i) {
+    cJSON *k = cJSON_CreateObject();
+    ok = k != NULL && cJSON_AddItemToArray(kernels, k) &&
+         cJSON_AddStringToObject(k, "name", e[i].name) != NULL &&
+         cJSON_AddNumberToObject(k, "launches", (double)e[i].launches) != NULL &&
+         cJSON_AddNumberToObject(k, "seconds", e[i].seconds) != NULL;
+  }
+  CLSPH_CHECK(ok, CLSPH_E_NOMEM, "out of memory writing the profile");
+done:
+  free(e);
+  return st;
+}
+
 static enum clsph_status write_summary(struct sim *sim, const struct run_out *o, double wall,
                                        struct case_script *script)
 {
@@ -842,6 +869,7 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
   cJSON_AddNumberToObject(wc, "most_at_one_step", (double)sim->wall_most);
   cJSON_AddNumberToObject(wc, "first_step", (double)sim->wall_first_step);
   if (sim->wall_first_step >= 0) cJSON_AddNumberToObject(wc, "first_time", sim->wall_first_time);
+  if (sim->dev->profile != NULL) CLSPH_TRY(summary_profile(root, sim->dev->profile, wall));
   cJSON *metrics = cJSON_AddObjectToObject(root, "metrics");
   CLSPH_CHECK(params != NULL && metrics != NULL, CLSPH_E_NOMEM, "out of memory");
   if (script != NULL && strcmp(sim->status, "ok") == 0) {
@@ -889,7 +917,9 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
   struct progress pr;
   memset(&o, 0, sizeof o);
   memset(&pr, 0, sizeof pr);
+  enum clsph_status pst = CLSPH_OK;
   double start = now();
+  kern_profile_start(sim->dev->profile);
 
   CLSPH_CHECK(s->nforces == 0 || sim->scheme->wall_force != NULL, CLSPH_E_INPUT,
               "%s: force { ... } asks for wall forces, which scheme '%s' does not compute",
@@ -980,10 +1010,14 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
   }
   progress_show(sim, &pr, 1);
 done:
+  /* the profiled window ends with its commands run, and leaves out the metrics' kernels */
+  pst = kern_profile_stop(sim->dev->profile);
+  if (st == CLSPH_OK) st = pst;
+  sim->wall = now() - start;
   if (st != CLSPH_OK && strcmp(sim->status, "ok") == 0)
     snprintf(sim->status, sizeof sim->status, "failed: %s", clsph_status_str(st));
   if (o.dir[0] != '\0') {
-    enum clsph_status ws = write_summary(sim, &o, now() - start, script);
+    enum clsph_status ws = write_summary(sim, &o, sim->wall, script);
     if (st == CLSPH_OK) st = ws;
     if (st == CLSPH_OK && strcmp(sim->status, "ok") != 0) st = CLSPH_E_INPUT;
   }

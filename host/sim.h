@@ -48,6 +48,7 @@ struct sim {
    * the first such step (−1: none) and its time; over this run (since its start or restart) */
   long wall_steps, wall_most, wall_first_step;
   double wall_first_time;
+  double wall;      /* wall-clock time of the last sim_run (summary.json wall_seconds), s */
   char status[256]; /* "ok" or why the run stopped */
 };
 
@@ -55,7 +56,9 @@ struct sim {
 enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, struct sim *out);
 /** @brief Print particle counts, active modules, memory per particle and the first time step. */
 enum clsph_status sim_info(struct sim *sim);
-/** @brief Run to the end time, writing the outputs into opt->out_dir (see README). */
+/** @brief Run to the end time, writing the outputs into opt->out_dir (see README). A profile on
+ *  the device (--profile) records from the start of the run to its end (the window of sim->wall)
+ *  and goes into summary.json. */
 enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
                           struct case_script *script);
 /** @brief Sort the particles by cell and reorder every field (before each step). */

@@ -97,3 +97,10 @@ clsph_run_test(run_cavity_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS
 clsph_cli_test(case_time_step_above_bound RC 2
                ARGS run ${CASE_DIR}/bad_dt.lua --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/bad_dt
                REGEX "fixed time step 0.5 s exceeds the stability bound [0-9.e-]+ s of isph-usaw")
+
+# --profile: the device time per kernel of a tiny isph-usaw run, printed (not under --quiet) and
+# in summary.json; grid_bin sorts the particles every step.
+clsph_add_test(run_profile LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
+               -DCASE=${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
+               -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/profile "-DSETS=dr=0.1|t_end=0.05"
+               -DKERNEL=grid_bin -P ${CASE_DIR}/profile.cmake)

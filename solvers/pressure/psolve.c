@@ -207,11 +207,7 @@ done:
 
 static enum clsph_status copy(struct psolve *ps, cl_mem dst, cl_mem src, cl_uint n)
 {
-  enum clsph_status st = CLSPH_OK;
-  CLSPH_CL_TRY(
-      clEnqueueCopyBuffer(ps->dev->queue, src, dst, 0, 0, n * sizeof(real), 0, NULL, NULL));
-done:
-  return st;
+  return kern_copy(ps->dev, dst, src, n * sizeof(real));
 }
 
 static enum clsph_status zero(struct psolve *ps, cl_mem x, cl_uint n)
@@ -252,8 +248,7 @@ static enum clsph_status store(struct psolve *ps, const struct psolve_op *op)
   CLSPH_TRY(KERN_SET(ps->k_scan_apply, KARG(items), KARG(ps->d_count), KARG(ps->d_block),
                      KARG(ps->d_row)));
   CLSPH_TRY(kern_launch(ps->dev, ps->k_scan_apply, blocks, NULL));
-  CLSPH_CL_TRY(clEnqueueReadBuffer(ps->dev->queue, ps->d_row, CL_TRUE, op->n * sizeof(cl_uint),
-                                   sizeof nnz, &nnz, 0, NULL, NULL));
+  CLSPH_TRY(kern_read_at(ps->dev, ps->d_row, op->n * sizeof(cl_uint), sizeof nnz, &nnz));
   if (nnz > ps->nnz_cap) { /* grow by a quarter more than needed: particles move */
     kern_release(&ps->d_col);
     kern_release(&ps->d_val);

@@ -1,0 +1,85 @@
+# --profile: the device time per kernel of a run, printed and in summary.json.
+#   cmake -DCLSPH=exe -DCASE=file -DOUT=dir -DSETS="a=1|b=2" -DKERNEL=name -P profile.cmake
+# KERNEL is a kernel that runs at least once per step (grid_bin: every step sorts the particles).
+# Three runs: --profile prints the table; --profile --quiet prints nothing but writes "profile" to
+# summary.json, where KERNEL has launches >= steps and seconds > 0, every row is well formed, and
+# the summed device time is positive and at most the wall time; a run without --profile writes no
+# "profile".
+string(REPLACE "|" ";" SETS "${SETS}")
+set(args "")
+foreach(s IN LISTS SETS)
+  list(APPEND args --set ${s})
+endforeach()
+
+function(run_clsph out_dir out_var)
+  file(REMOVE_RECURSE ${out_dir})
+  execute_process(COMMAND ${CLSPH} run ${CASE} ${args} --out ${out_dir} ${ARGN}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "clsph run ${ARGN} exited with ${rc}:\n${out}\n${err}")
+  endif()
+  set(${out_var} "${out}" PARENT_SCOPE)
+endfunction()
+
+# 1. the printed table
+run_clsph(${OUT}/table printed --profile)
+message("${printed}")
+foreach(re "profile: device time per kernel" "\n  ${KERNEL} +[0-9]+ +[0-9.]+ "
+           "\n  device total +[0-9]+ " "\n  host and waiting +[-0-9.]+ ")
+  if(NOT printed MATCHES "${re}")
+    message(FATAL_ERROR "the --profile table does not match '${re}'")
+  endif()
+endforeach()
+
+# 2. --quiet: no table, the same JSON
+run_clsph(${OUT}/quiet quiet --profile --quiet)
+if(quiet MATCHES "profile:")
+  message(FATAL_ERROR "--quiet printed the profile table:\n${quiet}")
+endif()
+file(READ ${OUT}/quiet/summary.json json)
+string(JSON steps GET "${json}" steps)
+string(JSON wall GET "${json}" wall_seconds)
+string(JSON device ERROR_VARIABLE err GET "${json}" profile device_seconds)
+if(err)
+  message(FATAL_ERROR "summary.json has no profile.device_seconds: ${json}")
+endif()
+string(JSON pwall GET "${json}" profile wall_seconds)
+string(JSON n LENGTH "${json}" profile kernels)
+if(NOT steps GREATER 0 OR NOT n GREATER 0)
+  message(FATAL_ERROR "steps = ${steps}, profile rows = ${n}: nothing was profiled")
+endif()
+if(NOT device GREATER 0 OR device GREATER pwall)
+  message(FATAL_ERROR "device time ${device} s is not within (0, wall ${pwall} s]")
+endif()
+if(NOT pwall EQUAL wall)
+  message(FATAL_ERROR "profile.wall_seconds ${pwall} differs from wall_seconds ${wall}")
+endif()
+math(EXPR last "${n} - 1")
+set(found 0)
+foreach(i RANGE ${last})
+  string(JSON name GET "${json}" profile kernels ${i} name)
+  string(JSON launches GET "${json}" profile kernels ${i} launches)
+  string(JSON seconds GET "${json}" profile kernels ${i} seconds)
+  if(NOT launches GREATER 0 OR seconds LESS 0 OR seconds GREATER device)
+    message(FATAL_ERROR "row ${name}: ${launches} launches, ${seconds} s (device ${device} s)")
+  endif()
+  if(name STREQUAL KERNEL)
+    set(found 1)
+    if(launches LESS steps OR NOT seconds GREATER 0)
+      message(FATAL_ERROR "${KERNEL}: ${launches} launches in ${steps} steps, ${seconds} s")
+    endif()
+    message("${KERNEL}: ${launches} launches in ${steps} steps, ${seconds} s")
+  endif()
+endforeach()
+if(NOT found)
+  message(FATAL_ERROR "profile.kernels has no ${KERNEL}: ${json}")
+endif()
+message("profile: ${n} rows, device ${device} s of wall ${wall} s")
+
+# 3. without --profile: no "profile" key
+run_clsph(${OUT}/plain plain --quiet)
+file(READ ${OUT}/plain/summary.json json)
+string(JSON v ERROR_VARIABLE err GET "${json}" profile)
+if(NOT err)
+  message(FATAL_ERROR "a run without --profile wrote a profile: ${v}")
+endif()
