@@ -115,7 +115,9 @@ clsph_run_test(run_couette_force_wcsph ${CASE_DIR}/couette_force.lua SETS wcsph=
 # resolution), flow-rate control of the body force (eqs 67-68), C_D = F_D/(µ⟨v⟩) against
 # 106.77 (Liu et al.). Measured C_D: isph-usaw 79.2 (error 0.258); wcsph-usaw 49.6 (error 0.535;
 # its pressure drag is a third of isph-usaw's: with the paper's equal time steps its sound speed
-# is 1.6 ν/h = 0.02 m/s, and ρc0² = 0.4 Pa is only 20 times the flow's pressure differences).
+# is 1.6 ν/h = 0.02 m/s, and ρc0² = 0.4 Pa is only 20 times the flow's pressure differences;
+# 25 times that sound speed gives 74.4) and it is not steady: its viscous drag keeps falling
+# (C_D 52 at 6 s, 40 at 24 s), so this bound holds the 12 s value only.
 # The paper's convergence study is a validation run (tests/validation/run.sh).
 clsph_run_test(run_cylinder_array_coarse ${CMAKE_SOURCE_DIR}/cases/cylinder_array.lua
                SETS n=20 t_end=12 BOUNDS "cd_error<0.28")
