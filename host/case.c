@@ -325,9 +325,32 @@ static int l_scheme(lua_State *L)
   return 0;
 }
 
+/* fluid { flow_rate_control = { velocity = U, slice = {x0, x1} } } (eqs 67-68) */
+static void flow_rate_control(lua_State *L, int idx, struct scene *s)
+{
+  static const char *const keys[] = {"velocity", "slice", NULL};
+  const char *fn = "fluid: flow_rate_control";
+  struct scene_flow_control *c = &s->flow;
+  if (!lua_istable(L, idx))
+    luaL_error(L, "%s: expects a table { velocity = U, slice = {x0, x1} }", fn);
+  check_keys(L, idx, fn, keys, 0);
+  c->velocity = get_number(L, idx, fn, "velocity", NAN);
+  if (isnan(c->velocity)) luaL_error(L, "%s: needs velocity = (m/s), the target mean velocity", fn);
+  lua_getfield(L, idx, "slice");
+  if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
+    luaL_error(L, "%s: needs slice = {x0, x1}, the x range where the velocity is measured", fn);
+  for (int k = 0; k < 2; ++k) c->slice[k] = get_index_number(L, lua_gettop(L), fn, k + 1, "slice");
+  lua_pop(L, 1);
+  if (!(c->slice[1] > c->slice[0]))
+    luaL_error(L, "%s: the slice {%f, %f} is empty (x1 > x0 needed)", fn, c->slice[0], c->slice[1]);
+  c->on = 1;
+  c->line = current_line(L);
+}
+
 static int l_fluid(lua_State *L)
 {
-  static const char *const keys[] = {"density", "viscosity", "gravity", "body_force", NULL};
+  static const char *const keys[] = {"density",    "viscosity",         "gravity",
+                                     "body_force", "flow_rate_control", NULL};
   struct loader *ld = loader_of(L);
   need_table(L, "fluid");
   once(L, &ld->line_fluid, "fluid");
@@ -339,6 +362,9 @@ static int l_fluid(lua_State *L)
   if (s->nu < 0.0) luaL_error(L, "fluid: viscosity must not be negative, not %f", s->nu);
   get_point(L, 1, "fluid", "gravity", s->gravity);
   get_point(L, 1, "fluid", "body_force", s->body_force);
+  lua_getfield(L, 1, "flow_rate_control");
+  if (!lua_isnil(L, -1)) flow_rate_control(L, lua_gettop(L), s);
+  lua_pop(L, 1);
   return 0;
 }
 
@@ -828,6 +854,17 @@ static enum clsph_status finish(const char *path, struct loader *ld)
                 path, ld->set_names[k], hint);
   }
   if (!s->rho0) s->rho0 = 1000.0; /* no fluid {} declaration: water at rest */
+  if (s->flow.on) { /* the slice must cut the domain: on a periodic axis, less than a period */
+    const struct scene_flow_control *c = &s->flow;
+    const double len = s->hi[0] - s->lo[0];
+    CLSPH_CHECK(s->periodic[0] ? c->slice[1] - c->slice[0] < len
+                               : c->slice[0] >= s->lo[0] && c->slice[1] <= s->hi[0],
+                CLSPH_E_INPUT,
+                "%s:%d: fluid: flow_rate_control: the slice {%g, %g} must lie in the domain's x "
+                "range [%g, %g]%s",
+                path, c->line, c->slice[0], c->slice[1], s->lo[0], s->hi[0],
+                s->periodic[0] ? " (periodic: be narrower than the period)" : "");
+  }
   qsort(s->params, (size_t)s->nparams, sizeof *s->params, cmp_param);
 done:
   free(names);
@@ -948,6 +985,29 @@ static int l_sample(lua_State *L)
   if (api->sample(api->ctx, field, comp, x, y, &v) != CLSPH_OK)
     return luaL_error(L, "sim.sample: cannot sample '%s' at (%f, %f)", field, x, y);
   lua_pushnumber(L, v);
+  return 1;
+}
+
+/* f = sim.force(group [, since]): the force of the fluid on a wall group (N/m), the mean over
+ * the outputs at t >= since, or the last output: f.x, f.y (total), f.pressure_x, f.pressure_y,
+ * f.viscous_x, f.viscous_y, f.samples. */
+static int l_force_metric(lua_State *L)
+{
+  static const char *const names[] = {"x",          "y",         "pressure_x",
+                                      "pressure_y", "viscous_x", "viscous_y"};
+  const struct case_sim_api *api = api_of(L);
+  const char *group = luaL_checkstring(L, 1);
+  double since = lua_isnoneornil(L, 2) ? -1.0 : luaL_checknumber(L, 2), v[6];
+  int samples = 0;
+  if (api->force == NULL || api->force(api->ctx, group, since, v, &samples) != CLSPH_OK)
+    return luaL_error(L, "sim.force: no force of wall group '%s'", group);
+  lua_createtable(L, 0, 7);
+  for (int k = 0; k < 6; ++k) {
+    lua_pushnumber(L, v[k]);
+    lua_setfield(L, -2, names[k]);
+  }
+  lua_pushinteger(L, samples);
+  lua_setfield(L, -2, "samples");
   return 1;
 }
 
@@ -1098,6 +1158,7 @@ enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api
                                  {"max", l_max},
                                  {"mean", l_mean},
                                  {"sample", l_sample},
+                                 {"force", l_force_metric},
                                  {"profile_error", l_profile_error}};
   for (size_t i = 0; i < sizeof fns / sizeof *fns; ++i) {
     lua_pushlightuserdata(L, (void *)(size_t)api);

@@ -25,6 +25,10 @@ struct case_sim_api {
   /** Interpolated value of component `comp` of a field at a point. */
   enum clsph_status (*sample)(void *ctx, const char *field, int comp, double x, double y,
                               double *value);
+  /** Mean force of a wall group over the outputs at t >= since (since < 0: the last output):
+   *  out = total x, y, pressure x, y, viscous x, y (N/m); samples = outputs averaged. */
+  enum clsph_status (*force)(void *ctx, const char *group, double since, double out[6],
+                             int *samples);
 };
 
 /** @brief Run a case script and fill the scene.

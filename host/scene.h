@@ -79,6 +79,16 @@ struct scene_profile_line {
   int npts; /* sample points from a to b inclusive */
 };
 
+/** Flow-rate control (Leroy et al. 2014 eqs 67-68, after Morris et al. 1997): the x component of
+ *  the body force is updated every step so that the mean x velocity of the fluid particles in the
+ *  slice x0 <= x < x1 (modulo the period on a periodic x axis) reaches `velocity`. */
+struct scene_flow_control {
+  int on;
+  double velocity; /* target mean x velocity ⟨v⟩ in the slice, m/s */
+  double slice[2]; /* x0, x1 of the slice, m */
+  int line;        /* line of the case script */
+};
+
 /** Everything a case declares. Anything it does not state is off. */
 struct scene {
   char case_path[1024];  /* the script */
@@ -86,13 +96,14 @@ struct scene {
   int dim;               /* 2 */
   double lo[2], hi[2];   /* domain box, m (periodic axes: the period) */
   int periodic[2];
-  double dr;                  /* particle spacing, m */
-  double h_over_dr;           /* smoothing length / dr (scheme default unless given) */
-  char smoothing[SCENE_NAME]; /* smoothing function name ("" = the scheme's default) */
-  double rho0;                /* reference density, kg/m^3 */
-  double nu;                  /* kinematic viscosity, m^2/s */
-  double gravity[2];          /* m/s^2 */
-  double body_force[2];       /* acceleration, m/s^2 (e.g. a pressure-gradient drive) */
+  double dr;                      /* particle spacing, m */
+  double h_over_dr;               /* smoothing length / dr (scheme default unless given) */
+  char smoothing[SCENE_NAME];     /* smoothing function name ("" = the scheme's default) */
+  double rho0;                    /* reference density, kg/m^3 */
+  double nu;                      /* kinematic viscosity, m^2/s */
+  double gravity[2];              /* m/s^2 */
+  double body_force[2];           /* acceleration, m/s^2 (e.g. a pressure-gradient drive) */
+  struct scene_flow_control flow; /* flow-rate control of the x body force (off unless given) */
   char scheme[SCENE_NAME];
   int noptions;
   struct scene_option *options;

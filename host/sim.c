@@ -1,11 +1,12 @@
 /* sim.c: set-up of a simulation from a scene, and the time loop with its outputs.
  *
  * Each step: sort the particles by cell (every field reordered), ask the scheme for its largest
- * stable step, cut it to land exactly on the next output or checkpoint time, step, and read the
- * error flags. Outputs in the output folder:
- *   snap_NNNNNN.h5 + snapshots.xdmf   particle fields at the output cadence (ParaView)
- *   checkpoint_NNNNNN.h5              at the checkpoint cadence and at the end (--restart)
- *   probes.csv, profile_<name>.csv    interpolated fields at the output cadence
+ * stable step, shorten it so that equal steps land exactly on the next output or checkpoint time
+ * (k = ⌈remaining/bound⌉ steps of remaining/k: no short step before each output, which would
+ * upset the flow-rate control), update the flow-rate control, step, and read the error flags.
+ * Outputs in the output folder: snap_NNNNNN.h5 + snapshots.xdmf   particle fields at the output
+ * cadence (ParaView) checkpoint_NNNNNN.h5              at the checkpoint cadence and at the end
+ * (--restart) probes.csv, profile_<name>.csv    interpolated fields at the output cadence
  *   forces.csv                        wall-group forces at the output cadence
  *   summary.json                      what ran, its cost (with --profile, the device time per
  *                                     kernel), its status and the case's metrics */
@@ -184,9 +185,13 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_max_speed", &sim.k_max_speed));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_count", &sim.k_count));
   CLSPH_TRY(prog_kernel(sim.prog, "grid_invert", &sim.k_invert));
+  CLSPH_TRY(prog_kernel(sim.prog, "reduce_slice_velocity", &sim.k_slice));
   CLSPH_TRY(kern_buffer(dev, sim.ps.cap * sizeof(cl_uint), NULL, &sim.d_inv, "inverse index"));
-  CLSPH_TRY(kern_buffer(dev, (sim.ps.cap / 64 + 2) * sizeof(real), NULL, &sim.d_partial,
-                        "reduction partials"));
+  CLSPH_TRY(kern_buffer(dev, 2 * (reduce_groups(sim.ps.cap) + 1) * sizeof(real), NULL,
+                        &sim.d_partial, "reduction partials"));
+  sim.body_force[0] = scene->body_force[0];
+  sim.body_force[1] = scene->body_force[1];
+  sim.flow.force = scene->body_force[0];
   if (sim.scheme->create != NULL) CLSPH_TRY(sim.scheme->create(&sim, &sim.state));
   CLSPH_TRY(sim_sort(&sim));
   *out = sim;
@@ -223,6 +228,36 @@ enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count)
   CLSPH_TRY(kern_read(sim->dev, sim->d_partial, groups * sizeof *part, part));
   double c = 0.0;
   for (size_t g = 0; g < groups; ++g) c += (double)part[g];
+  *count = c;
+done:
+  free(part);
+  return st;
+}
+
+enum clsph_status sim_slice_velocity(struct sim *sim, double x0, double x1, double *mean,
+                                     double *count)
+{
+  enum clsph_status st = CLSPH_OK;
+  real *part = NULL;
+  const struct scene *s = sim->scene;
+  cl_uint n = (cl_uint)sim->ps.n;
+  size_t groups = reduce_groups(sim->ps.n);
+  const real rx0 = (real)x0, width = (real)(x1 - x0);
+  const real period = (real)(s->periodic[0] ? s->hi[0] - s->lo[0] : 0.0);
+  cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
+  cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
+  part = malloc(2 * groups * sizeof *part);
+  CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(KERN_SET(sim->k_slice, KARG(n), KARG(pos), KARG(vel), KARG(kind), KARG(rx0),
+                     KARG(width), KARG(period), KARG(sim->d_partial)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_slice, groups * 64, 64, NULL));
+  CLSPH_TRY(kern_read(sim->dev, sim->d_partial, 2 * groups * sizeof *part, part));
+  double u = 0.0, c = 0.0;
+  for (size_t g = 0; g < groups; ++g) {
+    u += (double)part[g];
+    c += (double)part[groups + g];
+  }
+  *mean = c > 0.0 ? u / c : 0.0;
   *count = c;
 done:
   free(part);
@@ -352,7 +387,10 @@ enum clsph_status sim_info(struct sim *sim)
                         : "none",
          s->periodic[0] || s->periodic[1] ? "" : "none", s->periodic[0] ? "x" : "",
          s->periodic[1] ? "y" : "", s->gravity[0] || s->gravity[1] ? "on" : "off",
-         s->body_force[0] || s->body_force[1] ? "on" : "off", s->nprobes, s->nprofiles, s->nforces);
+         s->flow.on                             ? "flow-rate control"
+         : s->body_force[0] || s->body_force[1] ? "on"
+                                                : "off",
+         s->nprobes, s->nprofiles, s->nforces);
   for (int i = 0; i < s->noptions; ++i) {
     if (s->options[i].is_number)
       printf("option %s = %g\n", s->options[i].key, s->options[i].number);
@@ -381,7 +419,7 @@ done:
 struct run_out {
   char dir[1024];
   struct io_series series;
-  FILE *probes, *forces;
+  FILE *probes, *forces, *flow;
   FILE **profiles;
   int nsnap;
   /* per force group, over the samples written: the largest |F| (time, fx, fy) and the last F */
@@ -486,6 +524,12 @@ static enum clsph_status open_series(struct sim *sim, struct run_out *o, int app
       fprintf(o->profiles[p], "\n");
     }
   }
+  if (s->flow.on) {
+    CLSPH_TRY(path_in(o, "flow_control.csv", path, sizeof path));
+    o->flow = fopen(path, mode);
+    CLSPH_CHECK(o->flow != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
+    if (!append) fprintf(o->flow, "time,dt,body_force_x,slice_velocity,slice_particles\n");
+  }
   if (s->nforces > 0) {
     CLSPH_TRY(path_in(o, "forces.csv", path, sizeof path));
     o->force_stats = calloc((size_t)s->nforces, sizeof *o->force_stats);
@@ -494,8 +538,11 @@ static enum clsph_status open_series(struct sim *sim, struct run_out *o, int app
     CLSPH_CHECK(o->forces != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
     if (!append) {
       fprintf(o->forces, "time");
-      for (int g = 0; g < s->nforces; ++g)
-        fprintf(o->forces, ",%s:fx,%s:fy", s->forces[g], s->forces[g]);
+      for (int g = 0; g < s->nforces; ++g) {
+        const char *n = s->forces[g];
+        fprintf(o->forces, ",%s:fx,%s:fy,%s:fx_pressure,%s:fy_pressure,%s:fx_viscous,%s:fy_viscous",
+                n, n, n, n, n, n);
+      }
       fprintf(o->forces, "\n");
     }
   }
@@ -585,22 +632,45 @@ static enum clsph_status write_series(struct sim *sim, struct run_out *o, int wh
     at = rows = NULL;
   }
   if (s->nforces > 0 && (what & SERIES_TIME)) {
+    /* the velocity gradient at the walls sums over neighbours: the cell table must be current
+     * (sorting is idempotent, so the next step's sort and a restart see the same order) */
+    CLSPH_TRY(sim_sort(sim));
+    const size_t cols = 1 + 4 * (size_t)s->nforces;
+    if (sim->nforce_rows == sim->force_rows_cap) {
+      size_t cap = sim->force_rows_cap ? 2 * sim->force_rows_cap : 64;
+      double *r = realloc(sim->force_rows, cap * cols * sizeof *r);
+      CLSPH_CHECK(r != NULL, CLSPH_E_NOMEM, "out of memory for the force history");
+      sim->force_rows = r;
+      sim->force_rows_cap = cap;
+    }
+    double *row = sim->force_rows + sim->nforce_rows * cols;
+    row[0] = sim->time;
     fprintf(o->forces, "%.17g", sim->time);
     for (int g = 0; g < s->nforces; ++g) {
-      double f[2];
-      CLSPH_TRY(sim->scheme->wall_force(sim, sim->state, s->forces[g], f));
-      fprintf(o->forces, ",%.9g,%.9g", f[0], f[1]);
+      struct wall_force f;
+      CLSPH_TRY(sim->scheme->wall_force(sim, sim->state, s->forces[g], &f));
+      fprintf(o->forces, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", f.pressure[0] + f.viscous[0],
+              f.pressure[1] + f.viscous[1], f.pressure[0], f.pressure[1], f.viscous[0],
+              f.viscous[1]);
+      double *q = row + 1 + 4 * g;
+      q[0] = f.pressure[0];
+      q[1] = f.pressure[1];
+      q[2] = f.viscous[0];
+      q[3] = f.viscous[1];
+      const double ft[2] = {f.pressure[0] + f.viscous[0], f.pressure[1] + f.viscous[1]};
       struct force_stat *fs = &o->force_stats[g];
-      if (hypot(f[0], f[1]) > fs->peak) {
-        fs->peak = hypot(f[0], f[1]);
+      if (hypot(ft[0], ft[1]) > fs->peak) {
+        fs->peak = hypot(ft[0], ft[1]);
         fs->peak_time = sim->time;
-        memcpy(fs->peak_f, f, sizeof f);
+        memcpy(fs->peak_f, ft, sizeof ft);
       }
-      memcpy(fs->last, f, sizeof f);
+      memcpy(fs->last, ft, sizeof ft);
     }
+    ++sim->nforce_rows;
     fprintf(o->forces, "\n");
     fflush(o->forces);
   }
+  if (o->flow != NULL) fflush(o->flow);
 done:
   free(at);
   free(rows);
@@ -653,7 +723,10 @@ static enum clsph_status write_checkpoint(struct sim *sim, struct run_out *o)
   meta_of(sim, &m);
   snprintf(name, sizeof name, "checkpoint_%06ld.h5", sim->step);
   CLSPH_TRY(path_in(o, name, path, sizeof path));
-  CLSPH_TRY(io_checkpoint_write(path, sim->dev, &sim->ps, &m, NULL, 0));
+  /* the flow-rate control's state travels in the blob, so a restart continues bit for bit */
+  const int flow = sim->scene->flow.on;
+  CLSPH_TRY(io_checkpoint_write(path, sim->dev, &sim->ps, &m, flow ? &sim->flow : NULL,
+                                flow ? sizeof sim->flow : 0));
   log_debug("checkpoint %s at t = %g s", path, sim->time);
 done:
   return st;
@@ -663,6 +736,7 @@ static void close_out(const struct scene *s, struct run_out *o)
 {
   if (o->probes != NULL) fclose(o->probes);
   if (o->forces != NULL) fclose(o->forces);
+  if (o->flow != NULL) fclose(o->flow);
   for (int p = 0; o->profiles != NULL && p < s->nprofiles; ++p)
     if (o->profiles[p] != NULL) fclose(o->profiles[p]);
   free(o->profiles);
@@ -787,6 +861,40 @@ done:
   return st;
 }
 
+/* Mean of the recorded forces of a group over the outputs at t >= since (since < 0: the last). */
+static enum clsph_status metric_force(void *ctx, const char *group, double since, double out[6],
+                                      int *samples)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ((struct metric_ctx *)ctx)->sim;
+  const struct scene *s = sim->scene;
+  int g = -1;
+  for (int k = 0; k < s->nforces && g < 0; ++k)
+    if (strcmp(s->forces[k], group) == 0) g = k;
+  CLSPH_CHECK(g >= 0, CLSPH_E_INPUT,
+              "metrics: sim.force: the case records no force of '%s' "
+              "(force { \"%s\" })",
+              group, group);
+  CLSPH_CHECK(sim->nforce_rows > 0, CLSPH_E_INPUT, "metrics: sim.force: no force recorded yet");
+  const size_t cols = 1 + 4 * (size_t)s->nforces;
+  double sum[4] = {0.0, 0.0, 0.0, 0.0};
+  int c = 0;
+  for (size_t r = 0; r < sim->nforce_rows; ++r) {
+    const double *row = sim->force_rows + r * cols;
+    if (since < 0.0 ? r + 1 < sim->nforce_rows : row[0] < since * (1.0 - 1e-12)) continue;
+    for (int k = 0; k < 4; ++k) sum[k] += row[1 + 4 * g + k];
+    ++c;
+  }
+  CLSPH_CHECK(c > 0, CLSPH_E_INPUT, "metrics: sim.force: no force recorded at t >= %g s", since);
+  for (int k = 0; k < 4; ++k) sum[k] /= c;
+  out[0] = sum[0] + sum[2];
+  out[1] = sum[1] + sum[3];
+  for (int k = 0; k < 4; ++k) out[2 + k] = sum[k];
+  *samples = c;
+done:
+  return st;
+}
+
 /* ---- summary ---- */
 
 /* "profile": the run's device time per kernel, slowest first (--profile). */
@@ -876,7 +984,7 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
     struct metric_ctx ctx = {sim};
     struct case_sim_api api = {
         &ctx,           sim->time,    sim->step,          (double)sim->ps.n, sim->wall_steps,
-        sim->wall_most, metric_stats, metric_sample_many, metric_sample};
+        sim->wall_most, metric_stats, metric_sample_many, metric_sample,     metric_force};
     enum clsph_status ms = case_metrics(script, &api, metrics);
     if (ms != CLSPH_OK) snprintf(sim->status, sizeof sim->status, "metrics failed");
     cJSON_ReplaceItemInObject(root, "status", cJSON_CreateString(sim->status));
@@ -898,6 +1006,41 @@ done:
 }
 
 /* ---- the time loop ---- */
+
+/* Flow-rate control, before a step of length δt (Leroy et al. 2014 eq 67, from Morris, Fox &
+ * Zhu 1997):
+ *   F^n = F^{n−1} + (⟨v⟩ − 2ṽ^{n−1} + ṽ^{n−2})/δt,
+ * ṽ (eq 68) the mean x velocity of the fluid particles in the slice; before the first step
+ * ṽ^{n−2} = ṽ^{n−1}. The controller needs steps of (nearly) constant length: a short step cut
+ * to land on an output time made it unstable (cylinder array, n = 20: steps of 0.08 s with one
+ * of 0.01 s every 0.25 s gave a period-4 oscillation of F growing 25% a cycle), which is why
+ * the time loop lands on outputs in equal steps. One line per step goes to flow_control.csv. */
+static enum clsph_status flow_control(struct sim *sim, double dt, FILE *log)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene_flow_control *c = &sim->scene->flow;
+  struct sim_flow *f = &sim->flow;
+  double v = 0.0, count = 0.0;
+  CLSPH_TRY(sim_slice_velocity(sim, c->slice[0], c->slice[1], &v, &count));
+  if (!(count > 0.0)) {
+    snprintf(sim->status, sizeof sim->status,
+             "flow-rate control: no fluid particle in the slice [%g, %g) at step %ld, t = %.9g s",
+             c->slice[0], c->slice[1], sim->step, sim->time);
+    log_error("%s:%d: %s", sim->scene->case_path, c->line, sim->status);
+    st = sim->step == 0 ? CLSPH_E_INPUT : CLSPH_E_BLOWUP;
+    goto done;
+  }
+  if (f->primed == 0.0) f->v1 = v; /* ṽ^{n−2} = ṽ^{n−1} at the first step */
+  f->v2 = f->v1;
+  f->v1 = v;
+  f->force += (c->velocity - 2.0 * f->v1 + f->v2) / dt;
+  f->primed = 1.0;
+  sim->body_force[0] = f->force;
+  if (log != NULL)
+    fprintf(log, "%.17g,%.9g,%.9g,%.9g,%.0f\n", sim->time, dt, f->force, f->v1, count);
+done:
+  return st;
+}
 
 /* The next multiple of `every` after time t (a function of t alone, so a restart agrees). */
 static double next_mark(double t, double every)
@@ -939,7 +1082,13 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
     size_t blob_bytes = 0;
     CLSPH_TRY(
         io_checkpoint_read(opt->restart, sim->dev, &sim->ps, &expect, &got, &blob, &blob_bytes));
+    if (s->flow.on && blob_bytes == sizeof sim->flow) memcpy(&sim->flow, blob, sizeof sim->flow);
     free(blob);
+    CLSPH_CHECK(!s->flow.on || blob_bytes == sizeof sim->flow, CLSPH_E_INPUT,
+                "%s: the checkpoint has no flow-rate control state (%zu bytes of %zu), which %s "
+                "needs",
+                opt->restart, blob_bytes, sizeof sim->flow, s->case_path);
+    sim->body_force[0] = s->flow.on ? sim->flow.force : s->body_force[0];
     sim->time = got.time;
     sim->step = got.step;
     sim->dt = got.dt;
@@ -979,11 +1128,13 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
       st = CLSPH_E_BLOWUP;
       goto done;
     }
-    /* land exactly on the next output, checkpoint or end */
+    /* land exactly on the next output, checkpoint or end, in equal steps */
     double target = fmin(t_end, fmin(next_mark(sim->time, s->output_every),
                                      next_mark(sim->time, s->checkpoint_every)));
-    int lands = sim->time + dt >= target * (1.0 - 1e-12);
-    if (lands) dt = target - sim->time;
+    double left = target - sim->time, k = ceil(left / dt * (1.0 - 1e-9));
+    int lands = sim->time + dt >= target * (1.0 - 1e-12) || !(k > 1.0);
+    dt = lands ? left : left / k;
+    if (s->flow.on) CLSPH_TRY(flow_control(sim, dt, o.flow));
     CLSPH_TRY(sim->scheme->step(sim, sim->state, dt));
     sim->time = lands ? target : sim->time + dt;
     sim->dt = dt;
@@ -1054,7 +1205,8 @@ void sim_destroy(struct sim *sim)
   if (sim->k_max_speed != NULL) clReleaseKernel(sim->k_max_speed);
   if (sim->k_count != NULL) clReleaseKernel(sim->k_count);
   if (sim->k_invert != NULL) clReleaseKernel(sim->k_invert);
-  sim->k_probe = sim->k_max_speed = sim->k_count = sim->k_invert = NULL;
+  if (sim->k_slice != NULL) clReleaseKernel(sim->k_slice);
+  sim->k_probe = sim->k_max_speed = sim->k_count = sim->k_invert = sim->k_slice = NULL;
   kern_release(&sim->d_inv);
   kern_release(&sim->d_partial);
   kern_release(&sim->d_flags);
@@ -1063,4 +1215,7 @@ void sim_destroy(struct sim *sim)
   if (sim->prog != NULL) clReleaseProgram(sim->prog);
   sim->prog = NULL;
   geometry_free(&sim->geom);
+  free(sim->force_rows);
+  sim->force_rows = NULL;
+  sim->nforce_rows = sim->force_rows_cap = 0;
 }

@@ -20,6 +20,13 @@ struct sim_options {
   int quiet;           /* no progress line */
 };
 
+/** Flow-rate control (eqs 67-68): the state a checkpoint carries (doubles only, in this order). */
+struct sim_flow {
+  double force;  /* F^{n−1}: the x body force of the last step, m/s² */
+  double v1, v2; /* ṽ^{n−1}, ṽ^{n−2}: slice velocities before the last two steps, m/s */
+  double primed; /* 0 before the first step (ṽ^{n−2} unknown), 1 after */
+};
+
 struct sim {
   const struct dev *dev;
   const struct scene *scene;
@@ -39,7 +46,13 @@ struct sim {
   cl_kernel k_count;     /* reduction: nonzero entries of a uint field */
   cl_kernel k_invert;    /* inv[id[k]] = k */
   cl_mem d_inv;          /* current index of each original particle index (after sim_sort) */
+  double body_force[2];  /* body force now, m/s²: the scene's, x under flow-rate control */
+  struct sim_flow flow;  /* flow-rate control state (scene->flow.on) */
+  cl_kernel k_slice;     /* reduction: x velocity and count of the fluid in the control slice */
   double time, dt;       /* simulated time and last step, s */
+  double *force_rows;    /* wall forces at each output: time, then per group of scene->forces
+                          * pressure x, y and viscous x, y (N/m) */
+  size_t nforce_rows, force_rows_cap;
   long step;
   long solver_its;   /* the pressure solver's iterations of the last step (schemes set) */
   double solver_res; /* and its final relative residual */
@@ -70,6 +83,10 @@ enum clsph_status sim_check_flags(struct sim *sim);
 enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax);
 /** @brief Largest norm of a vector field (2 reals per particle) over one kind (−1: all). */
 enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *vmax);
+/** @brief Mean x velocity and count of the fluid particles with x0 <= x < x1 (modulo the period
+ *  on a periodic x axis), reduced on the device. */
+enum clsph_status sim_slice_velocity(struct sim *sim, double x0, double x1, double *mean,
+                                     double *count);
 /** @brief Number of nonzero entries of a uint field, reduced on the device. */
 enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count);
 /** @brief Interpolate component `comp` of a real field at np points (host array of 2 doubles per

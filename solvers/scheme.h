@@ -7,6 +7,14 @@
 
 struct sim;
 
+/** Force per unit length of the fluid on a wall group, N/m (Leroy et al. 2014 eq 69):
+ *  pressure = Σ_s −p_s n_s S_s and viscous = Σ_s µ (∇u_s + ∇u_sᵀ)·n_s S_s, n_s the segment's
+ *  normal into the fluid; the total is their sum. */
+struct wall_force {
+  double pressure[2];
+  double viscous[2];
+};
+
 struct scheme_ops {
   const char *name;           /* "isph-usaw" */
   const char *summary;        /* one line with its reference */
@@ -23,9 +31,10 @@ struct scheme_ops {
   enum clsph_status (*step)(struct sim *sim, void *state, double dt);
   /** Largest stable time step now, s (before the case's cfl factor). */
   enum clsph_status (*max_dt)(struct sim *sim, void *state, double *dt);
-  /** Force of the fluid on the walls of group `group` (index in scene walls), N/m (NULL: the
-   *  scheme computes no wall forces). */
-  enum clsph_status (*wall_force)(struct sim *sim, void *state, const char *group, double f[2]);
+  /** Force of the fluid on the walls of group `group`, N/m (NULL: the scheme computes no wall
+   *  forces). */
+  enum clsph_status (*wall_force)(struct sim *sim, void *state, const char *group,
+                                  struct wall_force *f);
   void (*destroy)(void *state);
 };
 

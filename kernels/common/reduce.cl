@@ -58,3 +58,31 @@ __kernel void reduce_count(const uint n, __global const uint *field, __global re
   reduce_local_sum(s);
   if (l == 0) partial[get_group_id(0)] = s[0];
 }
+
+/* Sum of the x velocities and count of the fluid particles (kind 0) with x0 <= x < x0 + width,
+ * x taken modulo `period` on a periodic x axis (period 0: not periodic); work-group g writes
+ * its sum to partial[g] and its count to partial[get_num_groups(0) + g]. */
+__kernel void reduce_slice_velocity(const uint n, __global const realv *pos,
+                                    __global const realv *vel, __global const uint *kind,
+                                    const real x0, const real width, const real period,
+                                    __global real *partial)
+{
+  __local real s[REDUCE_WG];
+  const uint l = get_local_id(0);
+  real u = R(0.0), c = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    if (kind[i] != 0u) continue;
+    real d = pos[i].x - x0;
+    if (period > R(0.0)) d -= period * floor(d / period);
+    if (d >= R(0.0) && d < width) {
+      u += vel[i].x;
+      c += R(1.0);
+    }
+  }
+  s[l] = u;
+  reduce_local_sum(s);
+  if (l == 0) partial[get_group_id(0)] = s[0];
+  s[l] = c;
+  reduce_local_sum(s);
+  if (l == 0) partial[get_num_groups(0) + get_group_id(0)] = s[0];
+}

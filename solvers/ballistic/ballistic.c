@@ -34,7 +34,7 @@ static enum clsph_status ballistic_step(struct sim *sim, void *state, double dt)
   const struct scene *s = sim->scene;
   cl_uint n = (cl_uint)sim->ps.n;
   real rdt = (real)dt;
-  real2 accel = dev_real2(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]);
+  real2 accel = dev_real2(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]);
   cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
   cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
   CLSPH_TRY(KERN_SET(b->k_step, KARG(n), KARG(rdt), KARG(accel), KARG(sim->grid.geom), KARG(pos),
@@ -51,7 +51,7 @@ static enum clsph_status ballistic_max_dt(struct sim *sim, void *state, double *
   double vmax = 0.0;
   (void)state;
   CLSPH_TRY(sim_max_speed(sim, 0, &vmax));
-  double a = hypot(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]);
+  double a = hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]);
   double speed = fmax(vmax, sqrt(a * sim->sm.h));
   *dt = speed > 0.0 ? 0.25 * sim->sm.h / speed : HUGE_VAL;
 done:

@@ -28,17 +28,27 @@ struct isph {
   struct psolve_options popt;
   int f_p, f_P, f_ustar, f_visc, f_gam, f_ggam, f_free, f_theta, f_shift, f_vnew, f_rhs, f_divr,
       f_normal;
-  cl_kernel k_half, k_predict, k_free, k_rhs, k_pressure, k_project, k_shift, k_apply;
+  cl_kernel k_half, k_predict, k_free, k_rhs, k_pressure, k_project, k_shift, k_apply, k_strain;
+  cl_mem d_strain;  /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
   double c_shift;   /* shifting coefficient (0: off) */
   double fs_offset; /* distance of the free surface beyond its particles, in dr */
   double u_wall;    /* largest wall speed, m/s */
   double acc;       /* largest particle acceleration of the last step, m/s² */
 };
 
-static const char *const sources[] = {
-    "common/blas1.cl",  "common/csr.cl",        "common/poisson.cl",  "usaw/gamma.cl",
-    "usaw/common.cl",   "isph_usaw/move.cl",    "usaw/viscous.cl",    "isph_usaw/free_surface.cl",
-    "isph_usaw/ppe.cl", "isph_usaw/project.cl", "isph_usaw/shift.cl", NULL};
+static const char *const sources[] = {"common/blas1.cl",
+                                      "common/csr.cl",
+                                      "common/poisson.cl",
+                                      "usaw/gamma.cl",
+                                      "usaw/common.cl",
+                                      "usaw/wall_force.cl",
+                                      "isph_usaw/move.cl",
+                                      "usaw/viscous.cl",
+                                      "isph_usaw/free_surface.cl",
+                                      "isph_usaw/ppe.cl",
+                                      "isph_usaw/project.cl",
+                                      "isph_usaw/shift.cl",
+                                      NULL};
 static const char *const options[] = {"shifting", "pressure_gradient", "free_surface_offset",
                                       PSOLVE_OPTION_NAMES, NULL};
 
@@ -177,12 +187,14 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   struct {
     cl_kernel *k;
     const char *name;
-  } ks[] = {{&is->k_half, "isph_half_move"},    {&is->k_predict, "usaw_predict"},
-            {&is->k_free, "isph_free_surface"}, {&is->k_rhs, "isph_ppe_rhs"},
-            {&is->k_pressure, "isph_pressure"}, {&is->k_project, "isph_project"},
-            {&is->k_shift, "isph_shift"},       {&is->k_apply, "isph_apply_shift"}};
+  } ks[] = {{&is->k_half, "isph_half_move"},      {&is->k_predict, "usaw_predict"},
+            {&is->k_free, "isph_free_surface"},   {&is->k_rhs, "isph_ppe_rhs"},
+            {&is->k_pressure, "isph_pressure"},   {&is->k_project, "isph_project"},
+            {&is->k_shift, "isph_shift"},         {&is->k_apply, "isph_apply_shift"},
+            {&is->k_strain, "usaw_vertex_strain"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
+  CLSPH_TRY(kern_buffer(sim->dev, 3 * ps->cap * sizeof(real), NULL, &is->d_strain, "strain"));
   CLSPH_TRY(poisson_op_create(sim->dev, sim->prog, &is->po));
   CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &is->popt, &is->ps));
   *state = is;
@@ -227,7 +239,7 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   const real rdt = (real)dt, rho = (real)sc->rho0, nu = (real)sc->nu, dr = (real)sc->dr;
   const real c = (real)is->c_shift;
   const real2 accel =
-      dev_real2(sc->gravity[0] + sc->body_force[0], sc->gravity[1] + sc->body_force[1]);
+      dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
   const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
 
   /* 1. half move, neighbours and γ at r* */
@@ -330,7 +342,7 @@ static enum clsph_status isph_max_dt(struct sim *sim, void *state, double *dt)
   CLSPH_TRY(sim_max_speed(sim, 0, &vmax));
   double uref = fmax(vmax, is->u_wall);
   double a =
-      fmax(hypot(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]), is->acc);
+      fmax(hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]), is->acc);
   double d = HUGE_VAL;
   /* CFL (49): the paper's C_CFL = 0.2 lets particles cross the side wall of the lid-driven
    * cavity (Re 100, 20 and 30 particles per side, within 5 s); 0.1 keeps them in. The paper's
@@ -343,23 +355,35 @@ done:
   return st;
 }
 
-/* Pressure force of the fluid on the walls of a group (walls.c). */
+/* Force of the fluid on the walls of a group, pressure and viscous parts (eqs 69-70, walls.c). */
 static enum clsph_status isph_wall_force(struct sim *sim, void *state, const char *group,
-                                         double f[2])
+                                         struct wall_force *f)
 {
+  enum clsph_status st = CLSPH_OK;
   struct isph *is = state;
-  return usaw_pressure_force(sim->dev, &sim->geom, sim->scene, sim->ps.n,
-                             pset_mem(&sim->ps, is->f_p), sim->d_inv, group, f);
+  cl_uint i;
+  cl_mem vel = pset_mem(&sim->ps, sim->f_vel);
+  CLSPH_TRY(gamma_now(sim, is)); /* γ at the current positions (none yet before the first step) */
+  CLSPH_TRY(prefix(sim, is, is->k_strain, &i));
+  CLSPH_TRY(arg(is->k_strain, &i, sizeof vel, &vel));
+  CLSPH_TRY(arg(is->k_strain, &i, sizeof is->d_strain, &is->d_strain));
+  CLSPH_TRY(kern_launch(sim->dev, is->k_strain, sim->ps.n, NULL));
+  CLSPH_TRY(usaw_wall_force(sim->dev, &sim->geom, sim->scene, sim->ps.n,
+                            pset_mem(&sim->ps, is->f_p), is->d_strain, sim->d_inv,
+                            sim->scene->rho0 * sim->scene->nu, group, f));
+done:
+  return st;
 }
 
 static void isph_destroy(void *state)
 {
   struct isph *is = state;
   if (is == NULL) return;
-  cl_kernel *ks[] = {&is->k_half,     &is->k_predict, &is->k_free,  &is->k_rhs,
-                     &is->k_pressure, &is->k_project, &is->k_shift, &is->k_apply};
+  cl_kernel *ks[] = {&is->k_half,    &is->k_predict, &is->k_free,  &is->k_rhs,   &is->k_pressure,
+                     &is->k_project, &is->k_shift,   &is->k_apply, &is->k_strain};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
+  kern_release(&is->d_strain);
   psolve_destroy(&is->ps);
   poisson_op_destroy(&is->po);
   usaw_walls_destroy(&is->walls);

@@ -54,7 +54,9 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   }
   CLSPH_TRY(pset_add(&w.ps, dev, "v1", sizeof(cl_uint), ids, &w.f_v1));
   CLSPH_TRY(pset_add(&w.ps, dev, "v2", sizeof(cl_uint), ids + n, &w.f_v2));
-  CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &w.d_flags, "segment flags"));
+  /* the bits, and a counter (as the sim's flags: usaw_walls_gamma may be given this buffer) */
+  const cl_uint zeros[2] = {0, 0};
+  CLSPH_TRY(kern_buffer(dev, sizeof zeros, zeros, &w.d_flags, "segment flags"));
   CLSPH_TRY(prog_kernel(prog, "usaw_gamma", &w.k_gamma));
   if (n > 0) {
     CLSPH_TRY(grid_sort(&w.g, dev, n, pset_mem(&w.ps, w.f_mid), w.d_flags));
@@ -79,7 +81,8 @@ enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, 
   cl_uint np = (cl_uint)n;
   cl_mem a = pset_mem(&w->ps, w->f_a), b = pset_mem(&w->ps, w->f_b), nn = pset_mem(&w->ps, w->f_n);
   CLSPH_TRY(KERN_SET(w->k_gamma, KARG(np), KARG(w->g.geom), KARG(w->g.d_start), KARG(a), KARG(b),
-                     KARG(nn), KARG(d_pos), KARG(d_theta), KARG(d_gamma), KARG(d_grad_gamma), KARG(d_flags)));
+                     KARG(nn), KARG(d_pos), KARG(d_theta), KARG(d_gamma), KARG(d_grad_gamma),
+                     KARG(d_flags)));
   CLSPH_TRY(kern_launch(dev, w->k_gamma, n, NULL));
 done:
   return st;
@@ -92,10 +95,22 @@ enum clsph_status usaw_walls_from_geom(const struct dev *dev, cl_program prog,
   enum clsph_status st = CLSPH_OK;
   double *ab = calloc(4 * (geo->nseg + 1), sizeof *ab);
   CLSPH_CHECK(ab != NULL, CLSPH_E_NOMEM, "out of memory for %zu segments", geo->nseg);
-  for (size_t s = 0; s < geo->nseg; ++s) /* the ends are the vertex particles' positions */
+  /* The ends are the vertex particles' positions. On a periodic axis those are wrapped into
+   * [lo, hi), so a segment that crosses the boundary takes the image of its second end nearest
+   * the first, and both ends move by a period where needed to put the midpoint (which bins the
+   * segment) in [lo, hi); the kernels add the image shift of the midpoint's cell to both ends. */
+  for (size_t s = 0; s < geo->nseg; ++s)
     for (size_t c = 0; c < 2; ++c) {
-      ab[2 * s + c] = geo->x[2 * geo->seg_v[2 * s] + c];
-      ab[2 * geo->nseg + 2 * s + c] = geo->x[2 * geo->seg_v[2 * s + 1] + c];
+      double xa = geo->x[2 * geo->seg_v[2 * s] + c], xb = geo->x[2 * geo->seg_v[2 * s + 1] + c];
+      if (box->periodic[c]) {
+        const double len = box->hi[c] - box->lo[c];
+        xb -= len * round((xb - xa) / len);
+        const double shift = len * floor((0.5 * (xa + xb) - box->lo[c]) / len);
+        xa -= shift;
+        xb -= shift;
+      }
+      ab[2 * s + c] = xa;
+      ab[2 * geo->nseg + 2 * s + c] = xb;
     }
   struct usaw_segments segs = {geo->nseg, ab, ab + 2 * geo->nseg, geo->seg_normal, geo->seg_v};
   CLSPH_TRY(usaw_walls_create(dev, prog, &segs, box, out));
@@ -104,22 +119,31 @@ done:
   return st;
 }
 
-enum clsph_status usaw_pressure_force(const struct dev *dev, const struct geom *geo,
-                                      const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_inv,
-                                      const char *group, double f[2])
+enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
+                                  const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_strain,
+                                  cl_mem d_inv, double mu, const char *group, struct wall_force *f)
 {
   enum clsph_status st = CLSPH_OK;
-  real *p = malloc(n * sizeof *p);
+  real *p = malloc(4 * n * sizeof *p);
   cl_uint *inv = malloc(n * sizeof *inv);
   CLSPH_CHECK(p != NULL && inv != NULL, CLSPH_E_NOMEM, "out of memory");
+  real *e = p + n; /* strain: xx, xy, yy per particle */
   CLSPH_TRY(kern_read(dev, d_p, n * sizeof *p, p));
+  CLSPH_TRY(kern_read(dev, d_strain, 3 * n * sizeof *e, e));
   CLSPH_TRY(kern_read(dev, d_inv, n * sizeof *inv, inv));
-  f[0] = f[1] = 0.0;
+  memset(f, 0, sizeof *f);
   for (size_t s = 0; s < geo->nseg; ++s) {
     if (strcmp(sc->walls[geo->seg_wall[s]].group, group) != 0) continue;
-    double ps = 0.5 * ((double)p[inv[geo->seg_v[2 * s]]] + (double)p[inv[geo->seg_v[2 * s + 1]]]);
-    f[0] -= ps * geo->seg_normal[2 * s] * geo->seg_len[s];
-    f[1] -= ps * geo->seg_normal[2 * s + 1] * geo->seg_len[s];
+    const size_t v1 = inv[geo->seg_v[2 * s]], v2 = inv[geo->seg_v[2 * s + 1]];
+    const double nx = geo->seg_normal[2 * s], ny = geo->seg_normal[2 * s + 1],
+                 len = geo->seg_len[s];
+    const double ps = 0.5 * ((double)p[v1] + (double)p[v2]);
+    double es[3];
+    for (int c = 0; c < 3; ++c) es[c] = 0.5 * ((double)e[3 * v1 + c] + (double)e[3 * v2 + c]);
+    f->pressure[0] -= ps * nx * len;
+    f->pressure[1] -= ps * ny * len;
+    f->viscous[0] += mu * (es[0] * nx + es[1] * ny) * len;
+    f->viscous[1] += mu * (es[1] * nx + es[2] * ny) * len;
   }
 done:
   free(inv);

@@ -4,6 +4,7 @@
 #ifndef CLSPH_USAW_WALLS_H
 #define CLSPH_USAW_WALLS_H
 
+#include "../scheme.h"
 #include "grid.h"
 #include "pset.h"
 
@@ -42,12 +43,14 @@ struct scene;
 enum clsph_status usaw_walls_from_geom(const struct dev *dev, cl_program prog,
                                        const struct geom *geo, const struct grid_spec *box,
                                        struct usaw_walls *out);
-/** @brief Pressure force of the fluid on the walls of a group, Σ_s −p_s n_s |s| with p_s the mean
- *  of the segment's vertex pressures (the viscous stress is not included); reads p and the
- *  inverse index (current index of each original particle) back from the device. */
-enum clsph_status usaw_pressure_force(const struct dev *dev, const struct geom *geo,
-                                      const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_inv,
-                                      const char *group, double f[2]);
+/** @brief Force of the fluid on the walls of a group (eq 69): p_s and ∇u_s + ∇u_sᵀ are the means
+ *  of the segment's two vertex values (eq 70; the strain from the kernel usaw_vertex_strain,
+ *  three reals xx, xy, yy per particle); reads p, the strain and the inverse index (current index
+ *  of each original particle) back from the device.
+ *  @param mu dynamic viscosity, Pa s */
+enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
+                                  const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_strain,
+                                  cl_mem d_inv, double mu, const char *group, struct wall_force *f);
 /** @brief Release. */
 void usaw_walls_destroy(struct usaw_walls *w);
 

@@ -19,14 +19,19 @@
 struct wcsph {
   struct usaw_walls walls;
   int f_rho, f_drho, f_p, f_gam, f_ggam, f_theta, f_ustar, f_visc;
-  cl_kernel k_cont, k_vertex, k_predict, k_velocity, k_advance;
+  cl_kernel k_cont, k_vertex, k_predict, k_velocity, k_advance, k_strain;
+  cl_mem d_strain; /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
   double c0, p_bg, mass;
   double diffusion; /* factor of the Ferrari density diffusion (1: as published, 0: off) */
 };
 
-static const char *const sources[] = {"usaw/gamma.cl",        "usaw/common.cl",
-                                      "usaw/viscous.cl",      "wcsph_usaw/density.cl",
-                                      "wcsph_usaw/update.cl", NULL};
+static const char *const sources[] = {"usaw/gamma.cl",
+                                      "usaw/common.cl",
+                                      "usaw/wall_force.cl",
+                                      "usaw/viscous.cl",
+                                      "wcsph_usaw/density.cl",
+                                      "wcsph_usaw/update.cl",
+                                      NULL};
 static const char *const options[] = {"sound_speed", "background_pressure", "density_diffusion",
                                       NULL};
 
@@ -146,6 +151,8 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   CLSPH_TRY(prog_kernel(sim->prog, "usaw_predict", &ws->k_predict));
   CLSPH_TRY(prog_kernel(sim->prog, "wcsph_velocity", &ws->k_velocity));
   CLSPH_TRY(prog_kernel(sim->prog, "wcsph_advance", &ws->k_advance));
+  CLSPH_TRY(prog_kernel(sim->prog, "usaw_vertex_strain", &ws->k_strain));
+  CLSPH_TRY(kern_buffer(sim->dev, 3 * ps->cap * sizeof(real), NULL, &ws->d_strain, "strain"));
   *state = ws;
   ws = NULL;
 done:
@@ -167,7 +174,7 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   const real rdt = (real)dt, nu = (real)sc->nu, dr = (real)sc->dr, c0 = (real)ws->c0;
   const real mass = (real)ws->mass, rho0 = (real)sc->rho0, pbg = (real)ws->p_bg;
   const real2 accel =
-      dev_real2(sc->gravity[0] + sc->body_force[0], sc->gravity[1] + sc->body_force[1]);
+      dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
   const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem kind = pset_mem(ps, sim->f_kind), vol = pset_mem(ps, sim->f_vol);
@@ -221,7 +228,7 @@ static enum clsph_status wcsph_max_dt(struct sim *sim, void *state, double *dt)
   struct wcsph *ws = state;
   const struct scene *s = sim->scene;
   const double h = sim->sm.h;
-  double a = hypot(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]);
+  double a = hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]);
   double d = 0.2 * h / ws->c0;                         /* CFL with u_ref = c0 (49) */
   if (s->nu > 0.0) d = fmin(d, 0.125 * h * h / s->nu); /* viscous (49) */
   if (a > 0.0) d = fmin(d, 0.25 * sqrt(h / a));        /* force (49) */
@@ -229,22 +236,38 @@ static enum clsph_status wcsph_max_dt(struct sim *sim, void *state, double *dt)
   return CLSPH_OK;
 }
 
-/* Pressure force of the fluid on the walls of a group (walls.c). */
+/* Force of the fluid on the walls of a group, pressure and viscous parts (eqs 69-70, walls.c). */
 static enum clsph_status wcsph_wall_force(struct sim *sim, void *state, const char *group,
-                                          double f[2])
+                                          struct wall_force *f)
 {
+  enum clsph_status st = CLSPH_OK;
   struct wcsph *ws = state;
-  return usaw_pressure_force(sim->dev, &sim->geom, sim->scene, sim->ps.n,
-                             pset_mem(&sim->ps, ws->f_p), sim->d_inv, group, f);
+  cl_uint i;
+  cl_mem vel = pset_mem(&sim->ps, sim->f_vel);
+  /* γ at the current positions (none yet before the first step) */
+  CLSPH_TRY(usaw_walls_gamma(&ws->walls, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos),
+                             pset_mem(&sim->ps, ws->f_theta), pset_mem(&sim->ps, ws->f_gam),
+                             pset_mem(&sim->ps, ws->f_ggam), ws->walls.d_flags));
+  CLSPH_TRY(prefix(sim, ws, ws->k_strain, 1, &i));
+  ARG(ws->k_strain, i, vel);
+  ARG(ws->k_strain, i, ws->d_strain);
+  CLSPH_TRY(kern_launch(sim->dev, ws->k_strain, sim->ps.n, NULL));
+  CLSPH_TRY(usaw_wall_force(sim->dev, &sim->geom, sim->scene, sim->ps.n,
+                            pset_mem(&sim->ps, ws->f_p), ws->d_strain, sim->d_inv,
+                            sim->scene->rho0 * sim->scene->nu, group, f));
+done:
+  return st;
 }
 
 static void wcsph_destroy(void *state)
 {
   struct wcsph *ws = state;
   if (ws == NULL) return;
-  cl_kernel *ks[] = {&ws->k_cont, &ws->k_vertex, &ws->k_predict, &ws->k_velocity, &ws->k_advance};
+  cl_kernel *ks[] = {&ws->k_cont,     &ws->k_vertex,  &ws->k_predict,
+                     &ws->k_velocity, &ws->k_advance, &ws->k_strain};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
+  kern_release(&ws->d_strain);
   usaw_walls_destroy(&ws->walls);
   free(ws);
 }

@@ -20,4 +20,8 @@ done
 for n in 20 40; do
   run cavity_re100_n${n}_wcsph_usaw cavity re=100 n=$n t_end=10 wcsph=1
 done
+for n in 20 30 40; do # cylinder array, L = 6 (the paper's resolution: 120), steady from ~10 s
+  run cylinder_array_n${n}_isph_usaw cylinder_array n=$n t_end=24
+  run cylinder_array_n${n}_wcsph_usaw cylinder_array n=$n t_end=24 wcsph=1
+done
 python3 tests/validation/results.py "$out" tests/validation/RESULTS.md
