@@ -708,6 +708,117 @@ done:
   return st;
 }
 
+/* ---- the container is closed --------------------------------------------------------------- */
+
+/* The walls must keep the fluid in: a flood fill on a grid of dr/2 cells, from the fluid's cells,
+ * through every cell no wall crosses, may reach the edge of the domain only where the fluid may
+ * leave it: a periodic axis, an inflow or outflow section, or the side that faces up when there
+ * is gravity (a free surface: the water of an open tank is kept in by gravity, not by a lid).
+ * A wall polyline left open where it should close (a gap in a box, a missing lid on a confined
+ * flow) is refused with the place where the fluid gets out. */
+static int section_near(const struct scene *s, const double x[2], double tol)
+{
+  for (int k = 0; k < s->nsections; ++k) {
+    const double *a = s->sections[k].a, *b = s->sections[k].b;
+    double t[2] = {b[0] - a[0], b[1] - a[1]}, l2 = t[0] * t[0] + t[1] * t[1];
+    double u = l2 > 0.0 ? ((x[0] - a[0]) * t[0] + (x[1] - a[1]) * t[1]) / l2 : 0.0;
+    u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
+    if (hypot(x[0] - a[0] - u * t[0], x[1] - a[1] - u * t[1]) <= tol) return 1;
+  }
+  return 0;
+}
+
+static enum clsph_status check_enclosed(struct build *b)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = b->s;
+  const double c = 0.5 * b->dr; /* cell size */
+  unsigned char *mark = NULL;   /* 1: a wall crosses it, 2: reached */
+  size_t *queue = NULL;
+  if (b->np == 0 || s->nwalls == 0) return CLSPH_OK;
+  /* a non-periodic axis gets a margin of one cell on each side, where walls on the domain's edge
+   * fall; reaching a margin cell is leaving the domain */
+  long n[2];
+  double o[2];
+  for (int a = 0; a < 2; ++a) {
+    const int margin = s->periodic[a] ? 0 : 1;
+    n[a] = (long)ceil((s->hi[a] - s->lo[a]) / c - 1e-9) + 2 * margin;
+    o[a] = s->lo[a] - margin * c;
+  }
+  CLSPH_CHECK((double)n[0] * (double)n[1] < 2e8, CLSPH_E_INPUT,
+              "%s: the domain is too large for dr = %g to check that the walls close it",
+              s->case_path, b->dr);
+  const size_t ncell = (size_t)n[0] * (size_t)n[1];
+  mark = calloc(ncell, 1);
+  queue = malloc(ncell * sizeof *queue);
+  CLSPH_CHECK(mark != NULL && queue != NULL, CLSPH_E_NOMEM, "geometry: out of memory");
+  /* walls: every cell a segment passes through (sampled at a quarter cell) */
+  for (int w = 0; w < s->nwalls; ++w) {
+    const struct scene_wall *wl = &s->walls[w];
+    int nseg = wl->closed ? wl->npts : wl->npts - 1;
+    for (int k = 0; k < nseg; ++k) {
+      const double *pa = &wl->pts[2 * k], *pe = &wl->pts[2 * ((k + 1) % wl->npts)];
+      long m = (long)ceil(4.0 * hypot(pe[0] - pa[0], pe[1] - pa[1]) / c) + 1;
+      for (long q = 0; q <= m; ++q) {
+        double t = (double)q / (double)m;
+        long ix[2];
+        for (int a = 0; a < 2; ++a) {
+          ix[a] = (long)floor((pa[a] + t * (pe[a] - pa[a]) - o[a]) / c);
+          if (s->periodic[a]) ix[a] = ((ix[a] % n[a]) + n[a]) % n[a];
+          if (ix[a] == n[a] && !s->periodic[a]) ix[a] = n[a] - 1; /* on the far edge */
+        }
+        if (ix[0] >= 0 && ix[0] < n[0] && ix[1] >= 0 && ix[1] < n[1])
+          mark[(size_t)ix[1] * (size_t)n[0] + (size_t)ix[0]] = 1;
+      }
+    }
+  }
+  /* the flood, from the fluid's cells */
+  size_t head = 0, tail = 0;
+  for (size_t i = 0; i < b->np; ++i) {
+    long ix = (long)floor((b->p[i].x[0] - o[0]) / c), iy = (long)floor((b->p[i].x[1] - o[1]) / c);
+    if (ix < 0 || ix >= n[0] || iy < 0 || iy >= n[1]) continue;
+    size_t k = (size_t)iy * (size_t)n[0] + (size_t)ix;
+    if (mark[k] == 0) {
+      mark[k] = 2;
+      queue[tail++] = k;
+    }
+  }
+  const double gn = hypot(s->gravity[0], s->gravity[1]);
+  static const char *const side[4] = {"left (x min)", "right (x max)", "bottom (y min)",
+                                      "top (y max)"};
+  const long step[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+  while (head < tail) {
+    size_t k = queue[head++];
+    long ix = (long)(k % (size_t)n[0]), iy = (long)(k / (size_t)n[0]);
+    for (int d = 0; d < 4; ++d) {
+      long j[2] = {ix + step[d][0], iy + step[d][1]};
+      for (int a = 0; a < 2; ++a)
+        if (s->periodic[a]) j[a] = (j[a] + n[a]) % n[a];
+      size_t kj = (size_t)j[1] * (size_t)n[0] + (size_t)j[0];
+      if (mark[kj] != 0) continue;
+      const int axis = step[d][0] != 0 ? 0 : 1;
+      if (!s->periodic[axis] && (j[axis] == 0 || j[axis] == n[axis] - 1)) {
+        /* out of the domain: allowed through a section, or upwards (a free surface) */
+        const double x[2] = {o[0] + ((double)ix + 0.5) * c, o[1] + ((double)iy + 0.5) * c};
+        const double up = -(step[d][0] * s->gravity[0] + step[d][1] * s->gravity[1]);
+        CLSPH_CHECK((gn > 0.0 && up > 0.5 * gn) || section_near(s, x, 2.0 * b->dr), CLSPH_E_INPUT,
+                    "%s: the walls do not close the fluid in: it can reach the %s side of the "
+                    "domain near (%g, %g)%s; close the wall polyline (closed = true), add the "
+                    "missing wall, or make that axis periodic",
+                    s->case_path, side[d], x[0], x[1],
+                    gn > 0.0 ? "" : " (with no gravity, the container needs a lid too)");
+        continue;
+      }
+      mark[kj] = 2;
+      queue[tail++] = kj;
+    }
+  }
+done:
+  free(queue);
+  free(mark);
+  return st;
+}
+
 /* ---- USAW vertices and segments ------------------------------------------------------------ */
 
 /* The vertex particle at x of wall w: an existing one when x is the end of a wall (free_end: x is
@@ -1032,6 +1143,7 @@ enum clsph_status geometry_build(const struct scene *s, const char *model, int l
   /* fluid, then the walls, then the inflow/outflow layers */
   CLSPH_TRY(fill_fluid(&b));
   CLSPH_TRY(check_fluid_near_walls(&b));
+  if (b.model != MODEL_NONE) CLSPH_TRY(check_enclosed(&b));
   b.nfluid = b.np;
   if (b.model == MODEL_USAW) CLSPH_TRY(build_usaw(&b));
   if (b.model == MODEL_DUMMY) CLSPH_TRY(build_dummy(&b, layers));

@@ -36,6 +36,12 @@ clsph_cli_test(case_short_wall ARGS info ${CASE_DIR}/bad_wall.lua RC 2
                REGEX "bad_wall.lua:4: wall: a polyline needs at least 2 points")
 clsph_cli_test(case_outflow_no_fluid ARGS info ${CASE_DIR}/bad_outflow.lua RC 2
                REGEX "bad_outflow.lua:7:.*exit")
+# Containers that do not close: a cavity without its lid (no gravity) and a tank whose floor
+# stops short of its wall (the water would leak out below).
+clsph_cli_test(case_open_box ARGS info ${CASE_DIR}/bad_open_box.lua RC 2
+               REGEX "walls do not close the fluid in: it can reach the top \\(y max\\) side.*needs a lid")
+clsph_cli_test(case_tank_gap ARGS info ${CASE_DIR}/bad_tank_gap.lua RC 2
+               REGEX "walls do not close the fluid in: it can reach the right \\(x max\\) side of the domain near \\(0.98")
 clsph_cli_test(case_missing_file ARGS info ${CASE_DIR}/no_such_case.lua RC nonzero
                REGEX "cannot read case")
 clsph_cli_test(case_unwritable_out RC nonzero
