@@ -1,7 +1,9 @@
 -- Lid-driven cavity (Leroy et al. 2014 sec 4.1): a unit square box whose lid slides at U = 1,
 -- Re = U L / ν. Centreline profiles u(y) at x = 1/2 and v(x) at y = 1/2 against Ghia, Ghia &
 -- Shin 1982 (tests/data), RMS and largest deviation in units of U. The paper's resolutions:
--- 120² (Re 100), 200² (Re 400), 240² (Re 1000). --set wcsph=1 runs the WCSPH baseline.
+-- 120² (Re 100), 200² (Re 400), 240² (Re 1000). --set wcsph=1 runs the WCSPH baseline. The
+-- profiles along y = 1/2 and along the diagonal also carry the pressure (isph-usaw against
+-- wcsph-usaw at Re 400: tests/validation/cavity_pressure.sh).
 param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0 }
 
 local U = 1
@@ -17,6 +19,7 @@ box_wall { 0, 0, 1, 1, lid_velocity = {U, 0} }
 fill { 0, 0, 1, 1, name = "fluid" }
 profile { "u_centreline", from = {0.5, 0}, to = {0.5, 1}, points = 101 }
 profile { "v_centreline", from = {0, 0.5}, to = {1, 0.5}, points = 101 }
+profile { "diagonal", from = {0, 0}, to = {1, 1}, points = 101 }  -- pressure along the diagonal
 force { "lid" }
 run { t_end = t_end, output_every = t_end / 10, cfl = cfl }
 

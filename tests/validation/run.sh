@@ -24,4 +24,17 @@ for n in 20 30 40; do # cylinder array, L = 6 (the paper's resolution: 120), ste
   run cylinder_array_n${n}_isph_usaw cylinder_array n=$n t_end=24
   run cylinder_array_n${n}_wcsph_usaw cylinder_array n=$n t_end=24 wcsph=1
 done
+# Re = 400 and 1000 at 60² (the paper's 200² and 240² are 7 and 12 hours of this machine at
+# 46k particle-steps/s; see RESULTS.md for the cost), to t = 30 s; the pressure along y = 1/2
+# and the diagonal, isph-usaw against wcsph-usaw, at Re = 400
+run cavity_re400_n60_isph_usaw cavity re=400 n=60 t_end=30
+run cavity_re400_n60_wcsph_usaw cavity re=400 n=60 t_end=30 wcsph=1
+run cavity_re1000_n60_isph_usaw cavity re=1000 n=60 t_end=30
+python3 tests/validation/cavity_pressure.py "$out/cavity_re400_n60_isph_usaw" \
+  "$out/cavity_re400_n60_wcsph_usaw" tests/validation/cavity_re400_pressure || true
+# dam break over a wedge at the paper's δr = 0.01 m, both schemes, force chart
+run dam_break_wedge_isph_usaw dam_break_wedge
+run dam_break_wedge_wcsph_usaw dam_break_wedge wcsph=1
+python3 tests/validation/wedge_chart.py tests/validation/wedge_force \
+  "isph-usaw=$out/dam_break_wedge_isph_usaw" "wcsph-usaw=$out/dam_break_wedge_wcsph_usaw" || true
 python3 tests/validation/results.py "$out" tests/validation/RESULTS.md
