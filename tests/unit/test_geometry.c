@@ -393,6 +393,8 @@ static void test_wedge(void)
   geometry_free(&g);
 }
 
+static void expect_input_error(struct scene *s, const char *model, int layers, const char *what);
+
 static void test_open_tank_and_lid(void)
 {
   struct scene s;
@@ -405,6 +407,10 @@ static void test_open_tank_and_lid(void)
   s.nregions = 1;
   s.walls = walls;
   s.nwalls = 1;
+
+  /* without gravity nothing keeps the fluid in an open tank: refused */
+  expect_input_error(&s, "usaw", 0, "open tank without gravity");
+  s.gravity[1] = -9.81; /* an open tank holds its water under gravity */
 
   /* an open tank: 3 edges, 30 segments, 31 vertices; free ends at the top */
   TC_CHECK(geometry_build(&s, "usaw", 0, &g) == CLSPH_OK, "open tank, usaw");
