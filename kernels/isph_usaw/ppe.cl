@@ -8,13 +8,18 @@
  *   (∇P)_s·n_s = ρ [(u*_s − u_wall)/δt − g]·n_s = ρ a_visc,s·n_s,
  * a_visc,s the viscous acceleration of the segment (mean of its vertices'), since a vertex moves
  * with its wall (u*_v = u_wall + δt (a_visc,v + g)). At rest it vanishes: hydrostatics is exact.
- * Free-surface rows are Dirichlet: p̃ = 0 at the surface, which lies surface_offset (default
- * δr/2, see isph_usaw.c) outside the particle along the outward normal: P = −ρ g·(r + d n). */
+ * Free-surface rows are Dirichlet: p̃ = 0 at the surface, which lies surface_offset d (default
+ * δr/2, see isph_usaw.c) outside the particle along the outward normal n. Between the two the
+ * pressure gradient is the one the momentum equation gives the surface, ∇p̃ = ρ (g − a), a the
+ * particle's acceleration of the last step, so
+ *   p̃_a = max(0, −ρ (g − a_a)·n d),   P_a = −ρ g·r_a + p̃_a:
+ * ρ |g| d under a surface at rest (the hydrostatic tank), 0 on the top of a column in free fall
+ * (the dam break, where the hydrostatic value pushed the top layer down onto the layer below). */
 __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ustar,
                            __global const realv *visc, __global const uint *free_surface,
                            const real rho, const real dt, const realv gravity,
                            __global const realv *normal, const real surface_offset,
-                           __global real *rhs)
+                           __global const realv *acc, __global real *rhs)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -24,7 +29,8 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     return;
   }
   if (free_surface[i]) { /* p̃ = 0 on the surface, surface_offset outside the particle */
-    rhs[i] = -rho * dot(gravity, x + surface_offset * normal[i]);
+    const real pt = fmax(R(0.0), -rho * surface_offset * dot(gravity - acc[i], normal[i]));
+    rhs[i] = -rho * dot(gravity, x) + pt;
     return;
   }
   const realv us = ustar[i];

@@ -8,14 +8,31 @@
  * borders air and takes the particle's own P;
  * for fluid particles; vertex particles keep their wall's velocity. With -D ISPH_GRAD_SYM=1 the
  * symmetric gradient G−{p̃} (eq 8) replaces G+: exact for a constant pressure, where G+ carries
- * 2 p̃_a (Σ_b V_b ∇w_ab − ∇γ_a), the lattice's quadrature error times twice the pressure. */
+ * 2 p̃_a (Σ_b V_b ∇w_ab − ∇γ_a), the lattice's quadrature error times twice the pressure.
+ *
+ * Gradient correction (-D ISPH_GRAD_CORR=1, the default: where a free-surface particle is within
+ * the support; 2: everywhere; 0: never). Where air truncates the kernel, G−{P} of the gravity
+ * part ρgz of P falls short by the missing fraction of the kernel: the top of a falling column
+ * falls at about g/2 while the fluid below it falls at g, the column stretches under its surface
+ * and the pressure equation answers with negative pressures. The correction (Bonet & Lok 1999,
+ * in the form of Oger et al. 2007) makes G− exact for linear fields:
+ *   G^c_a{P} = L_a G−_a{P},  L_a = (G−_a{r})^{-1},
+ * G−{r} being the same sums, fluid and segment terms, applied to the coordinates (a segment's
+ * value is its midpoint's, as for every linear field); a fluid at rest stays at rest (L 0 = 0).
+ * Where det G−{r} < 0.1 γ² (a particle nearly alone) the uncorrected gradient is kept. */
 #ifndef ISPH_GRAD_SYM
 #define ISPH_GRAD_SYM 0
+#endif
+#ifndef ISPH_VERTEX_ABOVE
+#define ISPH_VERTEX_ABOVE R(1.5)
+#endif
+#ifndef ISPH_GRAD_CORR
+#define ISPH_GRAD_CORR 1
 #endif
 __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ustar,
                            __global const real *P, __global const real *pt, const real rho,
                            const real dt, const realv gravity, __global const uint *free_surface,
-                           __global realv *vel, __global realv *acc)
+                           __global const real *divr, __global realv *vel, __global realv *acc)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ISPH_FLUID) return;
@@ -27,6 +44,8 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
 #endif
   const real pa = p[i];
   realv grad = (realv)(R(0.0));
+  realv mx = (realv)(R(0.0)), my = (realv)(R(0.0)); /* G−{x}, G−{y}: the columns of G−{r} */
+  int near_air = ISPH_GRAD_CORR == 2 || free_surface[i];
   struct neigh_iter it;
   neigh_begin(&it, &g, x);
   uint j;
@@ -35,7 +54,11 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     real r2 = dot(r, r);
     if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
 #if ISPH_GRAD_SYM
-    grad -= vol[j] * (pa - p[j]) * smoothing_f(sqrt(r2)) * r;
+    const realv gw = vol[j] * smoothing_f(sqrt(r2)) * r;
+    grad -= (pa - p[j]) * gw;
+    mx -= r.x * gw;
+    my -= r.y * gw;
+    near_air |= kind[j] == ISPH_FLUID && free_surface[j];
 #else
     grad += vol[j] * (pa + p[j]) * smoothing_f(sqrt(r2)) * r;
 #endif
@@ -45,17 +68,33 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   while (neigh_next(&it, &g_seg, seg_start, &s)) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const uint v1 = inv[seg_v1[s]], v2 = inv[seg_v2[s]];
-    /* a segment above the free surface (both vertices free) borders air: its P = ρgz says
-     * nothing about the fluid's, so it takes the particle's own value */
-    const real ps =
-        ISPH_GRAD_SYM && free_surface[v1] && free_surface[v2] ? pa : R(0.5) * (p[v1] + p[v2]);
+    /* a segment above the free surface borders air: its P says nothing about the fluid's, so
+     * it takes the particle's own value. It is above the water line when both its vertices are
+     * dry, or when one of them is (D{r} ≤ 1: the fluid fills at most the lower half of its
+     * support; a submerged vertex of a straight wall has D{r} = 2, one on the water line 1):
+     * there the vertex rows extrapolate P into the air, harmless at rest (P constant) but ever
+     * more negative as a surface falls along a wall (−3e3 Pa within 0.05 s in the wedge case's
+     * collapsing column), and the segment term then sucked the contact line through the wall */
+    const int above = (free_surface[v1] && free_surface[v2]) || divr[v1] <= ISPH_VERTEX_ABOVE ||
+                      divr[v2] <= ISPH_VERTEX_ABOVE;
+    const real ps = ISPH_GRAD_SYM && above ? pa : R(0.5) * (p[v1] + p[v2]);
 #if ISPH_GRAD_SYM
-    grad += (pa - ps) * usaw_grad_gamma_seg(x, a, b, seg_n[s]);
+    const realv gs = usaw_grad_gamma_seg(x, a, b, seg_n[s]);
+    grad += (pa - ps) * gs;
+    if (!above) { /* a segment above the water line adds nothing to G−{P} */
+      const realv rs = x - R(0.5) * (a + b);
+      mx += rs.x * gs;
+      my += rs.y * gs;
+    }
 #else
     grad -= (pa + ps) * usaw_grad_gamma_seg(x, a, b, seg_n[s]);
 #endif
   }
 #if ISPH_GRAD_SYM
+  /* G−{A} = M ∇A with M = [mx my] (before the division by γ): ∇P = M^{-1} G−{P} */
+  const real det = mx.x * my.y - my.x * mx.y, gm = gam[i];
+  if (ISPH_GRAD_CORR != 0 && near_air && det > R(0.1) * gm * gm)
+    grad = (realv)(my.y * grad.x - my.x * grad.y, mx.x * grad.y - mx.y * grad.x) / det * gm;
   /* ∇p̃ = ∇P + ρ g, so the gravity of u* cancels exactly: ũ = u* − δt g − (δt/ρ) G−{P} */
   const realv u_new = ustar[i] - dt * gravity - dt / rho * grad / gam[i];
 #else

@@ -4,6 +4,9 @@
  * (the segment term keeps them off the walls; C = 0.7 for the Wendland kernel), and their
  * velocity follows to first order (eq 38):
  *   u_a += G−_a{ũ}·δr_a = −(1/γ_a) Σ_b V_b u_ab (∇w_ab·δr_a) + (1/γ_a) Σ_s u_as (∇γ_as·δr_a). */
+#ifndef ISPH_SHIFT_MAX
+#define ISPH_SHIFT_MAX R(0.1)
+#endif
 __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
                          __global const uint *free_surface, const real c_shift,
                          __global realv *shift, __global realv *vel_out)
@@ -31,7 +34,11 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   while (neigh_next(&it, &g_seg, seg_start, &s))
     gc -= usaw_grad_gamma_seg(x, seg_a[s] + it.shift, seg_b[s] + it.shift, seg_n[s]);
   const real h = R(1.0) / SMOOTH_INV_H;
-  const realv dr = -c_shift * h * h * gc / gam[i];
+  realv dr = -c_shift * h * h * gc / gam[i];
+  /* at most ISPH_SHIFT_MAX h per step: in a sparse region next to a wall (a jet running up a
+   * slope) |G{1}| reaches 1/h and eq 35 moved a particle by 0.7 h in one step, through the wall */
+  const real ldr = length(dr), lmax = ISPH_SHIFT_MAX * h;
+  if (ldr > lmax) dr *= lmax / ldr;
   /* first-order velocity correction (eq 38) */
   realv du = (realv)(R(0.0));
   neigh_begin(&it, &g, x);

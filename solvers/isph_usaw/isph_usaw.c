@@ -8,6 +8,7 @@
  *      solved on the device by BiCGStab (solvers/pressure), P = ρgz on free-surface rows;
  *      a flow with no free surface is singular: the diagonal is reinforced (sec 3.3)
  *   6. ũ = u* − (δt/ρ) G+{p̃}                                     (32, project.cl)
+ *      (default: ũ = u* − δt g − (δt/ρ) G−{P}, corrected to first order near the free surface)
  *   7. r̃ = r* + δt/2 ũ                                           (34)
  *   8. shifting δr = −C h² G{1} away from the free surface, u += G−{ũ}·δr   (35-38, shift.cl)
  * Time step (48-49): min(0.1 h/u_ref, 0.125 h²/ν, 0.25 √(h/|a|)) (C_CFL halved, see max_dt). */
@@ -27,7 +28,7 @@ struct isph {
   struct psolve ps;
   struct psolve_options popt;
   int f_p, f_P, f_ustar, f_visc, f_gam, f_ggam, f_free, f_theta, f_shift, f_vnew, f_rhs, f_divr,
-      f_normal;
+      f_acc, f_normal;
   cl_kernel k_half, k_predict, k_free, k_rhs, k_pressure, k_project, k_shift, k_apply, k_strain;
   cl_mem d_strain;  /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
   double c_shift;   /* shifting coefficient (0: off) */
@@ -49,8 +50,12 @@ static const char *const sources[] = {"common/blas1.cl",
                                       "isph_usaw/project.cl",
                                       "isph_usaw/shift.cl",
                                       NULL};
-static const char *const options[] = {"shifting", "pressure_gradient", "free_surface_offset",
-                                      PSOLVE_OPTION_NAMES, NULL};
+static const char *const options[] = {"shifting",
+                                      "pressure_gradient",
+                                      "free_surface_offset",
+                                      "gradient_correction",
+                                      PSOLVE_OPTION_NAMES,
+                                      NULL};
 
 /* -D switches: the pressure-gradient form of the projection. */
 static enum clsph_status isph_define(const struct sim *sim, struct prog_opts *o)
@@ -61,9 +66,20 @@ static enum clsph_status isph_define(const struct sim *sim, struct prog_opts *o)
    * ∇γ times twice the pressure: near a wall under 1 m of water that is O(g), and the
    * hydrostatic tank blows up within 0.2 s at δr = 0.05 m. The symmetric form of P keeps it at
    * rest (largest speed 5e-4 m/s after 5 s). */
-  int sym = 1;
+  int sym = 1, corr = 1;
+  static const char *const corr_names[] = {"none", "free_surface", "everywhere"};
   for (int i = 0; i < sim->scene->noptions; ++i) {
     const struct scene_option *op = &sim->scene->options[i];
+    if (strcmp(op->key, "gradient_correction") == 0) {
+      corr = -1;
+      for (int k = 0; k < 3 && !op->is_number; ++k)
+        if (strcmp(op->text, corr_names[k]) == 0) corr = k;
+      CLSPH_CHECK(corr >= 0, CLSPH_E_INPUT,
+                  "%s: gradient_correction must be \"free_surface\" (the default: where air "
+                  "truncates the kernel), \"everywhere\" or \"none\"",
+                  sim->scene->case_path);
+      continue;
+    }
     if (strcmp(op->key, "pressure_gradient") != 0) continue;
     CLSPH_CHECK(!op->is_number &&
                     (!strcmp(op->text, "antisymmetric") || !strcmp(op->text, "symmetric")),
@@ -73,6 +89,8 @@ static enum clsph_status isph_define(const struct sim *sim, struct prog_opts *o)
     sym = strcmp(op->text, "symmetric") == 0;
   }
   CLSPH_TRY(prog_opts_define_int(o, "ISPH_GRAD_SYM", sym));
+  /* the first-order correction of G−{P} where air truncates the kernel (project.cl) */
+  CLSPH_TRY(prog_opts_define_int(o, "ISPH_GRAD_CORR", corr));
 done:
   return st;
 }
@@ -166,10 +184,11 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
     const char *name;
     size_t elem;
     int *f;
-  } hidden[] = {{"P", sizeof(real), &is->f_P},     {"ustar", rv, &is->f_ustar},
-                {"visc", rv, &is->f_visc},         {"grad_gamma", rv, &is->f_ggam},
-                {"shift", rv, &is->f_shift},       {"vel_new", rv, &is->f_vnew},
-                {"rhs", sizeof(real), &is->f_rhs}, {"normal", rv, &is->f_normal}};
+  } hidden[] = {{"P", sizeof(real), &is->f_P}, {"ustar", rv, &is->f_ustar},
+                {"visc", rv, &is->f_visc},     {"grad_gamma", rv, &is->f_ggam},
+                {"shift", rv, &is->f_shift},   {"vel_new", rv, &is->f_vnew},
+                {"acc", rv, &is->f_acc},       {"rhs", sizeof(real), &is->f_rhs},
+                {"normal", rv, &is->f_normal}};
   for (size_t k = 0; k < sizeof hidden / sizeof *hidden; ++k) {
     CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
@@ -283,6 +302,8 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   const real off = (real)(is->fs_offset * sc->dr);
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof nrm, &nrm));
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof off, &off));
+  cl_mem acc_last = pset_mem(ps, is->f_acc); /* the accelerations of the last step */
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof acc_last, &acc_last));
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof rhs, &rhs));
   CLSPH_TRY(kern_launch(sim->dev, is->k_rhs, ps->n, NULL));
   is->ps.opt.singular = nfree > 0.0 ? is->popt.singular : PSOLVE_REINFORCE;
@@ -303,8 +324,9 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_project, &i, sizeof rdt, &rdt));
   CLSPH_TRY(arg(is->k_project, &i, sizeof grav, &grav));
   CLSPH_TRY(arg(is->k_project, &i, sizeof fs, &fs));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof divr, &divr));
   CLSPH_TRY(arg(is->k_project, &i, sizeof vel, &vel));
-  cl_mem acc = pset_mem(ps, is->f_vnew); /* free until the shifting: the accelerations */
+  cl_mem acc = pset_mem(ps, is->f_acc); /* the accelerations, kept for the next free surface */
   CLSPH_TRY(arg(is->k_project, &i, sizeof acc, &acc));
   CLSPH_TRY(kern_launch(sim->dev, is->k_project, ps->n, NULL));
   CLSPH_TRY(sim_max_norm(sim, acc, 0, &is->acc)); /* largest |u̇_a| of the fluid (49) */
