@@ -47,6 +47,80 @@ def cylinder_table(runs):
     return out
 
 
+def pressure_section(runs_dir):
+    """Cavity Re = 400, pressure along y = 1/2 and the diagonal, isph-usaw against wcsph-usaw
+    (cavity_pressure.py draws the chart): the RMS difference of the centred profiles."""
+    sys.path.insert(0, os.path.dirname(__file__))
+    import cavity_pressure as cp
+    a = os.path.join(runs_dir, "cavity_re400_n60_isph_usaw")
+    b = os.path.join(runs_dir, "cavity_re400_n60_wcsph_usaw")
+    if not (os.path.exists(os.path.join(a, "profile_diagonal.csv")) and
+            os.path.exists(os.path.join(b, "profile_diagonal.csv"))):
+        return []
+    out = ["", "## Cavity, Re = 400: pressure, isph-usaw against wcsph-usaw", "",
+           "(p − p_c)/(ρU²) along y = 1/2 and along the diagonal at the last output, p_c the "
+           "centre's pressure (the level of a closed cavity is arbitrary); chart "
+           "`cavity_re400_pressure.png`, data `cavity_re400_pressure.csv` "
+           "(`cavity_pressure.py`). No reference pressure is published with Ghia et al.; the "
+           "paper compares with a finite-volume solution.", "",
+           "| line | RMS difference (ρU²) | isph-usaw range (ρU²) |", "|---|---|---|"]
+    for name, fname in (("y = 1/2", "profile_v_centreline.csv"),
+                        ("diagonal", "profile_diagonal.csv")):
+        _, pi = cp.last_profile(os.path.join(a, fname))
+        _, pw = cp.last_profile(os.path.join(b, fname))
+        pi, pw = cp.centred(pi), cp.centred(pw)
+        rms = math.sqrt(sum((x[1] - y[1]) ** 2 for x, y in zip(pi, pw)) / len(pi))
+        out.append(f"| {name} | {rms:.4f} | ±{max(abs(x[1]) for x in pi):.4f} |")
+    return out
+
+
+def wedge_section(runs):
+    """Dam break over a wedge: how far each scheme got, the force peak (forces in summary.json),
+    the wall crossings; wedge_chart.py draws the force against time."""
+    rows = [s for s in runs if s["case"] == "dam_break_wedge"]
+    if not rows:
+        return []
+    out = ["", "## Dam break over a wedge", "",
+           "Pressure force on the left side of the wedge against time: `wedge_force.png` "
+           "(`wedge_chart.py`, from each run's forces.csv). The paper runs 2 s.", "",
+           "| scheme | δr | reached t (s) | status | largest |F| (N/m) at t (s) | steps with a wall "
+           "crossing (first at t) | steps | wall s | solver its mean |",
+           "|---|---|---|---|---|---|---|---|---|"]
+    for s in rows:
+        f = s.get("forces", {}).get("wedge_left", {})
+        wc = s.get("wall_crossings", {})
+        first = f"{wc['first_time']:.3f}" if "first_time" in wc else "–"
+        its = f"{s['solver']['iterations_mean']:.1f}" if s.get("solver") else ""
+        out.append(f"| {s['scheme']} ({s['precision']}) | {s['parameters'].get('dr', 0):g} "
+                   f"| {s['sim_time']:.3f} | {s['status']} | {f.get('peak', 0):.4g} at "
+                   f"{f.get('peak_time', 0):.3f} | {wc.get('steps', 0):g} ({first}) "
+                   f"| {s['steps']:g} | {s['wall_seconds']:.1f} | {its} |")
+    return out
+
+
+def profile_section(runs):
+    """Runs made with --profile: the device time of the pressure solve (the csr_* and blas1_*
+    kernels) and of the largest other kernels, as shares of the wall time."""
+    rows = [s for s in runs if s.get("profile")]
+    if not rows:
+        return []
+    out = ["", "## Where the time goes (runs made with `--profile`)", "",
+           "| run | particles | steps | wall s | s per step | pressure solve (csr_*, blas1_*) "
+           "| solver its mean | largest other kernels |", "|---|---|---|---|---|---|---|---|"]
+    for s in rows:
+        prof, wall = s["profile"], s["wall_seconds"]
+        solve = sum(k["seconds"] for k in prof["kernels"]
+                    if k["name"].startswith(("csr_", "blas1_")))
+        others = sorted((k for k in prof["kernels"] if not k["name"].startswith(("csr_", "blas1_"))),
+                        key=lambda k: -k["seconds"])[:3]
+        its = f"{s['solver']['iterations_mean']:.0f}" if s.get("solver") else "–"
+        out.append(f"| {s['run']} | {s['particles']:g} | {s['steps']:g} | {wall:.0f} "
+                   f"| {wall / max(s['steps'], 1):.3g} | {100 * solve / wall:.0f}% | {its} | "
+                   + ", ".join(f"{k['name']} {100 * k['seconds'] / wall:.0f}%" for k in others)
+                   + " |")
+    return out
+
+
 def main():
     runs_dir = sys.argv[1] if len(sys.argv) > 1 else "out/validation"
     out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__file__), "RESULTS.md")
@@ -107,6 +181,9 @@ def main():
                   "| case | scheme | parameters | metric | resolution | value | order |",
                   "|---|---|---|---|---|---|---|"] + orders
     lines += cylinder_table(runs)
+    lines += pressure_section(runs_dir)
+    lines += wedge_section(runs)
+    lines += profile_section(runs)
     devices = sorted({s["device"] for s in runs})
     lines += ["", f"Device: {', '.join(devices)}.", ""]
     with open(out, "w") as f:

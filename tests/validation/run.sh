@@ -11,7 +11,7 @@ run() { # name case sets...
   shift 2
   local args=()
   for s in "$@"; do args+=(--set "$s"); done
-  "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet || true
+  "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet --profile || true
 }
 run hydrostatic_isph_usaw hydrostatic
 for n in 20 30 40 60 120; do # convergence study, Re = 100 (the paper's resolution: 120)
@@ -30,6 +30,9 @@ done
 run cavity_re400_n60_isph_usaw cavity re=400 n=60 t_end=30
 run cavity_re400_n60_wcsph_usaw cavity re=400 n=60 t_end=30 wcsph=1
 run cavity_re1000_n60_isph_usaw cavity re=1000 n=60 t_end=30
+# the cost of the paper's Re = 1000 resolution: 0.02 s (30 steps) of 240², profiled
+"$build/clsph" run cases/cavity.lua --set re=1000 --set n=240 --set t_end=0.02 --profile \
+  --out "$out/cavity_re1000_n240_cost_probe" --quiet || true
 python3 tests/validation/cavity_pressure.py "$out/cavity_re400_n60_isph_usaw" \
   "$out/cavity_re400_n60_wcsph_usaw" tests/validation/cavity_re400_pressure || true
 # dam break over a wedge at the paper's δr = 0.01 m, both schemes, force chart
