@@ -26,13 +26,17 @@
 #ifndef ISPH_VERTEX_ABOVE
 #define ISPH_VERTEX_ABOVE R(1.5)
 #endif
+#ifndef ISPH_WALL_PUSH_ONLY
+#define ISPH_WALL_PUSH_ONLY 1
+#endif
 #ifndef ISPH_GRAD_CORR
 #define ISPH_GRAD_CORR 1
 #endif
 __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ustar,
                            __global const real *P, __global const real *pt, const real rho,
                            const real dt, const realv gravity, __global const uint *free_surface,
-                           __global const real *divr, __global realv *vel, __global realv *acc)
+                           __global const real *divr, const uint free_flow, __global realv *vel,
+                           __global realv *acc)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ISPH_FLUID) return;
@@ -77,7 +81,14 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
      * collapsing column), and the segment term then sucked the contact line through the wall */
     const int above = (free_surface[v1] && free_surface[v2]) || divr[v1] <= ISPH_VERTEX_ABOVE ||
                       divr[v2] <= ISPH_VERTEX_ABOVE;
-    const real ps = ISPH_GRAD_SYM && above ? pa : R(0.5) * (p[v1] + p[v2]);
+    real ps = ISPH_GRAD_SYM && above ? pa : R(0.5) * (p[v1] + p[v2]);
+#if ISPH_GRAD_SYM && ISPH_WALL_PUSH_ONLY
+    /* where the fluid has a free surface a wall does not hold it in tension: it only pushes
+     * (P_s ≥ P_a); the extrapolated wall pressure under a falling surface pulled the particles of
+     * a contact line through the wall (the wedge case: first crossing at t = 0.34 s instead of
+     * 0.20 s at δr = 0.01 m); a fluid at rest is unchanged (P_s = P_a) */
+    if (free_flow) ps = fmax(ps, pa);
+#endif
 #if ISPH_GRAD_SYM
     const realv gs = usaw_grad_gamma_seg(x, a, b, seg_n[s]);
     grad += (pa - ps) * gs;
