@@ -243,6 +243,10 @@ enum clsph_status render_command(const struct cli *cli)
   snprintf(path, sizeof path, "%s/snap_%06d.h5", cli->snap_dir, num[0]);
   static const char *const nothing[] = {NULL};
   CLSPH_TRY(io_snapshot_read(path, nothing, &snap));
+  if (!snap.has_domain)
+    log_warn("%s records no domain and no walls (written by an older clsph): the frames show the "
+             "particles only",
+             path);
   CLSPH_TRY(frame_options(cli, snap.render.on ? &snap.render : NULL, &fo));
   const char *names[PSET_MAX_FIELDS];
   int ncomp[PSET_MAX_FIELDS];

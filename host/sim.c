@@ -689,6 +689,18 @@ done:
   return st;
 }
 
+/* The fields a frame can show: the output fields, by name and components. */
+static int frame_fields(const struct sim *sim, const char **names, int *ncomp)
+{
+  int n = 0;
+  for (int k = 0; k < sim->ps.nfields; ++k) {
+    if (!sim->ps.f[k].output) continue;
+    names[n] = sim->ps.f[k].name;
+    ncomp[n++] = sim->ps.f[k].nout;
+  }
+  return n;
+}
+
 /* Frames: resolve the field against the run's output fields, open the renderer, and list the
  * arrays a frame reads from the device. */
 static enum clsph_status open_frames(struct sim *sim, const struct sim_options *opt,
@@ -697,12 +709,8 @@ static enum clsph_status open_frames(struct sim *sim, const struct sim_options *
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
   const char *names[PSET_MAX_FIELDS];
-  int ncomp[PSET_MAX_FIELDS], n = 0;
-  for (int k = 0; k < sim->ps.nfields; ++k) {
-    if (!sim->ps.f[k].output) continue;
-    names[n] = sim->ps.f[k].name;
-    ncomp[n++] = sim->ps.f[k].nout;
-  }
+  int ncomp[PSET_MAX_FIELDS];
+  const int n = frame_fields(sim, names, ncomp);
   CLSPH_TRY(frames_open(opt->frames, opt->out_dir, n, names, ncomp, &o->frames));
   const char *want[4] = {"pos", "vol", "kind", frames_field(o->frames)->array};
   for (int k = 0; k < 4; ++k) {
@@ -1180,8 +1188,16 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
     for (int w = 0; w < s->nwalls; ++w) found |= strcmp(s->walls[w].group, s->forces[g]) == 0;
     CLSPH_CHECK(found, CLSPH_E_INPUT, "%s: force: no wall group '%s'", s->case_path, s->forces[g]);
   }
+  if (opt->frames != NULL) { /* the field of frames exists, before anything is written */
+    const char *names[PSET_MAX_FIELDS];
+    int ncomp[PSET_MAX_FIELDS];
+    struct field_spec f;
+    const int n = frame_fields(sim, names, ncomp);
+    CLSPH_TRY(field_find(opt->frames->render.field, n, names, ncomp, &f));
+  }
   CLSPH_TRY(prepare_dir(opt->out_dir));
   snprintf(o.dir, sizeof o.dir, "%s", opt->out_dir);
+  if (opt->frames != NULL) CLSPH_TRY(open_frames(sim, opt, &o));
   if (opt->restart != NULL) {
     struct io_meta expect, got;
     meta_of(sim, &expect);
@@ -1204,7 +1220,6 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
     log_info("restarting from %s at t = %.9g s, step %ld", opt->restart, sim->time, sim->step);
   }
   CLSPH_TRY(open_series(sim, &o, 0));
-  if (opt->frames != NULL) CLSPH_TRY(open_frames(sim, opt, &o));
   pr.tty = isatty(2);
   pr.quiet = opt->quiet;
   pr.start = now();

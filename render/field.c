@@ -17,7 +17,7 @@
  * with h = 2 δr, δr = √(median V), support 2h (Leroy et al. 2014 eq 1): F(r) = −5 α t³ / h²,
  * t = 1 − r/2h, α = 7 / (4π h²). Neighbours come from a grid of square cells of the support's
  * size. Periodic images are not searched: near a periodic boundary the gradient is one-sided
- * (still exact for linear fields through M). */
+ * (still exact for linear fields through M). The particles' sums run on OpenMP threads. */
 #include "render.h"
 
 #include <math.h>
@@ -274,7 +274,8 @@ enum clsph_status field_vorticity(size_t n, const double *pos, const double *vel
     for (size_t i = 0; i < n; ++i) order[fill[cell[i]]++] = i; /* stable: i ascending per cell */
     free(fill);
   }
-  /* the sums */
+  /* the sums: each particle's own, in a fixed order (threads change nothing in the result) */
+#pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; ++i) {
     const double xi = pos[2 * i], yi = pos[2 * i + 1], ui = vel[2 * i], vi = vel[2 * i + 1];
     double m[2][2] = {{0.0, 0.0}, {0.0, 0.0}}, d[2][2] = {{0.0, 0.0}, {0.0, 0.0}};

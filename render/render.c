@@ -261,9 +261,11 @@ static int inward(const double *a, const double *b, double n[2])
   return 1;
 }
 
-/* The corner of the band at b between the edges a -> b and b -> c: where the path turns left
- * (the fluid inside the turn) the bands of the two edges leave a gap on the solid side, which the
- * parallelogram b, b − w n₁, b − w (n₁ + n₂), b − w n₂ closes. */
+/* The corner of the band at b between the edges a -> b and b -> c, whose inward normals are n and
+ * m. Where the path turns left (the fluid inside the turn) the bands of the two edges leave a gap
+ * on the solid side: the quadrilateral b, b − w n, the miter point b − w (n + m)/(1 + n·m),
+ * b − w m closes it; past a 120° turn the miter grows long, and the bevel triangle b, b − w n,
+ * b − w m closes it instead. Where the path turns right the bands overlap. */
 static void corner(struct render *r, const struct xform *x, const double *a, const double *b,
                    const double *c)
 {
@@ -271,10 +273,16 @@ static void corner(struct render *r, const struct xform *x, const double *a, con
   if (!inward(a, b, n) || !inward(b, c, m)) return;
   const double turn = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
   if (turn <= 0.0) return;
-  const double p1[2] = {b[0] - x->band * n[0], b[1] - x->band * n[1]};
-  const double p2[2] = {p1[0] - x->band * m[0], p1[1] - x->band * m[1]};
-  const double p3[2] = {b[0] - x->band * m[0], b[1] - x->band * m[1]};
-  quad(r, x, b, p1, p2, p3);
+  const double w = x->band, cosine = n[0] * m[0] + n[1] * m[1];
+  const double p1[2] = {b[0] - w * n[0], b[1] - w * n[1]};
+  const double p3[2] = {b[0] - w * m[0], b[1] - w * m[1]};
+  if (1.0 + cosine > 0.5) {
+    const double k = w / (1.0 + cosine);
+    const double p2[2] = {b[0] - k * (n[0] + m[0]), b[1] - k * (n[1] + m[1])};
+    quad(r, x, b, p1, p2, p3);
+  } else {
+    quad(r, x, b, p1, p3, p3); /* a triangle, and a degenerate one that covers nothing */
+  }
 }
 
 static enum clsph_status wall_geometry(struct render *r, const struct render_input *in,
@@ -449,13 +457,177 @@ done:
   return st;
 }
 
+/* Sizes of a frame's parts, pixels, scaled with u = H/720. */
+struct sizes {
+  int margin, title_px, label_px, label_h, bar_w, tick, gap, band_px, header;
+  float line_px;
+};
+
+static enum clsph_status frame_sizes(struct render *r, struct sizes *z)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct text_box tb, lb;
+  const double u = (double)r->o.height / 720.0;
+  z->margin = (int)fmax(6.0, lround(16.0 * u));
+  z->title_px = (int)fmax(10.0, lround(24.0 * u));
+  z->label_px = (int)fmax(9.0, lround(17.0 * u));
+  z->bar_w = (int)fmax(8.0, lround(22.0 * u));
+  z->tick = (int)fmax(3.0, lround(6.0 * u));
+  z->gap = (int)lround(0.3 * z->bar_w);
+  z->band_px = (int)fmax(3.0, lround(10.0 * u));
+  z->line_px = (float)fmax(1.5, round(2.0 * u));
+  CLSPH_TRY(text_measure(r->text, z->title_px, "Mg", &tb));
+  CLSPH_TRY(text_measure(r->text, z->label_px, "Mg", &lb));
+  z->label_h = lb.ascent + lb.descent;
+  z->header = z->margin + tb.ascent + tb.descent + z->margin / 2;
+done:
+  return st;
+}
+
+/* The colour bar (or the legend of kinds) at the right: its ticks and labels first, for its
+ * width. */
+static enum clsph_status bar_layout(struct render *r, const struct field_spec *f,
+                                    const struct render_input *in, const double *kind,
+                                    const struct sizes *z, enum colormap_kind map, struct bar *b)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct text_box wb;
+  const int W = r->o.width, H = r->o.height;
+  b->y0 = z->header + z->label_h + z->gap + z->label_h / 2;
+  const int avail = H - z->margin - z->label_h / 2 - b->y0;
+  int bar_h = (int)fmin(avail, lround(0.62 * H));
+  if (bar_h < 2 * z->label_h) bar_h = avail;
+  b->y1 = b->y0 + bar_h;
+  int label_w = 0;
+  if (map == COLORMAP_KIND) {
+    int present[5] = {0, 0, 0, 0, 0};
+    for (size_t i = 0; i < in->n; ++i) {
+      const int k = (int)kind[i];
+      if (k >= 0 && k < 5) present[k] = 1;
+    }
+    for (int k = 0; k < 5; ++k) {
+      if (!present[k]) continue;
+      b->kinds[b->nkinds++] = k;
+      CLSPH_TRY(text_measure(r->text, z->label_px, kind_names[k], &wb));
+      label_w = wb.width > label_w ? wb.width : label_w;
+    }
+  } else {
+    const int want = (int)fmin(8.0, fmax(2.0, bar_h / (2.5 * z->label_h)));
+    b->nt = ticks(b->lo, b->hi, want, b->at, 16);
+    const double step = b->nt > 1 ? b->at[1] - b->at[0] : b->hi - b->lo;
+    const double big = fmax(fabs(b->lo), fabs(b->hi));
+    for (int k = 0; k < b->nt; ++k) {
+      tick_label(b->at[k], step, big, b->label[k], sizeof b->label[k]);
+      CLSPH_TRY(text_measure(r->text, z->label_px, b->label[k], &wb));
+      label_w = wb.width > label_w ? wb.width : label_w;
+    }
+  }
+  CLSPH_TRY(text_measure(r->text, z->label_px, f->label, &wb));
+  int block = z->bar_w + 2 * z->gap + label_w;
+  if (wb.width > block) block = wb.width;
+  b->x0 = W - z->margin - block;
+  b->x1 = b->x0 + z->bar_w;
+done:
+  return st;
+}
+
+/* The colour bar: 256 bands of the map's entries, bottom up, its outline and ticks; or the
+ * swatches of the legend of kinds. */
+static void draw_bar(struct render *r, const struct bar *b, const struct sizes *z,
+                     enum colormap_kind map)
+{
+  float rects[4 * 256], lines[4 * (4 + 16)];
+  unsigned char rc[3 * 256];
+  size_t nr = 0, nl = 0;
+  const double bar_h = b->y1 - b->y0;
+  if (map == COLORMAP_KIND) {
+    const int step = (int)lround(1.6 * z->label_h);
+    for (int k = 0; k < b->nkinds; ++k) {
+      float *q = rects + 4 * nr;
+      q[0] = (float)b->x0;
+      q[1] = (float)(b->y0 + k * step);
+      q[2] = (float)b->x1;
+      q[3] = (float)(b->y0 + k * step + z->bar_w);
+      colormap_rgb(COLORMAP_KIND, b->kinds[k], rc + 3 * nr++);
+    }
+  } else {
+    for (int k = 0; k < 256; ++k) {
+      float *q = rects + 4 * nr;
+      q[0] = (float)b->x0;
+      q[1] = (float)(b->y1 - (double)(k + 1) / 256.0 * bar_h);
+      q[2] = (float)b->x1;
+      q[3] = (float)(b->y1 - (double)k / 256.0 * bar_h);
+      colormap_rgb(map, (k + 0.5) / 256.0, rc + 3 * nr++);
+    }
+    /* the outline runs through the centres of the pixels around the bar */
+    const float e[4] = {(float)b->x0 - 0.5f, (float)b->y0 - 0.5f, (float)b->x1 + 0.5f,
+                        (float)b->y1 + 0.5f};
+    const float outline[16] = {e[0], e[1], e[2], e[1], e[2], e[1], e[2], e[3],
+                               e[2], e[3], e[0], e[3], e[0], e[3], e[0], e[1]};
+    memcpy(lines, outline, sizeof outline);
+    nl = 4;
+    for (int k = 0; k < b->nt; ++k) {
+      const float y = (float)lround(b->y1 - (b->at[k] - b->lo) / (b->hi - b->lo) * bar_h) + 0.5f;
+      float *q = lines + 4 * nl++;
+      q[0] = (float)b->x1;
+      q[1] = y;
+      q[2] = (float)(b->x1 + z->tick);
+      q[3] = y;
+    }
+  }
+  draw_rects(r->draw, nr, rects, rc);
+  draw_lines(r->draw, nl, lines, 1.0f, 0, render_colour_wall);
+}
+
+/* The particles into pixel positions, diameters and colours, in three groups: points of 1 pixel
+ * (d < 1.5), of 2 pixels (d < 2.5), then discs; each group in the order of the arrays. */
+static void particle_arrays(struct render *r, const struct field_spec *f,
+                            const struct render_input *in, const struct xform *x, double spacing,
+                            enum colormap_kind map, double lo, double hi, size_t group[3],
+                            struct render_times *tm)
+{
+  const struct render_array *pos = field_array(in, "pos"), *vol = field_array(in, "vol");
+  const struct render_array *kind = field_array(in, "kind");
+  size_t nd = 0, n1 = 0, n2 = 0;
+  const double inv = 1.0 / (hi - lo);
+  double dsum = 0.0;
+  for (size_t i = 0; i < in->n; ++i) {
+    if (!field_drawn(f, (int)kind->v[i])) continue;
+    const double d = x->s * side(vol->v[i], spacing);
+    r->order[nd++] = i;
+    n1 += d < 1.5;
+    n2 += d >= 1.5 && d < 2.5;
+    dsum += d;
+  }
+  size_t k1 = 0, k2 = n1, k3 = n1 + n2;
+  for (size_t k = 0; k < nd; ++k) {
+    const size_t i = r->order[k];
+    const double d = x->s * side(vol->v[i], spacing);
+    const size_t slot = d < 1.5 ? k1++ : d < 2.5 ? k2++ : k3++;
+    to_px(x, pos->v[2 * i], pos->v[2 * i + 1], r->xy + 2 * slot);
+    r->diam[slot] = (float)fmin(d, 253.0); /* sprites reach 255 pixels with the edge */
+    const double tv = map == COLORMAP_KIND ? r->val[i] : (r->val[i] - lo) * inv;
+    colormap_rgb(map, tv, r->col + 3 * slot);
+  }
+  group[0] = n1;
+  group[1] = n2;
+  group[2] = nd - n1 - n2;
+  tm->drawn = nd;
+  tm->disc_px = nd > 0 ? dsum / (double)nd : 0.0;
+}
+
 enum clsph_status render_frame(struct render *r, const struct field_spec *f,
                                const struct render_input *in, const char *png_path, double lo_hi[2],
                                struct render_times *t)
 {
   enum clsph_status st = CLSPH_OK;
   struct render_times tm;
+  struct sizes z;
+  struct bar b;
+  struct xform x;
+  size_t group[3];
   memset(&tm, 0, sizeof tm);
+  memset(&b, 0, sizeof b);
   const double t0 = now();
   const int W = r->o.width, H = r->o.height;
   const struct render_array *pos = field_array(in, "pos"), *vol = field_array(in, "vol");
@@ -470,61 +642,12 @@ enum clsph_status render_frame(struct render *r, const struct field_spec *f,
   const enum colormap_kind map = render_map_for(f, r->o.map);
   double lo = r->o.lo, hi = r->o.hi;
   if (!r->o.fixed) field_auto_range(f, map, in->n, r->val, kind->v, &lo, &hi);
-
-  /* sizes */
-  const double u = (double)H / 720.0;
-  const int margin = (int)fmax(6.0, lround(16.0 * u));
-  const int title_px = (int)fmax(10.0, lround(24.0 * u)),
-            label_px = (int)fmax(9.0, lround(17.0 * u));
-  const int bar_w = (int)fmax(8.0, lround(22.0 * u)), tick = (int)fmax(3.0, lround(6.0 * u));
-  const int band_px = (int)fmax(3.0, lround(10.0 * u));
-  const float line_px = (float)fmax(1.5, round(2.0 * u));
-  struct text_box tb, lb;
-  CLSPH_TRY(text_measure(r->text, title_px, "Mg", &tb));
-  CLSPH_TRY(text_measure(r->text, label_px, "Mg", &lb));
-  const int header = margin + tb.ascent + tb.descent + margin / 2;
-
-  /* the colour bar: ticks and labels first, for its width */
-  struct bar b;
-  memset(&b, 0, sizeof b);
   b.lo = lo;
   b.hi = hi;
-  const int label_h = lb.ascent + lb.descent, gap = (int)lround(0.3 * bar_w);
-  b.y0 = header + label_h + gap + label_h / 2;
-  int avail = H - margin - label_h / 2 - b.y0, bar_h = (int)fmin(avail, lround(0.62 * H));
-  if (bar_h < 2 * label_h) bar_h = avail;
-  b.y1 = b.y0 + bar_h;
-  int label_w = 0;
-  struct text_box wb;
-  if (map == COLORMAP_KIND) {
-    int present[5] = {0, 0, 0, 0, 0};
-    for (size_t i = 0; i < in->n; ++i) {
-      int k = (int)kind->v[i];
-      if (k >= 0 && k < 5) present[k] = 1;
-    }
-    for (int k = 0; k < 5; ++k) {
-      if (!present[k]) continue;
-      b.kinds[b.nkinds++] = k;
-      CLSPH_TRY(text_measure(r->text, label_px, kind_names[k], &wb));
-      label_w = wb.width > label_w ? wb.width : label_w;
-    }
-  } else {
-    int want = (int)fmin(8.0, fmax(2.0, bar_h / (2.5 * label_h)));
-    b.nt = ticks(lo, hi, want, b.at, 16);
-    double step = b.nt > 1 ? b.at[1] - b.at[0] : hi - lo, big = fmax(fabs(lo), fabs(hi));
-    for (int k = 0; k < b.nt; ++k) {
-      tick_label(b.at[k], step, big, b.label[k], sizeof b.label[k]);
-      CLSPH_TRY(text_measure(r->text, label_px, b.label[k], &wb));
-      label_w = wb.width > label_w ? wb.width : label_w;
-    }
-  }
-  CLSPH_TRY(text_measure(r->text, label_px, f->label, &wb));
-  int block = bar_w + 2 * gap + label_w;
-  if (wb.width > block) block = wb.width;
-  b.x0 = W - margin - block;
-  b.x1 = b.x0 + bar_w;
 
-  /* the view */
+  /* the layout: sizes, the colour bar, and the view in what is left */
+  CLSPH_TRY(frame_sizes(r, &z));
+  CLSPH_TRY(bar_layout(r, f, in, kind->v, &z, map, &b));
   int novol = 0; /* particles with no volume of their own are drawn at the typical spacing */
   for (size_t i = 0; i < in->n && !novol; ++i)
     novol = field_drawn(f, (int)kind->v[i]) && !(vol->v[i] > 0.0 && isfinite(vol->v[i]));
@@ -534,104 +657,39 @@ enum clsph_status render_frame(struct render *r, const struct field_spec *f,
     memcpy(box, in->view, sizeof box);
   else
     view_box(f, in, pos->v, vol->v, kind->v, spacing, box);
-  const double px0 = margin, px1 = b.x0 - 2 * margin, py0 = header, py1 = H - margin;
-  const double pad = band_px + line_px;
-  const double vw = box[2] - box[0], vh = box[3] - box[1];
-  struct xform x;
+  const double px0 = z.margin, px1 = b.x0 - 2 * z.margin, py0 = z.header, py1 = H - z.margin;
+  const double pad = z.band_px + z.line_px, vw = box[2] - box[0], vh = box[3] - box[1];
   x.s = fmax(1e-12, fmin((px1 - px0 - 2 * pad) / vw, (py1 - py0 - 2 * pad) / vh));
   x.ox = px0 + 0.5 * (px1 - px0 - x.s * vw);
   x.oy = py0 + 0.5 * (py1 - py0 - x.s * vh);
   x.vx0 = box[0];
   x.vy1 = box[3];
-  x.band = band_px / x.s;
+  x.band = z.band_px / x.s;
 
-  /* the particles: pixel positions, diameters and colours; small ones first, then discs */
-  size_t nd = 0, n1 = 0, n2 = 0;
-  const double inv = 1.0 / (hi - lo);
-  double dsum = 0.0;
-  for (size_t i = 0; i < in->n; ++i) {
-    if (!field_drawn(f, (int)kind->v[i])) continue;
-    const double d = x.s * side(vol->v[i], spacing);
-    r->order[nd++] = i;
-    n1 += d < 1.5;
-    n2 += d >= 1.5 && d < 2.5;
-    dsum += d;
-  }
-  {
-    size_t k1 = 0, k2 = n1, k3 = n1 + n2;
-    for (size_t k = 0; k < nd; ++k) { /* stable partition into the three groups, into xy etc. */
-      const size_t i = r->order[k];
-      const double d = x.s * side(vol->v[i], spacing);
-      const size_t slot = d < 1.5 ? k1++ : d < 2.5 ? k2++ : k3++;
-      to_px(&x, pos->v[2 * i], pos->v[2 * i + 1], r->xy + 2 * slot);
-      r->diam[slot] = (float)fmin(d, 253.0); /* sprites reach 255 pixels with the edge */
-      const double tv = map == COLORMAP_KIND ? r->val[i] : (r->val[i] - lo) * inv;
-      colormap_rgb(map, tv, r->col + 3 * slot);
-    }
-  }
-  tm.drawn = nd;
-  tm.disc_px = nd > 0 ? dsum / (double)nd : 0.0;
+  /* pixel positions and colours */
+  particle_arrays(r, f, in, &x, spacing, map, lo, hi, group, &tm);
   CLSPH_TRY(wall_geometry(r, in, &x));
   const double t1 = now();
 
-  /* OpenGL */
+  /* OpenGL: the solid side of the walls, the particles, the wall lines, the colour bar */
   CLSPH_TRY(draw_begin(r->draw, render_colour_bg));
   draw_triangles(r->draw, r->ntri, r->tri, render_colour_solid);
   CLSPH_TRY(fill_solids(r, in, &x));
-  draw_points(r->draw, n1, r->xy, 1, r->col);
-  draw_points(r->draw, n2, r->xy + 2 * n1, 2, r->col + 3 * n1);
-  draw_discs(r->draw, nd - n1 - n2, r->xy + 2 * (n1 + n2), r->diam + n1 + n2,
-             r->col + 3 * (n1 + n2));
-  draw_lines(r->draw, r->nlines, r->lines, line_px, 1, render_colour_wall);
-  {
-    float rects[4 * 256], bl[2 * 2 * (4 + 16)];
-    unsigned char rc[3 * 256];
-    size_t nr = 0, nl = 0;
-    if (map == COLORMAP_KIND) {
-      const int step = (int)lround(1.6 * label_h);
-      for (int k = 0; k < b.nkinds; ++k) {
-        float *q = rects + 4 * nr;
-        q[0] = (float)b.x0;
-        q[1] = (float)(b.y0 + k * step);
-        q[2] = (float)b.x1;
-        q[3] = (float)(b.y0 + k * step + bar_w);
-        colormap_rgb(COLORMAP_KIND, b.kinds[k], rc + 3 * nr++);
-      }
-    } else {
-      for (int k = 0; k < 256; ++k) { /* entry k of the map, bottom up */
-        float *q = rects + 4 * nr;
-        q[0] = (float)b.x0;
-        q[1] = (float)(b.y1 - (double)(k + 1) / 256.0 * bar_h);
-        q[2] = (float)b.x1;
-        q[3] = (float)(b.y1 - (double)k / 256.0 * bar_h);
-        colormap_rgb(map, (k + 0.5) / 256.0, rc + 3 * nr++);
-      }
-      const float e[4] = {(float)b.x0 - 0.5f, (float)b.y0 - 0.5f, (float)b.x1 + 0.5f,
-                          (float)b.y1 + 0.5f};
-      const float box_lines[16] = {e[0], e[1], e[2], e[1], e[2], e[1], e[2], e[3],
-                                   e[2], e[3], e[0], e[3], e[0], e[3], e[0], e[1]};
-      memcpy(bl, box_lines, sizeof box_lines);
-      nl = 4;
-      for (int k = 0; k < b.nt; ++k) {
-        float y = (float)(lround(b.y1 - (b.at[k] - lo) * inv * bar_h)) + 0.5f;
-        float *q = bl + 4 * nl++;
-        q[0] = (float)b.x1;
-        q[1] = y;
-        q[2] = (float)(b.x1 + tick);
-        q[3] = y;
-      }
-    }
-    draw_rects(r->draw, nr, rects, rc);
-    draw_lines(r->draw, nl, bl, 1.0f, 0, render_colour_wall);
-  }
+  const size_t n1 = group[0], n12 = group[0] + group[1];
+  draw_points(r->draw, group[0], r->xy, 1, r->col);
+  draw_points(r->draw, group[1], r->xy + 2 * n1, 2, r->col + 3 * n1);
+  draw_discs(r->draw, group[2], r->xy + 2 * n12, r->diam + n12, r->col + 3 * n12);
+  draw_lines(r->draw, r->nlines, r->lines, z.line_px, 1, render_colour_wall);
+  draw_bar(r, &b, &z, map);
   CLSPH_TRY(draw_read(r->draw, r->rgb));
   const double t2 = now();
 
-  /* text */
-  CLSPH_TRY(draw_text_frame(r, f, in, &b, label_px, title_px, margin, nd, map));
+  /* text, and the file */
+  CLSPH_TRY(draw_text_frame(r, f, in, &b, z.label_px, z.title_px, z.margin, tm.drawn, map));
   const double t3 = now();
   if (png_path != NULL) CLSPH_TRY(image_write_png(png_path, r->rgb, W, H));
   const double t4 = now();
+
   tm.field = t1 - t0;
   tm.draw = t2 - t1;
   tm.text = t3 - t2;
@@ -647,15 +705,15 @@ enum clsph_status render_frame(struct render *r, const struct field_spec *f,
   memcpy(l->view, box, sizeof box);
   l->origin[0] = x.ox;
   l->origin[1] = x.oy;
-  l->band_px = band_px;
-  l->line_px = line_px;
+  l->band_px = z.band_px;
+  l->line_px = z.line_px;
   l->bar[0] = b.x0;
   l->bar[1] = b.y0;
   l->bar[2] = b.x1;
   l->bar[3] = b.y1;
-  l->margin = margin;
-  l->title_px = title_px;
-  l->label_px = label_px;
+  l->margin = z.margin;
+  l->title_px = z.title_px;
+  l->label_px = z.label_px;
   l->map = map;
   l->lo = lo;
   l->hi = hi;
