@@ -277,11 +277,13 @@ enum clsph_status render_command(const struct cli *cli)
       CLSPH_CHECK(val != NULL, CLSPH_E_NOMEM, "out of memory");
       CLSPH_TRY(field_values(f, &in, val));
       double a, b;
-      field_auto_range(f, map, snap.n, val, kind->v, &a, &b);
-      lo = fmin(lo, a);
-      hi = fmax(hi, b);
+      if (field_percentiles(f, snap.n, val, kind->v, &a, &b) > 0) {
+        lo = fmin(lo, a);
+        hi = fmax(hi, b);
+      }
       io_snapshot_free(&snap);
     }
+    field_range_rules(f, map, hi >= lo, &lo, &hi);
     frames_set_range(fr, lo, hi);
     if (!cli->quiet)
       printf("colour range of %s over %d snapshots: %g .. %g\n", f->name, count, lo, hi);

@@ -333,34 +333,47 @@ double field_spacing(const struct field_spec *f, size_t n, const double *vol, co
 
 /* ---- colour range ---- */
 
-void field_auto_range(const struct field_spec *f, enum colormap_kind map, size_t n, const double *v,
-                      const double *kind, double *lo, double *hi)
+size_t field_percentiles(const struct field_spec *f, size_t n, const double *v, const double *kind,
+                         double *lo, double *hi)
 {
   double *tmp = malloc((n > 0 ? n : 1) * sizeof *tmp);
   size_t m = 0;
-  double a = 0.0, b = 1.0;
   if (tmp != NULL) {
     for (size_t i = 0; i < n; ++i)
       if (field_drawn(f, (int)kind[i]) && isfinite(v[i])) tmp[m++] = v[i];
   }
   if (m > 0) {
-    /* the 0.5th and 99.5th percentiles (the extremes for fewer than 200 values) */
-    size_t klo = (size_t)floor(0.005 * (double)(m - 1)),
-           khi = (size_t)ceil(0.995 * (double)(m - 1));
-    a = select_kth(tmp, m, klo);
-    b = select_kth(tmp, m, khi);
+    /* entries ⌊0.005 (m − 1)⌋ and ⌈0.995 (m − 1)⌉: the extremes for fewer than 200 values */
+    size_t klo = (size_t)floor(0.005 * (double)(m - 1));
+    size_t khi = (size_t)ceil(0.995 * (double)(m - 1));
+    *lo = select_kth(tmp, m, klo);
+    *hi = select_kth(tmp, m, khi);
   }
   free(tmp);
+  return m;
+}
+
+void field_range_rules(const struct field_spec *f, enum colormap_kind map, int have, double *lo,
+                       double *hi)
+{
+  double a = have ? *lo : 0.0, b = have ? *hi : 1.0;
   if (f->how == FIELD_SPEED) a = 0.0;
   if (map == COLORMAP_COOLWARM) {
     b = fmax(fabs(a), fabs(b));
     a = -b;
   }
-  if (!(b > a)) { /* flat (or nothing drawn): a range around the value */
+  if (!(b > a)) { /* flat: a range around the value */
     double c = 0.5 * (a + b), w = c != 0.0 ? 0.1 * fabs(c) : 1.0;
     a = f->how == FIELD_SPEED && c == 0.0 ? 0.0 : c - w;
     b = c + w;
   }
   *lo = a;
   *hi = b;
+}
+
+void field_auto_range(const struct field_spec *f, enum colormap_kind map, size_t n, const double *v,
+                      const double *kind, double *lo, double *hi)
+{
+  const int have = field_percentiles(f, n, v, kind, lo, hi) > 0;
+  field_range_rules(f, map, have, lo, hi);
 }

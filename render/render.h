@@ -114,6 +114,15 @@ enum clsph_status field_vorticity(size_t n, const double *pos, const double *vel
 /** @brief The typical spacing of the drawn particles: √(median V) over those with a volume, 0 when
  *  none has one. Particles with no volume of their own (USAW wall vertices) are drawn this size. */
 double field_spacing(const struct field_spec *f, size_t n, const double *vol, const double *kind);
+/** @brief The 0.5th and 99.5th percentiles of the finite values of the drawn particles (the
+ *  extremes for fewer than 200 values), into lo and hi when there are any.
+ *  @return how many values there are */
+size_t field_percentiles(const struct field_spec *f, size_t n, const double *v, const double *kind,
+                         double *lo, double *hi);
+/** @brief The rules of an automatic range on lo .. hi (`have` 0: nothing drawn): from 0 for the
+ *  speed; symmetric about 0 for a diverging map; widened around the value when flat. */
+void field_range_rules(const struct field_spec *f, enum colormap_kind map, int have, double *lo,
+                       double *hi);
 /** @brief Automatic colour range of a frame from the values of its drawn particles: the 0.5th to
  *  the 99.5th percentile (a few spikes at wall corners do not wash the picture out); from 0 for
  *  the speed; symmetric about 0 (±the 99.5th percentile of |value|) for a diverging map; widened

@@ -4,7 +4,8 @@
 #    byte for byte: the device state a frame was drawn from is the state the snapshot holds.
 # 2. A case's render { } choices (field, range, map) serve both commands, and travel in the
 #    snapshots.
-# 3. Without ffmpeg the frames stay and a warning says how to get the movie; exit status 0.
+# 3. Without ffmpeg the frames stay and a warning says how to get the movie; exit status 0. An
+#    automatic range spans every snapshot.
 # 4. `clsph render --field` of a field the run does not have lists the fields there are.
 file(REMOVE_RECURSE ${OUT})
 
@@ -55,6 +56,9 @@ clsph_run(0 render ${OUT}/run --field speed --out ${OUT}/noffmpeg --size 320x240
 set(ENV_ARGS "")
 if(NOT out MATCHES "no movie: [^ ]*no-such-ffmpeg was not found \\(install it with 'apt-get install ffmpeg'\\); the frames stay")
   message(FATAL_ERROR "no message about the missing ffmpeg")
+endif()
+if(NOT out MATCHES "colour range of speed over 11 snapshots: 0 \\.\\. [0-9]")
+  message(FATAL_ERROR "an automatic range spans the snapshots, from 0 for the speed")
 endif()
 if(NOT EXISTS ${OUT}/noffmpeg/frames/speed_000010.png OR EXISTS ${OUT}/noffmpeg/speed.mp4)
   message(FATAL_ERROR "without ffmpeg the frames must be there and no movie")
