@@ -43,3 +43,17 @@ clsph_render_cli_test(render_run_unknown_field RC 2
                       REGEX "unknown field 'temperature'; fields: speed, vorticity, vel_x, vel_y, ")
 clsph_render_cli_test(render_case_bad_range ARGS info ${RENDER_DIR}/bad_render_range.lua RC 2
                       REGEX "bad_render_range.lua:7: render: range .*: the low end must be below the high end")
+# The font: a --font that is not there, and a fontconfig that knows no DejaVu Sans (an empty font
+# folder), each refused with the Debian package to install.
+clsph_render_cli_test(render_font_missing RC 1
+                      ARGS bench render --bench-sizes 100 --font ${RENDER_OUT}/no-such-font.ttf
+                           --out ${RENDER_OUT}/bench
+                      REGEX "cannot open the font .*no-such-font.ttf \\(--font\\)"
+                      REGEX2 "apt-get install fonts-dejavu-core")
+file(MAKE_DIRECTORY ${RENDER_OUT}/no-fonts)
+file(WRITE ${RENDER_OUT}/no-fonts/fonts.conf
+     "<?xml version=\"1.0\"?>\n<fontconfig><dir>${RENDER_OUT}/no-fonts</dir>"
+     "<cachedir>${RENDER_OUT}/no-fonts/cache</cachedir></fontconfig>\n")
+clsph_render_cli_test(render_no_dejavu RC 1 ENV FONTCONFIG_FILE=${RENDER_OUT}/no-fonts/fonts.conf
+                      ARGS bench render --bench-sizes 100 --out ${RENDER_OUT}/bench
+                      REGEX "the font DejaVu Sans is not installed .*apt-get install fonts-dejavu-core")
