@@ -1,8 +1,8 @@
 /* case.c: the case-script loader. A case is a Lua 5.4 script run in a sandbox (base, math,
  * string and table only; no io, os, package, debug, load, loadfile or dofile) whose declarations
  * (param, domain, particles, scheme, fluid, fill, wall, box_wall, arc, circle, inflow, outflow,
- * probe, profile, force, run) fill a struct scene. Every declaration checks its keys: an unknown
- * key is an error naming the script line and the nearest known key. */
+ * probe, profile, force, run, render) fill a struct scene. Every declaration checks its keys: an
+ * unknown key is an error naming the script line and the nearest known key. */
 #include "case.h"
 
 #include <cjson/cJSON.h>
@@ -763,6 +763,38 @@ static int l_run(lua_State *L)
   return 0;
 }
 
+/* render { field = "p", range = {0, 1e4}, colormap = "viridis" }: how frames show the case. The
+ * field's name is checked against the scheme's fields when a run starts. */
+static int l_render(lua_State *L)
+{
+  static const char *const keys[] = {"field", "range", "colormap", NULL};
+  static const char *const maps[] = {"auto", "viridis", "coolwarm", "kind", NULL};
+  struct loader *ld = loader_of(L);
+  struct scene_render *r = &ld->s->render;
+  need_table(L, "render");
+  once(L, &r->line, "render");
+  check_keys(L, 1, "render", keys, 0);
+  r->on = 1;
+  get_name(L, 1, "render", "field", r->field, "");
+  lua_getfield(L, 1, "range");
+  if (!lua_isnil(L, -1)) {
+    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
+      luaL_error(L, "render: range must be {low, high}, e.g. range = {0, 1000}");
+    double lohi[2] = {get_index_number(L, lua_gettop(L), "render", 1, "range"),
+                      get_index_number(L, lua_gettop(L), "render", 2, "range")};
+    if (!(lohi[0] < lohi[1]))
+      luaL_error(L, "render: range {%f, %f}: the low end must be below the high end", lohi[0],
+                 lohi[1]);
+    r->fixed = 1;
+    r->range[0] = lohi[0];
+    r->range[1] = lohi[1];
+  }
+  lua_pop(L, 1);
+  int m = get_choice(L, 1, "render", "colormap", maps, 0);
+  snprintf(r->colormap, SCENE_NAME, "%s", maps[m]);
+  return 0;
+}
+
 /* ---- loading ---- */
 
 static enum clsph_status parse_sets(int nsets, char *const *sets, struct loader *ld)
@@ -818,7 +850,7 @@ static void register_api(lua_State *L, struct loader *ld)
       {"wall", l_wall},     {"box_wall", l_box_wall}, {"arc", l_arc},
       {"circle", l_circle}, {"inflow", l_inflow},     {"outflow", l_outflow},
       {"probe", l_probe},   {"profile", l_profile},   {"force", l_force},
-      {"run", l_run},
+      {"run", l_run},       {"render", l_render},
   };
   for (size_t i = 0; i < sizeof api / sizeof *api; ++i) {
     lua_pushlightuserdata(L, ld);

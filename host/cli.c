@@ -2,8 +2,11 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "render.h"
 
 void cli_usage(FILE *f)
 {
@@ -15,6 +18,8 @@ void cli_usage(FILE *f)
         "  run CASE              run a case script (cases/NAME.lua); outputs in --out\n"
         "  info CASE             particle counts, active modules, memory and time step of a\n"
         "                        case, without running it\n"
+        "  render OUTDIR         frames and a movie from the snapshots of a run (its --out\n"
+        "                        folder): OUTDIR/frames/FIELD_NNNNNN.png, OUTDIR/FIELD.mp4\n"
         "  devices               list OpenCL platforms and devices (index, type, OpenCL version,\n"
         "                        memory, double precision)\n"
         "  demo                  the default scene: a particle lattice, its device neighbour\n"
@@ -24,17 +29,32 @@ void cli_usage(FILE *f)
         "  bench psolve          pressure solves of 1e3 .. 1e6 unknowns: BiCGStab (stored or\n"
         "                        recomputed operator, two preconditioners) and UMFPACK; writes\n"
         "                        --out/psolve.csv and psolve.png\n"
+        "  bench render          frame times (median) for 1e4, 1e5, 1e6 particles at 1280 x 720\n"
         "  help                  this text\n"
         "\n"
         "options:\n"
         "  --set NAME=VALUE      override a parameter the case declares (repeatable), e.g.\n"
         "                        --set dr=0.005 --set t_end=0.1\n"
-        "  --out DIR             output folder of `run` (default out/CASE)\n"
+        "  --out DIR             output folder of `run` (default out/CASE); of `render`, where\n"
+        "                        the frames and the movie go (default OUTDIR)\n"
         "  --restart FILE        continue a run from one of its checkpoints\n"
         "  --quiet               no progress line (and no --profile table)\n"
         "  --profile             time every kernel launch and transfer of `run` on the device\n"
         "                        (OpenCL profiling events): a table by kernel at the end, and\n"
         "                        \"profile\" in summary.json\n"
+        "  --frames              run: a frame (PNG) with each snapshot in OUT/frames, and a\n"
+        "                        movie OUT/FIELD.mp4 at the end (ffmpeg)\n"
+        "  --field NAME          the field frames show: speed, vorticity, p, vel_x, vel_y, kind,\n"
+        "                        or any field the scheme stores (default: the case's render {\n"
+        "                        field }, else speed)\n"
+        "  --range LO,HI|auto    colour range of frames (default: the case's, else auto: each\n"
+        "                        frame's 0.5th to 99.5th percentile in a run, over every snapshot\n"
+        "                        in `render`)\n"
+        "  --colormap NAME       auto, viridis (magnitudes), coolwarm (signed), kind\n"
+        "  --size WxH            frame size in pixels (default 1280x720)\n"
+        "  --fps N               frames per second of the movie (default 10)\n"
+        "  --no-movie            frames only\n"
+        "  --font FILE           TrueType font of frames (default $CLSPH_FONT, else DejaVu Sans)\n"
         "  --device N            device index from `clsph devices` (default: $CLSPH_DEVICE, else\n"
         "                        the first GPU, else the first CPU)\n"
         "  --kernel-dir DIR      read OpenCL sources from DIR instead of the embedded copy\n"
@@ -45,13 +65,18 @@ void cli_usage(FILE *f)
         "  --bench-direct-max N  largest UMFPACK solve of `bench psolve` (default 2e5)\n"
         "  --demo-dr DR          lattice spacing of the demo on the unit square (default 0.01)\n"
         "  --verbose             debug messages (build options, cache hits)\n"
-        "  -h, --help            this text\n"
-        "\n"
+        "  -h, --help            this text\n",
+        f);
+  /* a second string: ISO C keeps a literal under 4095 characters */
+  fputs("\n"
         "examples:\n"
         "  clsph run cases/hydrostatic.lua --set dr=0.02 --out out/tank\n"
         "  clsph info cases/hydrostatic.lua\n"
         "  clsph run cases/hydrostatic.lua --restart out/tank/checkpoint_000100.h5\n"
         "  clsph run cases/cavity.lua --set n=40 --set t_end=0.5 --profile\n"
+        "  clsph run cases/cavity.lua --set n=30 --set t_end=2 --frames --field vorticity\n"
+        "  clsph render out/cavity --field p --range -0.5,0.5 --fps 5\n"
+        "  clsph bench render --bench-reps 5\n"
         "  clsph devices\n"
         "  clsph demo --device 0\n"
         "  clsph bench neighbours --bench-sizes 1e4,1e5 --bench-reps 5\n",
@@ -84,10 +109,54 @@ done:
   return st;
 }
 
+/* --range LO,HI or auto */
+static enum clsph_status parse_range(const char *text, struct cli *c)
+{
+  enum clsph_status st = CLSPH_OK;
+  char *end = NULL, *end2 = NULL;
+  c->range_set = 1;
+  if (strcmp(text, "auto") == 0) {
+    c->range_auto = 1;
+    goto done;
+  }
+  errno = 0;
+  double lo = strtod(text, &end);
+  double hi = end != text && *end == ',' ? strtod(end + 1, &end2) : 0.0;
+  CLSPH_CHECK(errno == 0 && end != text && *end == ',' && end2 != end + 1 && end2 != NULL &&
+                  *end2 == '\0' && isfinite(lo) && isfinite(hi),
+              CLSPH_E_INPUT, "--range: '%s' is not LO,HI (two numbers, e.g. 0,1000) or auto", text);
+  CLSPH_CHECK(lo < hi, CLSPH_E_INPUT, "--range: '%s': the low end %g must be below the high end %g",
+              text, lo, hi);
+  c->range_auto = 0;
+  c->range[0] = lo;
+  c->range[1] = hi;
+done:
+  return st;
+}
+
+/* --size WxH */
+static enum clsph_status parse_size(const char *text, int *w, int *h)
+{
+  enum clsph_status st = CLSPH_OK;
+  char *end = NULL, *end2 = NULL;
+  errno = 0;
+  long a = strtol(text, &end, 10);
+  long b = end != text && (*end == 'x' || *end == 'X') ? strtol(end + 1, &end2, 10) : 0;
+  CLSPH_CHECK(errno == 0 && end2 != NULL && end2 != end + 1 && *end2 == '\0', CLSPH_E_INPUT,
+              "--size: '%s' is not WIDTHxHEIGHT in pixels, e.g. 1280x720", text);
+  CLSPH_CHECK(a >= 16 && a <= 8192 && b >= 16 && b <= 8192, CLSPH_E_INPUT,
+              "--size: %ldx%ld: each side must be from 16 to 8192 pixels", a, b);
+  *w = (int)a;
+  *h = (int)b;
+done:
+  return st;
+}
+
 enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
 {
   enum clsph_status st = CLSPH_OK;
-  static const char *const commands[] = {"run", "info", "devices", "demo", "bench", "help"};
+  static const char *const commands[] = {"run",  "info",  "render", "devices",
+                                         "demo", "bench", "help"};
   struct cli c;
   memset(&c, 0, sizeof c);
   c.device = -1;
@@ -109,6 +178,10 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
       c.quiet = 1;
     } else if (strcmp(a, "--profile") == 0) {
       c.profile = 1;
+    } else if (strcmp(a, "--frames") == 0) {
+      c.frames = 1;
+    } else if (strcmp(a, "--no-movie") == 0) {
+      c.no_movie = 1;
     } else if (strncmp(a, "--", 2) == 0) {
       CLSPH_CHECK(val != NULL, CLSPH_E_INPUT, "option %s needs a value (see clsph --help)", a);
       if (strcmp(a, "--set") == 0) {
@@ -132,6 +205,22 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
         CLSPH_TRY(parse_int(a, val, 1, 1000, &c.bench_reps));
       } else if (strcmp(a, "--demo-dr") == 0) {
         CLSPH_TRY(parse_real(a, val, &c.demo_dr));
+      } else if (strcmp(a, "--field") == 0) {
+        CLSPH_CHECK(val[0] != '\0' && strlen(val) < RENDER_NAME, CLSPH_E_INPUT,
+                    "--field: '%s' is not a field name", val);
+        c.field = val;
+      } else if (strcmp(a, "--range") == 0) {
+        CLSPH_TRY(parse_range(val, &c));
+      } else if (strcmp(a, "--colormap") == 0) {
+        enum colormap_kind k;
+        CLSPH_TRY(colormap_from_name(val, &k));
+        c.colormap = val;
+      } else if (strcmp(a, "--size") == 0) {
+        CLSPH_TRY(parse_size(val, &c.width, &c.height));
+      } else if (strcmp(a, "--fps") == 0) {
+        CLSPH_TRY(parse_int(a, val, 1, 240, &c.fps));
+      } else if (strcmp(a, "--font") == 0) {
+        c.font = val;
       } else {
         CLSPH_CHECK(0, CLSPH_E_INPUT, "unknown option %s (see clsph --help)", a);
       }
@@ -141,14 +230,18 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
       for (size_t k = 0; k < sizeof commands / sizeof *commands; ++k)
         known |= !strcmp(a, commands[k]);
       CLSPH_CHECK(known, CLSPH_E_INPUT,
-                  "unknown command '%s'; commands: run, info, devices, demo, bench, help", a);
+                  "unknown command '%s'; commands: run, info, render, devices, demo, bench, help",
+                  a);
       c.command = a;
     } else if ((strcmp(c.command, "run") == 0 || strcmp(c.command, "info") == 0) &&
                c.case_path == NULL) {
       c.case_path = a;
+    } else if (strcmp(c.command, "render") == 0 && c.snap_dir == NULL) {
+      c.snap_dir = a;
     } else if (strcmp(c.command, "bench") == 0 && c.target == NULL) {
-      CLSPH_CHECK(strcmp(a, "neighbours") == 0 || strcmp(a, "psolve") == 0, CLSPH_E_INPUT,
-                  "unknown benchmark '%s'; benchmarks: neighbours, psolve", a);
+      CLSPH_CHECK(
+          strcmp(a, "neighbours") == 0 || strcmp(a, "psolve") == 0 || strcmp(a, "render") == 0,
+          CLSPH_E_INPUT, "unknown benchmark '%s'; benchmarks: neighbours, psolve, render", a);
       c.target = a;
     } else {
       CLSPH_CHECK(0, CLSPH_E_INPUT, "unexpected argument '%s' (see clsph --help)", a);
@@ -164,6 +257,29 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
               c.command, c.command);
   CLSPH_CHECK(strcmp(c.command, "bench") != 0 || c.target != NULL, CLSPH_E_INPUT,
               "bench: name the benchmark, e.g. `clsph bench neighbours`");
+  CLSPH_CHECK(strcmp(c.command, "render") != 0 || c.snap_dir != NULL, CLSPH_E_INPUT,
+              "render: name the output folder of a run, e.g. `clsph render out/cavity`");
+  {
+    /* the options of frames belong to run --frames, render and bench render */
+    const int takes_frames =
+        (strcmp(c.command, "run") == 0 && c.frames) || strcmp(c.command, "render") == 0 ||
+        (strcmp(c.command, "bench") == 0 && c.target != NULL && strcmp(c.target, "render") == 0);
+    const char *given = c.field       ? "--field"
+                        : c.range_set ? "--range"
+                        : c.colormap  ? "--colormap"
+                        : c.width     ? "--size"
+                        : c.fps       ? "--fps"
+                        : c.no_movie  ? "--no-movie"
+                        : c.font      ? "--font"
+                                      : NULL;
+    CLSPH_CHECK(given == NULL || takes_frames, CLSPH_E_INPUT,
+                "%s is an option of frames: use it with `clsph run CASE --frames` or `clsph "
+                "render OUTDIR`",
+                given);
+    CLSPH_CHECK(!c.frames || strcmp(c.command, "run") == 0, CLSPH_E_INPUT,
+                "--frames belongs to `clsph run CASE`; `clsph render OUTDIR` draws frames of a "
+                "finished run");
+  }
   *out = c;
 done:
   return st;

@@ -9,7 +9,7 @@
 #define CLI_MAX_SETS 64
 
 struct cli {
-  const char *command;      /* "run", "info", "devices", "demo", "bench", "help" */
+  const char *command;      /* "run", "info", "render", "devices", "demo", "bench", "help" */
   const char *case_path;    /* run, info: the case script */
   char *sets[CLI_MAX_SETS]; /* --set name=value, in order */
   int nsets;
@@ -17,7 +17,7 @@ struct cli {
   const char *restart;     /* --restart FILE */
   int quiet;               /* --quiet: no progress line */
   int profile;             /* --profile: device time per kernel of a run */
-  const char *target;      /* bench: "neighbours" */
+  const char *target;      /* bench: "neighbours", "psolve", "render" */
   int device;              /* --device N, -1: $CLSPH_DEVICE or the default */
   const char *kernel_dir;  /* --kernel-dir DIR, NULL: embedded sources */
   const char *cache_dir;   /* --prog-cache-dir DIR ("" disables), NULL: default */
@@ -27,6 +27,18 @@ struct cli {
   int bench_reps;          /* --bench-reps N */
   double bench_direct_max; /* --bench-direct-max N: largest UMFPACK solve of `bench psolve` */
   double demo_dr;          /* --demo-dr spacing of the demo lattice */
+  /* frames: run --frames, render, bench render */
+  const char *snap_dir; /* render: the output folder of a run */
+  int frames;           /* --frames: a frame per snapshot and a movie */
+  const char *field;    /* --field NAME (NULL: the case's, else speed) */
+  int range_set;        /* --range given: */
+  int range_auto;       /*   --range auto */
+  double range[2];      /*   --range LO,HI */
+  const char *colormap; /* --colormap NAME (NULL: the case's, else by the field) */
+  int width, height;    /* --size WxH (0: 1280 x 720) */
+  int fps;              /* --fps N (0: 10) */
+  int no_movie;         /* --no-movie */
+  const char *font;     /* --font FILE (NULL: $CLSPH_FONT, else DejaVu Sans) */
 };
 
 /** @brief Parse argv; bad input is reported with the offending argument. */
@@ -44,5 +56,9 @@ enum clsph_status demo_run(const struct cli *cli);
 enum clsph_status bench_run(const struct cli *cli);
 /** @brief `clsph bench psolve`. */
 enum clsph_status bench_psolve(const struct cli *cli);
+/** @brief `clsph render OUTDIR`: frames and a movie from a run's snapshots (see run.c). */
+enum clsph_status render_command(const struct cli *cli);
+/** @brief `clsph bench render`: frame times (see bench_render.c). */
+enum clsph_status bench_render(const struct cli *cli);
 
 #endif /* CLSPH_CLI_H */

@@ -11,6 +11,12 @@
  *   /topology         int32 0 .. n-1: the vertex list of the XDMF Polyvertex topology. ParaView's
  *                     XDMF3 reader counts the cells of a topology from its data, so a topology
  *                     without one is read as points with no cells (nothing to draw).
+ *   What frames need besides the particles (`clsph render` redraws a run from its snapshots):
+ *   domain            root attribute, 4 doubles: the scene's box x0, y0, x1, y1 (m)
+ *   /walls/wall_NNN   the wall polylines as declared, doubles (npts, 2), the fluid on their left;
+ *                     attribute closed (int32, 1: the last point joins the first)
+ *   /render           the case's render { } choices as attributes: field (string), colormap
+ *                     (string), range (2 doubles, only when fixed); absent without render { }
  *
  * XDMF (Version 3.0): a temporal collection with one uniform grid per snapshot that points into
  * the snapshot files ("snap_000001.h5:/particles/vel"); the HDF5 files hold all the data.
@@ -258,6 +264,22 @@ done:
   return st;
 }
 
+/* A 1-D attribute of `count` values. */
+static enum clsph_status attr_write_array(hid_t loc, const char *name, hid_t type, size_t count,
+                                          const void *value, const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  hid_t space = H5I_INVALID_HID, attr = H5I_INVALID_HID;
+  const hsize_t dims[1] = {(hsize_t)count};
+  IO_H5(space = H5Screate_simple(1, dims, NULL), path);
+  IO_H5(attr = H5Acreate2(loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT), path);
+  IO_H5(H5Awrite(attr, type, value), path);
+done:
+  h5_close_id(&attr);
+  h5_close_id(&space);
+  return st;
+}
+
 /* A fixed-length, null-terminated string attribute. */
 static enum clsph_status attr_write_str(hid_t loc, const char *name, const char *s,
                                         const char *path)
@@ -321,6 +343,41 @@ done:
   return st;
 }
 
+/* The domain, the walls and the render choices of a snapshot (what frames need). */
+static enum clsph_status write_frame_meta(hid_t file, const struct io_meta *m, const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  hid_t grp = H5I_INVALID_HID, dset = H5I_INVALID_HID;
+  char name[32];
+  if (m->has_domain)
+    CLSPH_TRY(attr_write_array(file, "domain", H5T_NATIVE_DOUBLE, 4, m->domain, path));
+  if (m->nwalls > 0) {
+    IO_H5(grp = H5Gcreate2(file, "walls", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path);
+    for (int w = 0; w < m->nwalls; ++w) {
+      const struct scene_wall *sw = &m->walls[w];
+      const int32_t closed = sw->closed != 0;
+      snprintf(name, sizeof name, "wall_%03d", w);
+      CLSPH_TRY(write_dataset(grp, name, H5T_NATIVE_DOUBLE, (size_t)sw->npts, 2, sw->pts, path));
+      IO_H5(dset = H5Dopen2(grp, name, H5P_DEFAULT), path);
+      CLSPH_TRY(attr_write(dset, "closed", H5T_NATIVE_INT32, &closed, path));
+      CLSPH_TRY(h5_close_checked(&dset, path));
+    }
+    CLSPH_TRY(h5_close_checked(&grp, path));
+  }
+  if (m->render != NULL && m->render->on) {
+    IO_H5(grp = H5Gcreate2(file, "render", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path);
+    CLSPH_TRY(attr_write_str(grp, "field", m->render->field, path));
+    CLSPH_TRY(attr_write_str(grp, "colormap", m->render->colormap, path));
+    if (m->render->fixed)
+      CLSPH_TRY(attr_write_array(grp, "range", H5T_NATIVE_DOUBLE, 2, m->render->range, path));
+    CLSPH_TRY(h5_close_checked(&grp, path));
+  }
+done:
+  h5_close_id(&dset);
+  h5_close_id(&grp);
+  return st;
+}
+
 /* Bytes of the largest field (host staging buffer). */
 static size_t max_field_bytes(const struct pset *ps)
 {
@@ -376,6 +433,7 @@ enum clsph_status io_snapshot_write(const char *path, const struct dev *dev, con
   /* the vertex list of the XDMF topology */
   for (size_t i = 0; i < ps->n; ++i) vertex[i] = (int32_t)i;
   CLSPH_TRY(write_dataset(file, "topology", H5T_NATIVE_INT32, ps->n, 1, vertex, path));
+  CLSPH_TRY(write_frame_meta(file, m, path));
 
   CLSPH_TRY(h5_close_checked(&file, path));
   CLSPH_TRY(commit(tmp, path));
@@ -893,4 +951,221 @@ done:
   free(case_name);
   free(precision);
   return st;
+}
+
+/* ---------------------------------------------------------------------------------------------
+ * Reading a snapshot (for frames) */
+
+/* A 1-D attribute of exactly `count` values read into `type`; *found = 0 when absent. */
+static enum clsph_status attr_read_array(hid_t loc, const char *name, hid_t type, size_t count,
+                                         void *value, int *found, const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  hid_t attr = H5I_INVALID_HID, space = H5I_INVALID_HID;
+  htri_t exists;
+  *found = 0;
+  IO_DAMAGED(exists = H5Aexists(loc, name));
+  if (!exists) goto done;
+  IO_DAMAGED(attr = H5Aopen(loc, name, H5P_DEFAULT));
+  IO_DAMAGED(space = H5Aget_space(attr));
+  if (H5Sget_simple_extent_npoints(space) != (hssize_t)count) {
+    damaged(path, "an attribute has the wrong number of values");
+    st = CLSPH_E_INPUT;
+    goto done;
+  }
+  IO_DAMAGED(H5Aread(attr, type, value));
+  *found = 1;
+done:
+  h5_close_id(&space);
+  h5_close_id(&attr);
+  return st;
+}
+
+/* Shape of a dataset: rows and components (1 for a 1-D dataset). */
+static enum clsph_status dataset_shape(hid_t dset, hsize_t *rows, int *ncomp, const char *what,
+                                       const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  hid_t space = H5I_INVALID_HID;
+  hsize_t dims[2] = {0, 1};
+  int rank;
+  IO_DAMAGED(space = H5Dget_space(dset));
+  IO_DAMAGED(rank = H5Sget_simple_extent_ndims(space));
+  IO_REFUSE(rank == 1 || rank == 2, "%s: %s has %d dimensions, not 1 or 2", path, what, rank);
+  IO_DAMAGED(H5Sget_simple_extent_dims(space, dims, NULL));
+  IO_REFUSE(dims[1] >= 1 && dims[1] <= 16, "%s: %s has %llu components", path, what,
+            (unsigned long long)dims[1]);
+  *rows = dims[0];
+  *ncomp = (int)dims[1];
+done:
+  h5_close_id(&space);
+  return st;
+}
+
+static void copy_name(char *dst, size_t size, const char *src)
+{
+  snprintf(dst, size, "%s", src != NULL ? src : "");
+}
+
+static int wanted(const char *const *only, const char *name)
+{
+  if (only == NULL) return 1;
+  for (int k = 0; only[k] != NULL; ++k)
+    if (strcmp(only[k], name) == 0) return 1;
+  return 0;
+}
+
+static enum clsph_status read_walls(hid_t file, struct io_snapshot *s, const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  hid_t grp = H5I_INVALID_HID, dset = H5I_INVALID_HID;
+  H5G_info_t info;
+  htri_t exists;
+  char name[64];
+  IO_DAMAGED(exists = H5Lexists(file, "walls", H5P_DEFAULT));
+  if (!exists) goto done;
+  IO_DAMAGED(grp = H5Gopen2(file, "walls", H5P_DEFAULT));
+  IO_DAMAGED(H5Gget_info(grp, &info));
+  s->walls = calloc(info.nlinks > 0 ? (size_t)info.nlinks : 1, sizeof *s->walls);
+  CLSPH_CHECK(s->walls != NULL, CLSPH_E_NOMEM, "out of memory reading %s", path);
+  for (hsize_t k = 0; k < info.nlinks; ++k) {
+    ssize_t len;
+    IO_DAMAGED(len = H5Lget_name_by_idx(grp, ".", H5_INDEX_NAME, H5_ITER_INC, k, name, sizeof name,
+                                        H5P_DEFAULT));
+    IO_DAMAGED(dset = H5Dopen2(grp, name, H5P_DEFAULT));
+    hsize_t rows = 0;
+    int nc = 0, found = 0;
+    int32_t closed = 0;
+    CLSPH_TRY(dataset_shape(dset, &rows, &nc, name, path));
+    IO_REFUSE(nc == 2 && rows >= 2, "%s: wall %s is not a polyline of points (x, y)", path, name);
+    struct io_wall *w = &s->walls[s->nwalls];
+    w->pts = malloc((size_t)rows * 2 * sizeof *w->pts);
+    CLSPH_CHECK(w->pts != NULL, CLSPH_E_NOMEM, "out of memory reading %s", path);
+    w->npts = (int)rows;
+    ++s->nwalls;
+    IO_DAMAGED(H5Dread(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, w->pts));
+    CLSPH_TRY(attr_read(dset, "closed", H5T_NATIVE_INT32, &closed, &found, path));
+    w->closed = found && closed != 0;
+    h5_close_id(&dset);
+  }
+done:
+  h5_close_id(&dset);
+  h5_close_id(&grp);
+  return st;
+}
+
+static enum clsph_status read_render(hid_t file, struct io_snapshot *s, const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  hid_t grp = H5I_INVALID_HID;
+  char *field = NULL, *map = NULL;
+  htri_t exists;
+  int found = 0;
+  IO_DAMAGED(exists = H5Lexists(file, "render", H5P_DEFAULT));
+  if (!exists) goto done;
+  IO_DAMAGED(grp = H5Gopen2(file, "render", H5P_DEFAULT));
+  CLSPH_TRY(attr_read_str(grp, "field", &field, path));
+  CLSPH_TRY(attr_read_str(grp, "colormap", &map, path));
+  CLSPH_TRY(attr_read_array(grp, "range", H5T_NATIVE_DOUBLE, 2, s->render.range, &found, path));
+  s->render.on = 1;
+  s->render.fixed = found;
+  copy_name(s->render.field, sizeof s->render.field, field);
+  copy_name(s->render.colormap, sizeof s->render.colormap, map);
+done:
+  free(field);
+  free(map);
+  h5_close_id(&grp);
+  return st;
+}
+
+enum clsph_status io_snapshot_read(const char *path, const char *const *only,
+                                   struct io_snapshot *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct io_snapshot s;
+  hid_t file = H5I_INVALID_HID, grp = H5I_INVALID_HID, dset = H5I_INVALID_HID;
+  char *case_name = NULL, *scheme = NULL;
+  uint64_t n64 = 0;
+  int64_t step = 0;
+  int found_n = 0, found_t = 0, found_s = 0;
+  H5G_info_t info;
+  htri_t is;
+  FILE *probe = NULL;
+  memset(&s, 0, sizeof s);
+  h5_quiet();
+
+  probe = fopen(path, "rb");
+  IO_REFUSE(probe != NULL, "cannot open snapshot %s: %s", path, strerror(errno));
+  fclose(probe);
+  is = h5_is_hdf5(path);
+  IO_REFUSE(is != 0, "%s is not a clsph snapshot (not an HDF5 file)", path);
+  IO_DAMAGED(is);
+  IO_DAMAGED(file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT));
+  CLSPH_TRY(attr_read(file, "n", H5T_NATIVE_UINT64, &n64, &found_n, path));
+  CLSPH_TRY(attr_read(file, "time", H5T_NATIVE_DOUBLE, &s.time, &found_t, path));
+  CLSPH_TRY(attr_read(file, "step", H5T_NATIVE_INT64, &step, &found_s, path));
+  IO_REFUSE(found_n && found_t && found_s, "%s is not a clsph snapshot (no n, time or step)", path);
+  s.n = (size_t)n64;
+  s.step = (long)step;
+  CLSPH_TRY(attr_read_str(file, "case", &case_name, path));
+  CLSPH_TRY(attr_read_str(file, "scheme", &scheme, path));
+  copy_name(s.case_name, sizeof s.case_name, case_name);
+  copy_name(s.scheme, sizeof s.scheme, scheme);
+  CLSPH_TRY(attr_read_array(file, "domain", H5T_NATIVE_DOUBLE, 4, s.domain, &s.has_domain, path));
+
+  /* the particle datasets */
+  htri_t has;
+  IO_DAMAGED(has = H5Lexists(file, "particles", H5P_DEFAULT));
+  IO_REFUSE(has, "%s is not a clsph snapshot (no /particles)", path);
+  IO_DAMAGED(grp = H5Gopen2(file, "particles", H5P_DEFAULT));
+  IO_DAMAGED(H5Gget_info(grp, &info));
+  IO_REFUSE(info.nlinks <= PSET_MAX_FIELDS, "%s holds %llu particle fields, more than %d", path,
+            (unsigned long long)info.nlinks, PSET_MAX_FIELDS);
+  for (hsize_t k = 0; k < info.nlinks; ++k) {
+    struct io_array *a = &s.arrays[s.narrays];
+    ssize_t len;
+    IO_DAMAGED(len = H5Lget_name_by_idx(grp, ".", H5_INDEX_NAME, H5_ITER_INC, k, a->name,
+                                        sizeof a->name, H5P_DEFAULT));
+    IO_REFUSE(len > 0 && (size_t)len < sizeof a->name, "%s: a particle field name is too long",
+              path);
+    IO_DAMAGED(dset = H5Dopen2(grp, a->name, H5P_DEFAULT));
+    hsize_t rows = 0;
+    CLSPH_TRY(dataset_shape(dset, &rows, &a->ncomp, a->name, path));
+    if (rows != (hsize_t)s.n) {
+      char why[160];
+      snprintf(why, sizeof why, "field '%s' holds %llu particles, not %zu", a->name,
+               (unsigned long long)rows, s.n);
+      damaged(path, why);
+      st = CLSPH_E_INPUT;
+      goto done;
+    }
+    ++s.narrays;
+    if (wanted(only, a->name)) {
+      a->v = malloc(s.n > 0 ? s.n * (size_t)a->ncomp * sizeof *a->v : 1);
+      CLSPH_CHECK(a->v != NULL, CLSPH_E_NOMEM, "out of memory reading %s", path);
+      if (s.n > 0)
+        IO_DAMAGED(H5Dread(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, a->v));
+    }
+    h5_close_id(&dset);
+  }
+  CLSPH_TRY(read_walls(file, &s, path));
+  CLSPH_TRY(read_render(file, &s, path));
+  *out = s;
+  memset(&s, 0, sizeof s); /* the caller owns it */
+done:
+  io_snapshot_free(&s);
+  h5_close_id(&dset);
+  h5_close_id(&grp);
+  h5_close_id(&file);
+  free(case_name);
+  free(scheme);
+  return st;
+}
+
+void io_snapshot_free(struct io_snapshot *s)
+{
+  for (int k = 0; k < s->narrays; ++k) free(s->arrays[k].v);
+  for (int w = 0; w < s->nwalls; ++w) free(s->walls[w].pts);
+  free(s->walls);
+  memset(s, 0, sizeof *s);
 }

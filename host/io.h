@@ -19,6 +19,41 @@ struct io_meta {
   int dim;                          /* 2 or 3 */
   const struct scene_param *params; /* the case parameters, as run */
   int nparams;
+  /* snapshots only (what frames need besides the particles; NULL or 0: not written) */
+  int has_domain;                 /* write the domain */
+  double domain[4];               /* the scene's box x0, y0, x1, y1, m */
+  const struct scene_wall *walls; /* the wall polylines */
+  int nwalls;
+  const struct scene_render *render; /* the case's render { } choices */
+};
+
+/** A particle dataset of a snapshot read as doubles (io_snapshot_read). */
+struct io_array {
+  char name[32];
+  int ncomp; /* 1, or the second dimension */
+  double *v; /* n x ncomp, or NULL when not read */
+};
+
+/** A wall polyline of a snapshot (the fluid on its left). */
+struct io_wall {
+  int npts;
+  double *pts; /* npts x 2, m */
+  int closed;
+};
+
+/** A snapshot read back for frames. */
+struct io_snapshot {
+  double time; /* s */
+  long step;
+  char case_name[64], scheme[64];
+  size_t n; /* particles */
+  int narrays;
+  struct io_array arrays[PSET_MAX_FIELDS]; /* every dataset of /particles, by name */
+  int has_domain;
+  double domain[4]; /* x0, y0, x1, y1, m */
+  int nwalls;       /* 0 also when the snapshot predates /walls */
+  struct io_wall *walls;
+  struct scene_render render; /* the case's render { } (render.on = 0: none recorded) */
 };
 
 /** The snapshots written so far, for the XDMF index. */
@@ -31,10 +66,19 @@ struct io_series {
 
 /** @brief Write every output field of `ps` (read back from the device) to an HDF5 file: one
  *  dataset per field in /particles, shape (n) or (n, nout), padding components dropped; the meta
- *  data as root attributes and the parameters in /parameters.
+ *  data as root attributes and the parameters in /parameters; the domain, the walls (/walls) and
+ *  the case's render choices (/render) when `m` has them.
  *  @return CLSPH_E_IO when a file operation fails (logged with the call and the path). */
 enum clsph_status io_snapshot_write(const char *path, const struct dev *dev, const struct pset *ps,
                                     const struct io_meta *m);
+/** @brief Read a snapshot back: its time, step, case and scheme names, the names and components
+ *  of every particle dataset, the data (as doubles) of those named in `only` (NULL-terminated;
+ *  NULL: all), the domain, the walls and the render choices. A file that is not a snapshot, or is
+ *  damaged, is refused with the reason (CLSPH_E_INPUT). Free it with io_snapshot_free. */
+enum clsph_status io_snapshot_read(const char *path, const char *const *only,
+                                   struct io_snapshot *out);
+/** @brief Free a snapshot read back, and zero it. */
+void io_snapshot_free(struct io_snapshot *s);
 /** @brief Add a snapshot to the series (a zeroed struct is an empty series).
  *  @param file the snapshot's name relative to the folder of the XDMF file (copied) */
 enum clsph_status io_series_add(struct io_series *s, const char *file, double time, size_t n);

@@ -24,12 +24,16 @@ int main(int argc, char **argv)
     st = run_command(&cli);
   else if (strcmp(cli.command, "info") == 0)
     st = info_command(&cli);
+  else if (strcmp(cli.command, "render") == 0)
+    st = render_command(&cli);
   else if (strcmp(cli.command, "devices") == 0)
     st = dev_list();
   else if (strcmp(cli.command, "demo") == 0)
     st = demo_run(&cli);
   else if (strcmp(cli.command, "bench") == 0 && strcmp(cli.target, "psolve") == 0)
     st = bench_psolve(&cli);
+  else if (strcmp(cli.command, "bench") == 0 && strcmp(cli.target, "render") == 0)
+    st = bench_render(&cli);
   else if (strcmp(cli.command, "bench") == 0)
     st = bench_run(&cli);
   if (st == CLSPH_E_INPUT) return 2;

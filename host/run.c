@@ -1,12 +1,19 @@
-/* run.c: the `run` and `info` commands. Everything is checked (case, geometry, device, output
- * folder) before the first step, so bad input leaves nothing half-written. */
+/* run.c: the `run`, `info` and `render` commands. Everything is checked (case, geometry, device,
+ * output folder, the field of frames) before the first step, so bad input leaves nothing
+ * half-written. */
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "case.h"
 #include "cli.h"
 #include "clsph_config.h"
+#include "frames.h"
+#include "io.h"
 #include "kern.h"
 #include "scheme.h"
 #include "sim.h"
@@ -76,6 +83,32 @@ done:
   return st;
 }
 
+/* The options of frames: the defaults, then the case's render { } choices (`r`, NULL: none), then
+ * the command line. */
+static enum clsph_status frame_options(const struct cli *cli, const struct scene_render *r,
+                                       struct frames_opts *fo)
+{
+  enum clsph_status st = CLSPH_OK;
+  frames_defaults(fo);
+  if (r != NULL) CLSPH_TRY(frames_apply_case(r, fo));
+  if (cli->field != NULL) snprintf(fo->render.field, sizeof fo->render.field, "%s", cli->field);
+  if (cli->range_set) {
+    fo->render.fixed = !cli->range_auto;
+    fo->render.lo = cli->range[0];
+    fo->render.hi = cli->range[1];
+  }
+  if (cli->colormap != NULL) CLSPH_TRY(colormap_from_name(cli->colormap, &fo->render.map));
+  if (cli->width > 0) {
+    fo->render.width = cli->width;
+    fo->render.height = cli->height;
+  }
+  if (cli->fps > 0) fo->fps = cli->fps;
+  if (cli->no_movie) fo->movie = 0;
+  fo->render.font = cli->font;
+done:
+  return st;
+}
+
 enum clsph_status run_command(const struct cli *cli)
 {
   enum clsph_status st = CLSPH_OK;
@@ -96,7 +129,9 @@ enum clsph_status run_command(const struct cli *cli)
     printf("clsph run %s: scheme %s, %zu particles (%zu fluid), %s on %s, output in %s\n",
            scene.name, sim.scheme->name, sim.ps.n, sim.geom.nfluid, CLSPH_PRECISION_NAME, dev.name,
            out);
-  struct sim_options opt = {out, cli->restart, cli->quiet};
+  struct frames_opts fo;
+  if (cli->frames) CLSPH_TRY(frame_options(cli, &scene.render, &fo));
+  struct sim_options opt = {out, cli->restart, cli->quiet, cli->frames ? &fo : NULL};
   st = sim_run(&sim, &opt, script);
   if (!cli->quiet && st == CLSPH_OK)
     printf("done: t = %g s in %ld steps; %s/summary.json\n", sim.time, sim.step, out);
@@ -109,5 +144,163 @@ done:
   case_close(script);
   scene_free(&scene);
   dev_close(&dev);
+  return st;
+}
+
+/* ---- render: frames from the snapshots of a run ---- */
+
+static int cmp_int(const void *a, const void *b)
+{
+  int x = *(const int *)a, y = *(const int *)b;
+  return (x > y) - (x < y);
+}
+
+/* The numbers NNNNNN of the files snap_NNNNNN.h5 in a folder, ascending (malloc'd). */
+static enum clsph_status list_snapshots(const char *dir, int **out, int *count)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct stat sb;
+  DIR *d = NULL;
+  int *num = NULL, n = 0, cap = 0;
+  CLSPH_CHECK(stat(dir, &sb) == 0, CLSPH_E_INPUT,
+              "render: the output folder %s does not exist (%s)", dir, strerror(errno));
+  CLSPH_CHECK(S_ISDIR(sb.st_mode), CLSPH_E_INPUT,
+              "render: %s is not a folder; name the --out folder of a run", dir);
+  d = opendir(dir);
+  CLSPH_CHECK(d != NULL, CLSPH_E_IO, "render: cannot read the folder %s: %s", dir, strerror(errno));
+  for (struct dirent *e; (e = readdir(d)) != NULL;) {
+    int k = -1, len = 0;
+    if (strlen(e->d_name) != 14 || sscanf(e->d_name, "snap_%6d.h5%n", &k, &len) != 1 || len != 14 ||
+        k < 0)
+      continue;
+    if (n == cap) {
+      cap = cap ? 2 * cap : 64;
+      int *p = realloc(num, (size_t)cap * sizeof *p);
+      CLSPH_CHECK(p != NULL, CLSPH_E_NOMEM, "out of memory");
+      num = p;
+    }
+    num[n++] = k;
+  }
+  CLSPH_CHECK(n > 0, CLSPH_E_INPUT,
+              "render: no snapshots (snap_NNNNNN.h5) in %s; it is not the output folder of a "
+              "run (clsph run CASE --out %s)",
+              dir, dir);
+  qsort(num, (size_t)n, sizeof *num, cmp_int);
+  *out = num;
+  num = NULL;
+  *count = n;
+done:
+  if (d != NULL) closedir(d);
+  free(num);
+  return st;
+}
+
+/* A frame's input from a snapshot: its arrays (those read), walls, view, time and names. */
+static enum clsph_status snapshot_input(const struct io_snapshot *s, struct render_array *arrays,
+                                        struct render_wall **walls, struct render_input *in)
+{
+  enum clsph_status st = CLSPH_OK;
+  memset(in, 0, sizeof *in);
+  in->n = s->n;
+  for (int k = 0; k < s->narrays; ++k) {
+    if (s->arrays[k].v == NULL) continue;
+    arrays[in->narrays++] =
+        (struct render_array){s->arrays[k].name, s->arrays[k].ncomp, s->arrays[k].v};
+  }
+  in->arrays = arrays;
+  free(*walls);
+  *walls = calloc(s->nwalls > 0 ? (size_t)s->nwalls : 1, sizeof **walls);
+  CLSPH_CHECK(*walls != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (int w = 0; w < s->nwalls; ++w)
+    (*walls)[w] = (struct render_wall){s->walls[w].npts, s->walls[w].pts, s->walls[w].closed};
+  in->nwalls = s->nwalls;
+  in->walls = *walls;
+  frames_view(s->has_domain ? s->domain : NULL, s->nwalls, *walls, in->view);
+  in->time = s->time;
+  in->case_name = s->case_name;
+  in->scheme = s->scheme;
+done:
+  return st;
+}
+
+enum clsph_status render_command(const struct cli *cli)
+{
+  enum clsph_status st = CLSPH_OK;
+  int *num = NULL, count = 0;
+  struct io_snapshot snap;
+  struct frames_opts fo;
+  struct frames *fr = NULL;
+  struct render_array arrays[PSET_MAX_FIELDS];
+  struct render_wall *walls = NULL;
+  struct render_input in;
+  double *val = NULL;
+  char path[1200];
+  const char *out = cli->out_dir != NULL ? cli->out_dir : cli->snap_dir;
+  memset(&snap, 0, sizeof snap);
+  CLSPH_TRY(list_snapshots(cli->snap_dir, &num, &count));
+
+  /* the first snapshot: the fields there are, and the case's render choices */
+  snprintf(path, sizeof path, "%s/snap_%06d.h5", cli->snap_dir, num[0]);
+  static const char *const nothing[] = {NULL};
+  CLSPH_TRY(io_snapshot_read(path, nothing, &snap));
+  if (!snap.has_domain)
+    log_warn("%s records no domain and no walls (written by an older clsph): the frames show the "
+             "particles only",
+             path);
+  CLSPH_TRY(frame_options(cli, snap.render.on ? &snap.render : NULL, &fo));
+  const char *names[PSET_MAX_FIELDS];
+  int ncomp[PSET_MAX_FIELDS];
+  for (int k = 0; k < snap.narrays; ++k) {
+    names[k] = snap.arrays[k].name;
+    ncomp[k] = snap.arrays[k].ncomp;
+  }
+  if (cli->out_dir != NULL)
+    CLSPH_CHECK(mkdir(out, 0755) == 0 || errno == EEXIST, CLSPH_E_IO,
+                "render: the folder %s cannot be created: %s", out, strerror(errno));
+  CLSPH_TRY(frames_open(&fo, out, snap.narrays, names, ncomp, &fr));
+  io_snapshot_free(&snap);
+  const struct field_spec *f = frames_field(fr);
+  const char *const only[] = {"pos", "vol", "kind", f->array, NULL};
+
+  /* an automatic range spans every snapshot, so that colours mean the same in every frame */
+  if (!fo.render.fixed && f->how != FIELD_KIND) {
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    enum colormap_kind map = render_map_for(f, fo.render.map);
+    for (int k = 0; k < count; ++k) {
+      snprintf(path, sizeof path, "%s/snap_%06d.h5", cli->snap_dir, num[k]);
+      CLSPH_TRY(io_snapshot_read(path, only, &snap));
+      CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
+      const struct render_array *kind = field_array(&in, "kind");
+      CLSPH_CHECK(kind != NULL, CLSPH_E_INPUT, "%s has no particle kinds", path);
+      free(val);
+      val = malloc((snap.n > 0 ? snap.n : 1) * sizeof *val);
+      CLSPH_CHECK(val != NULL, CLSPH_E_NOMEM, "out of memory");
+      CLSPH_TRY(field_values(f, &in, val));
+      double a, b;
+      if (field_percentiles(f, snap.n, val, kind->v, &a, &b) > 0) {
+        lo = fmin(lo, a);
+        hi = fmax(hi, b);
+      }
+      io_snapshot_free(&snap);
+    }
+    field_range_rules(f, map, hi >= lo, &lo, &hi);
+    frames_set_range(fr, lo, hi);
+    if (!cli->quiet)
+      printf("colour range of %s over %d snapshots: %g .. %g\n", f->name, count, lo, hi);
+  }
+  for (int k = 0; k < count; ++k) {
+    snprintf(path, sizeof path, "%s/snap_%06d.h5", cli->snap_dir, num[k]);
+    CLSPH_TRY(io_snapshot_read(path, only, &snap));
+    CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
+    CLSPH_TRY(frames_write(fr, &in, num[k]));
+    io_snapshot_free(&snap);
+  }
+  CLSPH_TRY(frames_finish(fr, cli->quiet));
+done:
+  free(val);
+  free(walls);
+  io_snapshot_free(&snap);
+  frames_close(fr);
+  free(num);
   return st;
 }

@@ -89,6 +89,17 @@ struct scene_flow_control {
   int line;        /* line of the case script */
 };
 
+/** How frames show this case (`render { field = "p", range = {0, 1e4}, colormap = "viridis" }`):
+ *  the defaults of `clsph run --frames` and `clsph render`, which the command line overrides. */
+struct scene_render {
+  int on;                    /* the case declares render { } */
+  char field[SCENE_NAME];    /* field name ("" : the default, speed) */
+  int fixed;                 /* a fixed colour range */
+  double range[2];           /* low and high end, in the field's unit */
+  char colormap[SCENE_NAME]; /* "auto", "viridis", "coolwarm", "kind" ("": auto) */
+  int line;                  /* line of the case script */
+};
+
 /** Everything a case declares. Anything it does not state is off. */
 struct scene {
   char case_path[1024];  /* the script */
@@ -129,6 +140,7 @@ struct scene {
   struct scene_profile_line *profiles;
   int nforces;
   char (*forces)[SCENE_NAME]; /* wall groups whose force is recorded */
+  struct scene_render render; /* how frames show it */
 };
 
 /** @brief Free everything a scene owns (safe on a zeroed scene). */

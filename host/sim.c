@@ -4,12 +4,15 @@
  * stable step, shorten it so that equal steps land exactly on the next output or checkpoint time
  * (k = ⌈remaining/bound⌉ steps of remaining/k: no short step before each output, which would
  * upset the flow-rate control), update the flow-rate control, step, and read the error flags.
- * Outputs in the output folder: snap_NNNNNN.h5 + snapshots.xdmf   particle fields at the output
- * cadence (ParaView) checkpoint_NNNNNN.h5              at the checkpoint cadence and at the end
- * (--restart) probes.csv, profile_<name>.csv    interpolated fields at the output cadence
- *   forces.csv                        wall-group forces at the output cadence
- *   summary.json                      what ran, its cost (with --profile, the device time per
- *                                     kernel), its status and the case's metrics */
+ * Outputs in the output folder:
+ *   snap_NNNNNN.h5 + snapshots.xdmf    particle fields at the output cadence (ParaView)
+ *   checkpoint_NNNNNN.h5               at the checkpoint cadence and at the end (--restart)
+ *   probes.csv, profile_<name>.csv     interpolated fields at the output cadence
+ *   forces.csv                         wall-group forces at the output cadence
+ *   frames/FIELD_NNNNNN.png, FIELD.mp4 with --frames: a frame with each snapshot, drawn from a
+ *                                      host copy of the device state, and the movie at the end
+ *   summary.json                       what ran, its cost (with --profile, the device time per
+ *                                      kernel), its status and the case's metrics */
 #include "sim.h"
 
 #include <cjson/cJSON.h>
@@ -25,6 +28,7 @@
 #include "../solvers/scheme.h"
 #include "case.h"
 #include "clsph_config.h"
+#include "frames.h"
 #include "kern.h"
 #include "psolve.h"
 
@@ -426,6 +430,14 @@ struct run_out {
   struct force_stat {
     double peak, peak_time, peak_f[2], last[2];
   } * force_stats;
+  /* frames (--frames): the renderer, the walls as it reads them, the region shown, and a host
+   * copy of the arrays a frame reads (pos, vol, kind and the field's) */
+  struct frames *frames;
+  struct render_wall *walls;
+  double view[4];
+  double *frame_arrays[4];
+  struct render_array frame_in[4];
+  int nframe_arrays;
 };
 
 static enum clsph_status path_in(const struct run_out *o, const char *name, char *buf, size_t size)
@@ -677,6 +689,98 @@ done:
   return st;
 }
 
+/* The fields a frame can show: the output fields, by name and components. */
+static int frame_fields(const struct sim *sim, const char **names, int *ncomp)
+{
+  int n = 0;
+  for (int k = 0; k < sim->ps.nfields; ++k) {
+    if (!sim->ps.f[k].output) continue;
+    names[n] = sim->ps.f[k].name;
+    ncomp[n++] = sim->ps.f[k].nout;
+  }
+  return n;
+}
+
+/* Frames: resolve the field against the run's output fields, open the renderer, and list the
+ * arrays a frame reads from the device. */
+static enum clsph_status open_frames(struct sim *sim, const struct sim_options *opt,
+                                     struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  const char *names[PSET_MAX_FIELDS];
+  int ncomp[PSET_MAX_FIELDS];
+  const int n = frame_fields(sim, names, ncomp);
+  CLSPH_TRY(frames_open(opt->frames, opt->out_dir, n, names, ncomp, &o->frames));
+  const char *want[4] = {"pos", "vol", "kind", frames_field(o->frames)->array};
+  for (int k = 0; k < 4; ++k) {
+    int dup = 0;
+    for (int j = 0; j < k; ++j) dup |= strcmp(want[j], want[k]) == 0;
+    if (dup) continue;
+    const int f = pset_find(&sim->ps, want[k]);
+    CLSPH_CHECK(f >= 0, CLSPH_E_INPUT, "frames: the run has no field '%s'", want[k]);
+    o->frame_in[o->nframe_arrays].name = sim->ps.f[f].name;
+    o->frame_in[o->nframe_arrays].ncomp = sim->ps.f[f].nout;
+    o->frame_arrays[o->nframe_arrays] =
+        malloc(sim->ps.cap * (size_t)sim->ps.f[f].nout * sizeof(double));
+    CLSPH_CHECK(o->frame_arrays[o->nframe_arrays] != NULL, CLSPH_E_NOMEM,
+                "out of memory for the frames");
+    o->frame_in[o->nframe_arrays].v = o->frame_arrays[o->nframe_arrays];
+    ++o->nframe_arrays;
+  }
+  if (s->nwalls > 0) {
+    o->walls = calloc((size_t)s->nwalls, sizeof *o->walls);
+    CLSPH_CHECK(o->walls != NULL, CLSPH_E_NOMEM, "out of memory");
+    for (int w = 0; w < s->nwalls; ++w)
+      o->walls[w] = (struct render_wall){s->walls[w].npts, s->walls[w].pts, s->walls[w].closed};
+  }
+  const double domain[4] = {s->lo[0], s->lo[1], s->hi[0], s->hi[1]};
+  frames_view(domain, s->nwalls, o->walls, o->view);
+done:
+  return st;
+}
+
+/* A frame of the device state now: the arrays it reads, copied to the host as doubles. */
+static enum clsph_status write_frame(struct sim *sim, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  unsigned char *h = NULL;
+  const size_t n = sim->ps.n;
+  for (int a = 0; a < o->nframe_arrays; ++a) {
+    const struct pfield *f = &sim->ps.f[pset_find(&sim->ps, o->frame_in[a].name)];
+    h = malloc(n > 0 ? n * f->elem : 1);
+    CLSPH_CHECK(h != NULL, CLSPH_E_NOMEM, "out of memory for a frame");
+    if (n > 0) CLSPH_TRY(kern_read(sim->dev, f->d, n * f->elem, h));
+    double *v = o->frame_arrays[a];
+    const size_t nc = (size_t)f->ncomp, nout = (size_t)f->nout;
+    for (size_t i = 0; i < n; ++i) {
+      for (size_t c = 0; c < nout; ++c) {
+        const size_t k = i * nc + c;
+        v[i * nout + c] = f->type == PF_REAL   ? (double)((const real *)(const void *)h)[k]
+                          : f->type == PF_UINT ? (double)((const cl_uint *)(const void *)h)[k]
+                                               : (double)((const cl_int *)(const void *)h)[k];
+      }
+    }
+    free(h);
+    h = NULL;
+  }
+  struct render_input in;
+  memset(&in, 0, sizeof in);
+  in.n = n;
+  in.narrays = o->nframe_arrays;
+  in.arrays = o->frame_in;
+  in.nwalls = sim->scene->nwalls;
+  in.walls = o->walls;
+  memcpy(in.view, o->view, sizeof in.view);
+  in.time = sim->time;
+  in.case_name = sim->scene->name;
+  in.scheme = sim->scheme->name;
+  CLSPH_TRY(frames_write(o->frames, &in, o->nsnap));
+done:
+  free(h);
+  return st;
+}
+
 static void meta_of(const struct sim *sim, struct io_meta *m)
 {
   memset(m, 0, sizeof *m);
@@ -691,6 +795,14 @@ static void meta_of(const struct sim *sim, struct io_meta *m)
   m->dim = 2;
   m->params = sim->scene->params;
   m->nparams = sim->scene->nparams;
+  m->has_domain = 1;
+  m->domain[0] = sim->scene->lo[0];
+  m->domain[1] = sim->scene->lo[1];
+  m->domain[2] = sim->scene->hi[0];
+  m->domain[3] = sim->scene->hi[1];
+  m->walls = sim->scene->walls;
+  m->nwalls = sim->scene->nwalls;
+  m->render = &sim->scene->render;
 }
 
 static enum clsph_status write_snapshot(struct sim *sim, struct run_out *o)
@@ -705,6 +817,7 @@ static enum clsph_status write_snapshot(struct sim *sim, struct run_out *o)
   CLSPH_TRY(io_series_add(&o->series, name, sim->time, sim->ps.n));
   CLSPH_TRY(path_in(o, "snapshots.xdmf", path, sizeof path));
   CLSPH_TRY(io_xdmf_write(path, &o->series, &sim->ps, 2));
+  if (o->frames != NULL) CLSPH_TRY(write_frame(sim, o));
   /* with run { sample_every }, the time series keep their own cadence (see sim_run) */
   CLSPH_TRY(write_series(sim, o,
                          sim->scene->sample_every > 0.0 && sim->time > 0.0
@@ -742,6 +855,9 @@ static void close_out(const struct scene *s, struct run_out *o)
   free(o->profiles);
   free(o->force_stats);
   io_series_free(&o->series);
+  frames_close(o->frames);
+  free(o->walls);
+  for (int a = 0; a < o->nframe_arrays; ++a) free(o->frame_arrays[a]);
 }
 
 /* ---- progress ---- */
@@ -1072,8 +1188,16 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
     for (int w = 0; w < s->nwalls; ++w) found |= strcmp(s->walls[w].group, s->forces[g]) == 0;
     CLSPH_CHECK(found, CLSPH_E_INPUT, "%s: force: no wall group '%s'", s->case_path, s->forces[g]);
   }
+  if (opt->frames != NULL) { /* the field of frames exists, before anything is written */
+    const char *names[PSET_MAX_FIELDS];
+    int ncomp[PSET_MAX_FIELDS];
+    struct field_spec f;
+    const int n = frame_fields(sim, names, ncomp);
+    CLSPH_TRY(field_find(opt->frames->render.field, n, names, ncomp, &f));
+  }
   CLSPH_TRY(prepare_dir(opt->out_dir));
   snprintf(o.dir, sizeof o.dir, "%s", opt->out_dir);
+  if (opt->frames != NULL) CLSPH_TRY(open_frames(sim, opt, &o));
   if (opt->restart != NULL) {
     struct io_meta expect, got;
     meta_of(sim, &expect);
@@ -1171,6 +1295,10 @@ done:
     enum clsph_status ws = write_summary(sim, &o, sim->wall, script);
     if (st == CLSPH_OK) st = ws;
     if (st == CLSPH_OK && strcmp(sim->status, "ok") != 0) st = CLSPH_E_INPUT;
+  }
+  if (o.frames != NULL) { /* the movie of what there is, also of a run that stopped */
+    enum clsph_status fs = frames_finish(o.frames, opt->quiet);
+    if (st == CLSPH_OK) st = fs;
   }
   close_out(s, &o);
   return st;

@@ -13,11 +13,14 @@
 struct scheme_ops;
 struct case_script;
 
+struct frames_opts;
+
 /** Options of a run from the command line. */
 struct sim_options {
-  const char *out_dir; /* output folder (created) */
-  const char *restart; /* checkpoint to continue from, or NULL */
-  int quiet;           /* no progress line */
+  const char *out_dir;              /* output folder (created) */
+  const char *restart;              /* checkpoint to continue from, or NULL */
+  int quiet;                        /* no progress line */
+  const struct frames_opts *frames; /* a frame per snapshot and a movie (frames.h), or NULL */
 };
 
 /** Flow-rate control (eqs 67-68): the state a checkpoint carries (doubles only, in this order). */
