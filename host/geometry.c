@@ -735,7 +735,7 @@ static enum clsph_status check_enclosed(struct build *b)
   const double c = 0.5 * b->dr; /* cell size */
   unsigned char *mark = NULL;   /* 1: a wall crosses it, 2: reached */
   size_t *queue = NULL;
-  if (b->np == 0 || s->nwalls == 0) return CLSPH_OK;
+  if (b->nfluid == 0 || s->nwalls == 0) return CLSPH_OK;
   /* a non-periodic axis gets a margin of one cell on each side, where walls on the domain's edge
    * fall; reaching a margin cell is leaving the domain */
   long n[2];
@@ -774,7 +774,7 @@ static enum clsph_status check_enclosed(struct build *b)
   }
   /* the flood, from the fluid's cells */
   size_t head = 0, tail = 0;
-  for (size_t i = 0; i < b->np; ++i) {
+  for (size_t i = 0; i < b->nfluid; ++i) { /* the fluid particles come first */
     long ix = (long)floor((b->p[i].x[0] - o[0]) / c), iy = (long)floor((b->p[i].x[1] - o[1]) / c);
     if (ix < 0 || ix >= n[0] || iy < 0 || iy >= n[1]) continue;
     size_t k = (size_t)iy * (size_t)n[0] + (size_t)ix;
@@ -1143,12 +1143,13 @@ enum clsph_status geometry_build(const struct scene *s, const char *model, int l
   /* fluid, then the walls, then the inflow/outflow layers */
   CLSPH_TRY(fill_fluid(&b));
   CLSPH_TRY(check_fluid_near_walls(&b));
-  if (b.model != MODEL_NONE) CLSPH_TRY(check_enclosed(&b));
   b.nfluid = b.np;
   if (b.model == MODEL_USAW) CLSPH_TRY(build_usaw(&b));
   if (b.model == MODEL_DUMMY) CLSPH_TRY(build_dummy(&b, layers));
   const size_t nwallp = b.np - b.nfluid;
   for (int k = 0; k < s->nsections; ++k) CLSPH_TRY(build_section(&b, k));
+  /* after the walls and sections, whose own errors say more about a broken wall */
+  if (b.model != MODEL_NONE) CLSPH_TRY(check_enclosed(&b));
   CLSPH_TRY(emit(&b, out));
   log_debug("geometry: %zu fluid, %zu %s wall particles, %zu segments, %zu inflow/outflow "
             "particles",
