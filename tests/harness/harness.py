@@ -305,7 +305,7 @@ set datafile separator ','
 set terminal pngcairo noenhanced size 900,600 font 'DejaVu Sans,11'
 set grid
 set logscale xy
-set key outside right top box
+set key bottom left box opaque
 set ylabel '{esc(metric)} (error against the reference)'
 """
     plots = []
@@ -391,9 +391,6 @@ def draw_stability(study, csv_path, opts):
         xname, yname = mine[0]["x_name"], mine[0]["y_name"]
         present = [f for f in known if any(r["failure"] == f for r in mine)]
         present += sorted({r["failure"] for r in mine} - set(known))
-        keys = "\n".join(
-            f"set object {k + 100} rect from graph 0,0 to graph 0,0 fc rgb '{dict(FAILURE_COLOURS).get(f, '#000000')}'"
-            for k, f in enumerate(present))
         legend = ", ".join(
             f"NaN with boxes fs solid fc rgb '{dict(FAILURE_COLOURS).get(f, '#000000')}' "
             f"title '{'stable' if f == 'none' else esc(f)}'" for f in present)
@@ -416,7 +413,6 @@ set ytics ({', '.join(f"'{esc(v)}' {i}" for i, v in ys)})
 set key outside right top box
 set style fill solid 1.0 border rgb 'white'
 colour(s) = {colour}
-{keys}
 plot '{esc(csv_path)}' every ::1 using {sel}:{cols['y_index']}:(0.5):(0.5):(colour(strcol({cols['failure']}))) \\
        with boxxyerror fc rgb variable notitle, \\
      '' every ::1 using {sel}:{cols['y_index']}:{label} with labels font ',10' notitle, \\
