@@ -22,8 +22,9 @@ void scene_free(struct scene *s)
 /* The defaults of the health checks, from runs that hold and runs that do not (the cavity's
  * stability sweep, 16² particles, 2 s, Re 100 to 3200, cfl 0.5 to 4, tests/validation/
  * cavity_re_cfl.csv; the coarse cavity and cylinder-array runs of tests/case.cmake):
- *  - every 10 steps: a check costs about one neighbour sweep, under 1% of a step of either
- *    scheme when spread over 10 (a NaN or a particle through a wall is caught at every step).
+ *  - every 10 steps: a check costs one neighbour sweep and a sort; measured with --profile on the
+ *    cavity at 40², 0.4% of the wall time of wcsph-usaw and 0.03% of isph-usaw (a NaN or a
+ *    particle through a wall is caught at every step).
  *  - cluster_spacing 0.5, cluster_fraction 0.02: a run that holds keeps its nearest fluid
  *    neighbours at 0.5 dr or more (smallest seen: isph-usaw 0.51 dr, wcsph-usaw 0.50 dr, both at
  *    cfl 2 at Re 100, at most 0.8% of the fluid below 0.5 dr); isph-usaw without shifting packs

@@ -170,11 +170,12 @@ clsph_run_test(validate_cylinder_array ${CMAKE_SOURCE_DIR}/cases/cylinder_array.
 # The health checks of the time loop (host/sim.c): each failure class stops the run with exit
 # status 1, its reason in the message and in summary.json, and its class in "failure".
 function(clsph_failure_test name case failure regex)
-  cmake_parse_arguments(T "" "" "SETS" ${ARGN})
+  cmake_parse_arguments(T "" "MESSAGE" "SETS" ${ARGN})
   string(REPLACE ";" "|" sets "${T_SETS}")
   clsph_add_test(${name} LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
                  -DCASE=${case} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/${name} "-DSETS=${sets}"
-                 -DFAILURE=${failure} "-DREGEX=${regex}" -P ${CASE_DIR}/run_failure.cmake)
+                 -DFAILURE=${failure} "-DREGEX=${regex}" "-DMESSAGE=${T_MESSAGE}"
+                 -P ${CASE_DIR}/run_failure.cmake)
 endfunction()
 # Clustering: on a still lattice every nearest fluid neighbour is dr away; counted as clustered
 # below 1.01 dr, the whole fluid is (100% > 5%) and the run stops at its first check; below
@@ -198,3 +199,7 @@ clsph_failure_test(health_wall_crossing ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lu
 # A particle leaving the domain is classified too (the message: run_blowup_escape).
 clsph_failure_test(health_escaped ${CMAKE_SOURCE_DIR}/cases/free_fall.lua escaped
                    "a particle left the domain at step [0-9]+" SETS t_end=3 dr=0.05)
+# The pressure solver: ten solves in a row that do not converge stop the run.
+clsph_failure_test(health_solver ${CASE_DIR}/solver_starved.lua solver
+                   "the pressure solve failed at step 10,"
+                   MESSAGE "the pressure solve failed 10 times in a row")

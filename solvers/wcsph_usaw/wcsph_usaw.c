@@ -182,8 +182,7 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   cl_mem ustar = pset_mem(ps, ws->f_ustar), visc = pset_mem(ps, ws->f_visc);
   cl_uint n = (cl_uint)ps->n;
   CLSPH_TRY(usaw_walls_gamma(&ws->walls, sim->dev, ps->n, pos, pset_mem(ps, ws->f_theta),
-                             pset_mem(ps, ws->f_gam), pset_mem(ps, ws->f_ggam),
-                             sim->d_flags));
+                             pset_mem(ps, ws->f_gam), pset_mem(ps, ws->f_ggam), sim->d_flags));
   /* wall-vertex pressure, density rate, prediction, pressure force, advance */
   CLSPH_TRY(prefix(sim, ws, ws->k_vertex, 0, &i));
   ARG(ws->k_vertex, i, rho);
