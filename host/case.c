@@ -723,10 +723,33 @@ static int l_force(lua_State *L)
   return 0;
 }
 
+/* run { checks = { every = 10, cluster_spacing = 0.5, ... } }: the health-check thresholds
+ * (struct scene_checks; defaults in scene_checks_default) */
+static void run_checks(lua_State *L, int idx, struct scene *s)
+{
+  static const char *const keys[] = {"every",  "cluster_spacing", "cluster_fraction",
+                                     "energy", "wall_depth",      NULL};
+  const char *fn = "run: checks";
+  struct scene_checks *c = &s->checks;
+  if (!lua_istable(L, idx)) luaL_error(L, "%s: expects a table { every = 10, ... }", fn);
+  check_keys(L, idx, fn, keys, 0);
+  double every = get_number(L, idx, fn, "every", c->every);
+  if (!(every >= 1.0 && every <= 1e9 && every == floor(every)))
+    luaL_error(L, "%s: every must be a whole number of steps, at least 1", fn);
+  c->every = (int)every;
+  c->cluster_spacing = get_number(L, idx, fn, "cluster_spacing", c->cluster_spacing);
+  c->cluster_fraction = get_number(L, idx, fn, "cluster_fraction", c->cluster_fraction);
+  c->energy = get_number(L, idx, fn, "energy", c->energy);
+  c->wall_depth = get_number(L, idx, fn, "wall_depth", c->wall_depth);
+  if (c->cluster_spacing < 0.0 || c->cluster_fraction < 0.0 || c->energy < 0.0 ||
+      c->wall_depth < 0.0)
+    luaL_error(L, "%s: thresholds must not be negative", fn);
+}
+
 static int l_run(lua_State *L)
 {
-  static const char *const keys[] = {
-      "t_end", "output_every", "checkpoint_every", "cfl", "dt", "sample_every", NULL};
+  static const char *const keys[] = {"t_end", "output_every", "checkpoint_every", "cfl",
+                                     "dt",    "sample_every", "checks",           NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "run");
@@ -760,6 +783,9 @@ static int l_run(lua_State *L)
   if (!(s->cfl > 0.0)) luaL_error(L, "run: cfl must be positive, not %f", s->cfl);
   s->dt = get_number(L, 1, "run", "dt", 0.0);
   if (s->dt < 0.0) luaL_error(L, "run: dt must be a positive time step, not %f", s->dt);
+  lua_getfield(L, 1, "checks");
+  if (!lua_isnil(L, -1)) run_checks(L, lua_gettop(L), s);
+  lua_pop(L, 1);
   return 0;
 }
 
@@ -922,6 +948,7 @@ enum clsph_status case_load(const char *path, int nsets, char *const *sets, stru
   char *dot = strrchr(s.name, '.');
   if (dot != NULL && strcmp(dot, ".lua") == 0) *dot = '\0';
   s.dim = 2;
+  scene_checks_default(&s.checks);
   CLSPH_TRY(parse_sets(nsets, sets, &ld));
 
   L = luaL_newstate();

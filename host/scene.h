@@ -100,6 +100,21 @@ struct scene_render {
   int line;                  /* line of the case script */
 };
 
+/** Thresholds of the health checks of the time loop (run { checks = { ... } }; the defaults,
+ *  and the measurements behind them, are in host/scene.c). A run that passes one stops as a
+ *  blow-up with its reason in summary.json. */
+struct scene_checks {
+  int every;               /* steps between the clustering and energy checks (and the last) */
+  double cluster_spacing;  /* a fluid particle is clustered when its nearest fluid neighbour is
+                            * closer than cluster_spacing dr */
+  double cluster_fraction; /* the run fails when more than this fraction of the fluid is
+                            * clustered */
+  double energy;           /* the run fails when the kinetic energy of the fluid exceeds energy
+                            * times ½ M U² (M its mass, U the scene's velocity scale, sim.c) */
+  double wall_depth;       /* the run fails when a fluid particle is more than wall_depth dr
+                            * behind a wall (shallower crossings are counted) */
+};
+
 /** Everything a case declares. Anything it does not state is off. */
 struct scene {
   char case_path[1024];  /* the script */
@@ -126,6 +141,7 @@ struct scene {
   double checkpoint_every;     /* checkpoint cadence, s (0: only the last) */
   double cfl;                  /* time-step factor (1 = the scheme's bounds) */
   double dt;                   /* fixed time step, s (0: from the scheme's bounds) */
+  struct scene_checks checks;  /* health-check thresholds */
   int nparams;
   struct scene_param *params;
   int nregions;
@@ -148,5 +164,8 @@ void scene_free(struct scene *s);
 
 /** @brief Value of a parameter, or `fallback` when the case declares none of that name. */
 double scene_param(const struct scene *s, const char *name, double fallback);
+
+/** @brief The default health-check thresholds (what healthy runs were measured to stay within). */
+void scene_checks_default(struct scene_checks *c);
 
 #endif /* CLSPH_SCENE_H */

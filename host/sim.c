@@ -32,7 +32,8 @@
 #include "kern.h"
 #include "psolve.h"
 
-static const char *const common_sources[] = {OPS_SOURCES, "common/reduce.cl", "common/probe.cl"};
+static const char *const common_sources[] = {OPS_SOURCES, "common/reduce.cl", "common/probe.cl",
+                                             "common/health.cl"};
 
 static double now(void)
 {
@@ -133,6 +134,36 @@ done:
   return st;
 }
 
+/* The scene's velocity scale U of the energy check (m/s): the largest speed its drives give the
+ * fluid. The largest of: the walls' speeds (sliding, or |ω| times the farthest vertex from the
+ * centre), the inflow speeds, the flow-rate control's target, the initial fluid speeds, the speed
+ * √(2 |g + f| L) of a free fall over the domain's diagonal L, and for a constant body force f
+ * held by viscosity its viscous speed |f| L²/ν (a plane Poiseuille peak is |f| H²/(8ν), H <= L).
+ * 0 when nothing drives the flow: then the energy check is off. */
+static double velocity_scale(const struct scene *s, const struct geom *g)
+{
+  double u2 = 0.0;
+  for (int w = 0; w < s->nwalls; ++w) {
+    const struct scene_wall *wl = &s->walls[w];
+    u2 = fmax(u2, wl->velocity[0] * wl->velocity[0] + wl->velocity[1] * wl->velocity[1]);
+    for (int k = 0; k < wl->npts && wl->omega != 0.0; ++k) {
+      double r = hypot(wl->pts[2 * k] - wl->centre[0], wl->pts[2 * k + 1] - wl->centre[1]);
+      u2 = fmax(u2, wl->omega * wl->omega * r * r);
+    }
+  }
+  for (int k = 0; k < s->nsections; ++k)
+    u2 = fmax(u2, s->sections[k].velocity * s->sections[k].velocity);
+  if (s->flow.on) u2 = fmax(u2, s->flow.velocity * s->flow.velocity);
+  for (size_t i = 0; i < g->nfluid; ++i)
+    u2 = fmax(u2, g->v[2 * i] * g->v[2 * i] + g->v[2 * i + 1] * g->v[2 * i + 1]);
+  const double L = hypot(s->hi[0] - s->lo[0], s->hi[1] - s->lo[1]);
+  const double f = hypot(s->body_force[0], s->body_force[1]);
+  u2 =
+      fmax(u2, 2.0 * hypot(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]) * L);
+  if (s->nu > 0.0) u2 = fmax(u2, (f * L * L / s->nu) * (f * L * L / s->nu));
+  return sqrt(u2);
+}
+
 enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, struct sim *out)
 {
   enum clsph_status st = CLSPH_OK;
@@ -141,6 +172,8 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   sim.dev = dev;
   sim.scene = scene;
   snprintf(sim.status, sizeof sim.status, "ok");
+  snprintf(sim.failure, sizeof sim.failure, "none");
+  sim.spacing_min = HUGE_VAL;
 
   CLSPH_TRY(scheme_find(scene->scheme, &sim.scheme));
   CLSPH_TRY(check_options(scene, sim.scheme));
@@ -182,7 +215,8 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(build_program(&sim));
   CLSPH_TRY(add_fields(&sim));
   CLSPH_TRY(grid_create(dev, sim.prog, &sim.gspec, sim.ps.cap, &sim.grid));
-  const cl_uint zeros[2] = {0, 0}; /* the bits, and the count of particles behind a wall */
+  /* the bits, the count of particles behind a wall and the deepest (flags.h) */
+  const cl_uint zeros[3] = {0, 0, 0};
   CLSPH_TRY(kern_buffer(dev, sizeof zeros, zeros, &sim.d_flags, "flags"));
   sim.wall_first_step = -1;
   CLSPH_TRY(prog_kernel(sim.prog, "probe_sample", &sim.k_probe));
@@ -190,6 +224,10 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_count", &sim.k_count));
   CLSPH_TRY(prog_kernel(sim.prog, "grid_invert", &sim.k_invert));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_slice_velocity", &sim.k_slice));
+  CLSPH_TRY(prog_kernel(sim.prog, "health_sums", &sim.k_health));
+  CLSPH_TRY(kern_buffer(dev, 5 * reduce_groups(sim.ps.cap) * sizeof(real), NULL, &sim.d_health,
+                        "health partials"));
+  sim.u_ref = velocity_scale(scene, &sim.geom);
   CLSPH_TRY(kern_buffer(dev, sim.ps.cap * sizeof(cl_uint), NULL, &sim.d_inv, "inverse index"));
   CLSPH_TRY(kern_buffer(dev, 2 * (reduce_groups(sim.ps.cap) + 1) * sizeof(real), NULL,
                         &sim.d_partial, "reduction partials"));
@@ -268,39 +306,114 @@ done:
   return st;
 }
 
+/* A failed check: the reason (already in sim->status) and its class, logged once. */
+static enum clsph_status fail(struct sim *sim, const char *failure)
+{
+  snprintf(sim->failure, sizeof sim->failure, "%s", failure);
+  log_error("%s", sim->status);
+  return CLSPH_E_BLOWUP;
+}
+
 enum clsph_status sim_check_flags(struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
-  cl_uint f[2] = {0, 0};
+  cl_uint f[3] = {0, 0, 0};
+  float depth = 0.0f; /* the deepest crossing of the step, m */
   CLSPH_TRY(kern_read(sim->dev, sim->d_flags, sizeof f, f));
   cl_uint flags = f[0];
-  if (flags & 8u) { /* counted, not fatal: the case's metrics and the harness judge it */
+  if (flags & 8u) { /* counted; fatal only when deeper than checks.wall_depth dr */
+    memcpy(&depth, &f[2], sizeof depth);
     if (sim->wall_steps++ == 0) {
       sim->wall_first_step = sim->step;
       sim->wall_first_time = sim->time;
-      log_warn("%u fluid particle(s) behind a wall at step %ld, t = %.9g s", f[1], sim->step,
-               sim->time);
+      log_warn("%u fluid particle(s) behind a wall at step %ld, t = %.9g s (%.3g dr deep)", f[1],
+               sim->step, sim->time, (double)depth / sim->scene->dr);
     }
     if ((long)f[1] > sim->wall_most) sim->wall_most = (long)f[1];
-    const cl_uint zeros[2] = {flags & ~8u, 0};
+    sim->wall_depth_max = fmax(sim->wall_depth_max, (double)depth / sim->scene->dr);
+    const cl_uint zeros[3] = {flags & ~8u, 0, 0};
     CLSPH_TRY(kern_write(sim->dev, sim->d_flags, sizeof zeros, zeros));
     flags &= ~8u;
   }
-  if (flags & 1u)
+  if (flags & 1u) {
     snprintf(sim->status, sizeof sim->status,
              "blow-up: a non-finite value (NaN or Inf) at step %ld, t = %.9g s", sim->step,
              sim->time);
-  else if (flags & 4u)
+    st = fail(sim, "nan");
+  } else if (flags & 4u) {
     snprintf(sim->status, sizeof sim->status,
              "blow-up: a particle left the domain at step %ld, t = %.9g s", sim->step, sim->time);
-  else if (flags & 2u)
+    st = fail(sim, "escaped");
+  } else if (flags & 2u) {
     snprintf(sim->status, sizeof sim->status,
              "blow-up: a particle has more neighbours than its table holds at step %ld", sim->step);
-  if (flags != 0) {
-    log_error("%s", sim->status);
-    st = CLSPH_E_BLOWUP;
+    st = fail(sim, "neighbours");
+  } else if (sim->scene->checks.every > 0 &&
+             (double)depth > sim->scene->checks.wall_depth * sim->scene->dr) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a fluid particle crossed a wall (%.3g dr behind it, %u behind walls) at "
+             "step %ld, t = %.9g s",
+             (double)depth / sim->scene->dr, f[1], sim->step, sim->time);
+    st = fail(sim, "wall_crossing");
   }
 done:
+  return st;
+}
+
+enum clsph_status sim_check_health(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene_checks *c = &sim->scene->checks;
+  const double dr = sim->scene->dr;
+  real *part = NULL;
+  const size_t groups = reduce_groups(sim->ps.n);
+  part = malloc(5 * groups * sizeof *part);
+  CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
+  /* the spacing needs a current cell table (sorting is idempotent: the next step sees the same) */
+  CLSPH_TRY(sim_sort(sim));
+  cl_uint n = (cl_uint)sim->ps.n;
+  const real close = (real)(c->cluster_spacing * dr);
+  cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
+  cl_mem vol = pset_mem(&sim->ps, sim->f_vol), kind = pset_mem(&sim->ps, sim->f_kind);
+  CLSPH_TRY(KERN_SET(sim->k_health, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
+                     KARG(pos), KARG(vel), KARG(vol), KARG(kind), KARG(close),
+                     KARG(sim->d_health)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_health, groups * 64, 64, NULL));
+  CLSPH_TRY(kern_read(sim->dev, sim->d_health, 5 * groups * sizeof *part, part));
+  double e = 0.0, v = 0.0, clustered = 0.0, count = 0.0, dmin = HUGE_VAL;
+  for (size_t g = 0; g < groups; ++g) {
+    e += (double)part[5 * g];
+    v += (double)part[5 * g + 1];
+    clustered += (double)part[5 * g + 2];
+    count += (double)part[5 * g + 3];
+    dmin = fmin(dmin, (double)part[5 * g + 4]);
+  }
+  if (!(count > 0.0)) goto done; /* no fluid */
+  ++sim->health_checks;
+  const double ratio = sim->u_ref > 0.0 ? e / (v * sim->u_ref * sim->u_ref) : 0.0;
+  const double frac = clustered / count;
+  sim->energy_ratio_max = fmax(sim->energy_ratio_max, ratio);
+  sim->cluster_max = fmax(sim->cluster_max, frac);
+  sim->spacing_min = fmin(sim->spacing_min, dmin / dr);
+  if (!isfinite(e)) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a non-finite velocity at step %ld, t = %.9g s", sim->step, sim->time);
+    st = fail(sim, "nan");
+  } else if (frac > c->cluster_fraction) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: particles cluster: %.3g%% of the fluid has a neighbour closer than %g dr "
+             "(closest %.3g dr) at step %ld, t = %.9g s",
+             100.0 * frac, c->cluster_spacing, dmin / dr, sim->step, sim->time);
+    st = fail(sim, "clustering");
+  } else if (c->energy > 0.0 && ratio > c->energy) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: the kinetic energy grew to %.3g times ½ M U² (U = %.3g m/s, the scene's "
+             "velocity scale) at step %ld, t = %.9g s",
+             ratio, sim->u_ref, sim->step, sim->time);
+    st = fail(sim, "energy");
+  }
+done:
+  free(part);
   return st;
 }
 
@@ -1062,6 +1175,7 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
   cJSON_AddNumberToObject(root, "particle_steps_per_second",
                           wall > 0.0 ? (double)sim->ps.n * (double)sim->step / wall : 0.0);
   cJSON_AddStringToObject(root, "status", sim->status);
+  cJSON_AddStringToObject(root, "failure", sim->failure);
   cJSON_AddNumberToObject(root, "snapshots", o->nsnap);
   cJSON *params = cJSON_AddObjectToObject(root, "parameters");
   for (int i = 0; i < sim->scene->nparams; ++i)
@@ -1093,6 +1207,16 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
   cJSON_AddNumberToObject(wc, "most_at_one_step", (double)sim->wall_most);
   cJSON_AddNumberToObject(wc, "first_step", (double)sim->wall_first_step);
   if (sim->wall_first_step >= 0) cJSON_AddNumberToObject(wc, "first_time", sim->wall_first_time);
+  cJSON_AddNumberToObject(wc, "deepest_dr", sim->wall_depth_max);
+  if (sim->health_checks > 0) { /* the health checks' worst values over the run */
+    cJSON *h = cJSON_AddObjectToObject(root, "health");
+    CLSPH_CHECK(h != NULL, CLSPH_E_NOMEM, "out of memory");
+    cJSON_AddNumberToObject(h, "checks", (double)sim->health_checks);
+    cJSON_AddNumberToObject(h, "velocity_scale", sim->u_ref);
+    cJSON_AddNumberToObject(h, "kinetic_energy_ratio_max", sim->energy_ratio_max);
+    cJSON_AddNumberToObject(h, "nearest_spacing_min_dr", sim->spacing_min);
+    cJSON_AddNumberToObject(h, "clustered_fraction_max", sim->cluster_max);
+  }
   if (sim->dev->profile != NULL) CLSPH_TRY(summary_profile(root, sim->dev->profile, wall));
   cJSON *metrics = cJSON_AddObjectToObject(root, "metrics");
   CLSPH_CHECK(params != NULL && metrics != NULL, CLSPH_E_NOMEM, "out of memory");
@@ -1102,8 +1226,12 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
         &ctx,           sim->time,    sim->step,          (double)sim->ps.n, sim->wall_steps,
         sim->wall_most, metric_stats, metric_sample_many, metric_sample,     metric_force};
     enum clsph_status ms = case_metrics(script, &api, metrics);
-    if (ms != CLSPH_OK) snprintf(sim->status, sizeof sim->status, "metrics failed");
+    if (ms != CLSPH_OK) {
+      snprintf(sim->status, sizeof sim->status, "metrics failed");
+      snprintf(sim->failure, sizeof sim->failure, "metrics");
+    }
     cJSON_ReplaceItemInObject(root, "status", cJSON_CreateString(sim->status));
+    cJSON_ReplaceItemInObject(root, "failure", cJSON_CreateString(sim->failure));
   }
   text = cJSON_Print(root);
   CLSPH_CHECK(text != NULL, CLSPH_E_NOMEM, "out of memory");
@@ -1143,6 +1271,7 @@ static enum clsph_status flow_control(struct sim *sim, double dt, FILE *log)
              "flow-rate control: no fluid particle in the slice [%g, %g) at step %ld, t = %.9g s",
              c->slice[0], c->slice[1], sim->step, sim->time);
     log_error("%s:%d: %s", sim->scene->case_path, c->line, sim->status);
+    snprintf(sim->failure, sizeof sim->failure, "flow_control");
     st = sim->step == 0 ? CLSPH_E_INPUT : CLSPH_E_BLOWUP;
     goto done;
   }
@@ -1239,6 +1368,7 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
                  s->dt, dt, sim->scheme->name, s->cfl, sim->step, sim->time);
         log_error("%s: %s; use a smaller run { dt } or a larger cfl knowingly", s->case_path,
                   sim->status);
+        snprintf(sim->failure, sizeof sim->failure, "dt_bound");
         st = sim->step == 0 ? CLSPH_E_INPUT : CLSPH_E_BLOWUP;
         goto done;
       }
@@ -1248,8 +1378,7 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
       snprintf(sim->status, sizeof sim->status,
                "blow-up: the time step collapsed to %g s at step %ld, t = %.9g s", dt, sim->step,
                sim->time);
-      log_error("%s", sim->status);
-      st = CLSPH_E_BLOWUP;
+      st = fail(sim, "dt_collapse");
       goto done;
     }
     /* land exactly on the next output, checkpoint or end, in equal steps */
@@ -1270,6 +1399,8 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
     }
     CLSPH_TRY(sim_check_flags(sim));
     int at_end = sim->time >= t_end;
+    if (s->checks.every > 0 && (sim->step % s->checks.every == 0 || at_end))
+      CLSPH_TRY(sim_check_health(sim));
     /* time series at their own cadence: the first step at or past each multiple of sample_every */
     if (s->sample_every > 0.0 && floor(sim->time / s->sample_every * (1.0 + 1e-12)) >
                                      floor((sim->time - dt) / s->sample_every * (1.0 + 1e-12)))
@@ -1289,8 +1420,17 @@ done:
   pst = kern_profile_stop(sim->dev->profile);
   if (st == CLSPH_OK) st = pst;
   sim->wall = now() - start;
+  if (st == CLSPH_E_BLOWUP && strcmp(sim->status, "ok") == 0) {
+    /* the only blow-up the time loop does not word itself: the pressure solver's (psolve.c) */
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: the pressure solve failed at step %ld, t = %.9g s", sim->step + 1,
+             sim->time);
+    snprintf(sim->failure, sizeof sim->failure, "solver");
+  }
   if (st != CLSPH_OK && strcmp(sim->status, "ok") == 0)
     snprintf(sim->status, sizeof sim->status, "failed: %s", clsph_status_str(st));
+  if (st != CLSPH_OK && strcmp(sim->failure, "none") == 0)
+    snprintf(sim->failure, sizeof sim->failure, "error");
   if (o.dir[0] != '\0') {
     enum clsph_status ws = write_summary(sim, &o, sim->wall, script);
     if (st == CLSPH_OK) st = ws;
@@ -1334,7 +1474,10 @@ void sim_destroy(struct sim *sim)
   if (sim->k_count != NULL) clReleaseKernel(sim->k_count);
   if (sim->k_invert != NULL) clReleaseKernel(sim->k_invert);
   if (sim->k_slice != NULL) clReleaseKernel(sim->k_slice);
+  if (sim->k_health != NULL) clReleaseKernel(sim->k_health);
   sim->k_probe = sim->k_max_speed = sim->k_count = sim->k_invert = sim->k_slice = NULL;
+  sim->k_health = NULL;
+  kern_release(&sim->d_health);
   kern_release(&sim->d_inv);
   kern_release(&sim->d_partial);
   kern_release(&sim->d_flags);

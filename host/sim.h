@@ -64,8 +64,21 @@ struct sim {
    * the first such step (−1: none) and its time; over this run (since its start or restart) */
   long wall_steps, wall_most, wall_first_step;
   double wall_first_time;
+  double wall_depth_max; /* the deepest of those crossings, in units of dr */
+  cl_kernel k_health;    /* reduction: kinetic energy, volume and spacing of the fluid */
+  cl_mem d_health;       /* its per-work-group results */
+  double u_ref;          /* the scene's velocity scale of the energy check, m/s (0: no check) */
+  /* health checks of this run (sim_check_health): how many, the largest kinetic energy over
+   * ½ M U², the smallest nearest-fluid-neighbour distance over dr, the largest clustered
+   * fraction of the fluid */
+  long health_checks;
+  double energy_ratio_max, spacing_min, cluster_max;
   double wall;      /* wall-clock time of the last sim_run (summary.json wall_seconds), s */
   char status[256]; /* "ok" or why the run stopped */
+  char failure[32]; /* "none", or the class of the failure (summary.json "failure"): "nan",
+                     * "escaped", "neighbours", "wall_crossing", "solver", "clustering",
+                     * "energy", "dt_collapse", "dt_bound", "flow_control", "metrics",
+                     * "error" */
 };
 
 /** @brief Set up a simulation of a scene: geometry, program, fields, scheme. Nothing is written. */
@@ -79,9 +92,17 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
                           struct case_script *script);
 /** @brief Sort the particles by cell and reorder every field (before each step). */
 enum clsph_status sim_sort(struct sim *sim);
-/** @brief Read the error flags; a raised flag ends the run with a reason in sim->status, except
- *  CLSPH_FLAG_WALL (a fluid particle behind a wall), which is counted and cleared. */
+/** @brief Read the error flags; a raised flag ends the run with a reason in sim->status and its
+ *  class in sim->failure, except CLSPH_FLAG_WALL (a fluid particle behind a wall), which is
+ *  counted and cleared, and ends the run only when the particle is more than the scene's
+ *  checks.wall_depth dr behind the wall. */
 enum clsph_status sim_check_flags(struct sim *sim);
+/** @brief The health checks (scene checks): particle clustering, the fraction of the fluid
+ *  whose nearest fluid neighbour is closer than checks.cluster_spacing dr, above
+ *  checks.cluster_fraction; and energy growth, the kinetic energy of the fluid above
+ *  checks.energy times ½ M U² (M its mass, U = sim->u_ref). Reduced on the device; a failed
+ *  check ends the run (CLSPH_E_BLOWUP) with the reason in sim->status and sim->failure. */
+enum clsph_status sim_check_health(struct sim *sim);
 /** @brief Largest speed over the particles of one kind (−1: all), reduced on the device. */
 enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax);
 /** @brief Largest norm of a vector field (2 reals per particle) over one kind (−1: all). */

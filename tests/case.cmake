@@ -166,3 +166,40 @@ clsph_run_test(validate_cavity_re100 ${CMAKE_SOURCE_DIR}/cases/cavity.lua LABELS
 # measured C_D 95.1 (error 0.110).
 clsph_run_test(validate_cylinder_array ${CMAKE_SOURCE_DIR}/cases/cylinder_array.lua LABELS slow
                SETS n=40 t_end=24 BOUNDS "cd_error<0.13")
+
+# The health checks of the time loop (host/sim.c): each failure class stops the run with exit
+# status 1, its reason in the message and in summary.json, and its class in "failure".
+function(clsph_failure_test name case failure regex)
+  cmake_parse_arguments(T "" "MESSAGE" "SETS" ${ARGN})
+  string(REPLACE ";" "|" sets "${T_SETS}")
+  clsph_add_test(${name} LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
+                 -DCASE=${case} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/${name} "-DSETS=${sets}"
+                 -DFAILURE=${failure} "-DREGEX=${regex}" "-DMESSAGE=${T_MESSAGE}"
+                 -P ${CASE_DIR}/run_failure.cmake)
+endfunction()
+# Clustering: on a still lattice every nearest fluid neighbour is dr away; counted as clustered
+# below 1.01 dr, the whole fluid is (100% > 5%) and the run stops at its first check; below
+# 0.99 dr none is, and the run ends "ok" (the distance and the threshold are compared exactly).
+clsph_failure_test(health_clustering ${CASE_DIR}/still_lattice.lua clustering
+                   "particles cluster: 100% of the fluid has a neighbour closer than 1.01 dr"
+                   SETS spacing=1.01)
+clsph_run_test(health_clustering_below ${CASE_DIR}/still_lattice.lua SETS spacing=0.99)
+# Energy growth: ballistic particles under a body force that nothing resists (periodic in x, no
+# viscosity) gain f t of speed; the scene's velocity scale is the free-fall speed √(2 f L) over
+# the domain's diagonal L, so the mean square speed passes 4 U² at f t = 4.2 m/s, t = 2.1 s
+# (run_periodic_drift stops at 1 s, at 0.9 U²).
+clsph_failure_test(health_energy ${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua energy
+                   "kinetic energy grew to [0-9.]+ times" SETS dr=0.05 t_end=3)
+# Wall crossing: wcsph-usaw does not hold the hydrostatic tank (README): the quadrature error of
+# ∇γ on the lattice, times the pressure, pulls the particles next to the side walls through them;
+# a particle more than dr/2 behind a wall stops the run. (Shallower crossings are counted: the
+# wcsph-usaw cavity, run_cavity_coarse_wcsph, has some and ends "ok".)
+clsph_failure_test(health_wall_crossing ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua wall_crossing
+                   "a fluid particle crossed a wall \\([0-9.]+ dr behind it" SETS wcsph=1 dr=0.05 t_end=2)
+# A particle leaving the domain is classified too (the message: run_blowup_escape).
+clsph_failure_test(health_escaped ${CMAKE_SOURCE_DIR}/cases/free_fall.lua escaped
+                   "a particle left the domain at step [0-9]+" SETS t_end=3 dr=0.05)
+# The pressure solver: ten solves in a row that do not converge stop the run.
+clsph_failure_test(health_solver ${CASE_DIR}/solver_starved.lua solver
+                   "the pressure solve failed at step 10,"
+                   MESSAGE "the pressure solve failed 10 times in a row")

@@ -92,7 +92,8 @@ realv usaw_grad_gamma_seg(realv x, realv a, realv b, realv n)
  * when it is behind the nearest segment, (r_a − c)·n_s < 0 with c its closest point on s. Where
  * several segments share the nearest point (a corner), the particle is in the fluid when it is in
  * front of any of them; a closest point at the free end of an open wall decides nothing. A
- * crossing raises CLSPH_FLAG_WALL and counts in flags[1]. */
+ * crossing raises CLSPH_FLAG_WALL, counts in flags[1], and keeps the deepest distance behind the
+ * wall (m) in flags[2] as the bits of a float (non-negative floats order as their bits do). */
 __kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const uint *seg_start,
                          __global const realv *seg_a, __global const realv *seg_b,
                          __global const realv *seg_n, __global const realv *pos,
@@ -134,5 +135,6 @@ __kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const u
   if (!vertex && decided && side < R(0.0)) {
     flags_raise(flags, CLSPH_FLAG_WALL);
     atomic_inc(flags + 1);
+    atomic_max(flags + 2, as_uint((float)(-side)));
   }
 }

@@ -54,8 +54,9 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   }
   CLSPH_TRY(pset_add(&w.ps, dev, "v1", sizeof(cl_uint), ids, &w.f_v1));
   CLSPH_TRY(pset_add(&w.ps, dev, "v2", sizeof(cl_uint), ids + n, &w.f_v2));
-  /* the bits, and a counter (as the sim's flags: usaw_walls_gamma may be given this buffer) */
-  const cl_uint zeros[2] = {0, 0};
+  /* the bits, a counter and the deepest crossing (as the sim's flags: usaw_walls_gamma may be
+   * given this buffer) */
+  const cl_uint zeros[3] = {0, 0, 0};
   CLSPH_TRY(kern_buffer(dev, sizeof zeros, zeros, &w.d_flags, "segment flags"));
   CLSPH_TRY(prog_kernel(prog, "usaw_gamma", &w.k_gamma));
   if (n > 0) {

@@ -41,3 +41,7 @@ run dam_break_wedge_wcsph_usaw dam_break_wedge wcsph=1
 python3 tests/validation/wedge_chart.py tests/validation/wedge_force \
   "isph-usaw=$out/dam_break_wedge_isph_usaw" "wcsph-usaw=$out/dam_break_wedge_wcsph_usaw" || true
 python3 tests/validation/results.py "$out" tests/validation/RESULTS.md
+# accuracy against cost and stability maps (tests/harness/studies.txt): CSVs and charts
+for study in "accuracy cavity_re100" "accuracy cylinder_array" "stability cavity_re_cfl"; do
+  python3 tests/harness/harness.py $study --build "$build" --results tests/validation || true
+done
