@@ -38,6 +38,10 @@ python3 tests/validation/cavity_pressure.py "$out/cavity_re400_n60_isph_usaw" \
 # dam break over a wedge at the paper's δr = 0.01 m, both schemes, force chart
 run dam_break_wedge_isph_usaw dam_break_wedge
 run dam_break_wedge_wcsph_usaw dam_break_wedge wcsph=1
+for s in isph_usaw wcsph_usaw; do # the last frame of each wedge run, pressure
+  "$build/clsph" render "$out/dam_break_wedge_$s" --field p --no-movie --out "$out/dam_break_wedge_$s" &&
+    cp "$(ls "$out/dam_break_wedge_$s"/frames/p_*.png | tail -1)" "tests/validation/wedge_${s}_last.png" || true
+done
 python3 tests/validation/wedge_chart.py tests/validation/wedge_force \
   "isph-usaw=$out/dam_break_wedge_isph_usaw" "wcsph-usaw=$out/dam_break_wedge_wcsph_usaw" || true
 python3 tests/validation/results.py "$out" tests/validation/RESULTS.md
