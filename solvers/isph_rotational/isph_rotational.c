@@ -273,8 +273,8 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   cl_mem vel = pset_mem(ps, sim->f_vel), kind = pset_mem(ps, sim->f_kind);
   /* BDF2 coefficients for steps dt (now) and dt_prev (BDF1 on the first step) */
   const double w = r->dt_prev > 0.0 ? dt / r->dt_prev : 0.0;
-  const real a0 = (real)((1.0 + 2.0 * w) / (1.0 + w)), a1 = (real)(1.0 + w),
-             a2 = (real)(w * w / (1.0 + w));
+  const double b0 = (1.0 + 2.0 * w) / (1.0 + w);
+  const real a0 = (real)b0, a1 = (real)(1.0 + w), a2 = (real)(w * w / (1.0 + w));
   const real rdt = (real)dt, rho = (real)sc->rho0, nu = (real)sc->nu;
   const real2 accel =
       dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
@@ -299,7 +299,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   }
   CLSPH_TRY(kern_launch(sim->dev, r->k_predict, n, NULL));
   /* 4. source and pressure equation (eqs 13 or 7) */
-  const real scale = (real)(a0 * sc->rho0 / dt);
+  const real scale = (real)(b0 * sc->rho0 / dt);
   CLSPH_TRY(op_prefix(sim, r, r->k_source, &np));
   CLSPH_TRY(kern_set_at(r->k_source, 7, KARG(ustar)));
   CLSPH_TRY(kern_set_at(r->k_source, 8, KARG(scale)));
@@ -316,7 +316,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   if (!r->rotational) CLSPH_TRY(kern_copy(sim->dev, phi, p, ps->n * sizeof(real)));
   CLSPH_TRY(propagate(sim, r, r->f_phi));
   /* 5. correction (eqs 10-11 or 6) */
-  const real coef = (real)(dt / (a0 * sc->rho0)), mu = (real)(sc->rho0 * sc->nu);
+  const real coef = (real)(dt / (b0 * sc->rho0)), mu = (real)(sc->rho0 * sc->nu);
   CLSPH_TRY(op_prefix(sim, r, r->k_project, &np));
   {
     cl_uint i = 7;
