@@ -1193,6 +1193,66 @@ static int l_profile_error(lua_State *L)
   return 2;
 }
 
+/* t = sim.profile(name, time): the profile line `name` as recorded at the output nearest to
+ * `time` (profile_<name>.csv of the output folder): t.time (the output's time) and one array per
+ * column, t.s, t.x, t.y, t.vel_x, ..., indexed from 1 along the line. */
+static int l_profile_at(lua_State *L)
+{
+  const struct case_sim_api *api = api_of(L);
+  const char *name = luaL_checkstring(L, 1);
+  const double want = luaL_checknumber(L, 2);
+  char path[2048], line[8192], head[8192];
+  if (api->dir == NULL) return luaL_error(L, "sim.profile: the run has no output folder");
+  snprintf(path, sizeof path, "%s/profile_%s.csv", api->dir, name);
+  FILE *f = fopen(path, "r");
+  if (f == NULL) return luaL_error(L, "sim.profile: cannot read %s (no profile '%s'?)", path, name);
+  /* pass 1: the recorded time nearest to `want` */
+  double best = NAN;
+  if (fgets(head, sizeof head, f) == NULL) {
+    fclose(f);
+    return luaL_error(L, "sim.profile: %s is empty", path);
+  }
+  while (fgets(line, sizeof line, f) != NULL) {
+    double t = strtod(line, NULL);
+    if (isnan(best) || fabs(t - want) < fabs(best - want)) best = t;
+  }
+  if (isnan(best)) {
+    fclose(f);
+    return luaL_error(L, "sim.profile: %s has no rows", path);
+  }
+  /* pass 2: the rows at that time, one Lua array per column */
+  char *cols[64];
+  int nc = 0;
+  char *save = NULL;
+  for (char *t = strtok_r(head, ",\r\n", &save); t != NULL && nc < 64;
+       t = strtok_r(NULL, ",\r\n", &save))
+    cols[nc++] = t;
+  lua_createtable(L, 0, nc + 1);
+  lua_pushnumber(L, best);
+  lua_setfield(L, -2, "time");
+  for (int c = 1; c < nc; ++c) {
+    lua_newtable(L);
+    lua_setfield(L, -2, cols[c]);
+  }
+  rewind(f);
+  if (fgets(line, sizeof line, f) == NULL) line[0] = '\0'; /* the header again */
+  int row = 0;
+  while (fgets(line, sizeof line, f) != NULL) {
+    char *end = NULL;
+    if (strtod(line, &end) != best) continue;
+    ++row;
+    for (int c = 1; c < nc && *end == ','; ++c) {
+      double v = strtod(end + 1, &end);
+      lua_getfield(L, -1, cols[c]);
+      lua_pushnumber(L, v);
+      lua_rawseti(L, -2, row);
+      lua_pop(L, 1);
+    }
+  }
+  fclose(f);
+  return 1;
+}
+
 enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api *api,
                                struct cJSON *out)
 {
@@ -1218,7 +1278,8 @@ enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api
                                  {"mean", l_mean},
                                  {"sample", l_sample},
                                  {"force", l_force_metric},
-                                 {"profile_error", l_profile_error}};
+                                 {"profile_error", l_profile_error},
+                                 {"profile", l_profile_at}};
   for (size_t i = 0; i < sizeof fns / sizeof *fns; ++i) {
     lua_pushlightuserdata(L, (void *)(size_t)api);
     lua_pushcclosure(L, fns[i].func, 1);

@@ -29,6 +29,7 @@ struct case_sim_api {
    *  out = total x, y, pressure x, y, viscous x, y (N/m); samples = outputs averaged. */
   enum clsph_status (*force)(void *ctx, const char *group, double since, double out[6],
                              int *samples);
+  const char *dir; /* the output folder (profile_<name>.csv for sim.profile); NULL: none */
 };
 
 /** @brief Run a case script and fill the scene.

@@ -1,0 +1,90 @@
+/* ppe.cl (isph-rotational): the pressure (φ or p) equation as a matrix-free operator for
+ * solvers/pressure (Hosseini & Feng 2011 eqs 13 and 29):
+ *   fluid row i:  Σ_j 2 V_j (x_i − x_ĵ) r_ij·L_i∇_iW_ij / (r_ij² + η²)
+ *                 ĵ = j for a fluid neighbour, ĵ = mirror[j] for a dummy: the dummy takes the
+ *                 value of the fluid particle at its image (Neumann by propagation, sec 3.3.1)
+ *   dummy row d:  x_d (identity; its right-hand side is 0 and its value is set afterwards by
+ *                 rot_propagate)
+ * The rows have the layout of csr_count (diagonal first, then the neighbours in loop order); a
+ * dummy neighbour's column is its mirror, so a row may name a column twice (the product sums). */
+real rot_ppe_pair(realm L_i, real vol_j, realv r, real r2)
+{
+  return R(2.0) * vol_j * dot(r, op_grad_w(L_i, smoothing_f(sqrt(r2)), r)) / (r2 + SMOOTH_ETA2);
+}
+
+__kernel void rot_ppe_apply(OP_ARGS, __global const uint *kind, __global const uint *mirror,
+                            __global const real *x, __global real *y)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  if (kind[i] != ROT_FLUID) {
+    y[i] = x[i];
+    return;
+  }
+  const realv xi = pos[i];
+  const real x_i = x[i];
+  const realm L_i = OP_LOAD_L(i);
+  real s = R(0.0);
+  struct neigh_iter it;
+  neigh_begin(&it, &g, xi);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = xi - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    s += rot_ppe_pair(L_i, vol[j], r, r2) * (x_i - x[mirror[j]]);
+  }
+  y[i] = s;
+}
+
+__kernel void rot_ppe_coeffs(OP_ARGS, __global const uint *kind, __global const uint *mirror,
+                             __global const uint *row, __global uint *col, __global real *val)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  const int fixed = kind[i] != ROT_FLUID;
+  const realv xi = pos[i];
+  const realm L_i = OP_LOAD_L(i);
+  uint k = row[i] + 1;
+  real diag = R(0.0);
+  struct neigh_iter it;
+  neigh_begin(&it, &g, xi);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = xi - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    const uint c = mirror[j];
+    real a = fixed || c == i ? R(0.0) : rot_ppe_pair(L_i, vol[j], r, r2);
+    diag += a;
+    col[k] = c;
+    val[k] = -a;
+    ++k;
+  }
+  col[row[i]] = i;
+  val[row[i]] = fixed ? R(1.0) : diag;
+}
+
+__kernel void rot_ppe_diag(OP_ARGS, __global const uint *kind, __global const uint *mirror,
+                           __global real *d)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  if (kind[i] != ROT_FLUID) {
+    d[i] = R(1.0);
+    return;
+  }
+  const realv xi = pos[i];
+  const realm L_i = OP_LOAD_L(i);
+  real s = R(0.0);
+  struct neigh_iter it;
+  neigh_begin(&it, &g, xi);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = xi - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i || mirror[j] == i) continue;
+    s += rot_ppe_pair(L_i, vol[j], r, r2);
+  }
+  d[i] = s;
+}

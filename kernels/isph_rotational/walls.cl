@@ -1,0 +1,71 @@
+/* walls.cl (isph-rotational): dummy wall particles (Hosseini & Feng 2011 sec 3.3.1).
+ *
+ * Kinds: ROT_FLUID (moves), ROT_DUMMY (fixed, inside the solid). A dummy d at distance dist_d
+ * from the wall with unit normal n_d into the fluid has its image x_d + 2 dist_d n_d in the fluid.
+ *   velocity (Morris et al. 1997 extrapolation; "the negative of the interpolated velocity of
+ *   its image", sec 3.3.1): u_d = 2 u_wall − Σ_f V_f u_f W / Σ_f V_f W at the image, fluid only;
+ *   p and φ (homogeneous Neumann, "propagated along the normal"): a_d = a_m(d), m(d) the fluid
+ *   particle nearest to the image.
+ * At a box corner the nearest wall point is the corner itself, so the image is the point
+ * reflection through the corner: the diagonal dummies take the mean of the fluid around their
+ * image, our reading of "averaging between their neighbours" (Lee et al. 2008). */
+#define ROT_FLUID 0u
+#define ROT_DUMMY 2u
+
+real rot_wrap(real x, real lo, real len)
+{
+  real t = x - lo;
+  t -= len * floor(t / len);
+  if (t >= len) t -= len; /* round-off of the line above */
+  return lo + t;
+}
+
+/* vel of the dummies (extrapolated) and mirror[d] (the fluid particle at their image; the
+ * fluid keeps mirror[i] = i) */
+__kernel void rot_dummy_velocity(const uint n, const struct grid g, __global const uint *cell_start,
+                                 __global const realv *pos, __global const real *vol,
+                                 __global const uint *kind, __global const real *dist,
+                                 __global const realv *normal, __global const realv *wall_vel,
+                                 __global realv *vel, __global uint *mirror, __global uint *flags)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  if (kind[i] != ROT_DUMMY) {
+    mirror[i] = i;
+    return;
+  }
+  const realv img = pos[i] + R(2.0) * dist[i] * normal[i];
+  realv s = (realv)(R(0.0));
+  real wsum = R(0.0), best = INFINITY;
+  uint m = i;
+  struct neigh_iter it;
+  neigh_begin(&it, &g, img);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    if (kind[j] != ROT_FLUID) continue;
+    realv r = img - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2) continue;
+    real w = vol[j] * smoothing_w(sqrt(r2));
+    wsum += w;
+    s += w * vel[j];
+    if (r2 < best) {
+      best = r2;
+      m = j;
+    }
+  }
+  const realv uw = wall_vel[i];
+  const realv u = wsum > R(0.0) ? R(2.0) * uw - s / wsum : uw;
+  if (!all(isfinite(u))) flags_raise(flags, CLSPH_FLAG_NAN);
+  vel[i] = u;
+  mirror[i] = m;
+}
+
+/* a_d = a_m(d) for the dummies (Neumann by propagation, sec 3.3.1) */
+__kernel void rot_propagate(const uint n, __global const uint *kind, __global const uint *mirror,
+                            __global real *a)
+{
+  const uint i = get_global_id(0);
+  if (i >= n || kind[i] != ROT_DUMMY) return;
+  a[i] = a[mirror[i]];
+}
