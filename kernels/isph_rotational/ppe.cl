@@ -6,12 +6,8 @@
  *   dummy row d:  x_d (identity; its right-hand side is 0 and its value is set afterwards by
  *                 rot_propagate)
  * The rows have the layout of csr_count (diagonal first, then the neighbours in loop order); a
- * dummy neighbour's column is its mirror, so a row may name a column twice (the product sums). */
-real rot_ppe_pair(realm L_i, real vol_j, realv r, real r2)
-{
-  return R(2.0) * vol_j * dot(r, op_grad_w(L_i, smoothing_f(sqrt(r2)), r)) / (r2 + SMOOTH_ETA2);
-}
-
+ * dummy neighbour's column is its mirror, so a row may name a column twice (the product sums).
+ * The pair term is common/poisson.cl's poisson_pair (the Morris Laplacian, with L_i). */
 __kernel void rot_ppe_apply(OP_ARGS, __global const uint *kind, __global const uint *mirror,
                             __global const real *x, __global real *y)
 {
@@ -32,7 +28,7 @@ __kernel void rot_ppe_apply(OP_ARGS, __global const uint *kind, __global const u
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    s += rot_ppe_pair(L_i, vol[j], r, r2) * (x_i - x[mirror[j]]);
+    s += poisson_pair(L_i, vol[j], r, r2) * (x_i - x[mirror[j]]);
   }
   y[i] = s;
 }
@@ -55,7 +51,7 @@ __kernel void rot_ppe_coeffs(OP_ARGS, __global const uint *kind, __global const 
     real r2 = dot(r, r);
     if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
     const uint c = mirror[j];
-    real a = fixed || c == i ? R(0.0) : rot_ppe_pair(L_i, vol[j], r, r2);
+    real a = fixed || c == i ? R(0.0) : poisson_pair(L_i, vol[j], r, r2);
     diag += a;
     col[k] = c;
     val[k] = -a;
@@ -84,7 +80,7 @@ __kernel void rot_ppe_diag(OP_ARGS, __global const uint *kind, __global const ui
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= SMOOTH_SUPPORT2 || j == i || mirror[j] == i) continue;
-    s += rot_ppe_pair(L_i, vol[j], r, r2);
+    s += poisson_pair(L_i, vol[j], r, r2);
   }
   d[i] = s;
 }

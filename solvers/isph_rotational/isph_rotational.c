@@ -40,10 +40,15 @@ struct rot {
       k_move, k_shift, k_apply_shift;
 };
 
-static const char *const sources[] = {"common/blas1.cl",          "common/csr.cl",
-                                      "isph_rotational/walls.cl", "isph_rotational/predict.cl",
-                                      "isph_rotational/ppe.cl",   "isph_rotational/project.cl",
-                                      "isph_rotational/shift.cl", NULL};
+static const char *const sources[] = {"common/blas1.cl",
+                                      "common/csr.cl",
+                                      "common/poisson.cl",
+                                      "isph_rotational/walls.cl",
+                                      "isph_rotational/predict.cl",
+                                      "isph_rotational/ppe.cl",
+                                      "isph_rotational/project.cl",
+                                      "isph_rotational/shift.cl",
+                                      NULL};
 static const char *const options[] = {"projection", "shifting", "xsph", PSOLVE_OPTION_NAMES, NULL};
 
 static const struct scene_option *option(const struct scene *s, const char *key)
