@@ -1,7 +1,7 @@
 /* bench_psolve.c: `clsph bench psolve`: the pressure solve on the manufactured problem of
  * pproblem.h (jittered lattice, corrected Morris Laplacian: a non-symmetric operator with
  * Dirichlet rows) for 1e3 .. 1e6 unknowns: BiCGStab with the operator stored per solve (CSR) or
- * recomputed at each application, with Jacobi or Jacobi + 2 sweeps, and UMFPACK on the host up to
+ * recomputed at each application, with Jacobi, Jacobi + 2 sweeps or the aggregation multigrid, and UMFPACK on the host up to
  * --bench-direct-max unknowns. Prints iterations, time per solve and per iteration (medians of
  * --bench-reps cold solves from x = 0), writes OUT/psolve.csv and, with gnuplot, OUT/psolve.png
  * (time per solve against unknowns, log-log). */
@@ -25,6 +25,7 @@ struct config {
 static const struct config configs[] = {
     {"bicgstab-stored-jacobi", PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_JACOBI},
     {"bicgstab-stored-sweeps", PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_JACOBI_SWEEPS},
+    {"bicgstab-multigrid", PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_MULTIGRID},
     {"bicgstab-recompute-jacobi", PSOLVE_BICGSTAB, PSOLVE_RECOMPUTE, PSOLVE_JACOBI},
     {"bicgstab-recompute-sweeps", PSOLVE_BICGSTAB, PSOLVE_RECOMPUTE, PSOLVE_JACOBI_SWEEPS},
     {"umfpack", PSOLVE_DIRECT, PSOLVE_STORED, PSOLVE_JACOBI},

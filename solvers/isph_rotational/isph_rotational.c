@@ -42,6 +42,7 @@ struct rot {
 
 static const char *const sources[] = {"common/blas1.cl",
                                       "common/csr.cl",
+                                      "common/mg.cl",
                                       "common/poisson.cl",
                                       "isph_rotational/walls.cl",
                                       "isph_rotational/predict.cl",
@@ -312,6 +313,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(kern_set_at(r->k_source, 10, KARG(rhs)));
   CLSPH_TRY(kern_launch(sim->dev, r->k_source, n, NULL));
   r->op.n = ps->n;
+  r->op.grid = &sim->grid;
   r->ps.opt.singular = PSOLVE_REINFORCE; /* Neumann everywhere: no Dirichlet row */
   struct psolve_result res;
   cl_mem x = r->rotational ? phi : p; /* the previous solution is the initial guess */

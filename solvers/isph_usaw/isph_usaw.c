@@ -39,6 +39,7 @@ struct isph {
 
 static const char *const sources[] = {"common/blas1.cl",
                                       "common/csr.cl",
+                                      "common/mg.cl",
                                       "common/poisson.cl",
                                       "usaw/gamma.cl",
                                       "usaw/common.cl",

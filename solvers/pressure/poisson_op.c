@@ -93,6 +93,7 @@ void poisson_op_bind(struct poisson_op *po, const struct grid *g, size_t n, cl_m
   po->op.diagonal = po_diagonal;
   po->op.row_counts = po_counts;
   po->op.coefficients = po_coefficients;
+  po->op.grid = g;
 }
 
 void poisson_op_destroy(struct poisson_op *po)

@@ -33,7 +33,7 @@ void psolve_defaults(struct psolve_options *o)
   memset(o, 0, sizeof *o);
   o->method = PSOLVE_BICGSTAB;
   o->apply = PSOLVE_STORED;
-  o->precond = PSOLVE_JACOBI;
+  o->precond = PSOLVE_MULTIGRID;
   o->sweeps = 2;
   o->singular = PSOLVE_REGULAR;
   o->reinforce = CLSPH_DOUBLE ? 1e-6 : 1e-4; /* float: 1e-6 is below its resolution */
@@ -56,7 +56,7 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
   enum clsph_status st = CLSPH_OK;
   static const char *const methods[] = {"bicgstab", "direct", NULL};
   static const char *const applies[] = {"stored", "recompute", NULL};
-  static const char *const preconds[] = {"jacobi", "none", "jacobi_sweeps", NULL};
+  static const char *const preconds[] = {"jacobi", "none", "jacobi_sweeps", "multigrid", NULL};
   static const char *const singulars[] = {"regular", "reinforce", "mean", NULL};
   int k;
   if (strcmp(key, "solver") == 0) {
@@ -69,7 +69,7 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
     o->apply = (enum psolve_apply)k;
   } else if (strcmp(key, "precond") == 0) {
     CLSPH_CHECK((k = pick(text, preconds)) >= 0, CLSPH_E_INPUT,
-                "solver_precond must be \"jacobi\", \"none\" or \"jacobi_sweeps\"");
+                "solver_precond must be \"jacobi\", \"none\", \"jacobi_sweeps\" or \"multigrid\"");
     o->precond = (enum psolve_precond)k;
   } else if (strcmp(key, "singular") == 0) {
     CLSPH_CHECK((k = pick(text, singulars)) >= 0, CLSPH_E_INPUT,
@@ -141,6 +141,7 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
   CLSPH_TRY(kern_buffer(dev, (ps.cap + 1) * sizeof(cl_uint), NULL, &ps.d_count, "csr counts"));
   CLSPH_TRY(kern_buffer(dev, ((ps.cap + 1) / PSOLVE_SCAN_BLOCK + 2) * sizeof(cl_uint), NULL,
                         &ps.d_block, "csr scan blocks"));
+  if (opt->precond == PSOLVE_MULTIGRID) CLSPH_TRY(mg_create(dev, prog, ps.cap, &ps.mg));
   ps.h_partial = malloc(2 * 64 * sizeof *ps.h_partial);
   CLSPH_CHECK(ps.h_partial != NULL, CLSPH_E_NOMEM, "out of memory");
   *out = ps;
@@ -289,7 +290,13 @@ done:
   return st;
 }
 
-/* z = M⁻¹ r: none, Jacobi, or Jacobi followed by sweeps toward A z = r (scratch: A z). */
+/* ε of A + ε diag(A), 0 without the reinforcement */
+static double reinforcement(const struct psolve *ps)
+{
+  return ps->opt.singular == PSOLVE_REINFORCE ? ps->opt.reinforce : 0.0;
+}
+
+/* z = M⁻¹ r: none, multigrid, Jacobi, or Jacobi followed by sweeps toward A z = r (scratch: A z). */
 static enum clsph_status precond(struct psolve *ps, const struct psolve_op *op, cl_mem r, cl_mem z,
                                  cl_mem scratch)
 {
@@ -297,6 +304,10 @@ static enum clsph_status precond(struct psolve *ps, const struct psolve_op *op, 
   cl_uint n = (cl_uint)op->n;
   if (ps->opt.precond == PSOLVE_NONE) {
     CLSPH_TRY(copy(ps, z, r, n));
+    goto done;
+  }
+  if (ps->opt.precond == PSOLVE_MULTIGRID) {
+    CLSPH_TRY(mg_apply(&ps->mg, op->n, ps->d_row, ps->d_col, ps->d_val, reinforcement(ps), r, z));
     goto done;
   }
   CLSPH_TRY(KERN_SET(ps->k_scale, KARG(n), KARG(z), KARG(ps->d_dinv), KARG(r)));
@@ -505,8 +516,15 @@ enum clsph_status psolve_solve(struct psolve *ps, const struct psolve_op *op, cl
     CLSPH_TRY(psolve_direct(ps, op, b, x, res));
     goto done;
   }
-  if (ps->opt.apply == PSOLVE_STORED) CLSPH_TRY(store(ps, op));
+  const int multigrid = ps->opt.precond == PSOLVE_MULTIGRID;
+  CLSPH_CHECK(!multigrid || op->grid != NULL, CLSPH_E_INPUT,
+              "pressure solve: solver_precond = \"multigrid\" needs unknowns that are particles "
+              "sorted by a grid, which this operator does not have");
+  if (ps->opt.apply == PSOLVE_STORED || multigrid) CLSPH_TRY(store(ps, op));
   CLSPH_TRY(diagonal(ps, op));
+  if (multigrid)
+    CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val,
+                       reinforcement(ps), ps->d_dinv));
   CLSPH_TRY(bicgstab(ps, op, b, x, res));
   if (res->reason > 0) {
     ps->failures = 0;
@@ -594,6 +612,7 @@ void psolve_destroy(struct psolve *ps)
                   &ps->d_diag, &ps->d_b,   &ps->d_partial, &ps->d_flags, &ps->d_row,
                   &ps->d_col,  &ps->d_val, &ps->d_count,   &ps->d_block};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
+  mg_destroy(&ps->mg);
   free(ps->h_partial);
   ps->h_partial = NULL;
 }

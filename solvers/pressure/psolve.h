@@ -7,7 +7,9 @@
 #ifndef CLSPH_PSOLVE_H
 #define CLSPH_PSOLVE_H
 
+#include "grid.h"
 #include "kern.h"
+#include "mg.h"
 #include "prog.h"
 
 /** The operator of a linear system A x = b over the particles, supplied by a scheme. */
@@ -22,11 +24,14 @@ struct psolve_op {
   enum clsph_status (*row_counts)(void *ctx, cl_mem count);
   /** Write the entries of every row at row[i] .. row[i+1] − 1 (column, value). */
   enum clsph_status (*coefficients)(void *ctx, cl_mem row, cl_mem col, cl_mem val);
+  /** The grid whose cell order the unknowns follow (unknown i is the i-th particle it sorted),
+   *  or NULL: the multigrid preconditioner aggregates its cells. */
+  const struct grid *grid;
 };
 
 enum psolve_method { PSOLVE_BICGSTAB = 0, PSOLVE_DIRECT };
 enum psolve_apply { PSOLVE_STORED = 0, PSOLVE_RECOMPUTE };
-enum psolve_precond { PSOLVE_JACOBI = 0, PSOLVE_NONE, PSOLVE_JACOBI_SWEEPS };
+enum psolve_precond { PSOLVE_JACOBI = 0, PSOLVE_NONE, PSOLVE_JACOBI_SWEEPS, PSOLVE_MULTIGRID };
 enum psolve_singular {
   PSOLVE_REGULAR = 0, /* the system has a unique solution (Dirichlet rows somewhere) */
   PSOLVE_REINFORCE,   /* A + ε diag(A): Leroy et al. 2014 sec 3.3, "a slight reinforcement" */
@@ -77,9 +82,10 @@ struct psolve {
   int ngroups; /* work-groups of the reductions */
   double *h_partial;
   struct kern_timer t_apply; /* device time of operator applications (benchmarks) */
+  struct mg mg;              /* the multigrid preconditioner (PSOLVE_MULTIGRID) */
 };
 
-/** @brief Default options: BiCGStab, stored coefficients, Jacobi, rtol 1e-8 (double builds) or
+/** @brief Default options: BiCGStab, stored coefficients, the multigrid preconditioner, rtol 1e-8 (double builds) or
  *  1e-5 (float builds, whose dot products bottom out near 1e-6), 1000 iterations, 10 failures. */
 void psolve_defaults(struct psolve_options *o);
 /** @brief Set an option by name (`solver = "direct"`, `solver_rtol = 1e-6`, ...): key is one of
@@ -111,6 +117,6 @@ enum clsph_status psolve_direct(struct psolve *ps, const struct psolve_op *op, c
 void psolve_destroy(struct psolve *ps);
 
 /** Kernel sources the solver needs after the neighbour sources (GRID_SOURCES). */
-#define PSOLVE_SOURCES "common/blas1.cl", "common/csr.cl"
+#define PSOLVE_SOURCES "common/blas1.cl", "common/csr.cl", "common/mg.cl"
 
 #endif /* CLSPH_PSOLVE_H */

@@ -81,7 +81,7 @@ static void check_dirichlet(const struct dev *dev, int side, double jitter, int 
 {
   struct pproblem pp;
   struct psolve_options o;
-  struct outcome direct = {0}, stored = {0}, recompute = {0}, sweeps = {0};
+  struct outcome direct = {0}, stored = {0}, recompute = {0}, sweeps = {0}, mg = {0};
   struct pproblem_spec spec = {.side = side, .jitter = jitter, .kgc = kgc, .seed = 7};
   char what[64];
   snprintf(what, sizeof what, "Dirichlet %d/side%s%s", side, jitter > 0 ? " jittered" : "",
@@ -99,6 +99,8 @@ static void check_dirichlet(const struct dev *dev, int side, double jitter, int 
   ok = ok && solve(dev, &pp, &o, &recompute);
   options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_JACOBI_SWEEPS, PSOLVE_REGULAR);
   ok = ok && solve(dev, &pp, &o, &sweeps);
+  options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_MULTIGRID, PSOLVE_REGULAR);
+  ok = ok && solve(dev, &pp, &o, &mg);
   if (!ok) {
     TC_CHECK(0, "%s: solves run", what);
     goto done;
@@ -114,11 +116,20 @@ static void check_dirichlet(const struct dev *dev, int side, double jitter, int 
           "%s: BiCGStab (Jacobi sweeps) = UMFPACK", what);
   TC_CHECK(sweeps.res.its < stored.res.its, "%s: Jacobi sweeps need fewer iterations (%d < %d)",
            what, sweeps.res.its, stored.res.its);
+  TC_CHECK(mg.res.reason > 0, "%s: BiCGStab with multigrid converges (%d iterations)", what,
+           mg.res.its);
+  TC_NEAR(rel_diff(mg.x, direct.x, pp.n, 0), 0.0, agree, "%s: BiCGStab (multigrid) = UMFPACK",
+          what);
+  /* a V-cycle removes the smooth error Jacobi leaves, more so the larger the problem: 2.8 times
+   * fewer iterations at 20², 3.8 at 40², 6 on the jittered 32², 14 at 100² (bench psolve) */
+  TC_CHECK(2 * mg.res.its <= stored.res.its,
+           "%s: multigrid needs at most half of Jacobi's iterations (%d against %d)", what,
+           mg.res.its, stored.res.its);
   TC_NEAR(direct.err, stored.err, 10 * agree, "%s: both solutions have the same error", what);
   *err = direct.err;
-  printf("%-36s n %6zu: BiCGStab %4d its (recompute %4d, sweeps %3d), error vs exact %.3e, "
-         "vs UMFPACK %.1e\n",
-         what, pp.n, stored.res.its, recompute.res.its, sweeps.res.its, direct.err,
+  printf("%-36s n %6zu: BiCGStab %4d its (recompute %4d, sweeps %3d, multigrid %2d), error vs "
+         "exact %.3e, vs UMFPACK %.1e\n",
+         what, pp.n, stored.res.its, recompute.res.its, sweeps.res.its, mg.res.its, direct.err,
          rel_diff(stored.x, direct.x, pp.n, 0));
 
   /* warm start: from the solution, the first residual already meets the tolerance */
@@ -141,6 +152,7 @@ done:
   free(stored.x);
   free(recompute.x);
   free(sweeps.x);
+  free(mg.x);
   pproblem_destroy(&pp);
 }
 
@@ -155,26 +167,30 @@ static void check_singular(const struct dev *dev)
     goto done;
   }
   const enum psolve_singular modes[] = {PSOLVE_REINFORCE, PSOLVE_MEAN};
-  const char *names[] = {"reinforced diagonal", "fixed mean"};
-  for (int m = 0; m < 2; ++m) {
+  const char *mode_names[] = {"reinforced diagonal", "fixed mean"};
+  const enum psolve_precond pcs[] = {PSOLVE_JACOBI, PSOLVE_MULTIGRID};
+  const char *pc_names[] = {"Jacobi", "multigrid"};
+  for (int m = 0; m < 4; ++m) {
     struct outcome direct = {0}, it = {0};
-    options(&o, PSOLVE_DIRECT, PSOLVE_STORED, PSOLVE_JACOBI, modes[m]);
+    char name[64];
+    snprintf(name, sizeof name, "%s, %s", mode_names[m / 2], pc_names[m % 2]);
+    options(&o, PSOLVE_DIRECT, PSOLVE_STORED, PSOLVE_JACOBI, modes[m / 2]);
     int ok = solve(dev, &pp, &o, &direct);
-    options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_JACOBI, modes[m]);
+    options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, pcs[m % 2], modes[m / 2]);
     /* the reinforced system's smallest eigenvalue is ε |diag|: its solution is only known to
      * the tolerance times its condition number, so ask for a tighter residual in double */
     ok = ok && solve(dev, &pp, &o, &it);
     if (!ok) {
-      TC_CHECK(0, "singular (%s): solves run", names[m]);
+      TC_CHECK(0, "singular (%s): solves run", name);
     } else {
       TC_CHECK(it.res.reason > 0, "singular (%s): BiCGStab converges (%d its, residual %.1e)",
-               names[m], it.res.its, it.res.rnorm);
+               name, it.res.its, it.res.rnorm);
       TC_NEAR(rel_diff(it.x, direct.x, pp.n, 1), 0.0, agree,
-              "singular (%s): BiCGStab = UMFPACK up to a constant", names[m]);
+              "singular (%s): BiCGStab = UMFPACK up to a constant", name);
       /* discretisation error of the lattice Laplacian: O((2π dr)²), dr = 1/32 */
       TC_NEAR(it.err, 0.0, 0.05, "singular (%s): = exact up to a constant (discretisation)",
-              names[m]);
-      printf("singular, %-20s n %6zu: BiCGStab %4d its, vs UMFPACK %.1e, vs exact %.3e\n", names[m],
+              name);
+      printf("singular, %-31s n %6zu: BiCGStab %4d its, vs UMFPACK %.1e, vs exact %.3e\n", name,
              pp.n, it.res.its, rel_diff(it.x, direct.x, pp.n, 1), it.err);
     }
     free(direct.x);
@@ -218,6 +234,18 @@ static void check_failures(const struct dev *dev)
   psolve_solve(&ps, &pp.po.op, b, x, &res);
   TC_CHECK(res.reason == PSOLVE_DIVERGED_NANORINF, "a NaN right-hand side is reported (%d)",
            (int)res.reason);
+  /* multigrid on an operator whose unknowns are not particles of a grid */
+  {
+    struct psolve mps;
+    struct psolve_op gridless = pp.po.op;
+    memset(&mps, 0, sizeof mps);
+    gridless.grid = NULL;
+    options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_MULTIGRID, PSOLVE_REGULAR);
+    enum clsph_status ms = psolve_create(dev, pp.prog, pp.n, &o, &mps);
+    if (ms == CLSPH_OK) ms = psolve_solve(&mps, &gridless, b, x, &res);
+    TC_CHECK(ms == CLSPH_E_INPUT, "multigrid without a grid is refused (%d)", (int)ms);
+    psolve_destroy(&mps);
+  }
 done:
   psolve_destroy(&ps);
   pproblem_destroy(&pp);

@@ -118,8 +118,12 @@ static void check_solver_options(void)
 {
   struct psolve_options o;
   psolve_defaults(&o);
-  TC_CHECK(o.method == PSOLVE_BICGSTAB && o.precond == PSOLVE_JACOBI && o.max_it > 0,
-           "solver defaults: BiCGStab with Jacobi");
+  TC_CHECK(o.method == PSOLVE_BICGSTAB && o.precond == PSOLVE_MULTIGRID && o.max_it > 0,
+           "solver defaults: BiCGStab with the multigrid preconditioner");
+  TC_CHECK(psolve_set(&o, "precond", "jacobi", 0) == CLSPH_OK && o.precond == PSOLVE_JACOBI,
+           "solver_precond = \"jacobi\"");
+  TC_CHECK(psolve_set(&o, "precond", "amg", 0) == CLSPH_E_INPUT,
+           "an unknown preconditioner is refused");
   TC_CHECK(psolve_set(&o, "solver", "direct", 0) == CLSPH_OK && o.method == PSOLVE_DIRECT,
            "solver = \"direct\" selects UMFPACK");
   TC_CHECK(psolve_set(&o, "rtol", NULL, 1e-6) == CLSPH_OK && o.rtol == 1e-6, "solver_rtol");

@@ -1,0 +1,56 @@
+/* mg.h: the aggregation multigrid preconditioner of the pressure solve (kernels/common/mg.cl):
+ * geometric aggregates (the neighbour-grid cells, then blocks of 2 x 2 (x 2) cells), Galerkin
+ * coarse operators built on the device once per solve, one damped-Jacobi sweep before and after
+ * each coarse correction (a V(1,1) cycle), and the coarsest level (at most MG_COARSEST cells)
+ * solved exactly by a dense inverse computed on the host. Used through psolve (precond =
+ * "multigrid"); it needs the stored rows (csr.cl) and unknowns that are particles sorted by a
+ * grid (struct psolve_op's grid). */
+#ifndef CLSPH_MG_H
+#define CLSPH_MG_H
+
+#include "grid.h"
+#include "kern.h"
+#include "prog.h"
+
+#define MG_MAX_LEVELS 24
+#define MG_COARSEST   256 /* cells of the coarsest level at most */
+
+struct mg_level {
+  cl_int4 n;     /* cells per axis, .s[3] = total */
+  int R, W;      /* stencil radius and width */
+  cl_mem S, dw;  /* stencil coefficients (n.s[3] x W), damped inverse diagonal */
+  cl_mem b, x, t; /* right-hand side, solution, pre-smoothed iterate */
+};
+
+struct mg {
+  const struct dev *dev;
+  double omega; /* Jacobi damping */
+  cl_kernel k_aggregate, k_galerkin_csr, k_galerkin, k_weights, k_damp, k_scale, k_residual_csr,
+      k_jacobi_csr, k_residual, k_jacobi, k_restrict_csr, k_restrict, k_prolong_csr, k_prolong,
+      k_dense;
+  size_t cap;                        /* fine unknowns the buffers hold */
+  cl_mem d_agg, d_dw, d_res, d_t;    /* fine level: aggregate, ω/diag, residual, pre-smoothed */
+  const struct grid *grid;           /* the grid the levels were sized for */
+  int nlevels;                       /* coarse levels 1 .. nlevels (lv[0] unused) */
+  struct mg_level lv[MG_MAX_LEVELS + 1];
+  size_t m;     /* unknowns of the coarsest level */
+  cl_mem d_M;   /* its dense inverse */
+  real *h_S;    /* host copies for the coarsest inverse */
+  double *h_A;
+  real *h_M;
+};
+
+/** @brief Kernels (from a program built with PSOLVE_SOURCES) and fine-level vectors for cap
+ *  unknowns. */
+enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, struct mg *out);
+/** @brief Build the hierarchy for the operator stored in (row, col, val) over the n particles
+ *  sorted by g: A + eps diag(A), dinv its inverse diagonal. */
+enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem row, cl_mem col,
+                           cl_mem val, double eps, cl_mem dinv);
+/** @brief z = M⁻¹ r: one V(1,1) cycle from z = 0. */
+enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem val, double eps,
+                           cl_mem r, cl_mem z);
+/** @brief Release (safe on a zeroed struct). */
+void mg_destroy(struct mg *mg);
+
+#endif /* CLSPH_MG_H */
