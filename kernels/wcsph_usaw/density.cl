@@ -2,9 +2,11 @@
  * walls. Density by the continuity equation with the USAW divergence (eq 9) and a Ferrari
  * et al. (2009) density diffusion,
  *   dρ_a/dt = (ρ_a/γ_a) [Σ_b V_b u_ab·∇w_ab − Σ_s u_as·∇γ_as]
- *             + (c0/γ_a) Σ_b V_b (ρ_a − ρ_b + ρ0 g·r_ab/c0²) r_ab·∇w_ab / r_ab,
- * (the term ρ0 g·r_ab/c0² leaves the hydrostatic stratification undiffused: diffusing it drains
- * the density of the particles along the bottom, as in Fourtakas et al. 2019), the linear
+ *             + (c0/γ_a) Σ_b V_b (ρ_a − ρ_b − ρ0 g·r_ab/c0²) r_ab·∇w_ab / r_ab,
+ * (ρ0 g·r_ab/c0² is the hydrostatic density difference ρ_H,a − ρ_H,b, which must not be diffused:
+ * diffusing it drains the density of the particles along the bottom, as in Fourtakas et al.
+ * 2019; with the opposite sign it was diffused twice over, and the hydrostatic tank sank through
+ * its bottom wall at 0.05 m/s), the linear
  * equation of state p = c0² (ρ − ρ0) + p_bg, and the wall vertices' pressure as the
  * Shepard mean of the fluid's, carried hydrostatically to the wall (Ferrand et al. 2013):
  *   p_v = Σ_b V_b (p_b + ρ_b g·(r_v − r_b)) w_vb / Σ_b V_b w_vb. */
@@ -28,9 +30,9 @@ __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const rea
     if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] != ISPH_FLUID) continue;
     real rr = sqrt(r2), f = smoothing_f(rr);
     div += vol[j] * f * dot(u - vel[j], r);
-    /* the hydrostatic part of the density difference is not diffused: ρ_H,a − ρ_H,b = −ρ0 g·r/c0²
-     */
-    diff += vol[j] * (ra - rho[j] + rho0_c2 * dot(gravity, r)) * f * rr; /* r·∇w / r = F r */
+    /* the hydrostatic part of the density difference is not diffused: ρ_H,a − ρ_H,b = ρ0 g·r/c0²
+     * (g·r_ab = |g| (z_b − z_a)) */
+    diff += vol[j] * (ra - rho[j] - rho0_c2 * dot(gravity, r)) * f * rr; /* r·∇w / r = F r */
   }
   neigh_begin(&it, &g_seg, x);
   uint s;

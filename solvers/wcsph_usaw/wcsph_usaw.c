@@ -2,10 +2,15 @@
  * same unified semi-analytical walls and operators as isph-usaw, with density by continuity
  * (and Ferrari density diffusion), a linear equation of state with a background pressure, and
  * an explicit time step (kernels/wcsph_usaw/). One step at r^n:
- *   γ; wall-vertex pressure; dρ/dt; u* = u^n + δt (a_visc + g + f); u^{n+1} = u* − δt/ρ G+{p};
+ *   γ; wall-vertex pressure; dρ/dt; u* = u^n + δt (a_visc + g + f);
+ *   u^{n+1} = u* − δt/ρ G+{p}, or with pressure_form = "dynamic" u* − δt/ρ G+{P} − δt (ρ0/ρ) g,
+ *   P = p − ρ0 g·r less its value at rest (update.cl);
  *   r, ρ, V = m/ρ, p.
  * Options: sound_speed c0 (m/s; default 10 times the largest of the wall speed and √(g H)),
- * background_pressure p_bg (Pa, default 0; the paper uses one for the cavity).
+ * background_pressure p_bg (Pa, default 0; the paper uses one for the cavity), density_diffusion
+ * (factor of the Ferrari term, 1), pressure_form ("total": G+ of p, the paper's; "dynamic": G+ of
+ * the pressure less its hydrostatic part, which holds a tank at rest but glues a moving free
+ * surface, update.cl).
  * Time step (48-49) with u_ref = c0: min(0.2 h/c0, 0.125 h²/ν, 0.25 √(h/|a|)). */
 #include <math.h>
 #include <stdlib.h>
@@ -22,6 +27,8 @@ struct wcsph {
   cl_kernel k_cont, k_vertex, k_predict, k_velocity, k_advance, k_strain;
   cl_mem d_strain; /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
   double c0, p_bg, mass;
+  double p_ref; /* −ρ0 g·r_top: P = p − ρ0 g·r − p_ref is p_bg in a fluid at rest */
+  int dynamic;  /* 1: G+ of P (pressure_form = "dynamic"), 0: G+ of p (the paper's) */
   double diffusion; /* factor of the Ferrari density diffusion (1: as published, 0: off) */
 };
 
@@ -33,6 +40,7 @@ static const char *const sources[] = {"usaw/gamma.cl",
                                       "wcsph_usaw/update.cl",
                                       NULL};
 static const char *const options[] = {"sound_speed", "background_pressure", "density_diffusion",
+                                      "pressure_form",
                                       NULL};
 
 static enum clsph_status prefix(struct sim *sim, struct wcsph *ws, cl_kernel k, int with_segments,
@@ -91,6 +99,12 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
       CLSPH_CHECK(o->is_number && o->number >= 0.0 && o->number <= 1.0, CLSPH_E_INPUT,
                   "%s: density_diffusion must be a factor from 0 (off) to 1", sc->case_path);
       ws->diffusion = o->number;
+    } else if (strcmp(o->key, "pressure_form") == 0) {
+      CLSPH_CHECK(!o->is_number &&
+                      (strcmp(o->text, "total") == 0 || strcmp(o->text, "dynamic") == 0),
+                  CLSPH_E_INPUT, "%s: pressure_form must be \"total\" or \"dynamic\"",
+                  sc->case_path);
+      ws->dynamic = strcmp(o->text, "dynamic") == 0;
     } else if (strcmp(o->key, "background_pressure") == 0) {
       CLSPH_CHECK(o->is_number && o->number >= 0.0, CLSPH_E_INPUT,
                   "%s: background_pressure must be a pressure >= 0 (Pa)", sc->case_path);
@@ -115,6 +129,7 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   }
   for (size_t i = 0; i < geo->nfluid; ++i)
     ztop = fmax(ztop, up[0] * geo->x[2 * i] + up[1] * geo->x[2 * i + 1] + 0.5 * sc->dr);
+  ws->p_ref = gn > 0.0 && geo->nfluid > 0 ? sc->rho0 * gn * ztop : 0.0;
   for (size_t i = 0; i < geo->n; ++i) {
     double z = up[0] * geo->x[2 * i] + up[1] * geo->x[2 * i + 1];
     double ph = geo->kind[i] == KIND_FLUID && gn > 0.0 ? sc->rho0 * gn * (ztop - z) : 0.0;
@@ -212,6 +227,10 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   ARG(ws->k_velocity, i, p);
   ARG(ws->k_velocity, i, rho);
   ARG(ws->k_velocity, i, rdt);
+  const real pref = ws->dynamic ? (real)ws->p_ref : 0, rho0_h = ws->dynamic ? rho0 : 0;
+  ARG(ws->k_velocity, i, rho0_h);
+  ARG(ws->k_velocity, i, grav);
+  ARG(ws->k_velocity, i, pref);
   ARG(ws->k_velocity, i, vel);
   CLSPH_TRY(kern_launch(sim->dev, ws->k_velocity, ps->n, NULL));
   CLSPH_TRY(KERN_SET(ws->k_advance, KARG(n), KARG(sim->grid.geom), KARG(rdt), KARG(mass),
