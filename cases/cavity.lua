@@ -4,8 +4,9 @@
 -- 120² (Re 100), 200² (Re 400), 240² (Re 1000). --set wcsph=1 runs the WCSPH baseline. The
 -- profiles along y = 1/2 and along the diagonal also carry the pressure (isph-usaw against
 -- wcsph-usaw at Re 400: tests/validation/cavity_pressure.py). cfl multiplies the schemes'
--- time-step bounds; shift is isph-usaw's shifting coefficient (0 turns shifting off).
-param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, shift = 0.7 }
+-- time-step bounds; shift is isph-usaw's shifting coefficient (0 turns shifting off);
+-- checkpoint > 0 writes a checkpoint every that many seconds of flow (long runs: --restart).
+param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, shift = 0.7, checkpoint = 0 }
 
 local U = 1
 domain { 0, 0, 1, 1 }
@@ -22,7 +23,8 @@ profile { "u_centreline", from = {0.5, 0}, to = {0.5, 1}, points = 101 }
 profile { "v_centreline", from = {0, 0.5}, to = {1, 0.5}, points = 101 }
 profile { "diagonal", from = {0, 0}, to = {1, 1}, points = 101 }  -- pressure along the diagonal
 force { "lid" }
-run { t_end = t_end, output_every = t_end / 10, cfl = cfl }
+run { t_end = t_end, output_every = t_end / 10, cfl = cfl,
+      checkpoint_every = checkpoint > 0 and checkpoint or nil }
 
 function metrics(sim)
   local column = "Re" .. math.floor(re + 0.5)

@@ -14,6 +14,7 @@ run() { # name case sets...
   "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet --profile || true
 }
 run hydrostatic_isph_usaw hydrostatic
+run hydrostatic_wcsph_usaw hydrostatic wcsph=1
 for n in 20 30 40 60 120; do # convergence study, Re = 100 (the paper's resolution: 120)
   run cavity_re100_n${n}_isph_usaw cavity re=100 n=$n t_end=10
 done
@@ -24,12 +25,14 @@ for n in 20 30 40; do # cylinder array, L = 6 (the paper's resolution: 120), ste
   run cylinder_array_n${n}_isph_usaw cylinder_array n=$n t_end=24
   run cylinder_array_n${n}_wcsph_usaw cylinder_array n=$n t_end=24 wcsph=1
 done
-# Re = 400 and 1000 at 60² (the paper's 200² and 240² are 7 and 12 hours of this machine at
-# 46k particle-steps/s; see RESULTS.md for the cost), to t = 30 s; the pressure along y = 1/2
-# and the diagonal, isph-usaw against wcsph-usaw, at Re = 400
+# Re = 400 and 1000 at 60², to t = 30 s; the pressure along y = 1/2 and the diagonal, isph-usaw
+# against wcsph-usaw, at Re = 400
 run cavity_re400_n60_isph_usaw cavity re=400 n=60 t_end=30
 run cavity_re400_n60_wcsph_usaw cavity re=400 n=60 t_end=30 wcsph=1
 run cavity_re1000_n60_isph_usaw cavity re=1000 n=60 t_end=30
+# the paper's Re = 400 resolution (200², about 2 h with the multigrid preconditioner; checkpoints
+# every second of flow: --restart continues it)
+run cavity_re400_n200_isph_usaw cavity re=400 n=200 t_end=30 checkpoint=1
 # the cost of the paper's Re = 1000 resolution: 0.02 s (30 steps) of 240², profiled
 "$build/clsph" run cases/cavity.lua --set re=1000 --set n=240 --set t_end=0.02 --profile \
   --out "$out/cavity_re1000_n240_cost_probe" --quiet || true
