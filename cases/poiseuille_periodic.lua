@@ -10,6 +10,9 @@
 -- the exact solution goes through the same interpolation (the rows stay at their heights in
 -- this unidirectional flow; the Gaussian's row weights are e^{−(Δy/h)²}), so the metric is the
 -- particles' error, not the interpolation's (Shepard on a parabola alone is −2 U0 (h/H)²).
+-- wall_drag_error: at t = 1 the walls' shear (Hosseini & Feng eqs 31-32) carries the body force,
+-- floor and ceiling g H L / 2 each along x; the relative error of their sum, and their x
+-- pressure force (zero on a flat wall) relative to it.
 param { dr = 0.1, t_end = 1, homogeneous = 0, shift = 0.04 }
 
 local H, nu, g = 1, 1, 8
@@ -23,6 +26,8 @@ wall { {0, H}, {2 * H, H}, fluid = "right", group = "ceiling" }
 fill { 0, 0, 2 * H, H }
 local rows = math.floor(H / dr + 0.5)
 profile { "u", from = {H, dr / 2}, to = {H, H - dr / 2}, points = rows }
+force { "floor" }
+force { "ceiling" }
 run { t_end = t_end, output_every = 0.01 }
 
 local function exact(y, t)
@@ -60,5 +65,10 @@ function metrics(sim)
     end
   end
   out.u_centre = sim.sample("vel", H, H / 2)
+  if t_end >= 1 - 1e-9 then
+    local f, c, total = sim.force("floor", 0.9), sim.force("ceiling", 0.9), g * H * 2 * H
+    out.wall_drag_error = math.abs(f.x + c.x - total) / total
+    out.wall_pressure_x = math.abs(f.pressure_x + c.pressure_x) / total
+  end
   return out
 end

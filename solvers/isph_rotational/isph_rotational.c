@@ -18,6 +18,7 @@
 
 #include "../scheme.h"
 #include "clsph_config.h"
+#include "force.h"
 #include "geometry.h"
 #include "ops.h"
 #include "psolve.h"
@@ -29,6 +30,7 @@ struct rot {
   struct psolve_options popt;
   struct psolve_op op;
   struct sim *sim; /* for the operator callbacks, set at each step */
+  struct rot_force force; /* sample points of the force groups (force.c) */
   int rotational;  /* 1: rotational (eqs 9-11), 0: homogeneous (eqs 5-8) */
   double c_shift;  /* Xu et al.'s C (0: off) */
   double xsph;     /* XSPH ε (0: off) */
@@ -45,6 +47,7 @@ static const char *const sources[] = {"common/blas1.cl",
                                       "common/mg.cl",
                                       "common/poisson.cl",
                                       "isph_rotational/walls.cl",
+                                      "isph_rotational/force.cl",
                                       "isph_rotational/predict.cl",
                                       "isph_rotational/ppe.cl",
                                       "isph_rotational/project.cl",
@@ -223,6 +226,7 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
   CLSPH_TRY(ops_create(sim->prog, 1, &r->ops));
   CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &r->popt, &r->ps));
+  CLSPH_TRY(rot_force_create(sim->dev, sim->prog, sc, &r->force));
   r->op.ctx = r;
   r->op.apply = ppe_apply;
   r->op.diagonal = ppe_diagonal;
@@ -233,6 +237,8 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
 done:
   free(host);
   if (r != NULL) {
+    rot_force_destroy(&r->force);
+    psolve_destroy(&r->ps);
     ops_destroy(&r->ops);
     free(r);
   }
@@ -382,6 +388,23 @@ done:
   return st;
 }
 
+/* Force of the fluid on the dummy walls of a group (eqs 31-32, force.c), at the current
+ * positions (sorted first: the particles moved since the step's sort). */
+static enum clsph_status rot_wall_force(struct sim *sim, void *state, const char *group,
+                                        struct wall_force *f)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct rot *r = state;
+  struct pset *ps = &sim->ps;
+  CLSPH_TRY(sim_sort(sim));
+  CLSPH_TRY(rot_force_eval(&r->force, sim->dev, &sim->grid, ps->n, pset_mem(ps, sim->f_pos),
+                           pset_mem(ps, sim->f_vol), pset_mem(ps, sim->f_kind),
+                           pset_mem(ps, sim->f_vel), pset_mem(ps, r->f_p),
+                           sim->scene->rho0 * sim->scene->nu, group, f->pressure, f->viscous));
+done:
+  return st;
+}
+
 static void rot_destroy(void *state)
 {
   struct rot *r = state;
@@ -391,6 +414,7 @@ static void rot_destroy(void *state)
                      &r->k_project, &r->k_move,   &r->k_shift,   &r->k_apply_shift};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
+  rot_force_destroy(&r->force);
   psolve_destroy(&r->ps);
   ops_destroy(&r->ops);
   free(r);
@@ -408,6 +432,6 @@ const struct scheme_ops scheme_isph_rotational = {
     .create = rot_create,
     .step = rot_step,
     .max_dt = rot_max_dt,
-    .wall_force = NULL,
+    .wall_force = rot_wall_force,
     .destroy = rot_destroy,
 };
