@@ -1,6 +1,7 @@
 /* walls.cl (isph-rotational): dummy wall particles (Hosseini & Feng 2011 sec 3.3.1).
  *
- * Kinds: ROT_FLUID (moves), ROT_DUMMY (fixed, inside the solid). A dummy d at distance dist_d
+ * Kinds: ROT_FLUID (moves), ROT_DUMMY (fixed, inside the solid), ROT_INFLOW and ROT_OUTFLOW
+ * (entry and exit layers, open.cl). A dummy d at distance dist_d
  * from the wall with unit normal n_d into the fluid has its image x_d + 2 dist_d n_d in the fluid.
  *   velocity (Morris et al. 1997 extrapolation; "the negative of the interpolated velocity of
  *   its image", sec 3.3.1): u_d = 2 u_wall − Σ_f V_f u_f W / Σ_f V_f W at the image, fluid only;
@@ -11,6 +12,8 @@
  * image, our reading of "averaging between their neighbours" (Lee et al. 2008). */
 #define ROT_FLUID 0u
 #define ROT_DUMMY 2u
+#define ROT_INFLOW 3u  /* entry layer particle (open.cl) */
+#define ROT_OUTFLOW 4u /* exit layer particle (open.cl) */
 
 real rot_wrap(real x, real lo, real len)
 {
@@ -20,16 +23,19 @@ real rot_wrap(real x, real lo, real len)
   return lo + t;
 }
 
-/* vel of the dummies (extrapolated) and mirror[d] (the fluid particle at their image; the
- * fluid keeps mirror[i] = i) */
+/* vel of the dummies (extrapolated from the fluid and the entry and exit layers) and mirror[d]
+ * (the fluid particle at their image; the fluid keeps mirror[i] = i); coef = 1 (the entry and
+ * exit layers set their own afterwards, open.cl) */
 __kernel void rot_dummy_velocity(const uint n, const struct grid g, __global const uint *cell_start,
                                  __global const realv *pos, __global const real *vol,
                                  __global const uint *kind, __global const real *dist,
                                  __global const realv *normal, __global const realv *wall_vel,
-                                 __global realv *vel, __global uint *mirror, __global uint *flags)
+                                 __global realv *vel, __global uint *mirror, __global real *coef,
+                                 __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
+  coef[i] = R(1.0);
   if (kind[i] != ROT_DUMMY) {
     mirror[i] = i;
     return;
@@ -42,14 +48,14 @@ __kernel void rot_dummy_velocity(const uint n, const struct grid g, __global con
   neigh_begin(&it, &g, img);
   uint j;
   while (neigh_next(&it, &g, cell_start, &j)) {
-    if (kind[j] != ROT_FLUID) continue;
+    if (kind[j] == ROT_DUMMY) continue;
     realv r = img - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= SMOOTH_SUPPORT2) continue;
     real w = vol[j] * smoothing_w(sqrt(r2));
     wsum += w;
     s += w * vel[j];
-    if (r2 < best) {
+    if (kind[j] == ROT_FLUID && r2 < best) {
       best = r2;
       m = j;
     }
@@ -61,11 +67,12 @@ __kernel void rot_dummy_velocity(const uint n, const struct grid g, __global con
   mirror[i] = m;
 }
 
-/* a_d = a_m(d) for the dummies (Neumann by propagation, sec 3.3.1) */
+/* a_d = c_d a_m(d) for the dummies (c = 1: Neumann by propagation, sec 3.3.1) and the entry and
+ * exit layers (open.cl: c = 1 at an entry, the odd reflection h_d/h_m at an exit) */
 __kernel void rot_propagate(const uint n, __global const uint *kind, __global const uint *mirror,
-                            __global real *a)
+                            __global const real *coef, __global real *a)
 {
   const uint i = get_global_id(0);
-  if (i >= n || kind[i] != ROT_DUMMY) return;
-  a[i] = a[mirror[i]];
+  if (i >= n || kind[i] == ROT_FLUID) return;
+  a[i] = coef[i] * a[mirror[i]];
 }
