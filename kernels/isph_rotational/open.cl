@@ -13,9 +13,11 @@
  * ∇·ũ; φ (p in the homogeneous scheme) homogeneous Neumann: a layer particle takes the value of
  * the fluid particle nearest to (s, h = δr/2), its row's first fluid particle. The rotational
  * scheme's p^k (in ∇p^k of eq 9) satisfies the non-homogeneous Neumann condition (eq 15), not
- * n·∇p = 0; the paper does not say what the layers carry, so we extrapolate p linearly along the
- * normal from the fluid particles nearest to (s, δr/2) and (s, 3δr/2) (p_near, p_far): a copy
- * would impose n·∇p^k = 0 and bring back the entry boundary layer the rotational scheme removes.
+ * n·∇p = 0; the paper does not say what the layers carry, so they carry eq 15 itself:
+ *   p_i = p_m + (h_i − h_m) n·(ρ g + µ∇²u_m),   m the row's first fluid particle (p_near),
+ * µ∇²u_m by eq 28 from u^{k+1}: a copy would impose n·∇p^k = 0 and bring back the entry
+ * boundary layer the rotational scheme removes (a two-point extrapolation from the fluid's p
+ * amplified the pressure noise of the corners by the layers' depth).
  * When a layer particle reaches h >= 0 it becomes a fluid particle and its row gets a new
  * particle depth behind it: a particle recycled from an exit (below), so that the count of
  * particles never changes. Until an exit has one to give, it stays a layer particle (a few
@@ -27,7 +29,7 @@
  * Re = 10, sec 4.3.3) they are −u(s) n instead. Dirichlet φ = 0 (eq 19; p = 0 in the homogeneous
  * scheme), and p = 0 for the rotational scheme's p^k (eq 17: p = 2µ ∂u_n/∂n = 0): the value is
  * extrapolated linearly through 0 at the section from the fluid particle m nearest to the
- * particle's reflection x − 2h n (h_m >= δr/4): a_i = (h_i / h_m) a_m, an odd reflection; these
+ * particle's reflection x − 2h n (h_m >= δr/2): a_i = (h_i / h_m) a_m, an odd reflection; these
  * are rows of the pressure operator that name m with coefficient h_i/h_m (ppe.cl). The
  * rotational scheme's p^k on the exit layers is reflected the same way (p = 0 at the exit, sec
  * 3.3.3): a linear extrapolation from the fluid instead leaves the level of p free, and the
@@ -105,7 +107,7 @@ __kernel void rot_open_images(const uint n, const struct grid g, __global const 
                               const real dr, __global realv *vel, __global realv *vel_prev,
                               __global realv *wall_vel, __global uint *mirror,
                               __global real *coef, __global uint *src, __global uint *p_near,
-                              __global uint *p_far, __global uint *flags)
+                              __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -115,15 +117,10 @@ __kernel void rot_open_images(const uint n, const struct grid g, __global const 
   const realv x = pos[i];
   const real along = dot(x - s.a, s.t), h = dot(x - s.a, s.n);
   const realv foot = s.a + along * s.t; /* x's projection onto the section */
-  /* the row's first two fluid particles along the normal */
+  /* the row's first fluid particle along the normal */
   const uint m1 = rot_nearest_fluid(&g, cell_start, pos, kind, foot + R(0.5) * dr * s.n, &s,
                                     -INFINITY, i);
-  uint m2 = m1;
-  if (m1 != i)
-    m2 = rot_nearest_fluid(&g, cell_start, pos, kind, foot + R(1.5) * dr * s.n, &s,
-                           dot(pos[m1] - s.a, s.n) + R(0.5) * dr, m1);
   p_near[i] = m1;
-  p_far[i] = m2;
   realv u;
   if (ki == ROT_INFLOW) {
     /* prescribed u_in (sec 3.3.2); φ copied from the row's first fluid particle (Neumann) */
@@ -145,7 +142,7 @@ __kernel void rot_open_images(const uint n, const struct grid g, __global const 
     src[i] = m;
     wall_vel[i] = u;
     /* φ = 0 (p = 0 in the homogeneous scheme) at the section: odd reflection (eq 19) */
-    const real hmin = R(0.25) * dr;
+    const real hmin = R(0.5) * dr;
     const uint r = rot_nearest_fluid(&g, cell_start, pos, kind, x - R(2.0) * h * s.n, &s, hmin, i);
     mirror[i] = r;
     coef[i] = r != i ? h / fmax(dot(pos[r] - s.a, s.n), hmin) : R(0.0);
@@ -153,6 +150,31 @@ __kernel void rot_open_images(const uint n, const struct grid g, __global const 
   if (!all(isfinite(u))) flags_raise(flags, CLSPH_FLAG_NAN);
   vel[i] = u;
   vel_prev[i] = u;
+}
+
+/* Dummies whose image lies among entry or exit layer particles (walls that run on through the
+ * layers) take the layer particle's value: their mirror and coefficient become the layer
+ * particle's (p_near keeps the layer particle for rot_open_dummy_p); after rot_open_images. */
+__kernel void rot_open_dummies(const uint n, __global const uint *kind, __global uint *mirror,
+                               __global real *coef, __global uint *p_near)
+{
+  const uint i = get_global_id(0);
+  if (i >= n || kind[i] != ROT_DUMMY) return;
+  const uint m = mirror[i];
+  p_near[i] = i;
+  if (kind[m] != ROT_INFLOW && kind[m] != ROT_OUTFLOW) return;
+  p_near[i] = m;
+  mirror[i] = mirror[m];
+  coef[i] = coef[m];
+}
+
+/* p of those dummies: the entry layer particle's (eq 15, after rot_open_pressure) */
+__kernel void rot_open_dummy_p(const uint n, __global const uint *kind,
+                               __global const uint *p_near, __global real *p)
+{
+  const uint i = get_global_id(0);
+  if (i >= n || kind[i] != ROT_DUMMY || p_near[i] == i) return;
+  p[i] = p[p_near[i]];
 }
 
 /* ũ of the exit layers: that of their progenitor (sec 3.3.3, "we assign the ũ value of the ...
@@ -165,21 +187,33 @@ __kernel void rot_open_ustar(const uint n, __global const uint *kind, __global c
   ustar[i] = ustar[src[i]];
 }
 
-/* p^k on the entry layers of the rotational scheme: linear along the normal through the row's
- * first two fluid particles (see the header); after rot_propagate */
-__kernel void rot_open_pressure(const uint n, __global const realv *pos, __global const uint *kind,
-                                __global const uint *section, __global const real *sec,
-                                __global const uint *p_near, __global const uint *p_far,
-                                __global real *p)
+/* p^{k+1} on the entry layers of the rotational scheme (eq 15, see the header), from u^{k+1};
+ * after rot_project and rot_propagate */
+__kernel void rot_open_pressure(OP_ARGS, __global const uint *kind, __global const uint *section,
+                                __global const real *sec, __global const uint *p_near,
+                                __global const realv *vel, const real rho, const real mu,
+                                const realv accel, __global real *p)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ROT_INFLOW) return;
-  const uint m1 = p_near[i], m2 = p_far[i];
-  if (m1 == i || m2 == m1) return;
+  const uint m = p_near[i];
+  if (m == i) return;
+  const realv xm = pos[m], u_m = vel[m];
+  const realm L_m = OP_LOAD_L(m);
+  realv lap = (realv)(R(0.0));
+  struct neigh_iter it;
+  neigh_begin(&it, &g, xm);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = xm - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == m) continue;
+    realv gw = op_grad_w(L_m, smoothing_f(sqrt(r2)), r);
+    lap += R(2.0) * vol[j] * dot(r, gw) / (r2 + SMOOTH_ETA2) * (u_m - vel[j]); /* eq 28 */
+  }
   const struct rot_section s = rot_section_load(sec, section[i]);
-  const real h = dot(pos[i] - s.a, s.n), h1 = dot(pos[m1] - s.a, s.n);
-  const real h2 = dot(pos[m2] - s.a, s.n);
-  p[i] = p[m1] + (h - h1) * (p[m2] - p[m1]) / (h2 - h1);
+  const real dh = dot(pos[i] - xm, s.n);
+  p[i] = p[m] + dh * dot(s.n, rho * accel + mu * lap); /* eq 15 */
 }
 
 /* After the motion: fluid that crossed an exit becomes an exit layer particle; role 1 for entry

@@ -24,8 +24,8 @@ real rot_wrap(real x, real lo, real len)
 }
 
 /* vel of the dummies (extrapolated from the fluid and the entry and exit layers) and mirror[d]
- * (the fluid particle at their image; the fluid keeps mirror[i] = i); coef = 1 (the entry and
- * exit layers set their own afterwards, open.cl) */
+ * (the particle nearest to their image, fluid or an entry or exit layer particle: open.cl then
+ * resolves the latter to the fluid; the fluid keeps mirror[i] = i); coef = 1 */
 __kernel void rot_dummy_velocity(const uint n, const struct grid g, __global const uint *cell_start,
                                  __global const realv *pos, __global const real *vol,
                                  __global const uint *kind, __global const real *dist,
@@ -55,7 +55,7 @@ __kernel void rot_dummy_velocity(const uint n, const struct grid g, __global con
     real w = vol[j] * smoothing_w(sqrt(r2));
     wsum += w;
     s += w * vel[j];
-    if (kind[j] == ROT_FLUID && r2 < best) {
+    if (r2 < best) { /* fluid, or an entry or exit layer particle (resolved in open.cl) */
       best = r2;
       m = j;
     }

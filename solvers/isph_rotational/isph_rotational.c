@@ -48,11 +48,11 @@ struct rot {
   cl_uint nsec;
   int has_outflow;            /* an exit: Dirichlet φ = 0 there, a regular pressure system */
   int f_section, f_src;       /* section of a layer particle, its velocity progenitor */
-  int f_near, f_far;          /* the two fluid particles its p^k is extrapolated from */
+  int f_near;                 /* the fluid particle its p^k is extrapolated from (entry) */
   cl_mem d_sec;               /* the section table (ROT_SEC reals per section, open.cl) */
   cl_mem d_role, d_list;      /* recycling: role per particle, exit particles to recycle */
   cl_mem d_count;             /* recycled so far, entry and exit particles left waiting */
-  cl_kernel k_images, k_ustar, k_open_p, k_classify, k_recycle;
+  cl_kernel k_images, k_dummies, k_dummy_p, k_ustar, k_open_p, k_classify, k_recycle;
 };
 
 enum { ROT_SEC = 10 }; /* reals per section in the table (open.cl) */
@@ -230,8 +230,6 @@ static enum clsph_status open_create(struct sim *sim, struct rot *r)
   pset_describe(ps, r->f_src, PF_UINT, 0, 0);
   CLSPH_TRY(pset_add(ps, sim->dev, "p_near", sizeof(cl_uint), NULL, &r->f_near));
   pset_describe(ps, r->f_near, PF_UINT, 0, 0);
-  CLSPH_TRY(pset_add(ps, sim->dev, "p_far", sizeof(cl_uint), NULL, &r->f_far));
-  pset_describe(ps, r->f_far, PF_UINT, 0, 0);
   CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(cl_uint), NULL, &r->d_role, "recycle roles"));
   CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(cl_uint), NULL, &r->d_list, "recycle list"));
   const cl_uint zeros[3] = {0, 0, 0};
@@ -240,6 +238,8 @@ static enum clsph_status open_create(struct sim *sim, struct rot *r)
     cl_kernel *k;
     const char *name;
   } ks[] = {{&r->k_images, "rot_open_images"},
+            {&r->k_dummies, "rot_open_dummies"},
+            {&r->k_dummy_p, "rot_open_dummy_p"},
             {&r->k_ustar, "rot_open_ustar"},
             {&r->k_open_p, "rot_open_pressure"},
             {&r->k_classify, "rot_open_classify"},
@@ -366,12 +366,13 @@ static enum clsph_status open_images(struct sim *sim, struct rot *r)
   cl_mem uprev = pset_mem(ps, r->f_uprev), uwall = pset_mem(ps, r->f_uwall);
   cl_mem mirror = pset_mem(ps, r->f_mirror), coef = pset_mem(ps, r->f_coef);
   cl_mem src = pset_mem(ps, r->f_src), pnear = pset_mem(ps, r->f_near);
-  cl_mem pfar = pset_mem(ps, r->f_far);
   CLSPH_TRY(KERN_SET(r->k_images, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
                      KARG(kind), KARG(section), KARG(r->d_sec), KARG(dr), KARG(vel), KARG(uprev),
                      KARG(uwall), KARG(mirror), KARG(coef), KARG(src), KARG(pnear),
-                     KARG(pfar), KARG(sim->d_flags)));
+                     KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, r->k_images, n, NULL));
+  CLSPH_TRY(KERN_SET(r->k_dummies, KARG(n), KARG(kind), KARG(mirror), KARG(coef), KARG(pnear)));
+  CLSPH_TRY(kern_launch(sim->dev, r->k_dummies, n, NULL));
 done:
   return st;
 }
@@ -489,12 +490,17 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   }
   CLSPH_TRY(kern_launch(sim->dev, r->k_project, n, NULL));
   CLSPH_TRY(propagate(sim, r, r->f_p));
-  if (r->nsec > 0 && r->rotational) { /* p^k on the entry layers: linear along the normal */
+  if (r->nsec > 0 && r->rotational) { /* p on the entry layers: eq 15 */
     cl_mem section = pset_mem(ps, r->f_section), pnear = pset_mem(ps, r->f_near);
-    cl_mem pfar = pset_mem(ps, r->f_far);
-    CLSPH_TRY(KERN_SET(r->k_open_p, KARG(n), KARG(pos), KARG(kind), KARG(section),
-                       KARG(r->d_sec), KARG(pnear), KARG(pfar), KARG(p)));
+    CLSPH_TRY(op_prefix(sim, r, r->k_open_p, &np));
+    cl_uint k = 7;
+    const struct karg a[] = {KARG(section), KARG(r->d_sec), KARG(pnear), KARG(vel),
+                             KARG(rho),     KARG(mu),       KARG(accel), KARG(p)};
+    for (size_t q = 0; q < sizeof a / sizeof *a; ++q)
+      CLSPH_TRY(kern_set_at(r->k_open_p, k++, a[q]));
     CLSPH_TRY(kern_launch(sim->dev, r->k_open_p, n, NULL));
+    CLSPH_TRY(KERN_SET(r->k_dummy_p, KARG(n), KARG(kind), KARG(pnear), KARG(p)));
+    CLSPH_TRY(kern_launch(sim->dev, r->k_dummy_p, n, NULL));
   }
   r->dt_prev = dt;
   /* 6. motion (+ XSPH) and shifting */
@@ -554,7 +560,8 @@ static void rot_destroy(void *state)
                      &r->k_project, &r->k_move,   &r->k_shift,   &r->k_apply_shift};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
-  cl_kernel open[] = {r->k_images, r->k_ustar, r->k_open_p, r->k_classify, r->k_recycle};
+  cl_kernel open[] = {r->k_images, r->k_dummies, r->k_dummy_p, r->k_ustar,
+                      r->k_open_p,  r->k_classify, r->k_recycle};
   for (size_t k = 0; k < sizeof open / sizeof *open; ++k)
     if (open[k] != NULL) clReleaseKernel(open[k]);
   cl_mem bufs[] = {r->d_sec, r->d_role, r->d_list, r->d_count};
