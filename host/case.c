@@ -646,8 +646,9 @@ static int section_common(lua_State *L, enum scene_section_kind kind)
       luaL_error(L, "outflow: profile = \"%s\" needs velocity = (m/s, > 0: the %s speed out)",
                  out_profiles[p], p == 2 ? "peak" : "mean");
     if (c->profile == 0 && !isnan(c->velocity))
-      luaL_error(L, "outflow: velocity = %g needs a prescribed profile (\"parabolic\" or "
-                    "\"uniform\"); a natural exit takes the velocity of the fluid",
+      luaL_error(L,
+                 "outflow: velocity = %g needs a prescribed profile (\"parabolic\" or "
+                 "\"uniform\"); a natural exit takes the velocity of the fluid",
                  c->velocity);
     if (c->profile == 0) c->velocity = 0.0;
   }

@@ -33,7 +33,7 @@ struct case_sim_api {
   /** The particles of `kind` (−1: all): their positions (n x, y pairs) and component `comp` of a
    *  field, in arrays the caller frees. */
   enum clsph_status (*field_values)(void *ctx, const char *field, int comp, int kind, size_t *n,
-                                 double **xy, double **values);
+                                    double **xy, double **values);
 };
 
 /** @brief Run a case script and fill the scene.

@@ -1270,8 +1270,8 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
   if (script != NULL && strcmp(sim->status, "ok") == 0) {
     struct metric_ctx ctx = {sim};
     struct case_sim_api api = {
-        &ctx,           sim->time,    sim->step,          (double)sim->ps.n, sim->wall_steps,
-        sim->wall_most, metric_stats, metric_sample_many, metric_sample,     metric_force,
+        &ctx,           sim->time,       sim->step,          (double)sim->ps.n, sim->wall_steps,
+        sim->wall_most, metric_stats,    metric_sample_many, metric_sample,     metric_force,
         o->dir,         metric_particles};
     enum clsph_status ms = case_metrics(script, &api, metrics);
     if (ms != CLSPH_OK) {

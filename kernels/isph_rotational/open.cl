@@ -42,7 +42,7 @@
 
 #if ROT_OPEN
 #define ROT_NO_SECTION 0xffffffffu
-#define ROT_SEC 10
+#define ROT_SEC        10
 
 struct rot_section {
   realv a, t, n;   /* origin, unit tangent, unit normal into the fluid */
@@ -103,11 +103,10 @@ uint rot_nearest_fluid(const struct grid *g, __global const uint *cell_start,
  * point of the entry's pressure extrapolation (mirror2). */
 __kernel void rot_open_images(const uint n, const struct grid g, __global const uint *cell_start,
                               __global const realv *pos, __global const uint *kind,
-                              __global const uint *section, __global const real *sec,
-                              const real dr, __global realv *vel, __global realv *vel_prev,
-                              __global realv *wall_vel, __global uint *mirror,
-                              __global real *coef, __global uint *src, __global uint *p_near,
-                              __global uint *flags)
+                              __global const uint *section, __global const real *sec, const real dr,
+                              __global realv *vel, __global realv *vel_prev,
+                              __global realv *wall_vel, __global uint *mirror, __global real *coef,
+                              __global uint *src, __global uint *p_near, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -118,8 +117,8 @@ __kernel void rot_open_images(const uint n, const struct grid g, __global const 
   const real along = dot(x - s.a, s.t), h = dot(x - s.a, s.n);
   const realv foot = s.a + along * s.t; /* x's projection onto the section */
   /* the row's first fluid particle along the normal */
-  const uint m1 = rot_nearest_fluid(&g, cell_start, pos, kind, foot + R(0.5) * dr * s.n, &s,
-                                    -INFINITY, i);
+  const uint m1 =
+      rot_nearest_fluid(&g, cell_start, pos, kind, foot + R(0.5) * dr * s.n, &s, -INFINITY, i);
   p_near[i] = m1;
   realv u;
   if (ki == ROT_INFLOW) {
@@ -169,8 +168,8 @@ __kernel void rot_open_dummies(const uint n, __global const uint *kind, __global
 }
 
 /* p of those dummies: the entry layer particle's (eq 15, after rot_open_pressure) */
-__kernel void rot_open_dummy_p(const uint n, __global const uint *kind,
-                               __global const uint *p_near, __global real *p)
+__kernel void rot_open_dummy_p(const uint n, __global const uint *kind, __global const uint *p_near,
+                               __global real *p)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ROT_DUMMY || p_near[i] == i) return;
@@ -254,8 +253,8 @@ __kernel void rot_open_recycle(const uint n, __global const uint *role, __global
                                __global const real *sec, __global realv *pos, __global uint *kind,
                                __global uint *section, __global realv *vel,
                                __global realv *vel_prev, __global realv *wall_vel,
-                               __global realv *wall_normal, __global real *p,
-                               __global real *phi, __global uint *count)
+                               __global realv *wall_normal, __global real *p, __global real *phi,
+                               __global uint *count)
 {
   if (get_global_id(0) != 0) return;
   uint ng = 0, used = 0, waiting = 0;

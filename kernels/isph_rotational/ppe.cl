@@ -44,8 +44,8 @@ __kernel void rot_ppe_apply(OP_ARGS, __global const uint *kind, __global const u
 }
 
 __kernel void rot_ppe_coeffs(OP_ARGS, __global const uint *kind, __global const uint *mirror,
-                             __global const real *coef, __global const uint *row, __global uint *col,
-                             __global real *val)
+                             __global const real *coef, __global const uint *row,
+                             __global uint *col, __global real *val)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;

@@ -10,9 +10,9 @@
  * At a box corner the nearest wall point is the corner itself, so the image is the point
  * reflection through the corner: the diagonal dummies take the mean of the fluid around their
  * image, our reading of "averaging between their neighbours" (Lee et al. 2008). */
-#define ROT_FLUID 0u
-#define ROT_DUMMY 2u
-#define ROT_INFLOW 3u  /* entry layer particle (open.cl) */
+#define ROT_FLUID   0u
+#define ROT_DUMMY   2u
+#define ROT_INFLOW  3u /* entry layer particle (open.cl) */
 #define ROT_OUTFLOW 4u /* exit layer particle (open.cl) */
 
 real rot_wrap(real x, real lo, real len)

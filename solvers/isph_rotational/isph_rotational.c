@@ -2,19 +2,23 @@
  * stepping (Hosseini & Feng 2011, J. Comput. Phys. 230:7473), and its homogeneous projection
  * (option projection = "homogeneous"), on dummy-particle walls. One time step (sec 3.2):
  *   1. L_i, the Oger correction over all neighbours (eq 25, common/operators.cl)
- *   2. dummy velocities extrapolated from the fluid, mirrors for Neumann (sec 3.3.1, walls.cl)
+ *   2. dummy velocities extrapolated from the fluid, mirrors for Neumann (sec 3.3.1, walls.cl);
+ *      the entry and exit layers' velocities, mirrors and coefficients (open.cl)
  *   3. ũ explicitly: a0 ũ = a1 u^k − a2 u^{k−1} + δt (ν∇²u^k − ∇p^k/ρ + g)  (eq 9; 5 without
  *      ∇p^k), BDF2 coefficients for variable steps (predict.cl)
  *   4. ∇²φ = (a0 ρ/δt) ∇·ũ, ũ = u_wall on the dummies (eqs 13, 27, sec 3.3.3), Neumann by
  *      propagation to the dummies (ppe.cl), BiCGStab (solvers/pressure); no Dirichlet row, so
- *      the system is reinforced (the paper pins one value instead, sec 3.2)
+ *      the system is reinforced (the paper pins one value instead, sec 3.2), unless an exit's
+ *      φ = 0 (eq 19) makes it regular
  *   5. u^{k+1} = ũ − δt/(a0 ρ) ∇φ; p^{k+1} = p^k + φ − µ∇·ũ (eqs 10-11); homogeneous: p = φ
- *   6. r += δt u^{k+1} (+ XSPH), then Xu shifting (sec 3.4, shift.cl)
+ *   6. r += δt u^{k+1} (+ XSPH), then Xu shifting (sec 3.4, shift.cl); then the recycling at
+ *      the entry and exit sections (open.cl)
  * Entry and exit sections (sec 3.3.2-3.3.3, eqs 16-20; kernels/isph_rotational/open.cl, built
- * with -D ROT_OPEN=1 only for scenes that have them): entry layers carry the prescribed profile
- * and move with it, ũ = u_in, φ Neumann; exit layers copy the velocity and ũ of the exit layer
- * (n·∇u = 0) or take a prescribed profile (outflow { profile = "parabolic" }), φ = 0 (and p = 0)
- * at the exit by odd reflection, which makes the pressure system regular. At the end of each step
+ * with -D ROT_OPEN=1 only for scenes that have them, which need an inflow and an outflow
+ * together): entry layers carry the prescribed profile and move with it, ũ = u_in, φ Neumann,
+ * the rotational p by eq 15; exit layers copy the velocity and ũ of the exit layer (n·∇u = 0)
+ * or take a prescribed profile (outflow { profile = "parabolic" }, the paper's choice above
+ * Re = 10), φ = 0 (and p = 0) at the exit by odd reflection. At the end of each step
  * fluid that left through an exit becomes an exit layer particle, and an entry particle that
  * reached the fluid becomes fluid while an exit particle beyond the last layer takes its place at
  * the back of its row: the particle count never changes, and nothing leaves the device. */
@@ -46,27 +50,22 @@ struct rot {
       k_move, k_shift, k_apply_shift;
   /* entry and exit sections (open.cl; none: nsec = 0 and nothing below exists) */
   cl_uint nsec;
-  int has_outflow;            /* an exit: Dirichlet φ = 0 there, a regular pressure system */
-  int f_section, f_src;       /* section of a layer particle, its velocity progenitor */
-  int f_near;                 /* the fluid particle its p^k is extrapolated from (entry) */
-  cl_mem d_sec;               /* the section table (ROT_SEC reals per section, open.cl) */
-  cl_mem d_role, d_list;      /* recycling: role per particle, exit particles to recycle */
-  cl_mem d_count;             /* recycled so far, entry and exit particles left waiting */
+  int has_outflow;       /* an exit: Dirichlet φ = 0 there, a regular pressure system */
+  int f_section, f_src;  /* section of a layer particle, its velocity progenitor */
+  int f_near;            /* the fluid particle its p^k is extrapolated from (entry) */
+  cl_mem d_sec;          /* the section table (ROT_SEC reals per section, open.cl) */
+  cl_mem d_role, d_list; /* recycling: role per particle, exit particles to recycle */
+  cl_mem d_count;        /* recycled so far, entry and exit particles left waiting */
   cl_kernel k_images, k_dummies, k_dummy_p, k_ustar, k_open_p, k_classify, k_recycle;
 };
 
 enum { ROT_SEC = 10 }; /* reals per section in the table (open.cl) */
 
-static const char *const sources[] = {"common/blas1.cl",
-                                      "common/csr.cl",
-                                      "common/poisson.cl",
-                                      "isph_rotational/walls.cl",
-                                      "isph_rotational/open.cl",
-                                      "isph_rotational/predict.cl",
-                                      "isph_rotational/ppe.cl",
-                                      "isph_rotational/project.cl",
-                                      "isph_rotational/shift.cl",
-                                      NULL};
+static const char *const sources[] = {"common/blas1.cl",          "common/csr.cl",
+                                      "common/poisson.cl",        "isph_rotational/walls.cl",
+                                      "isph_rotational/open.cl",  "isph_rotational/predict.cl",
+                                      "isph_rotational/ppe.cl",   "isph_rotational/project.cl",
+                                      "isph_rotational/shift.cl", NULL};
 static const char *const options[] = {"projection", "shifting", "xsph", PSOLVE_OPTION_NAMES, NULL};
 
 static const struct scene_option *option(const struct scene *s, const char *key)
@@ -213,7 +212,7 @@ static enum clsph_status open_create(struct sim *sim, struct rot *r)
     t[8] = (real)(c->profile == SCENE_UNIFORM ? 1 : c->profile == SCENE_PARABOLIC ? 2 : 0);
   }
   /* an entry feeds on what the exits give back (recycling), and the other way round */
-  CLSPH_CHECK(nin > 0 && nout > 0, CLSPH_E_UNSUPPORTED,
+  CLSPH_CHECK(nin > 0 && nout > 0, CLSPH_E_INPUT,
               "%s: isph-rotational needs an inflow and an outflow section together (the scene "
               "has %d inflow and %d outflow): the particles leaving through an exit are those "
               "entering through an entry",
@@ -237,12 +236,9 @@ static enum clsph_status open_create(struct sim *sim, struct rot *r)
   const struct {
     cl_kernel *k;
     const char *name;
-  } ks[] = {{&r->k_images, "rot_open_images"},
-            {&r->k_dummies, "rot_open_dummies"},
-            {&r->k_dummy_p, "rot_open_dummy_p"},
-            {&r->k_ustar, "rot_open_ustar"},
-            {&r->k_open_p, "rot_open_pressure"},
-            {&r->k_classify, "rot_open_classify"},
+  } ks[] = {{&r->k_images, "rot_open_images"},   {&r->k_dummies, "rot_open_dummies"},
+            {&r->k_dummy_p, "rot_open_dummy_p"}, {&r->k_ustar, "rot_open_ustar"},
+            {&r->k_open_p, "rot_open_pressure"}, {&r->k_classify, "rot_open_classify"},
             {&r->k_recycle, "rot_open_recycle"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
@@ -277,8 +273,8 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
   for (size_t i = 0; i < geo->n; ++i)
     CLSPH_CHECK(geo->kind[i] == KIND_FLUID || geo->kind[i] == KIND_DUMMY ||
                     geo->kind[i] == KIND_INFLOW || geo->kind[i] == KIND_OUTFLOW,
-                CLSPH_E_UNSUPPORTED, "%s: isph-rotational has a particle of kind %d",
-                sc->case_path, geo->kind[i]);
+                CLSPH_E_UNSUPPORTED, "%s: isph-rotational has a particle of kind %d", sc->case_path,
+                geo->kind[i]);
   CLSPH_TRY(sim_psolve_options(sim, &r->popt));
   /* fields: the wall geometry of the dummies, then the scheme's state */
   struct pset *ps = &sim->ps;
@@ -560,8 +556,8 @@ static void rot_destroy(void *state)
                      &r->k_project, &r->k_move,   &r->k_shift,   &r->k_apply_shift};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
-  cl_kernel open[] = {r->k_images, r->k_dummies, r->k_dummy_p, r->k_ustar,
-                      r->k_open_p,  r->k_classify, r->k_recycle};
+  cl_kernel open[] = {r->k_images, r->k_dummies,  r->k_dummy_p, r->k_ustar,
+                      r->k_open_p, r->k_classify, r->k_recycle};
   for (size_t k = 0; k < sizeof open / sizeof *open; ++k)
     if (open[k] != NULL) clReleaseKernel(open[k]);
   cl_mem bufs[] = {r->d_sec, r->d_role, r->d_list, r->d_count};
