@@ -4,12 +4,22 @@
  * (entry and exit layers, open.cl). A dummy d at distance dist_d
  * from the wall with unit normal n_d into the fluid has its image x_d + 2 dist_d n_d in the fluid.
  *   velocity (Morris et al. 1997 extrapolation; "the negative of the interpolated velocity of
- *   its image", sec 3.3.1): u_d = 2 u_wall − Σ_f V_f u_f W / Σ_f V_f W at the image, fluid only;
+ *   its image", sec 3.3.1): u_d = 2 u_wall − Σ_f V_f u_f W / Σ_f V_f W at the image, fluid only
+ *   (option wall_velocity = "shepard", the default); or u_d = 2 u_wall − u_m(d), m(d) the
+ *   particle nearest to the image (wall_velocity = "image", -D ROT_WALL_IMAGE=1), which on a
+ *   straight wall of the lattice is the particle at the image. The Shepard sum at an image half a
+ *   spacing from the wall is one-sided (no fluid behind the wall): in a shear layer it reads
+ *   u(δr/2) + ~0.4 δr u', so the dummies drag too hard and ∇²u next to the wall is off by
+ *   O(U/(H δr)), which grows as δr shrinks (Poiseuille between an entry and an exit: the
+ *   pressure next to the entry's corners; see cases/poiseuille_open.lua);
  *   p and φ (homogeneous Neumann, "propagated along the normal"): a_d = a_m(d), m(d) the fluid
  *   particle nearest to the image.
  * At a box corner the nearest wall point is the corner itself, so the image is the point
  * reflection through the corner: the diagonal dummies take the mean of the fluid around their
  * image, our reading of "averaging between their neighbours" (Lee et al. 2008). */
+#ifndef ROT_WALL_IMAGE
+#define ROT_WALL_IMAGE 0
+#endif
 #define ROT_FLUID   0u
 #define ROT_DUMMY   2u
 #define ROT_INFLOW  3u /* entry layer particle (open.cl) */
@@ -61,7 +71,11 @@ __kernel void rot_dummy_velocity(const uint n, const struct grid g, __global con
     }
   }
   const realv uw = wall_vel[i];
+#if ROT_WALL_IMAGE
+  const realv u = m != i ? R(2.0) * uw - vel[m] : uw;
+#else
   const realv u = wsum > R(0.0) ? R(2.0) * uw - s / wsum : uw;
+#endif
   if (!all(isfinite(u))) flags_raise(flags, CLSPH_FLAG_NAN);
   vel[i] = u;
   mirror[i] = m;

@@ -66,7 +66,8 @@ static const char *const sources[] = {"common/blas1.cl",          "common/csr.cl
                                       "isph_rotational/open.cl",  "isph_rotational/predict.cl",
                                       "isph_rotational/ppe.cl",   "isph_rotational/project.cl",
                                       "isph_rotational/shift.cl", NULL};
-static const char *const options[] = {"projection", "shifting", "xsph", PSOLVE_OPTION_NAMES, NULL};
+static const char *const options[] = {"projection",    "shifting",          "xsph",
+                                      "wall_velocity", PSOLVE_OPTION_NAMES, NULL};
 
 static const struct scene_option *option(const struct scene *s, const char *key)
 {
@@ -89,7 +90,17 @@ static enum clsph_status rot_define(const struct sim *sim, struct prog_opts *o)
                 sim->scene->case_path);
     rotational = strcmp(op->text, "rotational") == 0;
   }
+  int image = 0; /* the dummies' velocity from the particle at their image (walls.cl) */
+  if ((op = option(sim->scene, "wall_velocity")) != NULL) {
+    CLSPH_CHECK(!op->is_number && (!strcmp(op->text, "shepard") || !strcmp(op->text, "image")),
+                CLSPH_E_INPUT,
+                "%s: wall_velocity must be \"shepard\" (the fluid's Shepard interpolation at "
+                "a dummy's image, the default) or \"image\" (the particle at its image)",
+                sim->scene->case_path);
+    image = strcmp(op->text, "image") == 0;
+  }
   CLSPH_TRY(ops_define(1, o)); /* Oger correction in every operator (eqs 25-29) */
+  CLSPH_TRY(prog_opts_define_int(o, "ROT_WALL_IMAGE", image));
   CLSPH_TRY(prog_opts_define_int(o, "ROT_ROTATIONAL", rotational));
   CLSPH_TRY(prog_opts_define_int(o, "ROT_OPEN", sim->scene->nsections > 0));
 done:
