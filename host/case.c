@@ -610,8 +610,9 @@ static int l_circle(lua_State *L)
 static int section_common(lua_State *L, enum scene_section_kind kind)
 {
   static const char *const in_keys[] = {"velocity", "profile", "layers", "name", NULL};
-  static const char *const out_keys[] = {"layers", "name", NULL};
+  static const char *const out_keys[] = {"velocity", "profile", "layers", "name", NULL};
   static const char *const profiles[] = {"", "uniform", "parabolic", NULL};
+  static const char *const out_profiles[] = {"natural", "uniform", "parabolic", NULL};
   const char *fn = kind == SCENE_INFLOW ? "inflow" : "outflow";
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
@@ -637,6 +638,19 @@ static int section_common(lua_State *L, enum scene_section_kind kind)
     if (!isfinite(c->velocity)) luaL_error(L, "inflow: needs velocity = (m/s)");
     int p = get_choice(L, 1, fn, "profile", profiles, 1);
     c->profile = p == 2 ? SCENE_PARABOLIC : SCENE_UNIFORM;
+  } else { /* natural exit (n·∇u = 0) unless a profile is prescribed */
+    int p = get_choice(L, 1, fn, "profile", out_profiles, 0);
+    c->profile = p == 2 ? SCENE_PARABOLIC : p == 1 ? SCENE_UNIFORM : 0;
+    c->velocity = get_number(L, 1, fn, "velocity", NAN);
+    if (c->profile != 0 && !(isfinite(c->velocity) && c->velocity > 0.0))
+      luaL_error(L, "outflow: profile = \"%s\" needs velocity = (m/s, > 0: the %s speed out)",
+                 out_profiles[p], p == 2 ? "peak" : "mean");
+    if (c->profile == 0 && !isnan(c->velocity))
+      luaL_error(L,
+                 "outflow: velocity = %g needs a prescribed profile (\"parabolic\" or "
+                 "\"uniform\"); a natural exit takes the velocity of the fluid",
+                 c->velocity);
+    if (c->profile == 0) c->velocity = 0.0;
   }
   return 0;
 }
@@ -1047,6 +1061,34 @@ static int l_sample(lua_State *L)
   return 1;
 }
 
+/* t = sim.field(name [, component [, kind]]): the particles of a kind (fluid unless
+ * given; "all"), t.x, t.y and t.value, arrays indexed from 1 in the same order. */
+static int l_field_values(lua_State *L)
+{
+  const struct case_sim_api *api = api_of(L);
+  const char *field = luaL_checkstring(L, 1);
+  int comp = (int)luaL_optinteger(L, 2, 1) - 1;
+  int kind = kind_of(L, 3);
+  size_t n = 0;
+  double *xy = NULL, *v = NULL;
+  if (api->field_values == NULL ||
+      api->field_values(api->ctx, field, comp, kind, &n, &xy, &v) != CLSPH_OK)
+    return luaL_error(L, "sim.field: no field '%s' component %d", field, comp + 1);
+  lua_createtable(L, 0, 3);
+  const char *names[] = {"x", "y", "value"};
+  for (int c = 0; c < 3; ++c) {
+    lua_createtable(L, (int)n, 0);
+    for (size_t i = 0; i < n; ++i) {
+      lua_pushnumber(L, c < 2 ? xy[2 * i + (size_t)c] : v[i]);
+      lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+    lua_setfield(L, -2, names[c]);
+  }
+  free(xy);
+  free(v);
+  return 1;
+}
+
 /* f = sim.force(group [, since]): the force of the fluid on a wall group (N/m), the mean over
  * the outputs at t >= since, or the last output: f.x, f.y (total), f.pressure_x, f.pressure_y,
  * f.viscous_x, f.viscous_y, f.samples. */
@@ -1277,6 +1319,7 @@ enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api
                                  {"max", l_max},
                                  {"mean", l_mean},
                                  {"sample", l_sample},
+                                 {"field", l_field_values},
                                  {"force", l_force_metric},
                                  {"profile_error", l_profile_error},
                                  {"profile", l_profile_at}};

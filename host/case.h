@@ -30,6 +30,10 @@ struct case_sim_api {
   enum clsph_status (*force)(void *ctx, const char *group, double since, double out[6],
                              int *samples);
   const char *dir; /* the output folder (profile_<name>.csv for sim.profile); NULL: none */
+  /** The particles of `kind` (−1: all): their positions (n x, y pairs) and component `comp` of a
+   *  field, in arrays the caller frees. */
+  enum clsph_status (*field_values)(void *ctx, const char *field, int comp, int kind, size_t *n,
+                                    double **xy, double **values);
 };
 
 /** @brief Run a case script and fill the scene.

@@ -40,7 +40,8 @@
  *
  * Sections. `layers` lattice layers on the side opposite to the normal (0 < −h ≤ layers·dr, h the
  * signed distance along the normal), spanning a->b. Inflow velocity: U n (uniform) or
- * 4 U s (1 − s) n (parabolic, U the peak, s ∈ [0, 1] along a->b); outflow particles start at rest.
+ * 4 U s (1 − s) n (parabolic, U the peak, s ∈ [0, 1] along a->b); outflow particles start at rest
+ * (a natural exit) or with their prescribed profile, along −n.
  *
  * Order of the particles: fluid (rows of increasing y, increasing x within a row), then wall
  * particles (USAW: walls in scene order, vertices along each polyline; dummy: rows), then the
@@ -1048,10 +1049,11 @@ static enum clsph_status build_section(struct build *b, int k)
       const double ap[2] = {p.x[0] - sc->a[0], p.x[1] - sc->a[1]};
       const double along = dot2(ap, t), h = dot2(ap, n);
       if (along < -tol || along > len + tol || h >= -tol || h < -thick) continue;
-      if (sc->kind == SCENE_INFLOW) {
+      if (sc->kind == SCENE_INFLOW || sc->profile != 0) { /* outflow: along −n */
         double f = fmin(1.0, fmax(0.0, along / len));
         double speed =
             sc->profile == SCENE_PARABOLIC ? sc->velocity * 4.0 * f * (1.0 - f) : sc->velocity;
+        if (sc->kind == SCENE_OUTFLOW) speed = -speed;
         p.v[0] = speed * n[0];
         p.v[1] = speed * n[1];
       }

@@ -62,8 +62,8 @@ struct scene_section {
   enum scene_section_kind kind;
   char name[SCENE_NAME];
   double a[2], b[2];
-  enum scene_profile profile;
-  double velocity; /* mean (uniform) or peak (parabolic) normal speed, m/s; outflow: unused */
+  enum scene_profile profile; /* outflow: 0 (natural exit, n·∇u = 0) unless prescribed */
+  double velocity; /* mean (uniform) or peak (parabolic) normal speed, m/s; 0 for a natural exit */
   int layers;      /* particle layers outside the section (3 unless given) */
   int line;
 };

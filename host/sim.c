@@ -1054,6 +1054,53 @@ done:
   return st;
 }
 
+/* Positions and one component of a field of the particles of one kind (−1: all). */
+static enum clsph_status metric_particles(void *ctx, const char *field, int comp, int kind,
+                                          size_t *count, double **xy, double **values)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ((struct metric_ctx *)ctx)->sim;
+  real *v = NULL, *x = NULL;
+  cl_uint *k = NULL;
+  double *oxy = NULL, *ov = NULL;
+  int idx = pset_find(&sim->ps, field);
+  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  const struct pfield *f = &sim->ps.f[idx];
+  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
+              field, f->nout);
+  const size_t n = sim->ps.n;
+  v = malloc(n * f->elem);
+  x = malloc(2 * n * sizeof *x);
+  k = malloc(n * sizeof *k);
+  oxy = malloc(2 * n * sizeof *oxy + 1);
+  ov = malloc(n * sizeof *ov + 1);
+  CLSPH_CHECK(v != NULL && x != NULL && k != NULL && oxy != NULL && ov != NULL, CLSPH_E_NOMEM,
+              "out of memory");
+  CLSPH_TRY(kern_read(sim->dev, f->d, n * f->elem, v));
+  CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_pos), 2 * n * sizeof *x, x));
+  CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_kind), n * sizeof *k, k));
+  size_t c = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (kind >= 0 && k[i] != (cl_uint)kind) continue;
+    const size_t at = i * (size_t)f->ncomp + (size_t)comp;
+    oxy[2 * c] = (double)x[2 * i];
+    oxy[2 * c + 1] = (double)x[2 * i + 1];
+    ov[c] = f->type == PF_REAL ? (double)v[at] : (double)((const cl_uint *)(const void *)v)[at];
+    ++c;
+  }
+  *count = c;
+  *xy = oxy;
+  *values = ov;
+  oxy = ov = NULL;
+done:
+  free(ov);
+  free(oxy);
+  free(k);
+  free(x);
+  free(v);
+  return st;
+}
+
 static enum clsph_status metric_sample(void *ctx, const char *field, int comp, double x, double y,
                                        double *value)
 {
@@ -1223,9 +1270,9 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
   if (script != NULL && strcmp(sim->status, "ok") == 0) {
     struct metric_ctx ctx = {sim};
     struct case_sim_api api = {
-        &ctx,           sim->time,    sim->step,          (double)sim->ps.n, sim->wall_steps,
-        sim->wall_most, metric_stats, metric_sample_many, metric_sample,     metric_force,
-        o->dir};
+        &ctx,           sim->time,       sim->step,          (double)sim->ps.n, sim->wall_steps,
+        sim->wall_most, metric_stats,    metric_sample_many, metric_sample,     metric_force,
+        o->dir,         metric_particles};
     enum clsph_status ms = case_metrics(script, &api, metrics);
     if (ms != CLSPH_OK) {
       snprintf(sim->status, sizeof sim->status, "metrics failed");

@@ -4,7 +4,8 @@
  *   rotational:  p^{k+1} = p^k + φ − µ ∇·ũ                          (eqs 11 and 20)
  *   homogeneous: p^{k+1} = φ (the equation was solved for p, eq 7)
  * u^{k−1} ← u^k for the next BDF2 step. The fluid then moves with r += δt (u + ε_x ΔU),
- * ΔU_i = Σ_j V_j (u_j − u_i) W_ij over the fluid (XSPH, ε_x = 0 unless the case asks for it). */
+ * ΔU_i = Σ_j V_j (u_j − u_i) W_ij over the fluid (XSPH, ε_x = 0 unless the case asks for it);
+ * entry and exit layer particles move with their own (prescribed or copied) velocity, open.cl. */
 __kernel void rot_project(OP_ARGS, __global const uint *kind, __global const real *phi,
                           __global const realv *ustar, __global const real *div, const real coef,
                           const real mu, __global realv *vel, __global realv *vel_prev,
@@ -45,7 +46,14 @@ __kernel void rot_move(const uint n, const struct grid g, __global const uint *c
   const uint i = get_global_id(0);
   if (i >= n) return;
   realv x = pos[i];
-  if (kind[i] != ROT_FLUID) {
+  const uint ki = kind[i];
+  if (ki == ROT_INFLOW || ki == ROT_OUTFLOW) { /* entry and exit layers: with their velocity */
+    x += dt * vel[i];
+    if (!all(isfinite(x))) flags_raise(flags, CLSPH_FLAG_NAN);
+    pos_new[i] = x;
+    return;
+  }
+  if (ki != ROT_FLUID) {
     pos_new[i] = x;
     return;
   }

@@ -2,16 +2,26 @@
  * stepping (Hosseini & Feng 2011, J. Comput. Phys. 230:7473), and its homogeneous projection
  * (option projection = "homogeneous"), on dummy-particle walls. One time step (sec 3.2):
  *   1. L_i, the Oger correction over all neighbours (eq 25, common/operators.cl)
- *   2. dummy velocities extrapolated from the fluid, mirrors for Neumann (sec 3.3.1, walls.cl)
+ *   2. dummy velocities extrapolated from the fluid, mirrors for Neumann (sec 3.3.1, walls.cl);
+ *      the entry and exit layers' velocities, mirrors and coefficients (open.cl)
  *   3. ũ explicitly: a0 ũ = a1 u^k − a2 u^{k−1} + δt (ν∇²u^k − ∇p^k/ρ + g)  (eq 9; 5 without
  *      ∇p^k), BDF2 coefficients for variable steps (predict.cl)
  *   4. ∇²φ = (a0 ρ/δt) ∇·ũ, ũ = u_wall on the dummies (eqs 13, 27, sec 3.3.3), Neumann by
  *      propagation to the dummies (ppe.cl), BiCGStab (solvers/pressure); no Dirichlet row, so
- *      the system is reinforced (the paper pins one value instead, sec 3.2)
+ *      the system is reinforced (the paper pins one value instead, sec 3.2), unless an exit's
+ *      φ = 0 (eq 19) makes it regular
  *   5. u^{k+1} = ũ − δt/(a0 ρ) ∇φ; p^{k+1} = p^k + φ − µ∇·ũ (eqs 10-11); homogeneous: p = φ
- *   6. r += δt u^{k+1} (+ XSPH), then Xu shifting (sec 3.4, shift.cl)
- * Entry and exit sections (sec 3.3.2-3.3.3) are not implemented yet: scenes with inflow or
- * outflow sections are refused. */
+ *   6. r += δt u^{k+1} (+ XSPH), then Xu shifting (sec 3.4, shift.cl); then the recycling at
+ *      the entry and exit sections (open.cl)
+ * Entry and exit sections (sec 3.3.2-3.3.3, eqs 16-20; kernels/isph_rotational/open.cl, built
+ * with -D ROT_OPEN=1 only for scenes that have them, which need an inflow and an outflow
+ * together): entry layers carry the prescribed profile and move with it, ũ = u_in, φ Neumann,
+ * the rotational p by eq 15; exit layers copy the velocity and ũ of the exit layer (n·∇u = 0)
+ * or take a prescribed profile (outflow { profile = "parabolic" }, the paper's choice above
+ * Re = 10), φ = 0 (and p = 0) at the exit by odd reflection. At the end of each step
+ * fluid that left through an exit becomes an exit layer particle, and an entry particle that
+ * reached the fluid becomes fluid while an exit particle beyond the last layer takes its place at
+ * the back of its row: the particle count never changes, and nothing leaves the device. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -36,11 +46,22 @@ struct rot {
   double xsph;     /* XSPH ε (0: off) */
   double dt_prev;  /* the last step, s (0 before the first: BDF1) */
   double umax;     /* largest fluid speed at the last max_dt, m/s */
-  int f_p, f_phi, f_uprev, f_ustar, f_div, f_rhs, f_L, f_mirror, f_dist, f_normal, f_uwall, f_shift,
-      f_vnew, f_posn;
+  int f_p, f_phi, f_uprev, f_ustar, f_div, f_rhs, f_L, f_mirror, f_coef, f_dist, f_normal, f_uwall,
+      f_shift, f_vnew, f_posn;
   cl_kernel k_dummy, k_prop, k_predict, k_source, k_apply, k_coeffs, k_diag, k_count, k_project,
       k_move, k_shift, k_apply_shift;
+  /* entry and exit sections (open.cl; none: nsec = 0 and nothing below exists) */
+  cl_uint nsec;
+  int has_outflow;       /* an exit: Dirichlet φ = 0 there, a regular pressure system */
+  int f_section, f_src;  /* section of a layer particle, its velocity progenitor */
+  int f_near;            /* the fluid particle its p^k is extrapolated from (entry) */
+  cl_mem d_sec;          /* the section table (ROT_SEC reals per section, open.cl) */
+  cl_mem d_role, d_list; /* recycling: role per particle, exit particles to recycle */
+  cl_mem d_count;        /* recycled so far, entry and exit particles left waiting */
+  cl_kernel k_images, k_dummies, k_dummy_p, k_ustar, k_open_p, k_classify, k_recycle;
 };
+
+enum { ROT_SEC = 10 }; /* reals per section in the table (open.cl) */
 
 static const char *const sources[] = {"common/blas1.cl",
                                       "common/csr.cl",
@@ -48,12 +69,14 @@ static const char *const sources[] = {"common/blas1.cl",
                                       "common/poisson.cl",
                                       "isph_rotational/walls.cl",
                                       "isph_rotational/force.cl",
+                                      "isph_rotational/open.cl",
                                       "isph_rotational/predict.cl",
                                       "isph_rotational/ppe.cl",
                                       "isph_rotational/project.cl",
                                       "isph_rotational/shift.cl",
                                       NULL};
-static const char *const options[] = {"projection", "shifting", "xsph", PSOLVE_OPTION_NAMES, NULL};
+static const char *const options[] = {"projection",    "shifting",          "xsph",
+                                      "wall_velocity", PSOLVE_OPTION_NAMES, NULL};
 
 static const struct scene_option *option(const struct scene *s, const char *key)
 {
@@ -76,8 +99,19 @@ static enum clsph_status rot_define(const struct sim *sim, struct prog_opts *o)
                 sim->scene->case_path);
     rotational = strcmp(op->text, "rotational") == 0;
   }
+  int image = 0; /* the dummies' velocity from the particle at their image (walls.cl) */
+  if ((op = option(sim->scene, "wall_velocity")) != NULL) {
+    CLSPH_CHECK(!op->is_number && (!strcmp(op->text, "shepard") || !strcmp(op->text, "image")),
+                CLSPH_E_INPUT,
+                "%s: wall_velocity must be \"shepard\" (the fluid's Shepard interpolation at "
+                "a dummy's image, the default) or \"image\" (the particle at its image)",
+                sim->scene->case_path);
+    image = strcmp(op->text, "image") == 0;
+  }
   CLSPH_TRY(ops_define(1, o)); /* Oger correction in every operator (eqs 25-29) */
+  CLSPH_TRY(prog_opts_define_int(o, "ROT_WALL_IMAGE", image));
   CLSPH_TRY(prog_opts_define_int(o, "ROT_ROTATIONAL", rotational));
+  CLSPH_TRY(prog_opts_define_int(o, "ROT_OPEN", sim->scene->nsections > 0));
 done:
   return st;
 }
@@ -99,11 +133,12 @@ static enum clsph_status ppe_apply(void *ctx, cl_mem x, cl_mem y)
   enum clsph_status st = CLSPH_OK;
   struct rot *r = ctx;
   cl_uint n;
-  cl_mem mirror = pset_mem(&r->sim->ps, r->f_mirror);
+  cl_mem mirror = pset_mem(&r->sim->ps, r->f_mirror), coef = pset_mem(&r->sim->ps, r->f_coef);
   CLSPH_TRY(op_prefix(r->sim, r, r->k_apply, &n));
   CLSPH_TRY(kern_set_at(r->k_apply, 7, KARG(mirror)));
-  CLSPH_TRY(kern_set_at(r->k_apply, 8, KARG(x)));
-  CLSPH_TRY(kern_set_at(r->k_apply, 9, KARG(y)));
+  CLSPH_TRY(kern_set_at(r->k_apply, 8, KARG(coef)));
+  CLSPH_TRY(kern_set_at(r->k_apply, 9, KARG(x)));
+  CLSPH_TRY(kern_set_at(r->k_apply, 10, KARG(y)));
   CLSPH_TRY(kern_launch(r->sim->dev, r->k_apply, n, NULL));
 done:
   return st;
@@ -114,10 +149,11 @@ static enum clsph_status ppe_diagonal(void *ctx, cl_mem d)
   enum clsph_status st = CLSPH_OK;
   struct rot *r = ctx;
   cl_uint n;
-  cl_mem mirror = pset_mem(&r->sim->ps, r->f_mirror);
+  cl_mem mirror = pset_mem(&r->sim->ps, r->f_mirror), coef = pset_mem(&r->sim->ps, r->f_coef);
   CLSPH_TRY(op_prefix(r->sim, r, r->k_diag, &n));
   CLSPH_TRY(kern_set_at(r->k_diag, 7, KARG(mirror)));
-  CLSPH_TRY(kern_set_at(r->k_diag, 8, KARG(d)));
+  CLSPH_TRY(kern_set_at(r->k_diag, 8, KARG(coef)));
+  CLSPH_TRY(kern_set_at(r->k_diag, 9, KARG(d)));
   CLSPH_TRY(kern_launch(r->sim->dev, r->k_diag, n, NULL));
 done:
   return st;
@@ -142,18 +178,95 @@ static enum clsph_status ppe_coefficients(void *ctx, cl_mem row, cl_mem col, cl_
   enum clsph_status st = CLSPH_OK;
   struct rot *r = ctx;
   cl_uint n;
-  cl_mem mirror = pset_mem(&r->sim->ps, r->f_mirror);
+  cl_mem mirror = pset_mem(&r->sim->ps, r->f_mirror), coef = pset_mem(&r->sim->ps, r->f_coef);
   CLSPH_TRY(op_prefix(r->sim, r, r->k_coeffs, &n));
   CLSPH_TRY(kern_set_at(r->k_coeffs, 7, KARG(mirror)));
-  CLSPH_TRY(kern_set_at(r->k_coeffs, 8, KARG(row)));
-  CLSPH_TRY(kern_set_at(r->k_coeffs, 9, KARG(col)));
-  CLSPH_TRY(kern_set_at(r->k_coeffs, 10, KARG(val)));
+  CLSPH_TRY(kern_set_at(r->k_coeffs, 8, KARG(coef)));
+  CLSPH_TRY(kern_set_at(r->k_coeffs, 9, KARG(row)));
+  CLSPH_TRY(kern_set_at(r->k_coeffs, 10, KARG(col)));
+  CLSPH_TRY(kern_set_at(r->k_coeffs, 11, KARG(val)));
   CLSPH_TRY(kern_launch(r->sim->dev, r->k_coeffs, n, NULL));
 done:
   return st;
 }
 
+static void rot_destroy(void *state);
+
 /* ---- create ---- */
+
+/* The entry and exit sections: checks, the section table, the fields and kernels of open.cl. */
+static enum clsph_status open_create(struct sim *sim, struct rot *r)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *sc = sim->scene;
+  const struct geom *geo = &sim->geom;
+  struct pset *ps = &sim->ps;
+  real *tab = NULL;
+  cl_uint *u = NULL;
+  int nin = 0, nout = 0;
+  r->nsec = (cl_uint)sc->nsections;
+  tab = calloc((size_t)sc->nsections * ROT_SEC, sizeof *tab);
+  u = calloc(geo->n, sizeof *u);
+  CLSPH_CHECK(tab != NULL && u != NULL, CLSPH_E_NOMEM, "isph-rotational: out of memory");
+  for (int k = 0; k < sc->nsections; ++k) {
+    const struct scene_section *c = &sc->sections[k];
+    const double len = hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
+    const int in = c->kind == SCENE_INFLOW;
+    nin += in;
+    nout += !in;
+    /* the layers must cover the support of the fluid next to the section (3 h, h = 1.2 dr) */
+    CLSPH_CHECK(c->layers * sc->dr >= sim->sm.support - 0.75 * sc->dr, CLSPH_E_INPUT,
+                "%s:%d: %s '%s': %d layers do not cover the smoothing support of the fluid next "
+                "to it (%.3g dr); give layers = %d or more (the paper's 3, sec 3.3.2)",
+                sc->case_path, c->line, in ? "inflow" : "outflow", c->name, c->layers,
+                sim->sm.support / sc->dr, (int)ceil(sim->sm.support / sc->dr - 0.75));
+    real *t = tab + (size_t)k * ROT_SEC;
+    t[0] = (real)c->a[0];
+    t[1] = (real)c->a[1];
+    t[2] = (real)((c->b[0] - c->a[0]) / len);
+    t[3] = (real)((c->b[1] - c->a[1]) / len);
+    t[4] = (real)len;
+    t[5] = (real)(c->layers * sc->dr);
+    t[6] = (real)c->velocity;
+    t[7] = (real)(in ? 1 : 2);
+    t[8] = (real)(c->profile == SCENE_UNIFORM ? 1 : c->profile == SCENE_PARABOLIC ? 2 : 0);
+  }
+  /* an entry feeds on what the exits give back (recycling), and the other way round */
+  CLSPH_CHECK(nin > 0 && nout > 0, CLSPH_E_INPUT,
+              "%s: isph-rotational needs an inflow and an outflow section together (the scene "
+              "has %d inflow and %d outflow): the particles leaving through an exit are those "
+              "entering through an entry",
+              sc->case_path, nin, nout);
+  r->has_outflow = nout > 0;
+  CLSPH_TRY(kern_buffer(sim->dev, (size_t)sc->nsections * ROT_SEC * sizeof *tab, tab, &r->d_sec,
+                        "sections"));
+  for (size_t i = 0; i < geo->n; ++i)
+    u[i] = geo->kind[i] == KIND_INFLOW || geo->kind[i] == KIND_OUTFLOW ? (cl_uint)geo->group[i]
+                                                                       : 0xffffffffu;
+  CLSPH_TRY(pset_add(ps, sim->dev, "section", sizeof(cl_uint), u, &r->f_section));
+  pset_describe(ps, r->f_section, PF_UINT, 0, 0);
+  CLSPH_TRY(pset_add(ps, sim->dev, "vel_src", sizeof(cl_uint), NULL, &r->f_src));
+  pset_describe(ps, r->f_src, PF_UINT, 0, 0);
+  CLSPH_TRY(pset_add(ps, sim->dev, "p_near", sizeof(cl_uint), NULL, &r->f_near));
+  pset_describe(ps, r->f_near, PF_UINT, 0, 0);
+  CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(cl_uint), NULL, &r->d_role, "recycle roles"));
+  CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(cl_uint), NULL, &r->d_list, "recycle list"));
+  const cl_uint zeros[3] = {0, 0, 0};
+  CLSPH_TRY(kern_buffer(sim->dev, sizeof zeros, zeros, &r->d_count, "recycle count"));
+  const struct {
+    cl_kernel *k;
+    const char *name;
+  } ks[] = {{&r->k_images, "rot_open_images"},   {&r->k_dummies, "rot_open_dummies"},
+            {&r->k_dummy_p, "rot_open_dummy_p"}, {&r->k_ustar, "rot_open_ustar"},
+            {&r->k_open_p, "rot_open_pressure"}, {&r->k_classify, "rot_open_classify"},
+            {&r->k_recycle, "rot_open_recycle"}};
+  for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
+    CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
+done:
+  free(u);
+  free(tab);
+  return st;
+}
 
 static enum clsph_status rot_create(struct sim *sim, void **state)
 {
@@ -178,9 +291,10 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
     r->xsph = o->number;
   }
   for (size_t i = 0; i < geo->n; ++i)
-    CLSPH_CHECK(geo->kind[i] == KIND_FLUID || geo->kind[i] == KIND_DUMMY, CLSPH_E_UNSUPPORTED,
-                "%s: isph-rotational has no entry or exit sections yet (sec 3.3.2-3.3.3)",
-                sc->case_path);
+    CLSPH_CHECK(geo->kind[i] == KIND_FLUID || geo->kind[i] == KIND_DUMMY ||
+                    geo->kind[i] == KIND_INFLOW || geo->kind[i] == KIND_OUTFLOW,
+                CLSPH_E_UNSUPPORTED, "%s: isph-rotational has a particle of kind %d", sc->case_path,
+                geo->kind[i]);
   CLSPH_TRY(sim_psolve_options(sim, &r->popt));
   /* fields: the wall geometry of the dummies, then the scheme's state */
   struct pset *ps = &sim->ps;
@@ -212,6 +326,9 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
   pset_describe(ps, r->f_uwall, PF_REAL, 0, 0);
   CLSPH_TRY(pset_add(ps, sim->dev, "mirror", sizeof(cl_uint), NULL, &r->f_mirror));
   pset_describe(ps, r->f_mirror, PF_UINT, 0, 0);
+  CLSPH_TRY(pset_add(ps, sim->dev, "mirror_coef", sizeof(real), NULL, &r->f_coef));
+  pset_describe(ps, r->f_coef, PF_REAL, 0, 0);
+  if (sc->nsections > 0) CLSPH_TRY(open_create(sim, r));
   /* kernels, operators, solver */
   struct {
     cl_kernel *k;
@@ -236,12 +353,7 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
   r = NULL;
 done:
   free(host);
-  if (r != NULL) {
-    rot_force_destroy(&r->force);
-    psolve_destroy(&r->ps);
-    ops_destroy(&r->ops);
-    free(r);
-  }
+  if (r != NULL) rot_destroy(r);
   return st;
 }
 
@@ -252,9 +364,56 @@ static enum clsph_status propagate(struct sim *sim, struct rot *r, int field)
   enum clsph_status st = CLSPH_OK;
   cl_uint n = (cl_uint)sim->ps.n;
   cl_mem kind = pset_mem(&sim->ps, sim->f_kind), mirror = pset_mem(&sim->ps, r->f_mirror);
-  cl_mem a = pset_mem(&sim->ps, field);
-  CLSPH_TRY(KERN_SET(r->k_prop, KARG(n), KARG(kind), KARG(mirror), KARG(a)));
+  cl_mem coef = pset_mem(&sim->ps, r->f_coef), a = pset_mem(&sim->ps, field);
+  CLSPH_TRY(KERN_SET(r->k_prop, KARG(n), KARG(kind), KARG(mirror), KARG(coef), KARG(a)));
   CLSPH_TRY(kern_launch(sim->dev, r->k_prop, n, NULL));
+done:
+  return st;
+}
+
+/* The entry and exit layers before the prediction (open.cl): velocities, mirrors, coefficients. */
+static enum clsph_status open_images(struct sim *sim, struct rot *r)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  const real dr = (real)sim->scene->dr;
+  cl_mem pos = pset_mem(ps, sim->f_pos), kind = pset_mem(ps, sim->f_kind);
+  cl_mem section = pset_mem(ps, r->f_section), vel = pset_mem(ps, sim->f_vel);
+  cl_mem uprev = pset_mem(ps, r->f_uprev), uwall = pset_mem(ps, r->f_uwall);
+  cl_mem mirror = pset_mem(ps, r->f_mirror), coef = pset_mem(ps, r->f_coef);
+  cl_mem src = pset_mem(ps, r->f_src), pnear = pset_mem(ps, r->f_near);
+  CLSPH_TRY(KERN_SET(r->k_images, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
+                     KARG(kind), KARG(section), KARG(r->d_sec), KARG(dr), KARG(vel), KARG(uprev),
+                     KARG(uwall), KARG(mirror), KARG(coef), KARG(src), KARG(pnear),
+                     KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch(sim->dev, r->k_images, n, NULL));
+  CLSPH_TRY(KERN_SET(r->k_dummies, KARG(n), KARG(kind), KARG(mirror), KARG(coef), KARG(pnear)));
+  CLSPH_TRY(kern_launch(sim->dev, r->k_dummies, n, NULL));
+done:
+  return st;
+}
+
+/* After the motion: exits take the fluid that crossed them, entries give fluid and take back
+ * exit particles (open.cl). Positions change: the next step's sort puts them in their cells. */
+static enum clsph_status open_recycle(struct sim *sim, struct rot *r)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  const real tol = (real)(1e-6 * sim->scene->dr);
+  cl_mem pos = pset_mem(ps, sim->f_pos), kind = pset_mem(ps, sim->f_kind);
+  cl_mem section = pset_mem(ps, r->f_section), vel = pset_mem(ps, sim->f_vel);
+  cl_mem uprev = pset_mem(ps, r->f_uprev), uwall = pset_mem(ps, r->f_uwall);
+  cl_mem normal = pset_mem(ps, r->f_normal), p = pset_mem(ps, r->f_p);
+  cl_mem phi = pset_mem(ps, r->f_phi);
+  CLSPH_TRY(KERN_SET(r->k_classify, KARG(n), KARG(pos), KARG(kind), KARG(section), KARG(r->d_sec),
+                     KARG(r->nsec), KARG(tol), KARG(r->d_role)));
+  CLSPH_TRY(kern_launch(sim->dev, r->k_classify, n, NULL));
+  CLSPH_TRY(KERN_SET(r->k_recycle, KARG(n), KARG(r->d_role), KARG(r->d_list), KARG(r->d_sec),
+                     KARG(pos), KARG(kind), KARG(section), KARG(vel), KARG(uprev), KARG(uwall),
+                     KARG(normal), KARG(p), KARG(phi), KARG(r->d_count)));
+  CLSPH_TRY(kern_launch(sim->dev, r->k_recycle, 1, NULL));
 done:
   return st;
 }
@@ -283,6 +442,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
 #undef M
   cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
   cl_mem vel = pset_mem(ps, sim->f_vel), kind = pset_mem(ps, sim->f_kind);
+  cl_mem mcoef = pset_mem(ps, r->f_coef);
   /* BDF2 coefficients for steps dt (now) and dt_prev (BDF1 on the first step) */
   const double w = r->dt_prev > 0.0 ? dt / r->dt_prev : 0.0;
   const double b0 = (1.0 + 2.0 * w) / (1.0 + w);
@@ -297,8 +457,10 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   /* 2. dummy velocities and mirrors (sec 3.3.1) */
   CLSPH_TRY(KERN_SET(r->k_dummy, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
                      KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(uwall), KARG(vel),
-                     KARG(mirror), KARG(sim->d_flags)));
+                     KARG(mirror), KARG(mcoef), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, r->k_dummy, n, NULL));
+  /* 2'. entry and exit layers (sec 3.3.2-3.3.3) */
+  if (r->nsec > 0) CLSPH_TRY(open_images(sim, r));
   /* 3. prediction (eq 9 or 5) */
   CLSPH_TRY(op_prefix(sim, r, r->k_predict, &np));
   {
@@ -310,6 +472,11 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
       CLSPH_TRY(kern_set_at(r->k_predict, i++, a[k]));
   }
   CLSPH_TRY(kern_launch(sim->dev, r->k_predict, n, NULL));
+  if (r->nsec > 0) { /* ũ of the exit layers: that of their progenitor */
+    cl_mem src = pset_mem(ps, r->f_src);
+    CLSPH_TRY(KERN_SET(r->k_ustar, KARG(n), KARG(kind), KARG(src), KARG(ustar)));
+    CLSPH_TRY(kern_launch(sim->dev, r->k_ustar, n, NULL));
+  }
   /* 4. source and pressure equation (eqs 13 or 7) */
   const real scale = (real)(b0 * sc->rho0 / dt);
   CLSPH_TRY(op_prefix(sim, r, r->k_source, &np));
@@ -320,7 +487,8 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(kern_launch(sim->dev, r->k_source, n, NULL));
   r->op.n = ps->n;
   r->op.grid = &sim->grid;
-  r->ps.opt.singular = PSOLVE_REINFORCE; /* Neumann everywhere: no Dirichlet row */
+  /* Neumann everywhere: no Dirichlet row, reinforce; an exit's φ = 0 makes it regular */
+  r->ps.opt.singular = r->has_outflow ? PSOLVE_REGULAR : PSOLVE_REINFORCE;
   struct psolve_result res;
   cl_mem x = r->rotational ? phi : p; /* the previous solution is the initial guess */
   CLSPH_TRY(psolve_solve(&r->ps, &r->op, rhs, x, &res));
@@ -340,6 +508,18 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   }
   CLSPH_TRY(kern_launch(sim->dev, r->k_project, n, NULL));
   CLSPH_TRY(propagate(sim, r, r->f_p));
+  if (r->nsec > 0 && r->rotational) { /* p on the entry layers: eq 15 */
+    cl_mem section = pset_mem(ps, r->f_section), pnear = pset_mem(ps, r->f_near);
+    CLSPH_TRY(op_prefix(sim, r, r->k_open_p, &np));
+    cl_uint k = 7;
+    const struct karg a[] = {KARG(section), KARG(r->d_sec), KARG(pnear), KARG(vel),
+                             KARG(rho),     KARG(mu),       KARG(accel), KARG(p)};
+    for (size_t q = 0; q < sizeof a / sizeof *a; ++q)
+      CLSPH_TRY(kern_set_at(r->k_open_p, k++, a[q]));
+    CLSPH_TRY(kern_launch(sim->dev, r->k_open_p, n, NULL));
+    CLSPH_TRY(KERN_SET(r->k_dummy_p, KARG(n), KARG(kind), KARG(pnear), KARG(p)));
+    CLSPH_TRY(kern_launch(sim->dev, r->k_dummy_p, n, NULL));
+  }
   r->dt_prev = dt;
   /* 6. motion (+ XSPH) and shifting */
   cl_mem posn = pset_mem(ps, r->f_posn);
@@ -365,6 +545,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
                        KARG(shift), KARG(vel), KARG(vnew), KARG(sim->d_flags)));
     CLSPH_TRY(kern_launch(sim->dev, r->k_apply_shift, n, NULL));
   }
+  if (r->nsec > 0) CLSPH_TRY(open_recycle(sim, r));
 done:
   return st;
 }
@@ -415,6 +596,13 @@ static void rot_destroy(void *state)
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   rot_force_destroy(&r->force);
+  cl_kernel open[] = {r->k_images, r->k_dummies,  r->k_dummy_p, r->k_ustar,
+                      r->k_open_p, r->k_classify, r->k_recycle};
+  for (size_t k = 0; k < sizeof open / sizeof *open; ++k)
+    if (open[k] != NULL) clReleaseKernel(open[k]);
+  cl_mem bufs[] = {r->d_sec, r->d_role, r->d_list, r->d_count};
+  for (size_t k = 0; k < sizeof bufs / sizeof *bufs; ++k)
+    if (bufs[k] != NULL) clReleaseMemObject(bufs[k]);
   psolve_destroy(&r->ps);
   ops_destroy(&r->ops);
   free(r);

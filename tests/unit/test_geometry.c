@@ -578,6 +578,19 @@ static void test_sections(void)
     if (g.kind[i] == KIND_INFLOW) ok &= g.v[2 * i] == 1.5 && g.v[2 * i + 1] == 0.0;
   TC_CHECK(ok, "uniform inflow: v = U n");
   geometry_free(&g);
+
+  /* a prescribed (parabolic) exit profile: along −n, peak 2 m/s; s = y along (2, 0)->(2, 1) */
+  secs[1].profile = SCENE_PARABOLIC;
+  secs[1].velocity = 2.0;
+  TC_CHECK(geometry_build(&s, "none", 0, &g) == CLSPH_OK, "channel, parabolic exit");
+  ok = 1;
+  for (size_t i = 0; i < g.n; ++i) {
+    double y = g.x[2 * i + 1];
+    if (g.kind[i] == KIND_OUTFLOW)
+      ok &= fabs(g.v[2 * i] - 2.0 * 4.0 * y * (1.0 - y)) < tol && g.v[2 * i + 1] == 0.0;
+  }
+  TC_CHECK(ok, "parabolic exit: v = 4 U y (1 − y) ex (out of the fluid, along −n)");
+  geometry_free(&g);
 }
 
 /* ---- errors ------------------------------------------------------------------------------- */
