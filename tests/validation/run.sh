@@ -38,6 +38,11 @@ run cavity_re400_n200_isph_usaw cavity re=400 n=200 t_end=30 checkpoint=1
   --out "$out/cavity_re1000_n240_cost_probe" --quiet || true
 python3 tests/validation/cavity_pressure.py "$out/cavity_re400_n60_isph_usaw" \
   "$out/cavity_re400_n60_wcsph_usaw" tests/validation/cavity_re400_pressure || true
+# square cylinder, Re = 1 (Hosseini & Feng sec 4.3): C_D at H/40 and H/80, both projections
+for n in 40 80; do
+  run square_cylinder_n${n}_rotational square_cylinder n=$n
+  run square_cylinder_n${n}_homogeneous square_cylinder n=$n homogeneous=1
+done
 # dam break over a wedge at the paper's δr = 0.01 m, both schemes, force chart
 run dam_break_wedge_isph_usaw dam_break_wedge
 run dam_break_wedge_wcsph_usaw dam_break_wedge wcsph=1
