@@ -35,7 +35,8 @@
 __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ustar,
                            __global const real *P, __global const real *pt, const real rho,
                            const real dt, const realv gravity, __global const uint *free_surface,
-                           __global const real *divr, const uint free_flow, __global realv *vel,
+                           __global const real *divr, const uint free_flow,
+                           const uint stop_at_walls, __global realv *vel,
                            __global realv *acc)
 {
   const uint i = get_global_id(0);
@@ -50,6 +51,7 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   realv grad = (realv)(R(0.0));
   realv mx = (realv)(R(0.0)), my = (realv)(R(0.0)); /* G−{x}, G−{y}: the columns of G−{r} */
   int near_air = ISPH_GRAD_CORR == 2 || free_surface[i];
+  uint wet = 0; /* fluid neighbours */
   struct neigh_iter it;
   neigh_begin(&it, &g, x);
   uint j;
@@ -57,6 +59,7 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
+    wet += kind[j] == ISPH_FLUID;
 #if ISPH_GRAD_SYM
     const realv gw = vol[j] * smoothing_f(sqrt(r2)) * r;
     grad -= (pa - p[j]) * gw;
@@ -107,10 +110,30 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   if (ISPH_GRAD_CORR != 0 && near_air && det > R(0.1) * gm * gm)
     grad = (realv)(my.y * grad.x - my.x * grad.y, mx.x * grad.y - mx.y * grad.x) / det * gm;
   /* ∇p̃ = ∇P + ρ g, so the gravity of u* cancels exactly: ũ = u* − δt g − (δt/ρ) G−{P} */
-  const realv u_new = ustar[i] - dt * gravity - dt / rho * grad / gam[i];
+  realv u_new = ustar[i] - dt * gravity - dt / rho * grad / gam[i];
 #else
-  const realv u_new = ustar[i] - dt / rho * grad / gam[i];
+  realv u_new = ustar[i] - dt / rho * grad / gam[i];
 #endif
+  /* A free-surface particle is a Dirichlet row (p̃ given), so the projection cannot hold it off
+   * a wall: eq 39 takes the rows of particles that hit a wall fast out of the free surface, but
+   * not a film creeping down a wall (the column's meniscus on the wedge case's left wall went
+   * through it at t = 0.50 s, 0.52 δr deep) nor spray with no fluid neighbour at all (the jet
+   * over the apex, single file, through the right wall). Such a particle that would come within
+   * h q_max/8 of a wall in this step loses its velocity into the wall (an inelastic impact;
+   * our departure from the paper). Only in scenes with gravity (stop_at_walls), where a free
+   * surface is physics: in a confined flow a particle taken for free surface is a symptom,
+   * and a wall crossing there must show (the cavity's stability map). */
+  if (stop_at_walls && (free_surface[i] || wet == 0u)) {
+    neigh_begin(&it, &g_seg, x);
+    while (neigh_next(&it, &g_seg, seg_start, &s)) {
+      const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, t = b - a;
+      const realv c = a + clamp(dot(x - a, t) / dot(t, t), R(0.0), R(1.0)) * t;
+      const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
+      const real un = dot(u_new - us, seg_n[s]);
+      if (un < R(0.0) && length(x - c) + dt * un < SMOOTH_SUPPORT / R(8.0))
+        u_new -= un * seg_n[s];
+    }
+  }
   acc[i] = (u_new - vel[i]) / dt; /* the particle's acceleration, for the force bound (49) */
   vel[i] = u_new;
 }

@@ -328,6 +328,8 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_project, &i, sizeof divr, &divr));
   const cl_uint free_flow = nfree > 0.0;
   CLSPH_TRY(arg(is->k_project, &i, sizeof free_flow, &free_flow));
+  const cl_uint stop_at_walls = hypot(sc->gravity[0], sc->gravity[1]) > 0.0;
+  CLSPH_TRY(arg(is->k_project, &i, sizeof stop_at_walls, &stop_at_walls));
   CLSPH_TRY(arg(is->k_project, &i, sizeof vel, &vel));
   cl_mem acc = pset_mem(ps, is->f_acc); /* the accelerations, kept for the next free surface */
   CLSPH_TRY(arg(is->k_project, &i, sizeof acc, &acc));
