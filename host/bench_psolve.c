@@ -1,7 +1,8 @@
 /* bench_psolve.c: `clsph bench psolve`: the pressure solve on the manufactured problem of
  * pproblem.h (jittered lattice, corrected Morris Laplacian: a non-symmetric operator with
  * Dirichlet rows) for 1e3 .. 1e6 unknowns: BiCGStab with the operator stored per solve (CSR) or
- * recomputed at each application, with Jacobi, Jacobi + 2 sweeps or the aggregation multigrid, and UMFPACK on the host up to
+ * recomputed at each application, with Jacobi, Jacobi + 2 sweeps or the aggregation multigrid, and
+ * UMFPACK on the host up to
  * --bench-direct-max unknowns. Prints iterations, time per solve and per iteration (medians of
  * --bench-reps cold solves from x = 0), writes OUT/psolve.csv and, with gnuplot, OUT/psolve.png
  * (time per solve against unknowns, log-log). */

@@ -21,12 +21,12 @@
 /* Stencil radius and width of level 1 and of the coarser levels. */
 #define MG_R1 GRID_SUB
 #if DIM == 2
-#define MG_W1 ((2 * MG_R1 + 1) * (2 * MG_R1 + 1))
-#define MG_WC 9
+#define MG_W1       ((2 * MG_R1 + 1) * (2 * MG_R1 + 1))
+#define MG_WC       9
 #define MG_CHILDREN 4
 #else
-#define MG_W1 ((2 * MG_R1 + 1) * (2 * MG_R1 + 1) * (2 * MG_R1 + 1))
-#define MG_WC 27
+#define MG_W1       ((2 * MG_R1 + 1) * (2 * MG_R1 + 1) * (2 * MG_R1 + 1))
+#define MG_WC       27
 #define MG_CHILDREN 8
 #endif
 
@@ -233,8 +233,7 @@ __kernel void mg_jacobi(const int4 nl, const int R, __global const real *S, __gl
 
 /* Level 1 right-hand side: rc = Pᵀ r (the sum over each cell's aggregated unknowns) */
 __kernel void mg_restrict_csr(const uint ncells, __global const uint *start,
-                              __global const uint *agg, __global const real *r,
-                              __global real *rc)
+                              __global const uint *agg, __global const real *r, __global real *rc)
 {
   const uint c = get_global_id(0);
   if (c >= ncells) return;
@@ -287,8 +286,7 @@ __kernel void mg_dense(const uint m, __global const real *M, __global const real
 }
 
 /* dw = ω dinv */
-__kernel void mg_damp(const uint n, const real omega, __global const real *dinv,
-                      __global real *dw)
+__kernel void mg_damp(const uint n, const real omega, __global const real *dinv, __global real *dw)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;

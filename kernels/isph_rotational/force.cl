@@ -14,11 +14,10 @@
  * No particle lies on the wall in our layout (fluid rows δr/2 from it, dummies δr/2 inside), so
  * both values are interpolated to it. out[5k..5k+4] = p, ∂u_x/∂x, ∂u_x/∂y, ∂u_y/∂x, ∂u_y/∂y. */
 __kernel void rot_surface_sample(const uint ns, __global const realv *xs, __global const realv *uw,
-                                 const uint n, const struct grid g,
-                                 __global const uint *cell_start, __global const realv *pos,
-                                 __global const real *vol, __global const uint *kind,
-                                 __global const realv *vel, __global const real *p,
-                                 __global real *out)
+                                 const uint n, const struct grid g, __global const uint *cell_start,
+                                 __global const realv *pos, __global const real *vol,
+                                 __global const uint *kind, __global const realv *vel,
+                                 __global const real *p, __global real *out)
 {
   const uint k = get_global_id(0);
   if (k >= ns) return;

@@ -36,8 +36,7 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
                            __global const real *P, __global const real *pt, const real rho,
                            const real dt, const realv gravity, __global const uint *free_surface,
                            __global const real *divr, const uint free_flow,
-                           const uint stop_at_walls, __global realv *vel,
-                           __global realv *acc)
+                           const uint stop_at_walls, __global realv *vel, __global realv *acc)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ISPH_FLUID) return;
@@ -130,8 +129,7 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
       const realv c = a + clamp(dot(x - a, t) / dot(t, t), R(0.0), R(1.0)) * t;
       const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
       const real un = dot(u_new - us, seg_n[s]);
-      if (un < R(0.0) && length(x - c) + dt * un < SMOOTH_SUPPORT / R(8.0))
-        u_new -= un * seg_n[s];
+      if (un < R(0.0) && length(x - c) + dt * un < SMOOTH_SUPPORT / R(8.0)) u_new -= un * seg_n[s];
     }
   }
   acc[i] = (u_new - vel[i]) / dt; /* the particle's acceleration, for the force bound (49) */

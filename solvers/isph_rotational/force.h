@@ -10,12 +10,11 @@
 #include "prog.h"
 #include "scene.h"
 
-
 /** The sample points of one force group. */
 struct rot_samples {
   char group[SCENE_NAME];
   size_t n;
-  double *nrm, *len;      /* unit normal into the fluid, length of wall each stands for */
+  double *nrm, *len;       /* unit normal into the fluid, length of wall each stands for */
   cl_mem d_x, d_uw, d_out; /* position, wall velocity, the 5 values per point */
   real *h_out;
 };

@@ -39,13 +39,13 @@ struct rot {
   struct psolve ps;
   struct psolve_options popt;
   struct psolve_op op;
-  struct sim *sim; /* for the operator callbacks, set at each step */
+  struct sim *sim;        /* for the operator callbacks, set at each step */
   struct rot_force force; /* sample points of the force groups (force.c) */
-  int rotational;  /* 1: rotational (eqs 9-11), 0: homogeneous (eqs 5-8) */
-  double c_shift;  /* Xu et al.'s C (0: off) */
-  double xsph;     /* XSPH ε (0: off) */
-  double dt_prev;  /* the last step, s (0 before the first: BDF1) */
-  double umax;     /* largest fluid speed at the last max_dt, m/s */
+  int rotational;         /* 1: rotational (eqs 9-11), 0: homogeneous (eqs 5-8) */
+  double c_shift;         /* Xu et al.'s C (0: off) */
+  double xsph;            /* XSPH ε (0: off) */
+  double dt_prev;         /* the last step, s (0 before the first: BDF1) */
+  double umax;            /* largest fluid speed at the last max_dt, m/s */
   int f_p, f_phi, f_uprev, f_ustar, f_div, f_rhs, f_L, f_mirror, f_coef, f_dist, f_normal, f_uwall,
       f_shift, f_vnew, f_posn;
   cl_kernel k_dummy, k_prop, k_predict, k_source, k_apply, k_coeffs, k_diag, k_count, k_project,

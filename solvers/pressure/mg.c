@@ -22,13 +22,20 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
   struct {
     cl_kernel *k;
     const char *name;
-  } ks[] = {{&mg.k_aggregate, "mg_aggregate"},     {&mg.k_galerkin_csr, "mg_galerkin_csr"},
-            {&mg.k_galerkin, "mg_galerkin"},       {&mg.k_weights, "mg_weights"},
-            {&mg.k_damp, "mg_damp"},               {&mg.k_scale, "blas1_scale"},
-            {&mg.k_residual_csr, "mg_residual_csr"}, {&mg.k_jacobi_csr, "mg_jacobi_csr"},
-            {&mg.k_residual, "mg_residual"},       {&mg.k_jacobi, "mg_jacobi"},
-            {&mg.k_restrict_csr, "mg_restrict_csr"}, {&mg.k_restrict, "mg_restrict"},
-            {&mg.k_prolong_csr, "mg_prolong_csr"}, {&mg.k_prolong, "mg_prolong"},
+  } ks[] = {{&mg.k_aggregate, "mg_aggregate"},
+            {&mg.k_galerkin_csr, "mg_galerkin_csr"},
+            {&mg.k_galerkin, "mg_galerkin"},
+            {&mg.k_weights, "mg_weights"},
+            {&mg.k_damp, "mg_damp"},
+            {&mg.k_scale, "blas1_scale"},
+            {&mg.k_residual_csr, "mg_residual_csr"},
+            {&mg.k_jacobi_csr, "mg_jacobi_csr"},
+            {&mg.k_residual, "mg_residual"},
+            {&mg.k_jacobi, "mg_jacobi"},
+            {&mg.k_restrict_csr, "mg_restrict_csr"},
+            {&mg.k_restrict, "mg_restrict"},
+            {&mg.k_prolong_csr, "mg_prolong_csr"},
+            {&mg.k_prolong, "mg_prolong"},
             {&mg.k_dense, "mg_dense"}};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i)
     CLSPH_TRY(prog_kernel(prog, ks[i].name, ks[i].k));
@@ -70,8 +77,7 @@ static enum clsph_status size_levels(struct mg *mg, const struct grid *g)
   release_levels(mg);
   int n[3] = {g->n[0], g->n[1], dim == 3 ? g->n[2] : 1};
   for (int l = 1;; ++l) {
-    CLSPH_CHECK(l <= MG_MAX_LEVELS, CLSPH_E_INPUT, "multigrid: more than %d levels",
-                MG_MAX_LEVELS);
+    CLSPH_CHECK(l <= MG_MAX_LEVELS, CLSPH_E_INPUT, "multigrid: more than %d levels", MG_MAX_LEVELS);
     struct mg_level *v = &mg->lv[l];
     const size_t cells = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];
     v->R = l == 1 ? sub : 1;
@@ -226,8 +232,7 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
     if (l > 1) {
       const struct mg_level *f = &mg->lv[l - 1];
       const cl_int Rf = f->R;
-      CLSPH_TRY(KERN_SET(mg->k_galerkin, KARG(f->n), KARG(Rf), KARG(f->S), KARG(v->n),
-                         KARG(v->S)));
+      CLSPH_TRY(KERN_SET(mg->k_galerkin, KARG(f->n), KARG(Rf), KARG(f->S), KARG(v->n), KARG(v->S)));
       CLSPH_TRY(kern_launch(mg->dev, mg->k_galerkin, cells, NULL));
     }
     CLSPH_TRY(KERN_SET(mg->k_weights, KARG(cells), KARG(W), KARG(v->S), KARG(omega), KARG(v->dw)));
@@ -296,8 +301,8 @@ enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_m
     CLSPH_TRY(kern_launch(mg->dev, mg->k_jacobi, cells, NULL));
   }
   /* fine level up */
-  CLSPH_TRY(KERN_SET(mg->k_prolong_csr, KARG(nn), KARG(mg->d_agg), KARG(mg->lv[1].x),
-                     KARG(mg->d_t)));
+  CLSPH_TRY(
+      KERN_SET(mg->k_prolong_csr, KARG(nn), KARG(mg->d_agg), KARG(mg->lv[1].x), KARG(mg->d_t)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_prolong_csr, n, NULL));
   CLSPH_TRY(KERN_SET(mg->k_jacobi_csr, KARG(nn), KARG(row), KARG(col), KARG(val), KARG(e),
                      KARG(mg->d_dw), KARG(r), KARG(mg->d_t), KARG(z)));
@@ -309,11 +314,10 @@ done:
 void mg_destroy(struct mg *mg)
 {
   release_levels(mg);
-  cl_kernel *ks[] = {&mg->k_aggregate,    &mg->k_galerkin_csr, &mg->k_galerkin,
-                     &mg->k_weights,      &mg->k_damp,         &mg->k_scale,
-                     &mg->k_residual_csr, &mg->k_jacobi_csr,   &mg->k_residual,
-                     &mg->k_jacobi,       &mg->k_restrict_csr, &mg->k_restrict,
-                     &mg->k_prolong_csr,  &mg->k_prolong,      &mg->k_dense};
+  cl_kernel *ks[] = {
+      &mg->k_aggregate,    &mg->k_galerkin_csr, &mg->k_galerkin,    &mg->k_weights,  &mg->k_damp,
+      &mg->k_scale,        &mg->k_residual_csr, &mg->k_jacobi_csr,  &mg->k_residual, &mg->k_jacobi,
+      &mg->k_restrict_csr, &mg->k_restrict,     &mg->k_prolong_csr, &mg->k_prolong,  &mg->k_dense};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {
     if (*ks[i] != NULL) clReleaseKernel(*ks[i]);
     *ks[i] = NULL;

@@ -16,9 +16,9 @@
 #define MG_COARSEST   256 /* cells of the coarsest level at most */
 
 struct mg_level {
-  cl_int4 n;     /* cells per axis, .s[3] = total */
-  int R, W;      /* stencil radius and width */
-  cl_mem S, dw;  /* stencil coefficients (n.s[3] x W), damped inverse diagonal */
+  cl_int4 n;      /* cells per axis, .s[3] = total */
+  int R, W;       /* stencil radius and width */
+  cl_mem S, dw;   /* stencil coefficients (n.s[3] x W), damped inverse diagonal */
   cl_mem b, x, t; /* right-hand side, solution, pre-smoothed iterate */
 };
 
@@ -28,14 +28,14 @@ struct mg {
   cl_kernel k_aggregate, k_galerkin_csr, k_galerkin, k_weights, k_damp, k_scale, k_residual_csr,
       k_jacobi_csr, k_residual, k_jacobi, k_restrict_csr, k_restrict, k_prolong_csr, k_prolong,
       k_dense;
-  size_t cap;                        /* fine unknowns the buffers hold */
-  cl_mem d_agg, d_dw, d_res, d_t;    /* fine level: aggregate, ω/diag, residual, pre-smoothed */
-  const struct grid *grid;           /* the grid the levels were sized for */
-  int nlevels;                       /* coarse levels 1 .. nlevels (lv[0] unused) */
+  size_t cap;                     /* fine unknowns the buffers hold */
+  cl_mem d_agg, d_dw, d_res, d_t; /* fine level: aggregate, ω/diag, residual, pre-smoothed */
+  const struct grid *grid;        /* the grid the levels were sized for */
+  int nlevels;                    /* coarse levels 1 .. nlevels (lv[0] unused) */
   struct mg_level lv[MG_MAX_LEVELS + 1];
-  size_t m;     /* unknowns of the coarsest level */
-  cl_mem d_M;   /* its dense inverse */
-  real *h_S;    /* host copies for the coarsest inverse */
+  size_t m;   /* unknowns of the coarsest level */
+  cl_mem d_M; /* its dense inverse */
+  real *h_S;  /* host copies for the coarsest inverse */
   double *h_A;
   real *h_M;
 };

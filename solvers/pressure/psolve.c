@@ -296,7 +296,8 @@ static double reinforcement(const struct psolve *ps)
   return ps->opt.singular == PSOLVE_REINFORCE ? ps->opt.reinforce : 0.0;
 }
 
-/* z = M⁻¹ r: none, multigrid, Jacobi, or Jacobi followed by sweeps toward A z = r (scratch: A z). */
+/* z = M⁻¹ r: none, multigrid, Jacobi, or Jacobi followed by sweeps toward A z = r (scratch: A z).
+ */
 static enum clsph_status precond(struct psolve *ps, const struct psolve_op *op, cl_mem r, cl_mem z,
                                  cl_mem scratch)
 {
@@ -523,8 +524,8 @@ enum clsph_status psolve_solve(struct psolve *ps, const struct psolve_op *op, cl
   if (ps->opt.apply == PSOLVE_STORED || multigrid) CLSPH_TRY(store(ps, op));
   CLSPH_TRY(diagonal(ps, op));
   if (multigrid)
-    CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val,
-                       reinforcement(ps), ps->d_dinv));
+    CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val, reinforcement(ps),
+                       ps->d_dinv));
   CLSPH_TRY(bicgstab(ps, op, b, x, res));
   if (res->reason > 0) {
     ps->failures = 0;

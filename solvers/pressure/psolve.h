@@ -85,8 +85,9 @@ struct psolve {
   struct mg mg;              /* the multigrid preconditioner (PSOLVE_MULTIGRID) */
 };
 
-/** @brief Default options: BiCGStab, stored coefficients, the multigrid preconditioner, rtol 1e-8 (double builds) or
- *  1e-5 (float builds, whose dot products bottom out near 1e-6), 1000 iterations, 10 failures. */
+/** @brief Default options: BiCGStab, stored coefficients, the multigrid preconditioner, rtol 1e-8
+ * (double builds) or 1e-5 (float builds, whose dot products bottom out near 1e-6), 1000 iterations,
+ * 10 failures. */
 void psolve_defaults(struct psolve_options *o);
 /** @brief Set an option by name (`solver = "direct"`, `solver_rtol = 1e-6`, ...): key is one of
  *  solver, apply, precond, sweeps, singular, reinforce, rtol, atol, max_it. */

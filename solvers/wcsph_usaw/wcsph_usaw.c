@@ -27,8 +27,8 @@ struct wcsph {
   cl_kernel k_cont, k_vertex, k_predict, k_velocity, k_advance, k_strain;
   cl_mem d_strain; /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
   double c0, p_bg, mass;
-  double p_ref; /* −ρ0 g·r_top: P = p − ρ0 g·r − p_ref is p_bg in a fluid at rest */
-  int dynamic;  /* 1: G+ of P (pressure_form = "dynamic"), 0: G+ of p (the paper's) */
+  double p_ref;     /* −ρ0 g·r_top: P = p − ρ0 g·r − p_ref is p_bg in a fluid at rest */
+  int dynamic;      /* 1: G+ of P (pressure_form = "dynamic"), 0: G+ of p (the paper's) */
   double diffusion; /* factor of the Ferrari density diffusion (1: as published, 0: off) */
 };
 
@@ -40,8 +40,7 @@ static const char *const sources[] = {"usaw/gamma.cl",
                                       "wcsph_usaw/update.cl",
                                       NULL};
 static const char *const options[] = {"sound_speed", "background_pressure", "density_diffusion",
-                                      "pressure_form",
-                                      NULL};
+                                      "pressure_form", NULL};
 
 static enum clsph_status prefix(struct sim *sim, struct wcsph *ws, cl_kernel k, int with_segments,
                                 cl_uint *next)
@@ -100,10 +99,9 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
                   "%s: density_diffusion must be a factor from 0 (off) to 1", sc->case_path);
       ws->diffusion = o->number;
     } else if (strcmp(o->key, "pressure_form") == 0) {
-      CLSPH_CHECK(!o->is_number &&
-                      (strcmp(o->text, "total") == 0 || strcmp(o->text, "dynamic") == 0),
-                  CLSPH_E_INPUT, "%s: pressure_form must be \"total\" or \"dynamic\"",
-                  sc->case_path);
+      CLSPH_CHECK(
+          !o->is_number && (strcmp(o->text, "total") == 0 || strcmp(o->text, "dynamic") == 0),
+          CLSPH_E_INPUT, "%s: pressure_form must be \"total\" or \"dynamic\"", sc->case_path);
       ws->dynamic = strcmp(o->text, "dynamic") == 0;
     } else if (strcmp(o->key, "background_pressure") == 0) {
       CLSPH_CHECK(o->is_number && o->number >= 0.0, CLSPH_E_INPUT,

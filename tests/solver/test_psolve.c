@@ -183,13 +183,12 @@ static void check_singular(const struct dev *dev)
     if (!ok) {
       TC_CHECK(0, "singular (%s): solves run", name);
     } else {
-      TC_CHECK(it.res.reason > 0, "singular (%s): BiCGStab converges (%d its, residual %.1e)",
-               name, it.res.its, it.res.rnorm);
+      TC_CHECK(it.res.reason > 0, "singular (%s): BiCGStab converges (%d its, residual %.1e)", name,
+               it.res.its, it.res.rnorm);
       TC_NEAR(rel_diff(it.x, direct.x, pp.n, 1), 0.0, agree,
               "singular (%s): BiCGStab = UMFPACK up to a constant", name);
       /* discretisation error of the lattice Laplacian: O((2π dr)²), dr = 1/32 */
-      TC_NEAR(it.err, 0.0, 0.05, "singular (%s): = exact up to a constant (discretisation)",
-              name);
+      TC_NEAR(it.err, 0.0, 0.05, "singular (%s): = exact up to a constant (discretisation)", name);
       printf("singular, %-31s n %6zu: BiCGStab %4d its, vs UMFPACK %.1e, vs exact %.3e\n", name,
              pp.n, it.res.its, rel_diff(it.x, direct.x, pp.n, 1), it.err);
     }
