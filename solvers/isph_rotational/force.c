@@ -117,7 +117,8 @@ enum clsph_status rot_force_eval(struct rot_force *rf, const struct dev *dev, co
   for (size_t k = 0; k < s->n; ++k) { /* eq 31: f = Σ (−p n + µ (∇u + ∇uᵀ) n) ΔS */
     const real *o = s->h_out + 5 * k;
     const double nx = s->nrm[2 * k], ny = s->nrm[2 * k + 1], L = s->len[k];
-    const double exx = 2.0 * o[1], exy = (double)o[2] + (double)o[3], eyy = 2.0 * o[4];
+    const double exx = 2.0 * (double)o[1], exy = (double)o[2] + (double)o[3],
+                 eyy = 2.0 * (double)o[4];
     pressure[0] -= (double)o[0] * nx * L;
     pressure[1] -= (double)o[0] * ny * L;
     viscous[0] += mu * (exx * nx + exy * ny) * L;
