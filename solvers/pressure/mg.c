@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "clsph_config.h"
+#include "log.h"
 
 /* Jacobi damping: 2/3 is the classic choice for the 5-point Laplacian; on the particle
  * Laplacian (about 50 neighbours) 0.7 gave the fewest BiCGStab iterations of 0.5-0.9. */
@@ -149,7 +150,8 @@ static int invert(double *a, double *inv, size_t m)
 
 /* The coarsest level's dense inverse. An empty cell is an identity row. A singular operator
  * (pure Neumann, solved mean-free) gets a diagonal reinforcement of 1e-6 (then 1e-3): the
- * preconditioner only has to be close to the inverse on the rest of the space. */
+ * preconditioner only has to be close to the inverse on the rest of the space. One that stays
+ * singular (a zero diagonal: rows that only copy a neighbour's value) gets Jacobi there. */
 static enum clsph_status coarsest(struct mg *mg)
 {
   enum clsph_status st = CLSPH_OK;
@@ -158,6 +160,9 @@ static enum clsph_status coarsest(struct mg *mg)
   const int W = c->W;
   double *dense = NULL, *inv = NULL;
   CLSPH_TRY(kern_read(mg->dev, c->S, m * (size_t)W * sizeof(real), mg->h_S));
+  for (size_t k = 0; k < m * (size_t)W; ++k)
+    CLSPH_CHECK(isfinite((double)mg->h_S[k]), CLSPH_E_BLOWUP,
+                "pressure solve: the operator has a non-finite coefficient (multigrid set-up)");
   dense = malloc(m * m * sizeof *dense);
   inv = malloc(m * m * sizeof *inv);
   CLSPH_CHECK(dense && inv, CLSPH_E_NOMEM, "out of memory");
@@ -192,7 +197,15 @@ static enum clsph_status coarsest(struct mg *mg)
     for (size_t I = 0; I < m; ++I) dense[I * m + I] *= 1.0 + eps;
     ok = invert(dense, inv, m);
   }
-  CLSPH_CHECK(ok, CLSPH_E_BLOWUP, "multigrid: the coarsest operator (%zu cells) is singular", m);
+  if (!ok) { /* a singular block (fluid cut off from every Dirichlet row): Jacobi there; the
+              * Krylov solve decides whether the system itself can be solved */
+    if (!mg->warned_singular)
+      log_warn("multigrid: the coarsest operator (%zu cells) is singular; Jacobi on that level", m);
+    mg->warned_singular = 1;
+    for (size_t i = 0; i < m; ++i)
+      for (size_t j = 0; j < m; ++j)
+        inv[i * m + j] = i == j && mg->h_A[i * m + i] != 0.0 ? 1.0 / mg->h_A[i * m + i] : 0.0;
+  }
   for (size_t k = 0; k < m * m; ++k) mg->h_M[k] = (real)inv[k];
   CLSPH_TRY(kern_write(mg->dev, mg->d_M, m * m * sizeof(real), mg->h_M));
 done:

@@ -38,6 +38,7 @@ struct mg {
   real *h_S;  /* host copies for the coarsest inverse */
   double *h_A;
   real *h_M;
+  int warned_singular; /* the singular-coarsest warning was given */
 };
 
 /** @brief Kernels (from a program built with PSOLVE_SOURCES) and fine-level vectors for cap
