@@ -43,6 +43,15 @@ for n in 40 80; do
   run square_cylinder_n${n}_rotational square_cylinder n=$n
   run square_cylinder_n${n}_homogeneous square_cylinder n=$n homogeneous=1
 done
+# the Re sweep in Breuer et al.'s geometry (32 D, the cylinder 8 D from the entry, parabolic exit
+# above Re = 10, XSPH 0.02 from Re = 20), H/80, against their C_D; and Re = 100, where the paper's
+# runs fail
+for re in 5 10 20 30 50 100; do
+  x=0; [ $re -ge 20 ] && x=0.02
+  e=0; [ $re -gt 10 ] && e=1
+  run square_cylinder_re${re}_n80_rotational square_cylinder n=80 re=$re length=32 xc=8 \
+    exit_parabolic=$e xsph=$x t_end=30 average_from=15
+done
 # dam break over a wedge at the paper's δr = 0.01 m, both schemes, force chart
 run dam_break_wedge_isph_usaw dam_break_wedge
 run dam_break_wedge_wcsph_usaw dam_break_wedge wcsph=1
