@@ -109,7 +109,9 @@ done:
 }
 
 /* Gauss-Jordan inversion with partial pivoting of the m x m matrix a (destroyed) into inv;
- * 0 when a pivot vanishes (relative to the largest entry). */
+ * 0 when a pivot vanishes relative to the largest entry: below 1e-12 in double builds and 1e-5
+ * in float builds, whose coefficients carry rounding errors near 1e-7 (an inverse through such a
+ * pivot amplifies the singular mode by 1e7 and the float solve diverged). */
 static int invert(double *a, double *inv, size_t m)
 {
   double big = 0.0;
@@ -120,7 +122,7 @@ static int invert(double *a, double *inv, size_t m)
     size_t p = c;
     for (size_t i = c + 1; i < m; ++i)
       if (fabs(a[i * m + c]) > fabs(a[p * m + c])) p = i;
-    if (!(fabs(a[p * m + c]) > 1e-12 * big)) return 0;
+    if (!(fabs(a[p * m + c]) > (CLSPH_DOUBLE ? 1e-12 : 1e-5) * big)) return 0;
     if (p != c) {
       for (size_t j = 0; j < m; ++j) {
         double t = a[c * m + j];

@@ -13,7 +13,10 @@
 #include "prog.h"
 
 #define MG_MAX_LEVELS 24
-#define MG_COARSEST   256 /* cells of the coarsest level at most */
+/* The coarsest level has at most MG_COARSEST cells: its dense inverse (m² reals) goes to the
+ * device at every solve. 64 against 256: 8.1 iterations per step instead of 6.9 on the 60²
+ * cavity, in less time. */
+#define MG_COARSEST 64
 
 struct mg_level {
   cl_int4 n;      /* cells per axis, .s[3] = total */
