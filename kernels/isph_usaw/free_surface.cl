@@ -17,6 +17,16 @@
 #ifndef ISPH_IMPACT_STEPS
 #define ISPH_IMPACT_STEPS 10
 #endif
+/* A particle is wet (its pressure row is solved, not given) when the fluid fills at least this
+ * fraction of its kernel: Σ_b V_b w_ab ≥ ISPH_WET γ_a over the fluid neighbours b. A vertex with
+ * one fluid particle at the edge of its support (w ≈ 0) had a row coupled to the fluid by almost
+ * nothing and to its neighbouring vertices fully: the chain of such rows along a wall under a jet
+ * took pressures of ±1e6 to 1e9 Pa (the wedge case, t ≈ 0.5 s), and the segments passed them on
+ * to the fluid (a kick to 14-29 m/s). One particle within about 1.5 δr of a wall vertex wets it (h
+ * = 2 δr). */
+#ifndef ISPH_WET
+#define ISPH_WET R(0.1)
+#endif
 /* Eq 39 with the departures above: a point at distance dist from the wall (or vertex) that
  * closes on it by `closing` in one step. */
 int isph_impact(real dist, real closing)
@@ -37,7 +47,7 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
   const realv x = pos[i], u = vel[i];
   real d = R(0.0);
   int hitting = 0;
-  uint wet = 0;               /* fluid neighbours */
+  real wet = R(0.0);          /* Σ_b V_b w_ab over the fluid neighbours */
   realv gf = (realv)(R(0.0)); /* Σ_b V_b ∇w_ab: into the fluid (and the walls) */
   realv gw = (realv)(R(0.0)); /* ∇γ_a = Σ_s ∇γ_as: away from the walls */
   struct neigh_iter it;
@@ -48,7 +58,7 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
     real r2 = dot(r, r);
     if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
     d -= vol[j] * smoothing_f(sqrt(r2)) * r2; /* r_ab·∇w_ab = F r² */
-    wet += kind[j] == ISPH_FLUID;
+    if (kind[j] == ISPH_FLUID) wet += vol[j] * smoothing_w(sqrt(r2));
     gf += vol[j] * smoothing_f(sqrt(r2)) * r;
   }
   neigh_begin(&it, &g_seg, x);
@@ -76,9 +86,10 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
   if (lw > R(0.0)) nf -= dot(nf, gw / lw) * (gw / lw);
   const real lf = length(nf);
   normal[i] = lf > R(0.0) ? nf / lf : (realv)(R(0.0));
-  /* A wall vertex is a Dirichlet row only when it is dry (no fluid within its support): one
+  /* A wall vertex is a Dirichlet row only when it is dry (ISPH_WET): one
    * next to the free surface would impose p̃ = 0 below the fluid's top row and pull the fluid
    * into the wall; with fluid around, its row of eq 44 extrapolates the pressure to the wall
    * (P constant at rest; above the water line see project.cl). */
-  free_surface[i] = kind[i] == ISPH_VERTEX ? wet == 0u : d <= R(1.5) && (!hitting || wet == 0u);
+  const int dry = wet < ISPH_WET * gam[i];
+  free_surface[i] = kind[i] == ISPH_VERTEX ? dry : d <= R(1.5) && (!hitting || dry);
 }

@@ -106,10 +106,16 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
 #if ISPH_GRAD_SYM
   /* G−{A} = M ∇A with M = [mx my] (before the division by γ): ∇P = M^{-1} G−{P} */
   const real det = mx.x * my.y - my.x * mx.y, gm = gam[i];
+  /* ∇p̃ = ∇P + ρ g, so the gravity of u* cancels exactly: ũ = u* − δt g − (δt/ρ) G−{P} */
+  realv g_part = gravity;
   if (ISPH_GRAD_CORR != 0 && near_air && det > R(0.1) * gm * gm)
     grad = (realv)(my.y * grad.x - my.x * grad.y, mx.x * grad.y - mx.y * grad.x) / det * gm;
-  /* ∇p̃ = ∇P + ρ g, so the gravity of u* cancels exactly: ũ = u* − δt g − (δt/ρ) G−{P} */
-  realv u_new = ustar[i] - dt * gravity - dt / rho * grad / gam[i];
+  else if (near_air) /* too few neighbours to correct: the gradient of p̃ itself, G−{p̃} =
+                      * G−{P} + ρ G−{g·r} = G−{P} + ρ M g; a particle alone in the air (M = 0)
+                      * falls freely, where the cancellation above held it up against gravity
+                      * (spray flying in straight lines out of the wedge case's pool) */
+    g_part = (mx * gravity.x + my * gravity.y) / gm;
+  realv u_new = ustar[i] - dt * g_part - dt / rho * grad / gam[i];
 #else
   realv u_new = ustar[i] - dt / rho * grad / gam[i];
 #endif
@@ -119,19 +125,18 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
    * through it at t = 0.50 s, 0.52 δr deep) nor spray with no fluid neighbour at all (the jet
    * over the apex, single file, through the right wall). Such a particle that would come within
    * h q_max/8 of a wall in this step loses its velocity into the wall (an inelastic impact;
-   * our departure from the paper). Only in scenes with gravity (stop_at_walls), where a free
-   * surface is physics: in a confined flow a particle taken for free surface is a symptom,
-   * and a wall crossing there must show (the cavity's stability map). */
-  if (stop_at_walls && (free_surface[i] || wet == 0u)) {
-    neigh_begin(&it, &g_seg, x);
-    while (neigh_next(&it, &g_seg, seg_start, &s)) {
-      const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, t = b - a;
-      const realv c = a + clamp(dot(x - a, t) / dot(t, t), R(0.0), R(1.0)) * t;
-      const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
-      const real un = dot(u_new - us, seg_n[s]);
-      if (un < R(0.0) && length(x - c) + dt * un < SMOOTH_SUPPORT / R(8.0)) u_new -= un * seg_n[s];
-    }
-  }
+   * our departure from the paper). A particle whose pressure is solved gets the same treatment
+   * within h q_max/16: the fluid sliding up the wedge's slope at 0.3-0.4 δr from it crept
+   * through the apex, where the flow separates and the pressure is negative (−6e3 Pa), and a jet
+   * meeting the right wall went 0.16 δr deep (isph_wall_guard, move.cl; the shift has the same
+   * guard, shift.cl). Only in scenes with gravity
+   * (stop_at_walls), where a free surface is physics: in a confined flow a particle taken for
+   * free surface is a symptom, and a wall crossing there must show (the cavity's stability
+   * map). */
+  if (stop_at_walls)
+    u_new = isph_wall_guard(x, u_new, dt,
+                            SMOOTH_SUPPORT / (free_surface[i] || wet == 0u ? R(8.0) : R(16.0)),
+                            g_seg, seg_start, seg_a, seg_b, seg_n, seg_v1, seg_v2, inv, vel, 1);
   acc[i] = (u_new - vel[i]) / dt; /* the particle's acceleration, for the force bound (49) */
   vel[i] = u_new;
 }
