@@ -18,29 +18,3 @@ __kernel void isph_half_move(const uint n, const real half_dt, const struct grid
   if (!all(isfinite(x))) flags_raise(flags, CLSPH_FLAG_NAN);
   pos[i] = x;
 }
-
-/* The wall guard of scenes with a free surface (our departure from the paper, see project.cl):
- * a motion m of a fluid particle at x over a time tau (a velocity over δt, or a shift over 1)
- * that would bring it within margin of a wall loses its component into the wall, relative to
- * the wall's velocity when moving_walls (vel, the wall vertices' velocities). Past the end of a
- * segment the direction is the one from its end point: over a convex corner the segment's own
- * normal would brake the flow that leaves the corner along the next segment. */
-realv isph_wall_guard(const realv x, realv m, const real tau, const real margin, USAW_SEG_ARGS,
-                      __global const realv *vel, const int moving_walls)
-{
-  struct neigh_iter it;
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
-    const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, t = b - a;
-    const real f = dot(x - a, t) / dot(t, t);
-    const realv c = a + clamp(f, R(0.0), R(1.0)) * t;
-    const real dist = length(x - c);
-    const realv nrm = (f < R(0.0) || f > R(1.0)) && dist > R(0.0) ? (x - c) / dist : seg_n[s];
-    const realv us =
-        moving_walls ? R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]) : (realv)(R(0.0));
-    const real mn = dot(m - us, nrm);
-    if (mn < R(0.0) && dist + tau * mn < margin) m -= mn * nrm;
-  }
-  return m;
-}

@@ -128,13 +128,12 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
    * our departure from the paper). A particle whose pressure is solved gets the same treatment
    * within h q_max/16: the fluid sliding up the wedge's slope at 0.3-0.4 δr from it crept
    * through the apex, where the flow separates and the pressure is negative (−6e3 Pa), and a jet
-   * meeting the right wall went 0.16 δr deep (isph_wall_guard, move.cl; the shift has the same
-   * guard, shift.cl). Only in scenes with gravity
-   * (stop_at_walls), where a free surface is physics: in a confined flow a particle taken for
-   * free surface is a symptom, and a wall crossing there must show (the cavity's stability
-   * map). */
+   * meeting the right wall went 0.16 δr deep (usaw_wall_guard, usaw/common.cl; the shift has the
+   * same guard, shift.cl). Only in scenes with gravity (stop_at_walls), where a free surface is
+   * physics: in a confined flow a particle taken for free surface is a symptom, and a wall crossing
+   * there must show (the cavity's stability map). */
   if (stop_at_walls)
-    u_new = isph_wall_guard(x, u_new, dt,
+    u_new = usaw_wall_guard(x, u_new, dt,
                             SMOOTH_SUPPORT / (free_surface[i] || wet == 0u ? R(8.0) : R(16.0)),
                             g_seg, seg_start, seg_a, seg_b, seg_n, seg_v1, seg_v2, inv, vel, 1);
   acc[i] = (u_new - vel[i]) / dt; /* the particle's acceleration, for the force bound (49) */

@@ -7,37 +7,10 @@
 #ifndef ISPH_SHIFT_MAX
 #define ISPH_SHIFT_MAX R(0.1)
 #endif
-/* Collisions (scenes with a free surface only; our departure from the paper). Free-surface
- * particles are Dirichlet rows and are not shifted (eq 35 is switched off within h q_max/2 of
- * the surface), so nothing keeps two of them apart: the paper reports "particle clumping ... at
- * the free-surface, which is well visible on the jet" (sec 4.3). In the wedge case at δr = 0.02 m
- * ten particles of the jet ended on one point with one velocity, and the particle next to the
- * clump, its sums weighted by ten times the mass at one place, took −8e4 Pa and was thrown at
- * 24 m/s out of the pool. Here, as in the collision model of MPS (Lee et al. 2011), two fluid
- * particles closer than ISPH_COLLIDE δr that approach each other lose their relative normal
- * velocity but a restitution ISPH_RESTITUTION (momentum kept: equal masses), and are moved apart
- * to that distance, half each (at most ISPH_COLLIDE δr / 2 per step; the wall guard applies).
- * Particles at the same point part along a direction set by their two ids. */
 #ifndef ISPH_SHIFT_VCORR /* eq 38 (option shift_velocity, isph_usaw.c) */
 #define ISPH_SHIFT_VCORR 1
 #endif
-#ifndef ISPH_COLLIDE
-#define ISPH_COLLIDE R(0.5)
-#endif
-#ifndef ISPH_RESTITUTION
-#define ISPH_RESTITUTION R(0.2)
-#endif
-/* the unit vector from particle j to particle i, r_ij / |r_ij|; for coincident particles a
- * direction drawn from the pair's ids, opposite for the two */
-realv isph_pair_dir(const realv r, const real len, const real scale, const uint id_i,
-                    const uint id_j)
-{
-  if (len > R(1e-6) * scale) return r / len;
-  const uint lo = min(id_i, id_j), hi = max(id_i, id_j);
-  const real ang = (real)((lo * 2654435761u + hi) % 6283u) * R(1e-3);
-  const realv d = (realv)(cos(ang), sin(ang));
-  return id_i < id_j ? d : -d;
-}
+/* collisions: usaw/common.cl */
 __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
                          __global const uint *free_surface, const real c_shift, const uint guard,
                          const real dr0, __global const uint *id, __global realv *shift,
@@ -50,7 +23,7 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   vel_out[i] = u;
   if (kind[i] != ISPH_FLUID) return;
   const real near2 = R(0.25) * SMOOTH_SUPPORT2; /* (h q_max / 2)² */
-  const real cd = ISPH_COLLIDE * dr0;           /* collision distance */
+  const real cd = USAW_COLLIDE * dr0;           /* collision distance */
   realv gc = (realv)(R(0.0));
   realv cx = (realv)(R(0.0)), cu = (realv)(R(0.0)); /* collisions: move and velocity change */
   int near_surface = 0;
@@ -66,9 +39,9 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
     gc += vol[j] * smoothing_f(sqrt(r2)) * r;
     if (guard && kind[j] == ISPH_FLUID && r2 < cd * cd) {
       const real len = sqrt(r2);
-      const realv e = isph_pair_dir(r, len, dr0, id[i], id[j]);
+      const realv e = usaw_pair_dir(r, len, dr0, id[i], id[j]);
       const real vn = dot(u - vel[j], e);
-      if (vn < R(0.0)) cu -= R(0.5) * (R(1.0) + ISPH_RESTITUTION) * vn * e;
+      if (vn < R(0.0)) cu -= R(0.5) * (R(1.0) + USAW_RESTITUTION) * vn * e;
       cx += R(0.5) * (cd - len) * e;
     }
   }
@@ -76,7 +49,7 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   if (lcx > R(0.5) * cd) cx *= R(0.5) * cd / lcx;
   if (near_surface) {
     if (guard) { /* collisions only */
-      const realv m = isph_wall_guard(x, cx, R(1.0), SMOOTH_SUPPORT / R(16.0), g_seg, seg_start,
+      const realv m = usaw_wall_guard(x, cx, R(1.0), SMOOTH_SUPPORT / R(16.0), g_seg, seg_start,
                                       seg_a, seg_b, seg_n, seg_v1, seg_v2, inv, vel, 0);
       shift[i] = m;
       vel_out[i] = u + cu;
@@ -98,7 +71,7 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
    * slid up the slope around the corner and 0.1-0.2 δr into it */
   dr += cx;
   if (guard)
-    dr = isph_wall_guard(x, dr, R(1.0), SMOOTH_SUPPORT / R(16.0), g_seg, seg_start, seg_a, seg_b,
+    dr = usaw_wall_guard(x, dr, R(1.0), SMOOTH_SUPPORT / R(16.0), g_seg, seg_start, seg_a, seg_b,
                          seg_n, seg_v1, seg_v2, inv, vel, 0);
   /* first-order velocity correction (eq 38) */
   realv du = (realv)(R(0.0));

@@ -229,6 +229,11 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   ARG(ws->k_velocity, i, rho0_h);
   ARG(ws->k_velocity, i, grav);
   ARG(ws->k_velocity, i, pref);
+  const cl_uint guard = hypot(sim->scene->gravity[0], sim->scene->gravity[1]) > 0.0;
+  ARG(ws->k_velocity, i, guard);
+  ARG(ws->k_velocity, i, dr);
+  cl_mem id = pset_mem(ps, sim->f_id);
+  ARG(ws->k_velocity, i, id);
   ARG(ws->k_velocity, i, vel);
   CLSPH_TRY(kern_launch(sim->dev, ws->k_velocity, ps->n, NULL));
   CLSPH_TRY(KERN_SET(ws->k_advance, KARG(n), KARG(sim->grid.geom), KARG(rdt), KARG(mass),
