@@ -15,7 +15,8 @@
 -- which the walls set); u_err_max, u_err_rms: |u − u_in(y)| / U0; v_max: |v| / U0. Measured at
 -- dr = 0.025 (double): p_err_max 0.013 homogeneous, 0.126 rotational (a checkerboard of p next to
 -- the walls before the exit; the bulk within 0.4%), u_err_max 0.003 both (tests/case.cmake).
-param { dr = 0.025, t_end = 1, homogeneous = 0, exit_parabolic = 0, shift = 0.04, wall_image = 1 }
+param { dr = 0.025, t_end = 1, homogeneous = 0, exit_parabolic = 0, shift = 0.04, wall_image = 1,
+        checkpoint = 0 }
 
 local H, L, U0, nu = 1, 1, 1, 1
 domain { 0, 0, L, H }
@@ -30,7 +31,8 @@ fill { 0, 0, L, H }
 inflow { {0, H}, {0, 0}, velocity = U0, profile = "parabolic", name = "entry" }
 outflow { {L, 0}, {L, H}, name = "exit", profile = exit_parabolic == 1 and "parabolic" or "natural",
           velocity = exit_parabolic == 1 and U0 or nil } -- parabolic: the paper's choice above Re 10
-run { t_end = t_end, output_every = t_end / 10 }
+run { t_end = t_end, output_every = t_end / 10,
+      checkpoint_every = checkpoint > 0 and checkpoint or nil } -- s between checkpoints
 
 function metrics(sim)
   local G = 8 * nu * U0 / H ^ 2

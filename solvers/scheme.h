@@ -35,6 +35,10 @@ struct scheme_ops {
    *  forces). */
   enum clsph_status (*wall_force)(struct sim *sim, void *state, const char *group,
                                   struct wall_force *f);
+  /** Host-side doubles the scheme carries from one step to the next (NULL: none), as an array
+   *  inside its state of *count values: a checkpoint saves them and a restart restores them, so
+   *  that a resumed run continues bit for bit. */
+  double *(*persist)(void *state, int *count);
   void (*destroy)(void *state);
 };
 

@@ -290,6 +290,14 @@ clsph_run_test(run_square_cylinder_coarse ${CMAKE_SOURCE_DIR}/cases/square_cylin
 # ∇·ũ/δt: at this resolution its bulk gradient swings between −22% and +17% from one output to
 # the next, so its bound says little more than "it holds"; the rotational one accumulates φ and is
 # steady. The fluid keeps its 100 particles give or take the recycled ones in flight.
+# isph-rotational restarts bit for bit: BDF2's last step length travels in the checkpoint (the
+# scheme's host state), with vel_prev, p and φ among the fields (0.2 s of the coarse channel with
+# its entry and exit, 120 steps, resumed from step 60). Without the step length it resumed with a
+# BDF1 step and differed.
+clsph_add_test(restart_rotational LABELS case COMMAND ${CMAKE_COMMAND}
+               -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/poiseuille_open.lua
+               -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart_rotational
+               "-DSETS=dr=0.1|t_end=0.2|checkpoint=0.1" -P ${CASE_DIR}/restart.cmake)
 clsph_run_test(run_poiseuille_open_h0 ${CMAKE_SOURCE_DIR}/cases/poiseuille_open.lua
                SETS dr=0.1 homogeneous=0
                BOUNDS "p_err_max<0.09" "u_err_max<0.02" "u_err_rms<0.011" "v_max<0.01"

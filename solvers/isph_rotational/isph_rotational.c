@@ -190,6 +190,15 @@ done:
   return st;
 }
 
+/* BDF2 needs the last step's length (predict.cl): a restart keeps it (vel_prev, p and φ are
+ * particle fields and travel in the checkpoint anyway). */
+static double *rot_persist(void *state, int *count)
+{
+  struct rot *r = state;
+  *count = 1;
+  return &r->dt_prev;
+}
+
 static void rot_destroy(void *state);
 
 /* ---- create ---- */
@@ -626,5 +635,6 @@ const struct scheme_ops scheme_isph_rotational = {
     .step = rot_step,
     .max_dt = rot_max_dt,
     .wall_force = rot_wall_force,
+    .persist = rot_persist,
     .destroy = rot_destroy,
 };
