@@ -337,3 +337,5 @@ clsph_cli_test(case_outflow_profile_speed ARGS info ${CASE_DIR}/bad_outflow_prof
                REGEX "bad_outflow_profile.lua:8: outflow: profile = \"parabolic\" needs velocity")
 clsph_cli_test(case_wall_velocity ARGS info ${CASE_DIR}/bad_wall_velocity.lua RC 2
                REGEX "bad_wall_velocity.lua: wall_velocity must be \"shepard\".* or \"image\"")
+clsph_cli_test(case_shift_velocity ARGS info ${CASE_DIR}/bad_shift_velocity.lua RC 2
+               REGEX "bad_shift_velocity.lua: shift_velocity must be \"on\".* or \"off\"")

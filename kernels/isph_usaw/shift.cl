@@ -66,13 +66,15 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
    * slope) |G{1}| reaches 1/h and eq 35 moved a particle by 0.7 h in one step, through the wall */
   const real ldr = length(dr), lmax = ISPH_SHIFT_MAX * h;
   if (ldr > lmax) dr *= lmax / ldr;
+  dr += cx;
   /* in scenes with a free surface, no shift within h q_max/16 of a wall (project.cl): next to
    * the wedge case's apex, where the fluid leaves the corner, the shift carried particles that
    * slid up the slope around the corner and 0.1-0.2 δr into it */
-  dr += cx;
   if (guard)
     dr = usaw_wall_guard(x, dr, R(1.0), SMOOTH_SUPPORT / R(16.0), g_seg, seg_start, seg_a, seg_b,
                          seg_n, seg_v1, seg_v2, inv, vel, 0);
+  shift[i] = dr;
+#if ISPH_SHIFT_VCORR
   /* first-order velocity correction (eq 38) */
   realv du = (realv)(R(0.0));
   neigh_begin(&it, &g, x);
@@ -88,8 +90,6 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
     const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
     du += (u - us) * dot(usaw_grad_gamma_seg(x, a, b, seg_n[s]), dr);
   }
-  shift[i] = dr;
-#if ISPH_SHIFT_VCORR
   vel_out[i] = u + du / gam[i] + cu;
 #else
   vel_out[i] = u + cu;
