@@ -11,9 +11,12 @@
 -- Profiles: u and p along the centreline (profile "centreline").
 -- Metrics: cd, its pressure and viscous parts, pressure_share = cd_pressure / cd (the paper:
 -- about 2/3), cl (zero by symmetry while the wake is steady), cd_dev = cd / cd_ref − 1 and
--- cd_error = |cd_dev|. cfl multiplies the scheme's time-step bounds (the stability map); the
--- drag is averaged from t = average_from (the paper's 1 at Re = 1; the wake of Re = 20 takes
--- about 12 D/U0 to settle).
+-- cd_error = |cd_dev|; where the wake sheds vortices, strouhal = f D / U0 (the frequency of the
+-- lift) and cl_amplitude (the amplitude of that oscillation of C_L); cl_spectrum_median (the
+-- median amplitude of the lift's spectrum: its noise).
+-- cfl multiplies the scheme's time-step bounds (the stability map); the drag is averaged from
+-- t = average_from (the paper's 1 at Re = 1; the wake of Re = 20 takes about 12 D/U0 to
+-- settle).
 param { n = 80, re = 1, t_end = 10, length = 24, xc = 12, homogeneous = 0, exit_parabolic = 0,
         xsph = 0, shift = 0.04, outputs = 20, cfl = 1, average_from = 1 }
 
@@ -61,6 +64,22 @@ function metrics(sim)
   local out = { cd = f.x / q, cd_pressure = f.pressure_x / q, cd_viscous = f.viscous_x / q,
                 cl = f.y / q, force_samples = f.samples }
   out.pressure_share = out.cd_pressure / out.cd
+  -- vortex shedding: the spectrum of the lift over the averaging window (sim.spectrum_peak).
+  -- Over a window of at least 20 D/U0, where one frequency stands out (an amplitude at least 4
+  -- times the spectrum's median; noise alone stays below 3), strouhal = f D / U0 and
+  -- cl_amplitude is the amplitude of that oscillation of C_L; the force noise of SPH (a few per
+  -- cent of C_D from sample to sample) spreads over all frequencies.
+  local h = sim.force_history("cylinder", math.min(average_from, t_end / 2))
+  local span = #h.time > 1 and h.time[#h.time] - h.time[1] or 0
+  if #h.time >= 16 and span >= 20 * D / U0 then -- 3 periods at St = 0.15
+    local p = sim.spectrum_peak(h.time, h.y, 0, 2 * U0 / D)
+    out.cl_spectrum_median = p.median / q
+    if p.amplitude > 4 * p.median and p.amplitude > 1e-3 * math.abs(f.x) then
+      out.strouhal = p.frequency * D / U0
+      out.cl_amplitude = p.amplitude / q
+      out.shedding_periods = p.frequency * span
+    end
+  end
   local ref = breuer(re)
   if ref then
     out.cd_ref = ref

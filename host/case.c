@@ -15,6 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "spectrum.h"
+
 struct case_script {
   lua_State *L;
 };
@@ -1112,6 +1114,73 @@ static int l_force_metric(lua_State *L)
   return 1;
 }
 
+/* t = sim.force_history(group [, since]): the recorded total force of a wall group at each row
+ * with t >= since (all rows without it): arrays t.time, t.x, t.y indexed from 1. */
+static int l_force_history(lua_State *L)
+{
+  const struct case_sim_api *api = api_of(L);
+  const char *group = luaL_checkstring(L, 1);
+  double since = lua_isnoneornil(L, 2) ? -INFINITY : luaL_checknumber(L, 2), *rows = NULL;
+  size_t n = 0;
+  if (api->force_history == NULL ||
+      api->force_history(api->ctx, group, since, &n, &rows) != CLSPH_OK)
+    return luaL_error(L, "sim.force_history: no force of wall group '%s'", group);
+  static const char *const names[] = {"time", "x", "y"};
+  lua_createtable(L, 0, 3);
+  for (int c = 0; c < 3; ++c) {
+    lua_createtable(L, (int)n, 0);
+    for (size_t r = 0; r < n; ++r) {
+      lua_pushnumber(L, rows[3 * r + (size_t)c]);
+      lua_rawseti(L, -2, (lua_Integer)r + 1);
+    }
+    lua_setfield(L, -2, names[c]);
+  }
+  free(rows);
+  return 1;
+}
+
+/* Array `idx` of the Lua table at stack index `idx`, as doubles in a userdata pushed on the stack
+ * (collected with it, also when an error unwinds). */
+static size_t number_array(lua_State *L, int idx, const char *what, double **out)
+{
+  luaL_checktype(L, idx, LUA_TTABLE);
+  const size_t n = (size_t)lua_rawlen(L, idx);
+  double *v = lua_newuserdatauv(L, (n + 1) * sizeof *v, 0);
+  for (size_t k = 0; k < n; ++k) {
+    lua_rawgeti(L, idx, (lua_Integer)k + 1);
+    if (!lua_isnumber(L, -1))
+      return (size_t)luaL_error(L, "sim.spectrum_peak: %s[%d] is not a number", what, (int)k + 1);
+    v[k] = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+  }
+  *out = v;
+  return n;
+}
+
+/* p = sim.spectrum_peak(times, values [, f_lo [, f_hi]]): the dominant frequency of a sampled
+ * signal (spectrum.h): p.frequency, p.amplitude, p.median (the spectrum's noise floor), p.mean. */
+static int l_spectrum_peak(lua_State *L)
+{
+  double *t = NULL, *y = NULL;
+  const double lo = luaL_optnumber(L, 3, 0.0), hi = luaL_optnumber(L, 4, 0.0);
+  const size_t n = number_array(L, 1, "times", &t);
+  const size_t m = number_array(L, 2, "values", &y);
+  struct spectrum_peak p;
+  const enum clsph_status st = n == m ? spectrum_peak(n, t, y, lo, hi, &p) : CLSPH_E_INPUT;
+  if (n != m) return luaL_error(L, "sim.spectrum_peak: %d times but %d values", (int)n, (int)m);
+  if (st != CLSPH_OK) return luaL_error(L, "sim.spectrum_peak: %s", clsph_status_str(st));
+  lua_createtable(L, 0, 4);
+  lua_pushnumber(L, p.frequency);
+  lua_setfield(L, -2, "frequency");
+  lua_pushnumber(L, p.amplitude);
+  lua_setfield(L, -2, "amplitude");
+  lua_pushnumber(L, p.median);
+  lua_setfield(L, -2, "median");
+  lua_pushnumber(L, p.mean);
+  lua_setfield(L, -2, "mean");
+  return 1;
+}
+
 /* Columns `coord` and `value` of a reference CSV ('#' comment lines, then a header row). */
 static int read_reference(lua_State *L, const char *path, const char *coord, const char *value,
                           double **xs, double **vs)
@@ -1321,6 +1390,8 @@ enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api
                                  {"sample", l_sample},
                                  {"field", l_field_values},
                                  {"force", l_force_metric},
+                                 {"force_history", l_force_history},
+                                 {"spectrum_peak", l_spectrum_peak},
                                  {"profile_error", l_profile_error},
                                  {"profile", l_profile_at}};
   for (size_t i = 0; i < sizeof fns / sizeof *fns; ++i) {

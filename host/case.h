@@ -29,6 +29,10 @@ struct case_sim_api {
    *  out = total x, y, pressure x, y, viscous x, y (N/m); samples = outputs averaged. */
   enum clsph_status (*force)(void *ctx, const char *group, double since, double out[6],
                              int *samples);
+  /** The recorded total force of a wall group at each row with t >= since: n rows of (t, x, y)
+   *  in an array the caller frees. */
+  enum clsph_status (*force_history)(void *ctx, const char *group, double since, size_t *n,
+                                     double **rows);
   const char *dir; /* the output folder (profile_<name>.csv for sim.profile); NULL: none */
   /** The particles of `kind` (−1: all): their positions (n x, y pairs) and component `comp` of a
    *  field, in arrays the caller frees. */

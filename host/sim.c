@@ -543,6 +543,7 @@ struct run_out {
   struct force_stat {
     double peak, peak_time, peak_f[2], last[2];
   } * force_stats;
+  double *force_scratch; /* one row of the force history */
   /* frames (--frames): the renderer, the walls as it reads them, the region shown, and a host
    * copy of the arrays a frame reads (pos, vol, kind and the field's) */
   struct frames *frames;
@@ -615,61 +616,230 @@ static void csv_field_header(FILE *f, const struct pset *ps, const char *prefix)
   }
 }
 
-static enum clsph_status open_series(struct sim *sim, struct run_out *o, int append)
+/* A series of the run being restarted (a CSV whose rows lead with their time): its header line
+ * and its rows up to the checkpoint's time, read before this run's files are opened (they may be
+ * the same files). */
+struct kept_series {
+  char *header, *rows;
+  size_t bytes;
+};
+
+/* The rows of `name`, in the folder of the checkpoint `restart`, with time <= t (before: time < t,
+ * for a series whose rows are written as a step begins). A missing file keeps nothing. */
+static enum clsph_status series_keep(const char *restart, const char *name, double t, int before,
+                                     struct kept_series *k)
+{
+  enum clsph_status st = CLSPH_OK;
+  char path[1200];
+  const char *slash = strrchr(restart, '/');
+  const int dir = slash == NULL ? 0 : (int)(slash - restart);
+  int w = slash == NULL ? snprintf(path, sizeof path, "%s", name)
+                        : snprintf(path, sizeof path, "%.*s/%s", dir, restart, name);
+  char *line = NULL;
+  size_t cap = 0, room = 0;
+  FILE *f = NULL;
+  memset(k, 0, sizeof *k);
+  CLSPH_CHECK(w > 0 && (size_t)w < sizeof path, CLSPH_E_INPUT, "path too long: %s", restart);
+  f = fopen(path, "r");
+  if (f == NULL) goto done;
+  ssize_t len;
+  while ((len = getline(&line, &cap, f)) > 0) {
+    if (k->header == NULL) {
+      k->header = strdup(line);
+      CLSPH_CHECK(k->header != NULL, CLSPH_E_NOMEM, "out of memory");
+      continue;
+    }
+    char *end = NULL;
+    const double row_t = strtod(line, &end);
+    if (end == line || row_t > t || (before && row_t == t) || line[len - 1] != '\n')
+      continue; /* later, or cut short */
+    if (k->bytes + (size_t)len + 1 > room) {
+      room = 2 * (k->bytes + (size_t)len + 1);
+      char *r = realloc(k->rows, room);
+      CLSPH_CHECK(r != NULL, CLSPH_E_NOMEM, "out of memory");
+      k->rows = r;
+    }
+    memcpy(k->rows + k->bytes, line, (size_t)len + 1);
+    k->bytes += (size_t)len;
+  }
+done:
+  if (f != NULL) fclose(f);
+  free(line);
+  return st;
+}
+
+/* Append the kept rows to the series just opened at `path` (its header written), when the
+ * headers agree; otherwise the series starts afresh, with a warning. */
+static enum clsph_status series_resume(FILE *f, const char *path, struct kept_series *k)
+{
+  enum clsph_status st = CLSPH_OK;
+  char *line = NULL;
+  size_t cap = 0;
+  if (k->header == NULL) goto done;
+  CLSPH_CHECK(fflush(f) == 0, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
+  FILE *r = fopen(path, "r");
+  CLSPH_CHECK(r != NULL, CLSPH_E_IO, "cannot read %s: %s", path, strerror(errno));
+  const int same = getline(&line, &cap, r) > 0 && strcmp(line, k->header) == 0;
+  fclose(r);
+  if (!same) {
+    log_warn("%s: the restarted run recorded other columns; the series starts afresh", path);
+    k->bytes = 0;
+    goto done;
+  }
+  if (k->bytes > 0)
+    CLSPH_CHECK(fwrite(k->rows, 1, k->bytes, f) == k->bytes, CLSPH_E_IO, "cannot write %s: %s",
+                path, strerror(errno));
+done:
+  free(line);
+  return st;
+}
+
+static void kept_free(struct kept_series *k)
+{
+  free(k->header);
+  free(k->rows);
+}
+
+/* A recorded force as forces.csv holds it (9 digits): the metrics then read the same numbers
+ * whether the run was restarted or not. */
+static double recorded(double v)
+{
+  char b[32];
+  snprintf(b, sizeof b, "%.9g", v);
+  return strtod(b, NULL);
+}
+
+static enum clsph_status force_row(struct sim *sim, struct run_out *o, const double *row);
+
+/* Refill the force history (and its peak and last values) from the kept rows of forces.csv. */
+static enum clsph_status forces_reload(struct sim *sim, struct run_out *o,
+                                       const struct kept_series *k)
+{
+  enum clsph_status st = CLSPH_OK;
+  const int ng = sim->scene->nforces;
+  const size_t cols = 1 + 4 * (size_t)ng;
+  double *row = malloc(cols * sizeof *row);
+  CLSPH_CHECK(row != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (const char *c = k->rows; c != NULL && c < k->rows + k->bytes;) {
+    char *end = NULL;
+    row[0] = strtod(c, &end);
+    for (int g = 0; g < ng; ++g) {
+      double v[6];
+      for (int j = 0; j < 6; ++j) v[j] = strtod(end + 1, &end);
+      memcpy(row + 1 + 4 * g, v + 2, 4 * sizeof *v); /* pressure x, y, viscous x, y */
+    }
+    CLSPH_TRY(force_row(sim, o, row));
+    c = strchr(end, '\n');
+    if (c != NULL) ++c;
+  }
+done:
+  free(row);
+  return st;
+}
+
+/* Open the CSV series of the run. On a restart (restart: the checkpoint's path), each goes on
+ * from the rows the restarted run wrote up to the checkpoint's time, so that it reads as one
+ * run. */
+static enum clsph_status open_series(struct sim *sim, struct run_out *o, const char *restart)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
   char path[1200], name[SCENE_NAME + 32], prefix[SCENE_NAME + 2];
-  const char *mode = append ? "a" : "w";
+  const int np = s->nprofiles;
+  /* the kept rows of the profiles, then of the probes, the flow control and the forces */
+  struct kept_series *kept = calloc((size_t)np + 3, sizeof *kept);
+  CLSPH_CHECK(kept != NULL, CLSPH_E_NOMEM, "out of memory");
+  if (restart != NULL) {
+    for (int p = 0; p < np; ++p) {
+      snprintf(name, sizeof name, "profile_%s.csv", s->profiles[p].name);
+      CLSPH_TRY(series_keep(restart, name, sim->time, 0, &kept[p]));
+    }
+    if (s->nprobes > 0) CLSPH_TRY(series_keep(restart, "probes.csv", sim->time, 0, &kept[np]));
+    if (s->flow.on) /* its rows are written as each step begins */
+      CLSPH_TRY(series_keep(restart, "flow_control.csv", sim->time, 1, &kept[np + 1]));
+    if (s->nforces > 0) CLSPH_TRY(series_keep(restart, "forces.csv", sim->time, 0, &kept[np + 2]));
+  }
   if (s->nprobes > 0) {
     CLSPH_TRY(path_in(o, "probes.csv", path, sizeof path));
-    o->probes = fopen(path, mode);
+    o->probes = fopen(path, "w");
     CLSPH_CHECK(o->probes != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
-    if (!append) {
-      fprintf(o->probes, "time");
-      for (int p = 0; p < s->nprobes; ++p) {
-        snprintf(prefix, sizeof prefix, "%s:", s->probes[p].name);
-        csv_field_header(o->probes, &sim->ps, prefix);
-      }
-      fprintf(o->probes, "\n");
+    fprintf(o->probes, "time");
+    for (int p = 0; p < s->nprobes; ++p) {
+      snprintf(prefix, sizeof prefix, "%s:", s->probes[p].name);
+      csv_field_header(o->probes, &sim->ps, prefix);
     }
+    fprintf(o->probes, "\n");
+    CLSPH_TRY(series_resume(o->probes, path, &kept[np]));
   }
-  if (s->nprofiles > 0) {
-    o->profiles = calloc((size_t)s->nprofiles, sizeof *o->profiles);
+  if (np > 0) {
+    o->profiles = calloc((size_t)np, sizeof *o->profiles);
     CLSPH_CHECK(o->profiles != NULL, CLSPH_E_NOMEM, "out of memory");
   }
-  for (int p = 0; p < s->nprofiles; ++p) {
+  for (int p = 0; p < np; ++p) {
     snprintf(name, sizeof name, "profile_%s.csv", s->profiles[p].name);
     CLSPH_TRY(path_in(o, name, path, sizeof path));
-    o->profiles[p] = fopen(path, mode);
+    o->profiles[p] = fopen(path, "w");
     CLSPH_CHECK(o->profiles[p] != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
-    if (!append) {
-      fprintf(o->profiles[p], "time,s,x,y");
-      csv_field_header(o->profiles[p], &sim->ps, "");
-      fprintf(o->profiles[p], "\n");
-    }
+    fprintf(o->profiles[p], "time,s,x,y");
+    csv_field_header(o->profiles[p], &sim->ps, "");
+    fprintf(o->profiles[p], "\n");
+    CLSPH_TRY(series_resume(o->profiles[p], path, &kept[p]));
   }
   if (s->flow.on) {
     CLSPH_TRY(path_in(o, "flow_control.csv", path, sizeof path));
-    o->flow = fopen(path, mode);
+    o->flow = fopen(path, "w");
     CLSPH_CHECK(o->flow != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
-    if (!append) fprintf(o->flow, "time,dt,body_force_x,slice_velocity,slice_particles\n");
+    fprintf(o->flow, "time,dt,body_force_x,slice_velocity,slice_particles\n");
+    CLSPH_TRY(series_resume(o->flow, path, &kept[np + 1]));
   }
   if (s->nforces > 0) {
     CLSPH_TRY(path_in(o, "forces.csv", path, sizeof path));
     o->force_stats = calloc((size_t)s->nforces, sizeof *o->force_stats);
-    CLSPH_CHECK(o->force_stats != NULL, CLSPH_E_NOMEM, "out of memory");
-    o->forces = fopen(path, mode);
+    o->force_scratch = malloc((1 + 4 * (size_t)s->nforces) * sizeof *o->force_scratch);
+    CLSPH_CHECK(o->force_stats != NULL && o->force_scratch != NULL, CLSPH_E_NOMEM, "out of memory");
+    o->forces = fopen(path, "w");
     CLSPH_CHECK(o->forces != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
-    if (!append) {
-      fprintf(o->forces, "time");
-      for (int g = 0; g < s->nforces; ++g) {
-        const char *n = s->forces[g];
-        fprintf(o->forces, ",%s:fx,%s:fy,%s:fx_pressure,%s:fy_pressure,%s:fx_viscous,%s:fy_viscous",
-                n, n, n, n, n, n);
-      }
-      fprintf(o->forces, "\n");
+    fprintf(o->forces, "time");
+    for (int g = 0; g < s->nforces; ++g) {
+      const char *n = s->forces[g];
+      fprintf(o->forces, ",%s:fx,%s:fy,%s:fx_pressure,%s:fy_pressure,%s:fx_viscous,%s:fy_viscous",
+              n, n, n, n, n, n);
     }
+    fprintf(o->forces, "\n");
+    CLSPH_TRY(series_resume(o->forces, path, &kept[np + 2]));
+    CLSPH_TRY(forces_reload(sim, o, &kept[np + 2]));
+  }
+done:
+  for (int k = 0; kept != NULL && k < np + 3; ++k) kept_free(&kept[k]);
+  free(kept);
+  return st;
+}
+
+/* Append one row (time, then pressure x, y and viscous x, y of each group) to the force history
+ * and update each group's peak and last force. */
+static enum clsph_status force_row(struct sim *sim, struct run_out *o, const double *row)
+{
+  enum clsph_status st = CLSPH_OK;
+  const int ng = sim->scene->nforces;
+  const size_t cols = 1 + 4 * (size_t)ng;
+  if (sim->nforce_rows == sim->force_rows_cap) {
+    size_t cap = sim->force_rows_cap ? 2 * sim->force_rows_cap : 64;
+    double *r = realloc(sim->force_rows, cap * cols * sizeof *r);
+    CLSPH_CHECK(r != NULL, CLSPH_E_NOMEM, "out of memory for the force history");
+    sim->force_rows = r;
+    sim->force_rows_cap = cap;
+  }
+  memcpy(sim->force_rows + sim->nforce_rows * cols, row, cols * sizeof *row);
+  ++sim->nforce_rows;
+  for (int g = 0; g < ng; ++g) {
+    const double *q = row + 1 + 4 * g, ft[2] = {q[0] + q[2], q[1] + q[3]};
+    struct force_stat *fs = &o->force_stats[g];
+    if (hypot(ft[0], ft[1]) > fs->peak) {
+      fs->peak = hypot(ft[0], ft[1]);
+      fs->peak_time = row[0];
+      memcpy(fs->peak_f, ft, sizeof ft);
+    }
+    memcpy(fs->last, ft, sizeof ft);
   }
 done:
   return st;
@@ -760,40 +930,23 @@ static enum clsph_status write_series(struct sim *sim, struct run_out *o, int wh
     /* the velocity gradient at the walls sums over neighbours: the cell table must be current
      * (sorting is idempotent, so the next step's sort and a restart see the same order) */
     CLSPH_TRY(sim_sort(sim));
-    const size_t cols = 1 + 4 * (size_t)s->nforces;
-    if (sim->nforce_rows == sim->force_rows_cap) {
-      size_t cap = sim->force_rows_cap ? 2 * sim->force_rows_cap : 64;
-      double *r = realloc(sim->force_rows, cap * cols * sizeof *r);
-      CLSPH_CHECK(r != NULL, CLSPH_E_NOMEM, "out of memory for the force history");
-      sim->force_rows = r;
-      sim->force_rows_cap = cap;
-    }
-    double *row = sim->force_rows + sim->nforce_rows * cols;
+    double *row = o->force_scratch;
     row[0] = sim->time;
     fprintf(o->forces, "%.17g", sim->time);
     for (int g = 0; g < s->nforces; ++g) {
       struct wall_force f;
       CLSPH_TRY(sim->scheme->wall_force(sim, sim->state, s->forces[g], &f));
-      fprintf(o->forces, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", f.pressure[0] + f.viscous[0],
-              f.pressure[1] + f.viscous[1], f.pressure[0], f.pressure[1], f.viscous[0],
-              f.viscous[1]);
       double *q = row + 1 + 4 * g;
-      q[0] = f.pressure[0];
-      q[1] = f.pressure[1];
-      q[2] = f.viscous[0];
-      q[3] = f.viscous[1];
-      const double ft[2] = {f.pressure[0] + f.viscous[0], f.pressure[1] + f.viscous[1]};
-      struct force_stat *fs = &o->force_stats[g];
-      if (hypot(ft[0], ft[1]) > fs->peak) {
-        fs->peak = hypot(ft[0], ft[1]);
-        fs->peak_time = sim->time;
-        memcpy(fs->peak_f, ft, sizeof ft);
-      }
-      memcpy(fs->last, ft, sizeof ft);
+      q[0] = recorded(f.pressure[0]);
+      q[1] = recorded(f.pressure[1]);
+      q[2] = recorded(f.viscous[0]);
+      q[3] = recorded(f.viscous[1]);
+      fprintf(o->forces, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", q[0] + q[2], q[1] + q[3], q[0], q[1],
+              q[2], q[3]);
     }
-    ++sim->nforce_rows;
     fprintf(o->forces, "\n");
     fflush(o->forces);
+    CLSPH_TRY(force_row(sim, o, row));
   }
   if (o->flow != NULL) fflush(o->flow);
 done:
@@ -1021,6 +1174,7 @@ static void close_out(const struct scene *s, struct run_out *o)
     if (o->profiles[p] != NULL) fclose(o->profiles[p]);
   free(o->profiles);
   free(o->force_stats);
+  free(o->force_scratch);
   io_series_free(&o->series);
   frames_close(o->frames);
   free(o->walls);
@@ -1191,6 +1345,42 @@ done:
   return st;
 }
 
+/* The column block of wall group `group` in the recorded force rows (−1: not recorded). */
+static int force_group(const struct scene *s, const char *group)
+{
+  for (int k = 0; k < s->nforces; ++k)
+    if (strcmp(s->forces[k], group) == 0) return k;
+  return -1;
+}
+
+/* The recorded total force of a group at each row with t >= since: rows of (t, x, y). */
+static enum clsph_status metric_force_history(void *ctx, const char *group, double since, size_t *n,
+                                              double **rows)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ((struct metric_ctx *)ctx)->sim;
+  const int g = force_group(sim->scene, group);
+  *rows = NULL;
+  *n = 0;
+  CLSPH_CHECK(g >= 0, CLSPH_E_INPUT,
+              "metrics: sim.force_history: the case records no force of '%s' (force { \"%s\" })",
+              group, group);
+  const size_t cols = 1 + 4 * (size_t)sim->scene->nforces;
+  double *out = malloc(3 * (sim->nforce_rows + 1) * sizeof *out);
+  CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t r = 0; r < sim->nforce_rows; ++r) {
+    const double *row = sim->force_rows + r * cols;
+    if (row[0] < since * (1.0 - 1e-12)) continue;
+    out[3 * *n] = row[0];
+    out[3 * *n + 1] = row[1 + 4 * g] + row[3 + 4 * g]; /* pressure + viscous */
+    out[3 * *n + 2] = row[2 + 4 * g] + row[4 + 4 * g];
+    ++*n;
+  }
+  *rows = out;
+done:
+  return st;
+}
+
 /* Mean of the recorded forces of a group over the outputs at t >= since (since < 0: the last). */
 static enum clsph_status metric_force(void *ctx, const char *group, double since, double out[6],
                                       int *samples)
@@ -1198,9 +1388,7 @@ static enum clsph_status metric_force(void *ctx, const char *group, double since
   enum clsph_status st = CLSPH_OK;
   struct sim *sim = ((struct metric_ctx *)ctx)->sim;
   const struct scene *s = sim->scene;
-  int g = -1;
-  for (int k = 0; k < s->nforces && g < 0; ++k)
-    if (strcmp(s->forces[k], group) == 0) g = k;
+  const int g = force_group(s, group);
   CLSPH_CHECK(g >= 0, CLSPH_E_INPUT,
               "metrics: sim.force: the case records no force of '%s' "
               "(force { \"%s\" })",
@@ -1287,7 +1475,7 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
                             (double)sim->solver_its_sum / (double)sim->solver_steps);
     cJSON_AddNumberToObject(sv, "iterations_max", (double)sim->solver_its_max);
   }
-  if (o->force_stats != NULL) { /* over the samples of forces.csv written by this run */
+  if (o->force_stats != NULL) { /* over the rows of forces.csv (a restart's included) */
     cJSON *fo = cJSON_AddObjectToObject(root, "forces");
     CLSPH_CHECK(fo != NULL, CLSPH_E_NOMEM, "out of memory");
     for (int g = 0; g < sim->scene->nforces; ++g) {
@@ -1323,10 +1511,19 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
   CLSPH_CHECK(params != NULL && metrics != NULL, CLSPH_E_NOMEM, "out of memory");
   if (script != NULL && strcmp(sim->status, "ok") == 0) {
     struct metric_ctx ctx = {sim};
-    struct case_sim_api api = {
-        &ctx,           sim->time,       sim->step,          (double)sim->ps.n, sim->wall_steps,
-        sim->wall_most, metric_stats,    metric_sample_many, metric_sample,     metric_force,
-        o->dir,         metric_particles};
+    struct case_sim_api api = {.ctx = &ctx,
+                               .time = sim->time,
+                               .steps = sim->step,
+                               .particles = (double)sim->ps.n,
+                               .wall_steps = sim->wall_steps,
+                               .wall_most = sim->wall_most,
+                               .stats = metric_stats,
+                               .sample_many = metric_sample_many,
+                               .sample = metric_sample,
+                               .force = metric_force,
+                               .force_history = metric_force_history,
+                               .dir = o->dir,
+                               .field_values = metric_particles};
     enum clsph_status ms = case_metrics(script, &api, metrics);
     if (ms != CLSPH_OK) {
       snprintf(sim->status, sizeof sim->status, "metrics failed");
@@ -1447,7 +1644,7 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
     o.nsnap = s->output_every > 0.0 ? (int)floor(sim->time / s->output_every + 1e-9) + 1 : 1;
     log_info("restarting from %s at t = %.9g s, step %ld", opt->restart, sim->time, sim->step);
   }
-  CLSPH_TRY(open_series(sim, &o, 0));
+  CLSPH_TRY(open_series(sim, &o, opt->restart));
   pr.tty = isatty(2);
   pr.quiet = opt->quiet;
   pr.start = now();

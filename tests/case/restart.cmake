@@ -1,5 +1,9 @@
 # A run continued from its mid-way checkpoint ends bit-for-bit where the uninterrupted run ended:
 # every particle field of the two final checkpoints is compared with h5diff (exit 0: identical).
+# Its CSV series (forces, profiles, probes, flow control) and its metrics read as one run's, both
+# when it goes on in another folder (the rows up to the checkpoint are copied from the
+# checkpoint's folder) and when it goes on in its own (the rows written after the checkpoint are
+# dropped).
 #   cmake -DCLSPH=exe -DCASE=file -DOUT=dir -DSETS="a=1|b=2" -P restart.cmake
 string(REPLACE "|" ";" SETS "${SETS}")
 set(args "")
@@ -10,7 +14,7 @@ find_program(H5DIFF h5diff)
 if(NOT H5DIFF)
   message(FATAL_ERROR "h5diff not found: apt-get install hdf5-tools")
 endif()
-file(REMOVE_RECURSE ${OUT}/whole ${OUT}/resumed)
+file(REMOVE_RECURSE ${OUT}/whole ${OUT}/resumed ${OUT}/inplace)
 execute_process(COMMAND ${CLSPH} run ${CASE} ${args} --out ${OUT}/whole --quiet RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the uninterrupted run failed (${rc})")
@@ -34,6 +38,31 @@ message("h5diff ${last}: ${out}")
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the resumed run's final state differs from the uninterrupted run's")
 endif()
+# the series and the metrics, in another folder and in place
+file(COPY ${OUT}/whole/ DESTINATION ${OUT}/inplace)
+execute_process(COMMAND ${CLSPH} run ${CASE} ${args} --restart ${OUT}/inplace/${mid}
+                        --out ${OUT}/inplace --quiet RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the run resumed in its own folder failed (${rc})")
+endif()
+file(GLOB series RELATIVE ${OUT}/whole ${OUT}/whole/*.csv)
+foreach(dir resumed inplace)
+  foreach(csv IN LISTS series)
+    file(READ ${OUT}/whole/${csv} a)
+    file(READ ${OUT}/${dir}/${csv} b)
+    if(NOT a STREQUAL b)
+      message(FATAL_ERROR "${dir}/${csv} differs from the uninterrupted run's")
+    endif()
+  endforeach()
+  file(READ ${OUT}/whole/summary.json a)
+  file(READ ${OUT}/${dir}/summary.json b)
+  string(JSON a GET "${a}" metrics)
+  string(JSON b GET "${b}" metrics)
+  if(NOT a STREQUAL b)
+    message(FATAL_ERROR "${dir}: metrics ${b} differ from the uninterrupted run's ${a}")
+  endif()
+endforeach()
+message("series ${series} and metrics: identical, resumed elsewhere and in place")
 execute_process(COMMAND ${H5DIFF} ${OUT}/whole/${last} ${OUT}/whole/${mid} /fields /fields
                 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
 if(rc EQUAL 0)

@@ -1,6 +1,6 @@
 /* test_unit.c: host-only checks (no OpenCL device needed): status names, build options that
  * carry reals exactly, smoothing constants and input checks, grid input checks, the seeded
- * random generator and lattices. */
+ * random generator and lattices, the spectral peak of a sampled signal. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,6 +11,7 @@
 #include "lattice.h"
 #include "rng.h"
 #include "smoothing.h"
+#include "spectrum.h"
 #include "tcheck.h"
 
 static void check_status(void)
@@ -135,6 +136,49 @@ static void check_solver_options(void)
   TC_CHECK(psolve_set(&o, "colour", "red", 0) == CLSPH_E_INPUT, "an unknown option is refused");
 }
 
+/* The dominant frequency of a sampled signal (vortex shedding from a lift history): a sinusoid
+ * in noise, sampled at uneven times as a run's force history is, and noise alone. */
+static void check_spectrum(void)
+{
+  const double pi = 3.14159265358979323846, f0 = 0.137, a0 = 0.3;
+  enum { N = 1200 };
+  static double t[N], y[N], noise[N];
+  struct rng r;
+  rng_seed(&r, 42);
+  double tk = 10.0;
+  for (int k = 0; k < N; ++k) {
+    t[k] = tk;
+    tk += 0.05 * (0.8 + 0.4 * rng_uniform(&r)); /* steps of 0.04 to 0.06 */
+    double g = 0.0; /* noise of standard deviation a0 (sum of 12 uniforms − 6) */
+    for (int j = 0; j < 12; ++j) g += rng_uniform(&r);
+    noise[k] = a0 * (g - 6.0);
+    y[k] = 1.5 + a0 * sin(2.0 * pi * f0 * t[k] + 0.4) + noise[k];
+  }
+  struct spectrum_peak p;
+  TC_CHECK(spectrum_peak(N, t, y, 0.0, 0.0, &p) == CLSPH_OK, "spectrum of a sinusoid in noise");
+  /* the record spans about 8 periods of 1/f0 = 7.3: the peak's width is 1/T = 0.017, its
+   * centre is found to within an eighth of that; white noise of deviation σ = a0 has a spectral
+   * amplitude of about 2σ/√N = 0.017 at any frequency, which adds to or takes from the
+   * sinusoid's: 2.5 of those */
+  TC_NEAR(p.frequency, f0, 2e-3, "dominant frequency of a sinusoid in noise");
+  TC_NEAR(p.amplitude, a0, 2.5 * 2.0 * a0 / sqrt((double)N), "its amplitude");
+  TC_NEAR(p.mean, 1.5, 0.02, "the time-weighted mean");
+  TC_CHECK(p.amplitude > 4.0 * p.median, "the peak stands out of the noise: %g vs median %g",
+           p.amplitude, p.median);
+  /* noise alone: no frequency stands 4 times above the median (the criterion of the square
+   * cylinder's Strouhal number) */
+  TC_CHECK(spectrum_peak(N, t, noise, 0.0, 0.0, &p) == CLSPH_OK, "spectrum of noise");
+  TC_CHECK(p.amplitude < 4.0 * p.median, "noise has no peak: %g vs median %g", p.amplitude,
+           p.median);
+  TC_CHECK(p.median > 0.0 && p.amplitude < 0.1, "noise floor %g, peak %g", p.median, p.amplitude);
+  /* inputs refused */
+  TC_CHECK(spectrum_peak(4, t, y, 0.0, 0.0, &p) == CLSPH_E_INPUT, "4 samples refused");
+  const double back[8] = {0, 1, 2, 3, 3, 4, 5, 6};
+  TC_CHECK(spectrum_peak(8, back, y, 0.0, 0.0, &p) == CLSPH_E_INPUT, "repeated time refused");
+  TC_CHECK(spectrum_peak(N, t, y, 20.0, 0.0, &p) == CLSPH_E_INPUT,
+           "a range above the Nyquist frequency refused");
+}
+
 int main(void)
 {
   log_set_level(LOG_ERROR);
@@ -144,5 +188,6 @@ int main(void)
   check_grid_input();
   check_rng_lattice();
   check_solver_options();
+  check_spectrum();
   return tc_finish("test_unit");
 }
