@@ -21,6 +21,32 @@ struct case_script {
   lua_State *L;
 };
 
+#define FILL_VELOCITY "clsph.fill_velocity" /* registry: the fills' velocity functions */
+
+/* scene_velocity_fn.eval: u, v = the velocity function of fill `region` at x. */
+static enum clsph_status fill_velocity(void *ctx, int region, const double x[2], double v[2])
+{
+  enum clsph_status st = CLSPH_OK;
+  lua_State *L = ctx;
+  const int top = lua_gettop(L);
+  lua_getfield(L, LUA_REGISTRYINDEX, FILL_VELOCITY);
+  CLSPH_CHECK(lua_istable(L, -1) && lua_rawgeti(L, -1, region + 1) == LUA_TFUNCTION, CLSPH_E_INPUT,
+              "fill %d has no velocity function", region + 1);
+  lua_pushnumber(L, x[0]);
+  lua_pushnumber(L, x[1]);
+  CLSPH_CHECK(lua_pcall(L, 2, 2, 0) == LUA_OK, CLSPH_E_INPUT, "%s", lua_tostring(L, -1));
+  CLSPH_CHECK(lua_isnumber(L, -2) && lua_isnumber(L, -1), CLSPH_E_INPUT,
+              "the velocity function returned %s, %s: it must return two numbers u, v",
+              luaL_typename(L, -2), luaL_typename(L, -1));
+  v[0] = lua_tonumber(L, -2);
+  v[1] = lua_tonumber(L, -1);
+  CLSPH_CHECK(isfinite(v[0]) && isfinite(v[1]), CLSPH_E_INPUT,
+              "the velocity function returned (%g, %g): it must be finite", v[0], v[1]);
+done:
+  lua_settop(L, top);
+  return st;
+}
+
 /* State of one load, reachable from every declaration function (as its upvalue). */
 struct loader {
   struct scene *s;
@@ -372,7 +398,7 @@ static int l_fluid(lua_State *L)
 
 static int l_fill(lua_State *L)
 {
-  static const char *const keys[] = {"polygon", "name", NULL};
+  static const char *const keys[] = {"polygon", "name", "velocity", NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "fill");
@@ -382,6 +408,28 @@ static int l_fill(lua_State *L)
   struct scene_region *r = grow(L, (void **)&s->regions, &s->nregions, sizeof *r);
   r->line = current_line(L);
   get_name(L, 1, "fill", "name", r->name, defname);
+  /* the initial velocity: {u, v}, or a function (x, y) -> u, v kept in the registry table
+   * FILL_VELOCITY at the region's index, called when the particles are made */
+  lua_getfield(L, 1, "velocity");
+  if (lua_isfunction(L, -1)) {
+    r->velocity = 2;
+    if (lua_getfield(L, LUA_REGISTRYINDEX, FILL_VELOCITY) != LUA_TTABLE) {
+      lua_pop(L, 1);
+      lua_newtable(L);
+      lua_pushvalue(L, -1);
+      lua_setfield(L, LUA_REGISTRYINDEX, FILL_VELOCITY);
+    }
+    lua_pushvalue(L, -2);
+    lua_rawseti(L, -2, s->nregions);
+    lua_pop(L, 1);
+  } else if (!lua_isnil(L, -1)) {
+    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
+      luaL_error(L, "fill '%s': velocity must be {u, v} (m/s) or a function (x, y) returning u, v",
+                 r->name);
+    r->velocity = 1;
+    to_point(L, "fill", "velocity", r->u0);
+  }
+  lua_pop(L, 1);
   lua_getfield(L, 1, "polygon");
   if (!lua_isnil(L, -1)) {
     int t = lua_gettop(L);
@@ -990,6 +1038,8 @@ enum clsph_status case_load(const char *path, int nsets, char *const *sets, stru
     struct case_script *cs = malloc(sizeof *cs);
     CLSPH_CHECK(cs != NULL, CLSPH_E_NOMEM, "out of memory");
     cs->L = L;
+    out->velocity_fn.eval = fill_velocity;
+    out->velocity_fn.ctx = L;
     L = NULL;
     *script = cs;
   }

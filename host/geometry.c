@@ -665,6 +665,16 @@ static enum clsph_status fill_fluid(struct build *b)
                   "(%g, %g) is outside it (a counter-clockwise closed wall holds its fluid inside)",
                   s->case_path, g->line, g->name, s->walls[container].line, x, y);
       struct particle p = {.x = {xy[0], xy[1]}, .kind = KIND_FLUID, .group = first};
+      if (g->velocity == 1) memcpy(p.v, g->u0, sizeof p.v);
+      if (g->velocity == 2) {
+        CLSPH_CHECK(s->velocity_fn.eval != NULL, CLSPH_E_INPUT,
+                    "%s:%d: fluid region '%s': its velocity function is gone (the case script "
+                    "was closed)",
+                    s->case_path, g->line, g->name);
+        CLSPH_CHECK(s->velocity_fn.eval(s->velocity_fn.ctx, first, xy, p.v) == CLSPH_OK,
+                    CLSPH_E_INPUT, "%s:%d: fluid region '%s': its velocity at (%g, %g) failed",
+                    s->case_path, g->line, g->name, x, y);
+      }
       CLSPH_TRY(push_particle(b, &p));
     }
   }

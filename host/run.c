@@ -35,14 +35,16 @@ enum clsph_status info_command(const struct cli *cli)
   struct dev dev = {0};
   struct scene scene;
   struct sim sim;
+  struct case_script *script = NULL; /* open while the particles are made (fill velocities) */
   memset(&scene, 0, sizeof scene);
   memset(&sim, 0, sizeof sim);
-  CLSPH_TRY(setup(cli, &dev, &scene, NULL, &sim));
+  CLSPH_TRY(setup(cli, &dev, &scene, &script, &sim));
   printf("device %d: %s (%s), precision %s\n", dev.index, dev.name, dev.platform_name,
          CLSPH_PRECISION_NAME);
   CLSPH_TRY(sim_info(&sim));
 done:
   sim_destroy(&sim);
+  case_close(script);
   scene_free(&scene);
   dev_close(&dev);
   return st;

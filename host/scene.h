@@ -6,6 +6,8 @@
 
 #include <stddef.h>
 
+#include "status.h"
+
 #define SCENE_NAME 64 /* longest name (group, probe, parameter, option) + 1 */
 
 /** A parameter declared by `param { name = default }`, possibly overridden by --set. */
@@ -29,6 +31,15 @@ struct scene_region {
   int npts;              /* polygon vertices (a rectangle is a 4-vertex polygon) */
   double *pts;           /* npts x 2, counter-clockwise or not (either works) */
   int line;              /* line of the case script that declared it */
+  int velocity;          /* initial velocity: 0 at rest, 1 u0, 2 scene.velocity_fn's */
+  double u0[2];          /* the constant initial velocity, m/s */
+};
+
+/** The initial velocity of a region's fluid given as a function of position by the case script
+ *  (fill { velocity = function(x, y) ... }): eval fills v (m/s) at x for region `region`. */
+struct scene_velocity_fn {
+  enum clsph_status (*eval)(void *ctx, int region, const double x[2], double v[2]);
+  void *ctx; /* the case script's state: valid while it is open */
 };
 
 enum scene_motion {
@@ -146,6 +157,7 @@ struct scene {
   struct scene_param *params;
   int nregions;
   struct scene_region *regions;
+  struct scene_velocity_fn velocity_fn; /* for regions with velocity 2 */
   int nwalls;
   struct scene_wall *walls;
   int nsections;

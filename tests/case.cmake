@@ -66,6 +66,15 @@ clsph_run_test(run_free_fall ${CMAKE_SOURCE_DIR}/cases/free_fall.lua SETS dr=0.0
 clsph_run_test(run_periodic_drift ${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua SETS dr=0.05
                BOUNDS "speed_error<1e-4" "x_min>-1e-9" "x_max<1")
 clsph_run_test(run_geometry_showcase ${CMAKE_SOURCE_DIR}/cases/geometry_showcase.lua)
+# Initial velocities of the fluid (fill { velocity = function | {u, v} }), carried unchanged by
+# the ballistic scheme: each particle keeps exactly what it was given (a missed or misplaced
+# velocity reads 0.25 or more).
+clsph_run_test(run_fill_velocity ${CASE_DIR}/fill_velocity.lua
+               BOUNDS "shear_error<1e-6" "block_error<1e-6" "shear_particles>100")
+clsph_cli_test(case_fill_velocity_function ARGS info ${CASE_DIR}/bad_fill_velocity.lua RC 2
+               REGEX "velocity function returned number, nil.*bad_fill_velocity.lua:10: fluid region 'layer': its velocity at \\(0.05, 0.05\\) failed")
+clsph_cli_test(case_fill_velocity_value ARGS info ${CASE_DIR}/bad_fill_velocity.lua --set which=2
+               RC 2 REGEX "fill 'layer': velocity must be \\{u, v\\}")
 
 clsph_add_test(restart_bit_for_bit LABELS case COMMAND ${CMAKE_COMMAND}
                -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/free_fall.lua
