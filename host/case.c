@@ -1170,7 +1170,7 @@ static int l_force_history(lua_State *L)
 {
   const struct case_sim_api *api = api_of(L);
   const char *group = luaL_checkstring(L, 1);
-  double since = lua_isnoneornil(L, 2) ? -INFINITY : luaL_checknumber(L, 2), *rows = NULL;
+  double since = lua_isnoneornil(L, 2) ? -(double)INFINITY : luaL_checknumber(L, 2), *rows = NULL;
   size_t n = 0;
   if (api->force_history == NULL ||
       api->force_history(api->ctx, group, since, &n, &rows) != CLSPH_OK)
