@@ -18,7 +18,8 @@
 -- t = average_from (the paper's 1 at Re = 1; the wake of Re = 20 takes about 12 D/U0 to
 -- settle).
 param { n = 80, re = 1, t_end = 10, length = 24, xc = 12, homogeneous = 0, exit_parabolic = 0,
-        xsph = 0, shift = 0.04, outputs = 20, cfl = 1, average_from = 1, developed = 0 }
+        xsph = 0, shift = 0.04, outputs = 20, cfl = 1, average_from = 1, developed = 0,
+        checkpoint = 0 }
 
 local D, U0, H = 1, 1, 8
 local nu, dr = U0 * D / re, H / n
@@ -47,7 +48,8 @@ outflow { {length, 0}, {length, H}, name = "exit",
           velocity = exit_parabolic == 1 and U0 or nil }
 force { "cylinder" }
 profile { "centreline", from = {0, H / 2}, to = {length, H / 2}, points = 4 * length + 1 }
-run { t_end = t_end, output_every = t_end / outputs, sample_every = 0.05, cfl = cfl }
+run { t_end = t_end, output_every = t_end / outputs, sample_every = 0.05, cfl = cfl,
+      checkpoint_every = checkpoint > 0 and checkpoint or nil } -- D/U0 between checkpoints
 
 -- Breuer et al.'s C_D at this Re (Re, C_D from tests/data/breuer2000_square_cylinder_cd.csv),
 -- linear in log-log between the tabulated points
