@@ -233,7 +233,8 @@ def square_cylinder_section(runs):
            "reads 25.3 for 24.0). The paper: rotational within 2% at Re = 1 and 7% at Re = 50, "
            "homogeneous 10-27% low. Start: at rest unless `developed = 1` (the entry's Poiseuille "
            "profile everywhere).", "",
-           "Re = 1, channel 3H = 24 D, the cylinder in its middle (the paper's convergence study):", "",
+           "Re = 1, channel 3H = 24 D, the cylinder in its middle (the paper's convergence study; "
+           "centreline u and p averaged over t >= 1: `square_cylinder_profiles.png`):", "",
            "| projection | L0 | start | C_D | pressure / viscous | deviation | steps | wall s "
            "| particle-steps/s | solver its mean |",
            "|---|---|---|---|---|---|---|---|---|---|"]

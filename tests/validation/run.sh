@@ -46,6 +46,11 @@ for n in 40 80; do
   run square_cylinder_n${n}_rotational square_cylinder n=$n
   run square_cylinder_n${n}_homogeneous square_cylinder n=$n homogeneous=1
 done
+python3 tests/validation/square_cylinder_profiles.py tests/validation/square_cylinder_profiles 1 \
+  "rotational H/80=$out/square_cylinder_n80_rotational" \
+  "homogeneous H/80=$out/square_cylinder_n80_homogeneous" \
+  "rotational H/40=$out/square_cylinder_n40_rotational" \
+  "homogeneous H/40=$out/square_cylinder_n40_homogeneous" || true
 # the Re sweep in Breuer et al.'s geometry (32 D, the cylinder 8 D from the entry), H/80, against
 # their C_D: the natural exit (the stability map: the paper's parabolic exit above Re = 10 holds
 # only at cfl 0.5, and reads C_D 9% low at Re = 20), XSPH 0.02 from Re = 20; and Re = 100, where
