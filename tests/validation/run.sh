@@ -70,6 +70,10 @@ run square_cylinder_re100_n80_rotational_natural square_cylinder n=80 re=100 len
 run square_cylinder_re100_n80_rotational square_cylinder n=80 re=100 length=32 xc=8 \
   exit_parabolic=1 xsph=0.02 t_end=30 average_from=15
 python3 tests/validation/square_cylinder_chart.py tests/validation/square_cylinder_cd "$out" || true
+"$build/clsph" render "$out/square_cylinder_re100_n80_rotational_natural" --field vorticity \
+  --range -3,3 --no-movie --size 1600x400 --out "$out/square_cylinder_re100_n80_rotational_natural" &&
+  cp "$(ls "$out"/square_cylinder_re100_n80_rotational_natural/frames/vorticity_*.png | tail -1)" \
+    tests/validation/square_cylinder_re100_vorticity.png || true
 # dam break over a wedge at the paper's δr = 0.01 m, both schemes, force chart
 run dam_break_wedge_isph_usaw dam_break_wedge
 run dam_break_wedge_wcsph_usaw dam_break_wedge wcsph=1
