@@ -46,6 +46,12 @@ for n in 40 80; do
   run square_cylinder_n${n}_rotational square_cylinder n=$n
   run square_cylinder_n${n}_homogeneous square_cylinder n=$n homogeneous=1
 done
+# H/160: 84700 particles, 22200 steps (the explicit viscous bound), about 3-4 h each on 2 cores;
+# checkpoints every D/U0 (--restart continues them, the force history with them)
+for proj in rotational homogeneous; do
+  h=0; [ $proj = homogeneous ] && h=1
+  run square_cylinder_n160_$proj square_cylinder n=160 homogeneous=$h checkpoint=1
+done
 python3 tests/validation/square_cylinder_profiles.py tests/validation/square_cylinder_profiles 1 \
   "rotational H/80=$out/square_cylinder_n80_rotational" \
   "homogeneous H/80=$out/square_cylinder_n80_homogeneous" \
