@@ -73,6 +73,8 @@ run square_cylinder_re100_n40_rotational_natural square_cylinder n=40 re=100 len
   xsph=0.02 t_end=150 average_from=75 outputs=30
 run square_cylinder_re100_n80_rotational_natural square_cylinder n=80 re=100 length=32 xc=8 \
   xsph=0.02 t_end=100 average_from=40 outputs=50
+run square_cylinder_re100_n80_homogeneous_natural square_cylinder n=80 re=100 length=32 xc=8 \
+  homogeneous=1 xsph=0.02 t_end=60 average_from=30 outputs=30
 run square_cylinder_re100_n80_rotational square_cylinder n=80 re=100 length=32 xc=8 \
   exit_parabolic=1 xsph=0.02 t_end=30 average_from=15
 python3 tests/validation/square_cylinder_chart.py tests/validation/square_cylinder_cd "$out" || true
