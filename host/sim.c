@@ -1200,6 +1200,9 @@ static void progress_show(const struct sim *sim, struct progress *pr, int final)
   if (sim->solver_steps > 0)
     snprintf(solver, sizeof solver, "  solver %ld its (res %.1e)", sim->solver_its,
              sim->solver_res);
+  if (sim->aux_its_sum > 0)
+    snprintf(solver + strlen(solver), sizeof solver - strlen(solver), ", viscous %ld its",
+             sim->aux_its);
   if (pr->tty) {
     char bar[21];
     int fill = (int)(20.0 * fmin(frac, 1.0));
@@ -1474,6 +1477,9 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
     cJSON_AddNumberToObject(sv, "iterations_mean",
                             (double)sim->solver_its_sum / (double)sim->solver_steps);
     cJSON_AddNumberToObject(sv, "iterations_max", (double)sim->solver_its_max);
+    if (sim->aux_its_sum > 0) /* both components of the implicit viscous prediction */
+      cJSON_AddNumberToObject(sv, "viscous_iterations_mean",
+                              (double)sim->aux_its_sum / (double)sim->solver_steps);
   }
   if (o->force_stats != NULL) { /* over the rows of forces.csv (a restart's included) */
     cJSON *fo = cJSON_AddObjectToObject(root, "forces");
@@ -1692,6 +1698,7 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
       sim->solver_its_sum += sim->solver_its;
       sim->solver_steps += 1;
       if (sim->solver_its > sim->solver_its_max) sim->solver_its_max = sim->solver_its;
+      sim->aux_its_sum += sim->aux_its;
     }
     CLSPH_TRY(sim_check_flags(sim));
     int at_end = sim->time >= t_end;
@@ -1719,8 +1726,8 @@ done:
   if (st == CLSPH_E_BLOWUP && strcmp(sim->status, "ok") == 0) {
     /* the only blow-up the time loop does not word itself: the pressure solver's (psolve.c) */
     snprintf(sim->status, sizeof sim->status,
-             "blow-up: the pressure solve failed at step %ld, t = %.9g s", sim->step + 1,
-             sim->time);
+             "blow-up: the %s solve failed at step %ld, t = %.9g s",
+             sim->failed_solve != NULL ? sim->failed_solve : "pressure", sim->step + 1, sim->time);
     snprintf(sim->failure, sizeof sim->failure, "solver");
   }
   if (st != CLSPH_OK && strcmp(sim->status, "ok") == 0)

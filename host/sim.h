@@ -60,6 +60,11 @@ struct sim {
   long solver_its;   /* the pressure solver's iterations of the last step (schemes set) */
   double solver_res; /* and its final relative residual */
   long solver_its_sum, solver_its_max, solver_steps;
+  long aux_its; /* a second solve's iterations of the last step (isph-rotational's
+                 * implicit viscous prediction, both components), 0: none */
+  long aux_its_sum;
+  const char *failed_solve; /* the solve whose failure stops a run (schemes set it when it is
+                             * not the pressure's; NULL: "pressure") */
   /* fluid particles found behind a wall (CLSPH_FLAG_WALL): steps with any, most at one step, and
    * the first such step (−1: none) and its time; over this run (since its start or restart) */
   long wall_steps, wall_most, wall_first_step;

@@ -5,7 +5,8 @@
  *   2. dummy velocities extrapolated from the fluid, mirrors for Neumann (sec 3.3.1, walls.cl);
  *      the entry and exit layers' velocities, mirrors and coefficients (open.cl)
  *   3. ũ explicitly: a0 ũ = a1 u^k − a2 u^{k−1} + δt (ν∇²u^k − ∇p^k/ρ + g)  (eq 9; 5 without
- *      ∇p^k), BDF2 coefficients for variable steps (predict.cl)
+ *      ∇p^k), BDF2 coefficients for variable steps (predict.cl); or, with viscous = "implicit",
+ *      with ν∇²ũ: one linear solve per component (viscous.cl), no viscous bound on δt
  *   4. ∇²φ = (a0 ρ/δt) ∇·ũ, ũ = u_wall on the dummies (eqs 13, 27, sec 3.3.3), Neumann by
  *      propagation to the dummies (ppe.cl), BiCGStab (solvers/pressure); no Dirichlet row, so
  *      the system is reinforced (the paper pins one value instead, sec 3.2), unless an exit's
@@ -46,6 +47,12 @@ struct rot {
   double xsph;            /* XSPH ε (0: off) */
   double dt_prev;         /* the last step, s (0 before the first: BDF1) */
   double umax;            /* largest fluid speed at the last max_dt, m/s */
+  int implicit;           /* viscous = "implicit": ν∇²ũ in the prediction (viscous.cl) */
+  double kappa;           /* its δt ν / a0 this step */
+  struct psolve vs;       /* its solver (Jacobi BiCGStab, operator recomputed) */
+  struct psolve_op vop;
+  int f_vx, f_vy, f_bx, f_by; /* its unknowns and right-hand sides, per component */
+  cl_kernel k_visc_count, k_visc_coeffs, k_visc_split, k_visc_gather;
   int f_p, f_phi, f_uprev, f_ustar, f_div, f_rhs, f_L, f_mirror, f_coef, f_dist, f_normal, f_uwall,
       f_shift, f_vnew, f_posn;
   cl_kernel k_dummy, k_prop, k_predict, k_source, k_apply, k_coeffs, k_diag, k_count, k_project,
@@ -71,12 +78,13 @@ static const char *const sources[] = {"common/blas1.cl",
                                       "isph_rotational/force.cl",
                                       "isph_rotational/open.cl",
                                       "isph_rotational/predict.cl",
+                                      "isph_rotational/viscous.cl",
                                       "isph_rotational/ppe.cl",
                                       "isph_rotational/project.cl",
                                       "isph_rotational/shift.cl",
                                       NULL};
-static const char *const options[] = {"projection",    "shifting",          "xsph",
-                                      "wall_velocity", PSOLVE_OPTION_NAMES, NULL};
+static const char *const options[] = {"projection", "shifting",          "xsph", "wall_velocity",
+                                      "viscous",    PSOLVE_OPTION_NAMES, NULL};
 
 static const struct scene_option *option(const struct scene *s, const char *key)
 {
@@ -108,6 +116,12 @@ static enum clsph_status rot_define(const struct sim *sim, struct prog_opts *o)
                 sim->scene->case_path);
     image = strcmp(op->text, "image") == 0;
   }
+  if ((op = option(sim->scene, "viscous")) != NULL)
+    CLSPH_CHECK(!op->is_number && (!strcmp(op->text, "explicit") || !strcmp(op->text, "implicit")),
+                CLSPH_E_INPUT,
+                "%s: viscous must be \"explicit\" (the paper's prediction, sec 3.2, step bound "
+                "0.125 h²/ν) or \"implicit\" (ν∇²ũ solved for, no viscous step bound)",
+                sim->scene->case_path);
   CLSPH_TRY(ops_define(1, o)); /* Oger correction in every operator (eqs 25-29) */
   CLSPH_TRY(prog_opts_define_int(o, "ROT_WALL_IMAGE", image));
   CLSPH_TRY(prog_opts_define_int(o, "ROT_ROTATIONAL", rotational));
@@ -187,6 +201,78 @@ static enum clsph_status ppe_coefficients(void *ctx, cl_mem row, cl_mem col, cl_
   CLSPH_TRY(kern_set_at(r->k_coeffs, 11, KARG(val)));
   CLSPH_TRY(kern_launch(r->sim->dev, r->k_coeffs, n, NULL));
 done:
+  return st;
+}
+
+/* ---- the implicit prediction's operator (viscous.cl), one component at a time ---- */
+
+/* the velocity progenitors of the exit layers, or any buffer where there are none (unread) */
+static cl_mem visc_src(struct rot *r)
+{
+  return pset_mem(&r->sim->ps, r->nsec > 0 ? r->f_src : r->sim->f_kind);
+}
+
+static enum clsph_status visc_counts(void *ctx, cl_mem count)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct rot *r = ctx;
+  struct sim *sim = r->sim;
+  struct pset *ps = &sim->ps;
+  cl_uint n = (cl_uint)ps->n;
+  cl_mem pos = pset_mem(ps, sim->f_pos), kind = pset_mem(ps, sim->f_kind);
+  cl_mem dist = pset_mem(ps, r->f_dist), normal = pset_mem(ps, r->f_normal), src = visc_src(r);
+  CLSPH_TRY(KERN_SET(r->k_visc_count, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
+                     KARG(pos), KARG(kind), KARG(dist), KARG(normal), KARG(src), KARG(count)));
+  CLSPH_TRY(kern_launch(sim->dev, r->k_visc_count, n, NULL));
+done:
+  return st;
+}
+
+static enum clsph_status visc_coefficients(void *ctx, cl_mem row, cl_mem col, cl_mem val)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct rot *r = ctx;
+  struct pset *ps = &r->sim->ps;
+  cl_uint n;
+  const real kappa = (real)r->kappa;
+  cl_mem dist = pset_mem(ps, r->f_dist), normal = pset_mem(ps, r->f_normal), src = visc_src(r);
+  CLSPH_TRY(op_prefix(r->sim, r, r->k_visc_coeffs, &n));
+  cl_uint k = 7;
+  const struct karg a[] = {KARG(dist), KARG(normal), KARG(src), KARG(kappa),
+                           KARG(row),  KARG(col),    KARG(val)};
+  for (size_t q = 0; q < sizeof a / sizeof *a; ++q)
+    CLSPH_TRY(kern_set_at(r->k_visc_coeffs, k++, a[q]));
+  CLSPH_TRY(kern_launch(r->sim->dev, r->k_visc_coeffs, n, NULL));
+done:
+  return st;
+}
+
+/* ũ of the fluid with ν∇²ũ (viscous.cl): from rot_predict's ũ without the viscous term */
+static enum clsph_status visc_solve(struct sim *sim, struct rot *r, double dt, double a0)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  cl_mem kind = pset_mem(ps, sim->f_kind), ustar = pset_mem(ps, r->f_ustar);
+  cl_mem vx = pset_mem(ps, r->f_vx), vy = pset_mem(ps, r->f_vy);
+  cl_mem bx = pset_mem(ps, r->f_bx), by = pset_mem(ps, r->f_by);
+  r->kappa = dt * sim->scene->nu / a0;
+  r->vop.n = ps->n;
+  r->vop.grid = &sim->grid;
+  cl_mem src = visc_src(r), vel = pset_mem(ps, sim->f_vel);
+  CLSPH_TRY(KERN_SET(r->k_visc_split, KARG(n), KARG(kind), KARG(src), KARG(ustar), KARG(vel),
+                     KARG(bx), KARG(by), KARG(vx), KARG(vy)));
+  CLSPH_TRY(kern_launch(sim->dev, r->k_visc_split, n, NULL));
+  struct psolve_result res;
+  CLSPH_TRY(psolve_solve(&r->vs, &r->vop, bx, vx, &res));
+  sim->aux_its = res.its;
+  CLSPH_TRY(psolve_solve_again(&r->vs, &r->vop, by, vy, &res)); /* the same operator */
+  sim->aux_its += res.its;
+  CLSPH_TRY(KERN_SET(r->k_visc_gather, KARG(n), KARG(kind), KARG(vx), KARG(vy), KARG(ustar),
+                     KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch(sim->dev, r->k_visc_gather, n, NULL));
+done:
+  if (st == CLSPH_E_BLOWUP) sim->failed_solve = "viscous";
   return st;
 }
 
@@ -299,6 +385,7 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
                 "%s: xsph must be the XSPH coefficient, 0 (off) to 0.5", sc->case_path);
     r->xsph = o->number;
   }
+  if ((o = option(sc, "viscous")) != NULL) r->implicit = strcmp(o->text, "implicit") == 0;
   for (size_t i = 0; i < geo->n; ++i)
     CLSPH_CHECK(geo->kind[i] == KIND_FLUID || geo->kind[i] == KIND_DUMMY ||
                     geo->kind[i] == KIND_INFLOW || geo->kind[i] == KIND_OUTFLOW,
@@ -338,6 +425,29 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
   CLSPH_TRY(pset_add(ps, sim->dev, "mirror_coef", sizeof(real), NULL, &r->f_coef));
   pset_describe(ps, r->f_coef, PF_REAL, 0, 0);
   if (sc->nsections > 0) CLSPH_TRY(open_create(sim, r));
+  if (r->implicit) { /* the implicit prediction: fields, kernels, its solver */
+    int *vf[] = {&r->f_vx, &r->f_vy, &r->f_bx, &r->f_by};
+    const char *vn[] = {"visc_x", "visc_y", "visc_bx", "visc_by"};
+    for (int k = 0; k < 4; ++k) {
+      CLSPH_TRY(pset_add(ps, sim->dev, vn[k], sizeof(real), NULL, vf[k]));
+      pset_describe(ps, *vf[k], PF_REAL, 0, 0);
+    }
+    CLSPH_TRY(prog_kernel(sim->prog, "rot_visc_count", &r->k_visc_count));
+    CLSPH_TRY(prog_kernel(sim->prog, "rot_visc_coeffs", &r->k_visc_coeffs));
+    CLSPH_TRY(prog_kernel(sim->prog, "rot_visc_split", &r->k_visc_split));
+    CLSPH_TRY(prog_kernel(sim->prog, "rot_visc_gather", &r->k_visc_gather));
+    /* stored coefficients (the dummy rows reach around their image, not their own neighbours:
+     * the operator cannot be recomputed from a particle's neighbours alone); tolerances, the
+     * iteration limit and the preconditioner are the pressure solver's */
+    struct psolve_options vo = r->popt;
+    vo.apply = PSOLVE_STORED;
+    vo.singular = PSOLVE_REGULAR;
+    vo.name = "viscous";
+    CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &vo, &r->vs));
+    r->vop.ctx = r;
+    r->vop.row_counts = visc_counts;
+    r->vop.coefficients = visc_coefficients;
+  }
   /* kernels, operators, solver */
   struct {
     cl_kernel *k;
@@ -456,7 +566,8 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   const double w = r->dt_prev > 0.0 ? dt / r->dt_prev : 0.0;
   const double b0 = (1.0 + 2.0 * w) / (1.0 + w);
   const real a0 = (real)b0, a1 = (real)(1.0 + w), a2 = (real)(w * w / (1.0 + w));
-  const real rdt = (real)dt, rho = (real)sc->rho0, nu = (real)sc->nu;
+  const real rdt = (real)dt, rho = (real)sc->rho0;
+  const real nu = r->implicit ? (real)0 : (real)sc->nu; /* implicit: ν∇²ũ solved for below */
   const real2 accel =
       dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
 
@@ -481,6 +592,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
       CLSPH_TRY(kern_set_at(r->k_predict, i++, a[k]));
   }
   CLSPH_TRY(kern_launch(sim->dev, r->k_predict, n, NULL));
+  if (r->implicit) CLSPH_TRY(visc_solve(sim, r, dt, b0));
   if (r->nsec > 0) { /* ũ of the exit layers: that of their progenitor */
     cl_mem src = pset_mem(ps, r->f_src);
     CLSPH_TRY(KERN_SET(r->k_ustar, KARG(n), KARG(kind), KARG(src), KARG(ustar)));
@@ -576,7 +688,7 @@ static enum clsph_status rot_max_dt(struct sim *sim, void *state, double *dt)
   double a = hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]);
   double d = HUGE_VAL;
   if (u > 0.0) d = fmin(d, 0.25 * h / u);
-  if (s->nu > 0.0) d = fmin(d, 0.125 * h * h / s->nu);
+  if (s->nu > 0.0 && !r->implicit) d = fmin(d, 0.125 * h * h / s->nu);
   if (a > 0.0) d = fmin(d, 0.25 * sqrt(h / a));
   *dt = d;
 done:
@@ -617,6 +729,10 @@ static void rot_destroy(void *state)
   cl_mem bufs[] = {r->d_sec, r->d_role, r->d_list, r->d_count};
   for (size_t k = 0; k < sizeof bufs / sizeof *bufs; ++k)
     if (bufs[k] != NULL) clReleaseMemObject(bufs[k]);
+  cl_kernel visc[] = {r->k_visc_count, r->k_visc_coeffs, r->k_visc_split, r->k_visc_gather};
+  for (size_t k = 0; k < sizeof visc / sizeof *visc; ++k)
+    if (visc[k] != NULL) clReleaseKernel(visc[k]);
+  if (r->implicit) psolve_destroy(&r->vs);
   psolve_destroy(&r->ps);
   ops_destroy(&r->ops);
   free(r);

@@ -41,6 +41,7 @@ void psolve_defaults(struct psolve_options *o)
   o->atol = 0.0;
   o->max_it = 1000;
   o->max_failures = 10;
+  o->name = "pressure";
 }
 
 static int pick(const char *text, const char *const *names)
@@ -349,7 +350,7 @@ static enum clsph_status diagonal(struct psolve *ps, const struct psolve_op *op)
   CLSPH_TRY(launch(ps, ps->k_invert, n));
   CLSPH_TRY(kern_read(ps->dev, ps->d_flags, sizeof flags, &flags));
   CLSPH_CHECK(flags == 0, CLSPH_E_BLOWUP,
-              "pressure solve: the operator has a zero or non-finite diagonal entry");
+              "%s solve: the operator has a zero or non-finite diagonal entry", ps->opt.name);
 done:
   return st;
 }
@@ -505,41 +506,57 @@ static const char *reason_str(enum psolve_reason r)
   return "?";
 }
 
-enum clsph_status psolve_solve(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
-                               struct psolve_result *res)
+/* set_up = 0: the stored layout, diagonal and multigrid levels of the last solve serve again */
+static enum clsph_status solve(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
+                               struct psolve_result *res, int set_up)
 {
   enum clsph_status st = CLSPH_OK;
   double t0 = now();
   memset(res, 0, sizeof *res);
-  CLSPH_CHECK(op->n <= ps->cap, CLSPH_E_INPUT, "pressure solve: %zu unknowns exceed %zu", op->n,
-              ps->cap);
+  CLSPH_CHECK(op->n <= ps->cap, CLSPH_E_INPUT, "%s solve: %zu unknowns exceed %zu", ps->opt.name,
+              op->n, ps->cap);
   if (ps->opt.method == PSOLVE_DIRECT) {
     CLSPH_TRY(psolve_direct(ps, op, b, x, res));
     goto done;
   }
   const int multigrid = ps->opt.precond == PSOLVE_MULTIGRID;
   CLSPH_CHECK(!multigrid || op->grid != NULL, CLSPH_E_INPUT,
-              "pressure solve: solver_precond = \"multigrid\" needs unknowns that are particles "
-              "sorted by a grid, which this operator does not have");
-  if (ps->opt.apply == PSOLVE_STORED || multigrid) CLSPH_TRY(store(ps, op));
-  CLSPH_TRY(diagonal(ps, op));
-  if (multigrid)
-    CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val, reinforcement(ps),
-                       ps->d_dinv));
+              "%s solve: solver_precond = \"multigrid\" needs unknowns that are particles "
+              "sorted by a grid, which this operator does not have",
+              ps->opt.name);
+  if (set_up) {
+    if (ps->opt.apply == PSOLVE_STORED || multigrid) CLSPH_TRY(store(ps, op));
+    CLSPH_TRY(diagonal(ps, op));
+    if (multigrid)
+      CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val,
+                         reinforcement(ps), ps->d_dinv));
+  }
   CLSPH_TRY(bicgstab(ps, op, b, x, res));
   if (res->reason > 0) {
     ps->failures = 0;
   } else {
     ++ps->failures;
-    log_warn("pressure solve %s after %d iterations (residual %.3g, tolerance %.3g)",
+    log_warn("%s solve %s after %d iterations (residual %.3g, tolerance %.3g)", ps->opt.name,
              reason_str(res->reason), res->its, res->rnorm, ps->opt.rtol);
     CLSPH_CHECK(ps->failures < ps->opt.max_failures, CLSPH_E_BLOWUP,
-                "the pressure solve failed %d times in a row (last residual %.3g): stopping",
-                ps->failures, res->rnorm);
+                "the %s solve failed %d times in a row (last residual %.3g): stopping",
+                ps->opt.name, ps->failures, res->rnorm);
   }
 done:
   res->seconds = now() - t0;
   return st;
+}
+
+enum clsph_status psolve_solve(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
+                               struct psolve_result *res)
+{
+  return solve(ps, op, b, x, res, 1);
+}
+
+enum clsph_status psolve_solve_again(struct psolve *ps, const struct psolve_op *op, cl_mem b,
+                                     cl_mem x, struct psolve_result *res)
+{
+  return solve(ps, op, b, x, res, 0);
 }
 
 enum clsph_status psolve_assemble(struct psolve *ps, const struct psolve_op *op, size_t **row,

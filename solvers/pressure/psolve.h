@@ -50,6 +50,7 @@ struct psolve_options {
   double atol;      /* or when ||b − A x|| <= atol */
   int max_it;       /* iterations per solve */
   int max_failures; /* consecutive non-converged solves before the run stops */
+  const char *name; /* what the messages call the solve: "pressure" (default), "viscous" */
 };
 
 /** Reasons: > 0 converged, < 0 failed. */
@@ -107,6 +108,10 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
  *  in a row stop the run (CLSPH_E_BLOWUP). */
 enum clsph_status psolve_solve(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
                                struct psolve_result *res);
+/** @brief Solve A x = b for another b with the operator of the last psolve_solve (its stored
+ *  coefficients, diagonal and multigrid levels are reused: the particles have not moved). */
+enum clsph_status psolve_solve_again(struct psolve *ps, const struct psolve_op *op, cl_mem b,
+                                     cl_mem x, struct psolve_result *res);
 /** @brief Assemble the operator on the host (CSR, columns sorted, in double) from the stored
  *  layout; the arrays are malloc'd. Used by the direct solver and the tests. */
 enum clsph_status psolve_assemble(struct psolve *ps, const struct psolve_op *op, size_t **row,
