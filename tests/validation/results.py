@@ -9,6 +9,7 @@ import glob
 import json
 import math
 import os
+import re
 import sys
 
 RESOLUTION = ("n", "dr")  # parameters that set the resolution: n particles per unit, or dr
@@ -242,7 +243,7 @@ def square_cylinder_section(runs):
            "| projection | L0 | viscous | start | C_D | pressure / viscous | deviation | steps "
            "| wall s | particle-steps/s | solver its mean (pressure / viscous) |",
            "|---|---|---|---|---|---|---|---|---|---|---|"]
-    conv = sorted((s for s in rows if s["parameters"].get("length") == 24 and s["status"] == "ok"),
+    conv = sorted((s for s in rows if s["parameters"].get("length") == 24),
                   key=lambda s: (proj(s["parameters"]), s["parameters"]["n"],
                                  s["parameters"].get("implicit", 0)))
     for s in conv:
@@ -252,6 +253,12 @@ def square_cylinder_section(runs):
         if "viscous_iterations_mean" in sv:
             its += f" / {sv['viscous_iterations_mean']:.1f}"
         visc = "implicit" if p.get("implicit", 0) == 1 else "explicit"
+        if s["status"] != "ok":
+            out.append(f"| {proj(p)} ({s['precision']}) | H/{p['n']:g} | {visc} "
+                       f"| {'developed' if p.get('developed', 0) == 1 else 'rest'} "
+                       f"| {s['status']} | – | – | {s['steps']:g} | {s['wall_seconds']:.0f} "
+                       f"| {s['particle_steps_per_second']:.3g} | {its} |")
+            continue
         out.append(f"| {proj(p)} ({s['precision']}) | H/{p['n']:g} | {visc} "
                    f"| {'developed' if p.get('developed', 0) == 1 else 'rest'} | {m['cd']:.2f} "
                    f"| {m['cd_pressure']:.2f} / {m['cd_viscous']:.2f} | {m['cd'] / m['cd_ref'] - 1:+.1%} "
@@ -279,6 +286,21 @@ def square_cylinder_section(runs):
                    f"| {s['steps']:g} | {s['wall_seconds']:.0f} "
                    f"| {s['particle_steps_per_second']:.3g} |")
     return out
+
+
+def case_defaults(case):
+    """The numeric defaults of a case's param { ... } (cases/CASE.lua), {} where it has none."""
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "cases", case + ".lua")
+    try:
+        with open(path) as f:
+            text = f.read()
+    except OSError:
+        return {}
+    m = re.search(r"param\s*\{([^}]*)\}", text)
+    if m is None:
+        return {}
+    return {k: float(v) for k, v in re.findall(r"(\w+)\s*=\s*(-?[0-9.]+(?:e-?[0-9]+)?)",
+                                                m.group(1))}
 
 
 def main():
@@ -323,9 +345,25 @@ def main():
         p.pop(res)
         key = (s["case"], s["scheme"], tuple(sorted(p.items())))
         groups.setdefault(key, []).append((h, s))
+    # where two runs of a group share a resolution, a parameter only some of them record tells
+    # them apart (the square cylinder's implicit = 1 beside runs from before it existed): split
+    # the group by those parameters, a run without one taking the case's default
+    split = {}
+    for key, members in groups.items():
+        hs = [h for h, _ in members]
+        if len(set(hs)) == len(hs):
+            split[key] = members
+            continue
+        rest = sorted({k for _, s in members for k in s.get("parameters", {})} -
+                      common[(key[0], key[1])] - set(RESOLUTION))
+        dflt = case_defaults(key[0])
+        for h, s in members:
+            extra = tuple((k, s["parameters"].get(k, dflt.get(k))) for k in rest)
+            k2 = (key[0], key[1], key[2] + tuple((k, v) for k, v in extra if v != dflt.get(k)))
+            split.setdefault(k2, []).append((h, s))
     orders = []
-    for (case, scheme, params), members in sorted(groups.items()):
-        if len(members) < 2:
+    for (case, scheme, params), members in sorted(split.items(), key=lambda kv: str(kv[0])):
+        if len(members) < 2 or len({h for h, _ in members}) < len(members):
             continue
         members.sort(key=lambda m: -m[0])
         names = sorted({k for _, s in members for k in s["metrics"] if "rms" in k or "error" in k})

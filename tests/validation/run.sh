@@ -42,17 +42,25 @@ run cavity_re1000_n240_isph_usaw cavity re=1000 n=240 t_end=30 checkpoint=1
 python3 tests/validation/cavity_pressure.py "$out/cavity_re400_n60_isph_usaw" \
   "$out/cavity_re400_n60_wcsph_usaw" tests/validation/cavity_re400_pressure || true
 # square cylinder, Re = 1 (Hosseini & Feng sec 4.3): C_D at H/40 and H/80, both projections
+# (the paper's explicit prediction), and with the implicit viscous prediction (implicit=1: 7 and 14
+# times fewer steps), which H/160 uses
 for n in 40 80; do
   run square_cylinder_n${n}_rotational square_cylinder n=$n
   run square_cylinder_n${n}_homogeneous square_cylinder n=$n homogeneous=1
+  run square_cylinder_n${n}_rotational_implicit square_cylinder n=$n implicit=1
+  run square_cylinder_n${n}_homogeneous_implicit square_cylinder n=$n homogeneous=1 implicit=1
 done
-# H/160: 84700 particles, 22200 steps (the explicit viscous bound), about 3-4 h each on 2 cores;
-# checkpoints every D/U0 (--restart continues them, the force history with them)
+# H/160: 84700 particles; implicit, about 750 steps (the explicit viscous bound would take 22200,
+# 3-4 h each on 2 cores); checkpoints every D/U0 (--restart continues them, the force history
+# with them)
 for proj in rotational homogeneous; do
   h=0; [ $proj = homogeneous ] && h=1
-  run square_cylinder_n160_$proj square_cylinder n=160 homogeneous=$h checkpoint=1
+  run square_cylinder_n160_${proj}_implicit square_cylinder n=160 homogeneous=$h implicit=1 \
+    checkpoint=1
 done
 python3 tests/validation/square_cylinder_profiles.py tests/validation/square_cylinder_profiles 1 \
+  "rotational H/160=$out/square_cylinder_n160_rotational_implicit" \
+  "homogeneous H/160=$out/square_cylinder_n160_homogeneous_implicit" \
   "rotational H/80=$out/square_cylinder_n80_rotational" \
   "homogeneous H/80=$out/square_cylinder_n80_homogeneous" \
   "rotational H/40=$out/square_cylinder_n40_rotational" \
