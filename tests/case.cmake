@@ -326,6 +326,11 @@ clsph_add_test(restart_rotational LABELS case COMMAND ${CMAKE_COMMAND}
                -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/poiseuille_open.lua
                -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart_rotational
                "-DSETS=dr=0.1|t_end=0.2|checkpoint=0.1" -P ${CASE_DIR}/restart.cmake)
+# the same with the implicit viscous prediction (its solve starts from u^k: nothing else to carry)
+clsph_add_test(restart_rotational_implicit LABELS case COMMAND ${CMAKE_COMMAND}
+               -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/poiseuille_open.lua
+               -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart_rotational_implicit
+               "-DSETS=dr=0.1|t_end=0.2|checkpoint=0.1|implicit=1" -P ${CASE_DIR}/restart.cmake)
 clsph_run_test(run_poiseuille_open_h0 ${CMAKE_SOURCE_DIR}/cases/poiseuille_open.lua
                SETS dr=0.1 homogeneous=0
                BOUNDS "p_err_max<0.09" "u_err_max<0.02" "u_err_rms<0.011" "v_max<0.01"
