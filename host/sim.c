@@ -1463,9 +1463,12 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
   cJSON_AddNumberToObject(root, "fluid_particles", (double)sim->geom.nfluid);
   cJSON_AddNumberToObject(root, "steps", (double)sim->step);
   cJSON_AddNumberToObject(root, "sim_time", sim->time);
+  /* wall time and rate of this run: a restarted one counts from its checkpoint */
+  if (sim->step0 > 0) cJSON_AddNumberToObject(root, "restarted_at_step", (double)sim->step0);
   cJSON_AddNumberToObject(root, "wall_seconds", wall);
   cJSON_AddNumberToObject(root, "particle_steps_per_second",
-                          wall > 0.0 ? (double)sim->ps.n * (double)sim->step / wall : 0.0);
+                          wall > 0.0 ? (double)sim->ps.n * (double)(sim->step - sim->step0) / wall
+                                     : 0.0);
   cJSON_AddStringToObject(root, "status", sim->status);
   cJSON_AddStringToObject(root, "failure", sim->failure);
   cJSON_AddNumberToObject(root, "snapshots", o->nsnap);
@@ -1646,6 +1649,7 @@ enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
     sim->body_force[0] = s->flow.on ? sim->flow.force : s->body_force[0];
     sim->time = got.time;
     sim->step = got.step;
+    sim->step0 = got.step;
     sim->dt = got.dt;
     o.nsnap = s->output_every > 0.0 ? (int)floor(sim->time / s->output_every + 1e-9) + 1 : 1;
     log_info("restarting from %s at t = %.9g s, step %ld", opt->restart, sim->time, sim->step);

@@ -108,6 +108,18 @@ def wedge_section(runs):
     return out
 
 
+def steps_run(s):
+    """Steps this run's wall time covers: a restarted run's count from its checkpoint."""
+    return s["steps"] - s.get("restarted_at_step", 0)
+
+
+def wall(s, f=".1f"):
+    """The wall time, marked with the step a restarted run resumed from."""
+    w = format(s["wall_seconds"], f)
+    r = s.get("restarted_at_step")
+    return f"{w} (steps {r:g}-{s['steps']:g})" if r else w
+
+
 def profile_section(runs):
     """Runs made with --profile: the device time of the pressure solve (the csr_* and blas1_*
     kernels) and of the largest other kernels, as shares of the wall time."""
@@ -115,21 +127,21 @@ def profile_section(runs):
     if not rows:
         return []
     out = ["", "## Where the time goes (runs made with `--profile`)", "",
-           "| run | particles | steps | wall s | s per step | pressure solve (csr_*, blas1_*, mg_*) "
+           "| run | particles | steps profiled | wall s | s per step | pressure solve (csr_*, blas1_*, mg_*) "
            "| solver its mean | launches per step | largest other kernels |",
            "|---|---|---|---|---|---|---|---|---|"]
     for s in rows:
-        prof, wall = s["profile"], s["wall_seconds"]
+        prof, secs, n = s["profile"], s["wall_seconds"], max(steps_run(s), 1)
         solver = ("csr_", "blas1_", "mg_")
         solve = sum(k["seconds"] for k in prof["kernels"] if k["name"].startswith(solver))
         others = sorted((k for k in prof["kernels"] if not k["name"].startswith(solver)),
                         key=lambda k: -k["seconds"])[:3]
         launches = sum(k["launches"] for k in prof["kernels"])
         its = f"{s['solver']['iterations_mean']:.0f}" if s.get("solver") else "–"
-        out.append(f"| {s['run']} | {s['particles']:g} | {s['steps']:g} | {wall:.0f} "
-                   f"| {wall / max(s['steps'], 1):.3g} | {100 * solve / wall:.0f}% | {its} "
-                   f"| {launches / max(s['steps'], 1):.0f} | "
-                   + ", ".join(f"{k['name']} {100 * k['seconds'] / wall:.0f}%" for k in others)
+        out.append(f"| {s['run']} | {s['particles']:g} | {n:g} | {secs:.0f} "
+                   f"| {secs / n:.3g} | {100 * solve / secs:.0f}% | {its} "
+                   f"| {launches / n:.0f} | "
+                   + ", ".join(f"{k['name']} {100 * k['seconds'] / secs:.0f}%" for k in others)
                    + " |")
     return out
 
@@ -196,7 +208,7 @@ def ghia_section(runs, runs_dir):
             res.append((rms(devs), max(devs), rms(kept), max(kept)))
         out.append(f"| {s['run']} | {re} | {s['parameters'].get('n', 0):g} | {s['sim_time']:g} "
                    f"| {res[0][0]:.4f} / {res[0][1]:.4f} | {res[1][0]:.4f} / {res[1][1]:.4f} "
-                   f"| {res[1][2]:.4f} / {res[1][3]:.4f} | {s['wall_seconds']:.0f} |")
+                   f"| {res[1][2]:.4f} / {res[1][3]:.4f} | {wall(s, '.0f')} |")
     if not out:
         return []
     return ["", "## Lid-driven cavity against Ghia et al. 1982", "",
@@ -325,7 +337,7 @@ def main():
         its = f"{solver['iterations_mean']:.1f} / {solver['iterations_max']:g}" if solver else ""
         metrics = "<br>".join(f"{k} = {v:.4g}" for k, v in sorted(s.get("metrics", {}).items()))
         lines.append(f"| {s['run']} | {s['case']} | {s['scheme']} ({s['precision']}) | {params} "
-                     f"| {s['particles']:g} | {s['steps']:g} | {s['wall_seconds']:.1f} "
+                     f"| {s['particles']:g} | {s['steps']:g} | {wall(s)} "
                      f"| {s['particle_steps_per_second']:.3g} | {its} | {s['status']} | {metrics} |")
     # observed orders between consecutive resolutions
     # parameters every run of a case and scheme has (a parameter added to a case later does not
