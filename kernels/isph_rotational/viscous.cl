@@ -7,7 +7,7 @@
  *   a0 ũ − δt ν∇²ũ = a1 u^k − a2 u^{k−1} + δt (−∇p^k/ρ + g)
  * divided by a0, one component at a time, with κ = δt ν / a0:
  *   fluid row i:    x_i − κ Σ_j P_ij (x_i − x_j),  P_ij = 2 V_j r_ij·L_i∇_iW_ij / (r_ij² + η²)
- *                   (eq 28, µ uniform; rot_predict's sum with x for u)
+ *                   (eq 28, µ uniform: common/poisson.cl's poisson_pair)
  *   dummy row d:    (x_d + S_d(x)) / 2 = u_wall,d: the wall condition of walls.cl as an equation,
  *                   S_d the Shepard interpolation of the fluid and the layers at the dummy's image
  *                   (or the value of the particle nearest to it, -D ROT_WALL_IMAGE=1), so the
@@ -77,9 +77,7 @@ __kernel void rot_visc_coeffs(OP_ARGS, __global const uint *kind, __global const
       realv r = xi - (pos[j] + it.shift);
       real r2 = dot(r, r);
       if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-      /* −κ P_ij (x_i − x_j), eq 28 */
-      const real a = -kappa * R(2.0) * vol[j] * dot(r, op_grad_w(L_i, smoothing_f(sqrt(r2)), r)) /
-                     (r2 + SMOOTH_ETA2);
+      const real a = -kappa * poisson_pair(L_i, vol[j], r, r2); /* −κ P_ij, eq 28 */
       diag += a;
       col[k] = j;
       val[k] = -a;
