@@ -57,7 +57,7 @@ struct sim {
                           * pressure x, y and viscous x, y (N/m) */
   size_t nforce_rows, force_rows_cap;
   long step;
-  long step0; /* the step this run started from (a restart's checkpoint; 0 otherwise) */
+  long step0;        /* the step this run started from (a restart's checkpoint; 0 otherwise) */
   long solver_its;   /* the pressure solver's iterations of the last step (schemes set) */
   double solver_res; /* and its final relative residual */
   long solver_its_sum, solver_its_max, solver_steps;
