@@ -11,19 +11,18 @@
 -- Profiles: u and p along the centreline (profile "centreline").
 -- Metrics: cd, its pressure and viscous parts, pressure_share = cd_pressure / cd (the paper:
 -- about 2/3), cl (zero by symmetry while the wake is steady), cd_dev = cd / cd_ref − 1 and
--- cd_error = |cd_dev|; where the wake sheds vortices, strouhal = f D / U0 (the frequency of the
--- lift) and cl_amplitude (the amplitude of that oscillation of C_L); cl_spectrum_median (the
--- median amplitude of the lift's spectrum: its noise).
+-- cd_error = |cd_dev|; upstream (how far fluid got upstream of the entry by the end, in dr:
+-- 0); where the wake sheds vortices, strouhal = f D / U0 (the frequency of the lift) and
+-- cl_amplitude (the amplitude of that oscillation of C_L); cl_spectrum_median (the median
+-- amplitude of the lift's spectrum: its noise).
 -- cfl multiplies the scheme's time-step bounds (the stability map); the drag is averaged from
 -- t = average_from (the paper's 1 at Re = 1; the wake of Re = 20 takes about 12 D/U0 to
 -- settle). implicit = 1 solves the prediction's viscous term implicitly (viscous = "implicit", not
 -- the paper's explicit one): at Re = 1 the explicit viscous bound is 1/30 of the CFL bound at
 -- H/160 (0.125 h²/ν against 0.25 h/U, h = 1.2 L0), so this is what makes H/160 affordable. It
 -- suits the rotational projection (C_D within 0.2% of the explicit run's at H/40 and H/80); the
--- homogeneous one's splitting error grows with the step (C_D 9% higher at H/40), and at H/80 and
--- H/160 its runs fail (t = 4.7 and 2.5): fluid next to the entry's top corner, where the entry
--- profile is slowest, creeps upstream through the entry layers until the pressure solve fails or
--- the particle leaves the domain.
+-- homogeneous one's splitting error grows with the step: C_D 9% and 17% higher than its explicit
+-- runs' at H/40 and H/80, the pressure's share of it 0.45 and 0.34 instead of 0.63 and 0.51.
 param { n = 80, re = 1, t_end = 10, length = 24, xc = 12, homogeneous = 0, exit_parabolic = 0,
         xsph = 0, shift = 0.04, outputs = 20, cfl = 1, average_from = 1, developed = 0,
         checkpoint = 0, implicit = 0 }
@@ -81,6 +80,9 @@ function metrics(sim)
   local out = { cd = f.x / q, cd_pressure = f.pressure_x / q, cd_viscous = f.viscous_x / q,
                 cl = f.y / q, force_samples = f.samples }
   out.pressure_share = out.cd_pressure / out.cd
+  -- fluid upstream of the entry section (x = 0) at the end, in dr: 0 unless the entry's layers
+  -- let fluid through
+  out.upstream = math.max(-sim.min("pos", 1), 0) / dr
   -- vortex shedding: the spectrum of the lift over the averaging window (sim.spectrum_peak).
   -- Over a window of at least 20 D/U0, where one frequency stands out (an amplitude at least 4
   -- times the spectrum's median; the noise of the steady wakes at Re 20 and 50, H/80, peaks at

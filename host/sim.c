@@ -219,6 +219,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   const cl_uint zeros[3] = {0, 0, 0};
   CLSPH_TRY(kern_buffer(dev, sizeof zeros, zeros, &sim.d_flags, "flags"));
   sim.wall_first_step = -1;
+  sim.open_waiting = sim.open_waiting_max = -1;
   CLSPH_TRY(prog_kernel(sim.prog, "probe_sample", &sim.k_probe));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_max_speed", &sim.k_max_speed));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_count", &sim.k_count));
@@ -1499,6 +1500,8 @@ static enum clsph_status write_summary(struct sim *sim, const struct run_out *o,
       cJSON_AddNumberToObject(e, "last_fy", fs->last[1]);
     }
   }
+  if (sim->open_waiting_max >= 0) /* entry particles that waited for a recycled one */
+    cJSON_AddNumberToObject(root, "entry_waiting_max", (double)sim->open_waiting_max);
   cJSON *wc = cJSON_AddObjectToObject(root, "wall_crossings");
   CLSPH_CHECK(wc != NULL, CLSPH_E_NOMEM, "out of memory");
   cJSON_AddNumberToObject(wc, "steps", (double)sim->wall_steps);

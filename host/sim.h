@@ -64,6 +64,9 @@ struct sim {
   long aux_its; /* a second solve's iterations of the last step (isph-rotational's
                  * implicit viscous prediction, both components), 0: none */
   long aux_its_sum;
+  /* entry layer particles left waiting for a recycled exit particle (isph-rotational's open
+   * boundaries) at the last step, and the most at one step over this run; −1: no entry */
+  long open_waiting, open_waiting_max;
   const char *failed_solve; /* the solve whose failure stops a run (schemes set it when it is
                              * not the pressure's; NULL: "pressure") */
   /* fluid particles found behind a wall (CLSPH_FLAG_WALL): steps with any, most at one step, and

@@ -21,7 +21,7 @@
  * When a layer particle reaches h >= 0 it becomes a fluid particle and its row gets a new
  * particle depth behind it: a particle recycled from an exit (below), so that the count of
  * particles never changes. Until an exit has one to give, it stays a layer particle (a few
- * steps at most in a steady flow: what enters leaves).
+ * steps at most in a steady flow: what enters leaves; the furthest in are served first).
  * Exit (sec 3.3.3): a fluid particle that crosses the section (h < 0) becomes an exit layer
  * particle. The natural condition n·∇u = 0 (eq 17 with equilibrated pressures): its velocity and
  * ũ are those of its "progenitor in the exit layer", the fluid particle nearest to (s, δr/2);
@@ -245,10 +245,15 @@ __kernel void rot_open_classify(const uint n, __global const realv *pos, __globa
   role[i] = r;
 }
 
-/* Recycling, one work item, in index order (the same run gives the same particles): each entry
- * particle of role 1 becomes fluid and an exit particle of role 2 takes its place at the back of
- * its row, depth behind it, with the row's prescribed velocity. count[0] += pairs made;
- * count[1] = entry particles left waiting; count[2] = exit particles left waiting. */
+/* Recycling, one work item (the same run gives the same particles): each entry particle of role
+ * 1 becomes fluid and an exit particle of role 2 takes its place at the back of its row, depth
+ * behind it, with the row's prescribed velocity. When the exits have fewer to give than the
+ * entries ask for (the fluid's volume fluctuates by a few particles), the entry particles furthest
+ * into the fluid go first. Served in index order (the sort's, by cell), the same rows would wait
+ * every time: their layers run on into the fluid, the gap they leave behind fills with fluid, and
+ * that fluid is then upstream of the entry with nothing to bring it back.
+ * count[0] += pairs made; count[1] = entry particles left waiting; count[2] = exit particles
+ * left waiting. */
 __kernel void rot_open_recycle(const uint n, __global const uint *role, __global uint *list,
                                __global const real *sec, __global realv *pos, __global uint *kind,
                                __global uint *section, __global realv *vel,
@@ -257,16 +262,31 @@ __kernel void rot_open_recycle(const uint n, __global const uint *role, __global
                                __global uint *count)
 {
   if (get_global_id(0) != 0) return;
-  uint ng = 0, used = 0, waiting = 0;
+  uint ng = 0, nw = 0;
   for (uint i = 0; i < n; ++i)
     if (role[i] == 2u) list[ng++] = i;
-  for (uint i = 0; i < n; ++i) {
-    if (role[i] != 1u) continue;
-    if (used == ng) {
-      ++waiting;
-      continue;
+  __global uint *want = list + ng; /* the roles are exclusive: ng + nw <= n */
+  for (uint i = 0; i < n; ++i)
+    if (role[i] == 1u) want[nw++] = i;
+  const uint used = min(ng, nw);
+  if (nw > ng) /* partial selection sort: the `used` furthest in (largest h) to the front */
+    for (uint a = 0; a < used; ++a) {
+      uint best = a;
+      real hbest = -INFINITY;
+      for (uint b = a; b < nw; ++b) {
+        const struct rot_section s = rot_section_load(sec, section[want[b]]);
+        const real h = dot(pos[want[b]] - s.a, s.n);
+        if (h > hbest) {
+          hbest = h;
+          best = b;
+        }
+      }
+      const uint t = want[a];
+      want[a] = want[best];
+      want[best] = t;
     }
-    const uint j = list[used++], k = section[i];
+  for (uint q = 0; q < used; ++q) {
+    const uint i = want[q], j = list[q], k = section[i];
     const struct rot_section s = rot_section_load(sec, k);
     pos[j] = pos[i] - s.depth * s.n;
     kind[j] = ROT_INFLOW;
@@ -281,7 +301,7 @@ __kernel void rot_open_recycle(const uint n, __global const uint *role, __global
     section[i] = ROT_NO_SECTION;
   }
   count[0] += used;
-  count[1] = waiting;
+  count[1] = nw - used;
   count[2] = ng - used;
 }
 #endif /* ROT_OPEN */

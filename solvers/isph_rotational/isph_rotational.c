@@ -533,6 +533,10 @@ static enum clsph_status open_recycle(struct sim *sim, struct rot *r)
                      KARG(pos), KARG(kind), KARG(section), KARG(vel), KARG(uprev), KARG(uwall),
                      KARG(normal), KARG(p), KARG(phi), KARG(r->d_count)));
   CLSPH_TRY(kern_launch(sim->dev, r->k_recycle, 1, NULL));
+  cl_uint count[3];
+  CLSPH_TRY(kern_read(sim->dev, r->d_count, sizeof count, count));
+  sim->open_waiting = (long)count[1];
+  if (sim->open_waiting > sim->open_waiting_max) sim->open_waiting_max = sim->open_waiting;
 done:
   return st;
 }
