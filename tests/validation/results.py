@@ -13,6 +13,7 @@ import re
 import sys
 
 RESOLUTION = ("n", "dr")  # parameters that set the resolution: n particles per unit, or dr
+NEUTRAL = ("checkpoint",)  # parameters that do not change a run's results (checkpoint interval)
 
 
 def cylinder_table(runs):
@@ -367,7 +368,7 @@ def main():
             split[key] = members
             continue
         rest = sorted({k for _, s in members for k in s.get("parameters", {})} -
-                      common[(key[0], key[1])] - set(RESOLUTION))
+                      common[(key[0], key[1])] - set(RESOLUTION) - set(NEUTRAL))
         dflt = case_defaults(key[0])
         for h, s in members:
             extra = tuple((k, s["parameters"].get(k, dflt.get(k))) for k in rest)
@@ -382,6 +383,12 @@ def main():
         for a, b in zip(members, members[1:]):
             for k in names:
                 ea, eb = a[1]["metrics"].get(k), b[1]["metrics"].get(k)
+                # an error whose signed deviation (k's "_error" as "_dev") changes sign between
+                # the two has crossed zero: no order
+                da = a[1]["metrics"].get(k.replace("_error", "_dev"))
+                db = b[1]["metrics"].get(k.replace("_error", "_dev"))
+                if k.endswith("_error") and da is not None and db is not None and da * db < 0:
+                    continue
                 if ea and eb and ea > 0 and eb > 0:
                     order = math.log(ea / eb) / math.log(a[0] / b[0])
                     orders.append(f"| {case} | {scheme} | {' '.join(f'{k2}={v:g}' for k2, v in params)} "

@@ -61,6 +61,7 @@ done
 run square_cylinder_n160_homogeneous square_cylinder n=160 homogeneous=1 checkpoint=1
 python3 tests/validation/square_cylinder_profiles.py tests/validation/square_cylinder_profiles 1 \
   "rotational H/160=$out/square_cylinder_n160_rotational_implicit" \
+  "homogeneous H/160=$out/square_cylinder_n160_homogeneous" \
   "rotational H/80=$out/square_cylinder_n80_rotational" \
   "homogeneous H/80=$out/square_cylinder_n80_homogeneous" \
   "rotational H/40=$out/square_cylinder_n40_rotational" \
