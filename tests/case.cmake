@@ -216,7 +216,7 @@ clsph_run_test(validate_wedge_wcsph ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lu
                SETS wcsph=1
                BOUNDS "crossed_wall<0.5" "wedge_force_mean>900" "wedge_force_mean<1400")
 
-# The health checks of the time loop (host/sim.c): each failure class stops the run with exit
+# The health checks of the time loop (host/sim/checks.c): each failure class stops the run with exit
 # status 1, its reason in the message and in summary.json, and its class in "failure".
 function(clsph_failure_test name case failure regex)
   cmake_parse_arguments(T "" "MESSAGE" "SETS" ${ARGN})

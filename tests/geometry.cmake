@@ -1,4 +1,4 @@
-# Geometry tests (see host/geometry.c): fluid fill, USAW vertices and segments, dummy layers,
+# Geometry tests (see host/scene/geometry.c): fluid fill, USAW vertices and segments, dummy layers,
 # inflow/outflow layers and input errors, on scenes built in C (no Lua, no OpenCL).
 clsph_test_exe(test_geometry unit/test_geometry.c)
 clsph_add_test(geometry COMMAND test_geometry LABELS unit)

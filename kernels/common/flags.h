@@ -1,6 +1,6 @@
 /* flags.h: error bits that kernels atomic_or into d_flags[0]; the host reads them once per step.
  * d_flags[1] counts the fluid particles found behind a wall in the step and d_flags[2] holds the
- * deepest of them (m, the bits of a float); host/sim.c reads them. */
+ * deepest of them (m, the bits of a float); host/sim/checks.c reads them. */
 #define CLSPH_FLAG_NAN            1u /* a non-finite value was produced */
 #define CLSPH_FLAG_NEIGH_OVERFLOW 2u /* a per-particle neighbour table was too small */
 #define CLSPH_FLAG_ESCAPED        4u /* a particle left the (non-periodic) grid */

@@ -1,6 +1,6 @@
 /* smoothing.h: the smoothing function W(r) and F(r) = (1/r) dW/dr, so that
  * ∇_i W_ij = F(|r_ij|) r_ij with r_ij = r_i − r_j.
- * Switches (host/smoothing.c computes the constants in double):
+ * Switches (host/sim/smoothing.c computes the constants in double):
  *   SMOOTHING       SMOOTHING_WENDLAND_C2 | SMOOTHING_CUBIC_SPLINE | SMOOTHING_GAUSSIAN
  *   SMOOTH_INV_H    1/h
  *   SMOOTH_ALPHA    normalisation divided by h^DIM

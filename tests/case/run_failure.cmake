@@ -1,5 +1,5 @@
 # Runs a case that must stop as a blow-up of one class: exit status 1, summary.json written with
-# "failure" = FAILURE and a status matching REGEX (the health checks of host/sim.c), and a
+# "failure" = FAILURE and a status matching REGEX (the health checks of host/sim/checks.c), and a
 # message matching MESSAGE (default: REGEX; a failure reported where it happened, such as the
 # pressure solver's, is worded there).
 #   cmake -DCLSPH=exe -DCASE=file -DOUT=dir -DSETS="a=1|b=2" -DFAILURE=energy -DREGEX=... -P ...

@@ -1,4 +1,4 @@
-/* test_io.c: snapshots, the XDMF index and checkpoints (host/io.c).
+/* test_io.c: snapshots, the XDMF index and checkpoints (host/output/io.c).
  *
  * A set of 1000 particles with known fields (2-D pos and vel, p, an unsigned kind, a signed int,
  * a 4-real field of which 3 are output, and a field that is never output) is written as a

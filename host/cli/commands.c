@@ -1,5 +1,5 @@
-/* run.c: the `run`, `info` and `render` commands. Everything is checked (case, geometry, device,
- * output folder, the field of frames) before the first step, so bad input leaves nothing
+/* commands.c: the `run`, `info` and `render` commands. Everything is checked (case, geometry,
+ * device, output folder, the field of frames) before the first step, so bad input leaves nothing
  * half-written. */
 #include <dirent.h>
 #include <errno.h>
@@ -15,6 +15,7 @@
 #include "frames.h"
 #include "io.h"
 #include "kern.h"
+#include "loop.h"
 #include "scheme.h"
 #include "sim.h"
 
@@ -133,8 +134,8 @@ enum clsph_status run_command(const struct cli *cli)
            out);
   struct frames_opts fo;
   if (cli->frames) CLSPH_TRY(frame_options(cli, &scene.render, &fo));
-  struct sim_options opt = {out, cli->restart, cli->quiet, cli->frames ? &fo : NULL};
-  st = sim_run(&sim, &opt, script);
+  struct loop_options opt = {out, cli->restart, cli->quiet, cli->frames ? &fo : NULL};
+  st = loop_run(&sim, &opt, script);
   if (!cli->quiet && st == CLSPH_OK)
     printf("done: t = %g s in %ld steps; %s/summary.json\n", sim.time, sim.step, out);
   if (!cli->quiet && dev.profile != NULL) {

@@ -1,4 +1,4 @@
-/* geometry.c: turns a scene (host/scene.h) into particles and wall elements; 2-D, in double.
+/* geometry.c: turns a scene (host/scene/scene.h) into particles and wall elements; 2-D, in double.
  *
  * Lattice. Fluid, dummy and inflow/outflow particles sit on x = lo + (k + 1/2) dr, k an integer
  * per axis, aligned to scene->lo. On a periodic axis only the points in [lo, hi) are kept.

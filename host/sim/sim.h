@@ -1,27 +1,18 @@
-/* sim.h: a simulation: the scene's particles on the device, the scheme, and the time loop with its
- * outputs (snapshots, checkpoints, probes, profiles, forces) and blow-up checks. */
+/* sim.h: a simulation: the scene's particles on the device, the scheme, the reductions over them
+ * and the blow-up checks. The time loop that drives it is host/loop/loop.h; what it writes is
+ * host/output/. */
 #ifndef CLSPH_SIM_H
 #define CLSPH_SIM_H
 
 #include "geometry.h"
-#include "io.h"
 #include "ops.h"
 #include "pset.h"
 #include "scene.h"
 #include "smoothing.h"
 
+#include <stdio.h>
+
 struct scheme_ops;
-struct case_script;
-
-struct frames_opts;
-
-/** Options of a run from the command line. */
-struct sim_options {
-  const char *out_dir;              /* output folder (created) */
-  const char *restart;              /* checkpoint to continue from, or NULL */
-  int quiet;                        /* no progress line */
-  const struct frames_opts *frames; /* a frame per snapshot and a movie (frames.h), or NULL */
-};
 
 /** Flow-rate control (eqs 67-68): the state a checkpoint carries (doubles only, in this order). */
 struct sim_flow {
@@ -82,7 +73,7 @@ struct sim {
    * fraction of the fluid */
   long health_checks;
   double energy_ratio_max, spacing_min, cluster_max;
-  double wall;      /* wall-clock time of the last sim_run (summary.json wall_seconds), s */
+  double wall;      /* wall-clock time of the last loop_run (summary.json wall_seconds), s */
   char status[256]; /* "ok" or why the run stopped */
   char failure[32]; /* "none", or the class of the failure (summary.json "failure"): "nan",
                      * "escaped", "neighbours", "wall_crossing", "solver", "clustering",
@@ -94,11 +85,6 @@ struct sim {
 enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, struct sim *out);
 /** @brief Print particle counts, active modules, memory per particle and the first time step. */
 enum clsph_status sim_info(struct sim *sim);
-/** @brief Run to the end time, writing the outputs into opt->out_dir (see README). A profile on
- *  the device (--profile) records from the start of the run to its end (the window of sim->wall)
- *  and goes into summary.json. */
-enum clsph_status sim_run(struct sim *sim, const struct sim_options *opt,
-                          struct case_script *script);
 /** @brief Sort the particles by cell and reorder every field (before each step). */
 enum clsph_status sim_sort(struct sim *sim);
 /** @brief Read the error flags; a raised flag ends the run with a reason in sim->status and its
@@ -112,6 +98,15 @@ enum clsph_status sim_check_flags(struct sim *sim);
  *  checks.energy times ½ M U² (M its mass, U = sim->u_ref). Reduced on the device; a failed
  *  check ends the run (CLSPH_E_BLOWUP) with the reason in sim->status and sim->failure. */
 enum clsph_status sim_check_health(struct sim *sim);
+/** @brief Record a failed check: its class into sim->failure (the reason is already in
+ *  sim->status), logged once; returns CLSPH_E_BLOWUP. */
+enum clsph_status sim_fail(struct sim *sim, const char *failure);
+/** @brief Flow-rate control (Leroy et al. 2014 eqs 67-68): set the x body force for a step of
+ *  length dt from the slice velocity; one row to `log` (flow_control.csv) when not NULL. */
+enum clsph_status sim_flow_control(struct sim *sim, double dt, FILE *log);
+/** @brief Work-groups of 64 of a reduction over n particles: at most 64, so a few dozen partial
+ *  results come back to the host per reduction (reduce.cl). */
+size_t sim_reduce_groups(size_t n);
 /** @brief Largest speed over the particles of one kind (−1: all), reduced on the device. */
 enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax);
 /** @brief Largest norm of a vector field (2 reals per particle) over one kind (−1: all). */

@@ -1,6 +1,6 @@
-/* scene.h: the scene description a case script produces (host/case.c) and the geometry generator
- * (host/geometry.c) turns into particles. Plain data: every length in m, velocity in m/s, time in
- * s, SI throughout. 2-D for now (points are x, y pairs). */
+/* scene.h: the scene description a case script produces (host/scene/case.c) and the geometry
+ * generator (host/scene/geometry.c) turns into particles. Plain data: every length in m, velocity
+ * in m/s, time in s, SI throughout. 2-D for now (points are x, y pairs). */
 #ifndef CLSPH_SCENE_H
 #define CLSPH_SCENE_H
 
@@ -112,7 +112,7 @@ struct scene_render {
 };
 
 /** Thresholds of the health checks of the time loop (run { checks = { ... } }; the defaults,
- *  and the measurements behind them, are in host/scene.c). A run that passes one stops as a
+ *  and the measurements behind them, are in host/scene/scene.c). A run that passes one stops as a
  *  blow-up with its reason in summary.json. */
 struct scene_checks {
   int every;               /* steps between the clustering and energy checks (and the last) */
@@ -121,7 +121,7 @@ struct scene_checks {
   double cluster_fraction; /* the run fails when more than this fraction of the fluid is
                             * clustered */
   double energy;           /* the run fails when the kinetic energy of the fluid exceeds energy
-                            * times ½ M U² (M its mass, U the scene's velocity scale, sim.c) */
+                            * times ½ M U² (M its mass, U the scene's velocity scale, sim/sim.c) */
   double wall_depth;       /* the run fails when a fluid particle is more than wall_depth dr
                             * behind a wall (shallower crossings are counted) */
 };

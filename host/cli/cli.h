@@ -46,7 +46,7 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out);
 /** @brief The --help text. */
 void cli_usage(FILE *f);
 
-/** @brief `clsph run CASE`: run a case (see run.c). */
+/** @brief `clsph run CASE`: run a case (see commands.c). */
 enum clsph_status run_command(const struct cli *cli);
 /** @brief `clsph info CASE`: what a run would do, without running. */
 enum clsph_status info_command(const struct cli *cli);
@@ -56,7 +56,7 @@ enum clsph_status demo_run(const struct cli *cli);
 enum clsph_status bench_run(const struct cli *cli);
 /** @brief `clsph bench psolve`. */
 enum clsph_status bench_psolve(const struct cli *cli);
-/** @brief `clsph render OUTDIR`: frames and a movie from a run's snapshots (see run.c). */
+/** @brief `clsph render OUTDIR`: frames and a movie from a run's snapshots (see commands.c). */
 enum clsph_status render_command(const struct cli *cli);
 /** @brief `clsph bench render`: frame times (see bench_render.c). */
 enum clsph_status bench_render(const struct cli *cli);

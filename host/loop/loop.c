@@ -1,0 +1,213 @@
+/* loop.c: the time loop of a run.
+ *
+ * Each step: sort the particles by cell (every field reordered), ask the scheme for its largest
+ * stable step, shorten it so that equal steps land exactly on the next output or checkpoint time
+ * (k = ⌈remaining/bound⌉ steps of remaining/k: no short step before each output, which would
+ * upset the flow-rate control), update the flow-rate control, step, and read the error flags.
+ * Outputs in the output folder (host/output/):
+ *   snap_NNNNNN.h5 + snapshots.xdmf    particle fields at the output cadence (ParaView)
+ *   checkpoint_NNNNNN.h5               at the checkpoint cadence and at the end (--restart)
+ *   probes.csv, profile_<name>.csv     interpolated fields at the output cadence
+ *   forces.csv                         wall-group forces at the output cadence
+ *   frames/FIELD_NNNNNN.png, FIELD.mp4 with --frames: a frame with each snapshot, drawn from a
+ *                                      host copy of the device state, and the movie at the end
+ *   summary.json                       what ran, its cost (with --profile, the device time per
+ *                                      kernel), its status and the case's metrics */
+#include "loop.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "scheme.h"
+#include "checkpoint.h"
+#include "kern.h"
+#include "progress.h"
+#include "series.h"
+#include "snapshot.h"
+#include "summary.h"
+
+/* The next multiple of `every` after time t (a function of t alone, so a restart agrees). */
+static double next_mark(double t, double every)
+{
+  if (!(every > 0.0)) return HUGE_VAL;
+  double k = floor(t / every + 1e-9);
+  double m = (k + 1.0) * every;
+  return m > t ? m : m + every;
+}
+
+/* Before the first step: what the outputs need is there (the wall groups of forces, the field
+ * of frames), the folder is ready, a restart has its state back, and the series are open; a
+ * fresh run writes its initial snapshot. */
+static enum clsph_status start(struct sim *sim, const struct loop_options *opt, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  CLSPH_CHECK(s->nforces == 0 || sim->scheme->wall_force != NULL, CLSPH_E_INPUT,
+              "%s: force { ... } asks for wall forces, which scheme '%s' does not compute",
+              s->case_path, sim->scheme->name);
+  for (int g = 0; g < s->nforces; ++g) {
+    int found = 0;
+    for (int w = 0; w < s->nwalls; ++w) found |= strcmp(s->walls[w].group, s->forces[g]) == 0;
+    CLSPH_CHECK(found, CLSPH_E_INPUT, "%s: force: no wall group '%s'", s->case_path, s->forces[g]);
+  }
+  if (opt->frames != NULL) { /* the field of frames exists, before anything is written */
+    const char *names[PSET_MAX_FIELDS];
+    int ncomp[PSET_MAX_FIELDS];
+    struct field_spec f;
+    const int n = snapshot_frame_fields(sim, names, ncomp);
+    CLSPH_TRY(field_find(opt->frames->render.field, n, names, ncomp, &f));
+  }
+  CLSPH_TRY(out_prepare_dir(opt->out_dir));
+  snprintf(o->dir, sizeof o->dir, "%s", opt->out_dir);
+  if (opt->frames != NULL) CLSPH_TRY(snapshot_open_frames(sim, opt->frames, opt->out_dir, o));
+  if (opt->restart != NULL) CLSPH_TRY(checkpoint_restore(sim, opt->restart, o));
+  CLSPH_TRY(series_open(sim, o, opt->restart));
+  if (opt->restart == NULL) CLSPH_TRY(snapshot_write(sim, o));
+done:
+  return st;
+}
+
+/* The length of the next step: the scheme's bound times cfl (or the fixed step, which must stay
+ * within it), shortened so that equal steps land exactly on the next output, checkpoint or end.
+ * `target` receives that time and `lands` whether this step reaches it. */
+static enum clsph_status step_length(struct sim *sim, double *dt_out, double *target, int *lands)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  const double t_end = s->t_end;
+  double dt = HUGE_VAL;
+  if (sim->scheme->max_dt != NULL) CLSPH_TRY(sim->scheme->max_dt(sim, sim->state, &dt));
+  dt *= s->cfl;
+  if (s->dt > 0.0) { /* a fixed time step must stay within the scheme's bounds */
+    if (s->dt > dt * (1.0 + 1e-9)) {
+      snprintf(sim->status, sizeof sim->status,
+               "the fixed time step %g s exceeds the stability bound %g s of %s (cfl %g) at "
+               "step %ld, t = %.9g s",
+               s->dt, dt, sim->scheme->name, s->cfl, sim->step, sim->time);
+      log_error("%s: %s; use a smaller run { dt } or a larger cfl knowingly", s->case_path,
+                sim->status);
+      snprintf(sim->failure, sizeof sim->failure, "dt_bound");
+      st = sim->step == 0 ? CLSPH_E_INPUT : CLSPH_E_BLOWUP;
+      goto done;
+    }
+    dt = s->dt;
+  }
+  if (!(dt > 0.0) || (isfinite(dt) && dt < 1e-12 * fmax(t_end, 1.0))) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: the time step collapsed to %g s at step %ld, t = %.9g s", dt, sim->step,
+             sim->time);
+    st = sim_fail(sim, "dt_collapse");
+    goto done;
+  }
+  *target = fmin(t_end, fmin(next_mark(sim->time, s->output_every),
+                             next_mark(sim->time, s->checkpoint_every)));
+  double left = *target - sim->time, k = ceil(left / dt * (1.0 - 1e-9));
+  *lands = sim->time + dt >= *target * (1.0 - 1e-12) || !(k > 1.0);
+  *dt_out = *lands ? left : left / k;
+done:
+  return st;
+}
+
+/* After a step: the time, the step count and the solver's iterations. */
+static void advance(struct sim *sim, double dt, double target, int lands)
+{
+  sim->time = lands ? target : sim->time + dt;
+  sim->dt = dt;
+  ++sim->step;
+  if (sim->solver_its > 0) {
+    sim->solver_its_sum += sim->solver_its;
+    sim->solver_steps += 1;
+    if (sim->solver_its > sim->solver_its_max) sim->solver_its_max = sim->solver_its;
+    sim->aux_its_sum += sim->aux_its;
+  }
+}
+
+/* Is time t on the cadence `every` (a multiple of it)? */
+static int on_cadence(double t, double every)
+{
+  return every > 0.0 && fabs(remainder(t, every)) < 1e-9 * every;
+}
+
+/* After a step: the blow-up checks, then the outputs that fall due. */
+static enum clsph_status check_and_write(struct sim *sim, struct run_out *o, double dt, int lands)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  const int at_end = sim->time >= s->t_end;
+  CLSPH_TRY(sim_check_flags(sim));
+  if (s->checks.every > 0 && (sim->step % s->checks.every == 0 || at_end))
+    CLSPH_TRY(sim_check_health(sim));
+  /* time series at their own cadence: the first step at or past each multiple of sample_every */
+  if (s->sample_every > 0.0 && floor(sim->time / s->sample_every * (1.0 + 1e-12)) >
+                                   floor((sim->time - dt) / s->sample_every * (1.0 + 1e-12)))
+    CLSPH_TRY(series_write(sim, o, SERIES_TIME));
+  if (lands && (at_end || on_cadence(sim->time, s->output_every)))
+    CLSPH_TRY(snapshot_write(sim, o));
+  if (lands && (at_end || on_cadence(sim->time, s->checkpoint_every)))
+    CLSPH_TRY(checkpoint_write(sim, o));
+done:
+  return st;
+}
+
+/* The end of a run, however it ended: the status and failure class worded, summary.json (with
+ * the metrics of a run that ended well), the movie of the frames there are. */
+static enum clsph_status finish(struct sim *sim, const struct loop_options *opt,
+                                struct case_script *script, struct run_out *o, enum clsph_status st)
+{
+  if (st == CLSPH_E_BLOWUP && strcmp(sim->status, "ok") == 0) {
+    /* the only blow-up the time loop does not word itself: the pressure solver's (psolve.c) */
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: the %s solve failed at step %ld, t = %.9g s",
+             sim->failed_solve != NULL ? sim->failed_solve : "pressure", sim->step + 1, sim->time);
+    snprintf(sim->failure, sizeof sim->failure, "solver");
+  }
+  if (st != CLSPH_OK && strcmp(sim->status, "ok") == 0)
+    snprintf(sim->status, sizeof sim->status, "failed: %s", clsph_status_str(st));
+  if (st != CLSPH_OK && strcmp(sim->failure, "none") == 0)
+    snprintf(sim->failure, sizeof sim->failure, "error");
+  if (o->dir[0] != '\0') {
+    enum clsph_status ws = summary_write(sim, o, sim->wall, script);
+    if (st == CLSPH_OK) st = ws;
+    if (st == CLSPH_OK && strcmp(sim->status, "ok") != 0) st = CLSPH_E_INPUT;
+  }
+  if (o->frames != NULL) { /* the movie of what there is, also of a run that stopped */
+    enum clsph_status fs = frames_finish(o->frames, opt->quiet);
+    if (st == CLSPH_OK) st = fs;
+  }
+  out_close(sim->scene, o);
+  return st;
+}
+
+enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
+                           struct case_script *script)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct run_out o;
+  struct progress pr = {.tty = isatty(2), .quiet = opt->quiet};
+  memset(&o, 0, sizeof o);
+  const double wall0 = progress_now();
+  kern_profile_start(sim->dev->profile);
+
+  CLSPH_TRY(start(sim, opt, &o));
+  pr.start = progress_now();
+  while (sim->time < sim->scene->t_end) {
+    double dt = 0.0, target = 0.0;
+    int lands = 0;
+    CLSPH_TRY(sim_sort(sim));
+    CLSPH_TRY(step_length(sim, &dt, &target, &lands));
+    if (sim->scene->flow.on) CLSPH_TRY(sim_flow_control(sim, dt, o.flow));
+    CLSPH_TRY(sim->scheme->step(sim, sim->state, dt));
+    advance(sim, dt, target, lands);
+    CLSPH_TRY(check_and_write(sim, &o, dt, lands));
+    progress_show(sim, &pr, 0);
+  }
+  progress_show(sim, &pr, 1);
+done:;
+  /* the profiled window ends with its commands run, and leaves out the metrics' kernels */
+  const enum clsph_status pst = kern_profile_stop(sim->dev->profile);
+  if (st == CLSPH_OK) st = pst;
+  sim->wall = progress_now() - wall0;
+  return finish(sim, opt, script, &o, st);
+}

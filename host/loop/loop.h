@@ -1,0 +1,24 @@
+/* loop.h: the time loop of a run: it steps the simulation (host/sim/) and writes its outputs
+ * (host/output/). */
+#ifndef CLSPH_LOOP_H
+#define CLSPH_LOOP_H
+
+#include "case.h"
+#include "frames.h"
+#include "sim.h"
+
+/** Options of a run from the command line. */
+struct loop_options {
+  const char *out_dir;              /* output folder (created) */
+  const char *restart;              /* checkpoint to continue from, or NULL */
+  int quiet;                        /* no progress line */
+  const struct frames_opts *frames; /* a frame per snapshot and a movie (frames.h), or NULL */
+};
+
+/** @brief Run to the end time, writing the outputs into opt->out_dir (see README). A profile on
+ *  the device (--profile) records from the start of the run to its end (the window of sim->wall)
+ *  and goes into summary.json. */
+enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
+                           struct case_script *script);
+
+#endif /* CLSPH_LOOP_H */

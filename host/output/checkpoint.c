@@ -1,0 +1,103 @@
+/* checkpoint.c: checkpoints of a run (every field, bit for bit, with the host state of the
+ * flow-rate control and the scheme), and a restart from one. */
+#include "checkpoint.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scheme.h"
+#include "snapshot.h"
+/* The checkpoint's blob: the flow-rate control's state (when on), then the scheme's host doubles
+ * (scheme_ops.persist). */
+static enum clsph_status state_blob(struct sim *sim, unsigned char *blob, size_t cap, size_t *bytes)
+{
+  enum clsph_status st = CLSPH_OK;
+  size_t n = 0;
+  if (sim->scene->flow.on) {
+    memcpy(blob, &sim->flow, sizeof sim->flow);
+    n = sizeof sim->flow;
+  }
+  int count = 0;
+  const double *v = sim->scheme->persist != NULL ? sim->scheme->persist(sim->state, &count) : NULL;
+  CLSPH_CHECK(n + (size_t)count * sizeof(double) <= cap, CLSPH_E_UNSUPPORTED,
+              "%s carries %d doubles of state, more than a checkpoint holds", sim->scheme->name,
+              count);
+  if (count > 0) memcpy(blob + n, v, (size_t)count * sizeof(double));
+  *bytes = n + (size_t)count * sizeof(double);
+done:
+  return st;
+}
+
+/* Restores what state_blob saved; a checkpoint without the scheme's state (written before
+ * schemes kept any) restarts with a warning: the run goes on, not bit for bit. */
+static enum clsph_status restore_blob(struct sim *sim, const char *path, const unsigned char *blob,
+                                      size_t bytes)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  const size_t flow = s->flow.on ? sizeof sim->flow : 0;
+  CLSPH_CHECK(bytes >= flow, CLSPH_E_INPUT,
+              "%s: the checkpoint has no flow-rate control state (%zu bytes of %zu), which %s "
+              "needs",
+              path, bytes, flow, s->case_path);
+  if (flow > 0) memcpy(&sim->flow, blob, flow);
+  int count = 0;
+  double *v = sim->scheme->persist != NULL ? sim->scheme->persist(sim->state, &count) : NULL;
+  const size_t want = (size_t)count * sizeof(double);
+  if (bytes - flow == want) {
+    if (count > 0) memcpy(v, blob + flow, want);
+  } else if (bytes == flow) {
+    log_warn("%s: the checkpoint carries no %s state (written by an older clsph): the run "
+             "continues, but not bit for bit",
+             path, sim->scheme->name);
+  } else {
+    CLSPH_CHECK(0, CLSPH_E_INPUT,
+                "%s: the checkpoint carries %zu bytes of scheme state, %s keeps %zu", path,
+                bytes - flow, sim->scheme->name, want);
+  }
+done:
+  return st;
+}
+
+enum clsph_status checkpoint_write(struct sim *sim, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  char name[64], path[1200];
+  struct io_meta m;
+  snapshot_meta(sim, &m);
+  snprintf(name, sizeof name, "checkpoint_%06ld.h5", sim->step);
+  CLSPH_TRY(out_path(o, name, path, sizeof path));
+  /* the flow-rate control's state and the scheme's host state travel in the blob, so a restart
+   * continues bit for bit */
+  unsigned char blob[sizeof sim->flow + 64 * sizeof(double)];
+  size_t bytes = 0;
+  CLSPH_TRY(state_blob(sim, blob, sizeof blob, &bytes));
+  CLSPH_TRY(io_checkpoint_write(path, sim->dev, &sim->ps, &m, bytes > 0 ? blob : NULL, bytes));
+  log_debug("checkpoint %s at t = %g s", path, sim->time);
+done:
+  return st;
+}
+
+enum clsph_status checkpoint_restore(struct sim *sim, const char *path, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  struct io_meta expect, got;
+  void *blob = NULL;
+  size_t blob_bytes = 0;
+  snapshot_meta(sim, &expect);
+  memset(&got, 0, sizeof got);
+  CLSPH_TRY(io_checkpoint_read(path, sim->dev, &sim->ps, &expect, &got, &blob, &blob_bytes));
+  CLSPH_TRY(restore_blob(sim, path, blob, blob_bytes));
+  sim->body_force[0] = s->flow.on ? sim->flow.force : s->body_force[0];
+  sim->time = got.time;
+  sim->step = got.step;
+  sim->step0 = got.step;
+  sim->dt = got.dt;
+  o->nsnap = s->output_every > 0.0 ? (int)floor(sim->time / s->output_every + 1e-9) + 1 : 1;
+  log_info("restarting from %s at t = %.9g s, step %ld", path, sim->time, sim->step);
+done:
+  free(blob);
+  return st;
+}

@@ -1,0 +1,219 @@
+/* metrics.c: what a case script's metrics(sim) function can ask of a run (struct case_sim_api):
+ * statistics and values of fields, interpolation at points, and the recorded wall forces. */
+#include "metrics.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "kern.h"
+static enum clsph_status metric_stats(void *ctx, const char *field, int comp, int kind, double *mn,
+                                      double *mx, double *mean)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ctx;
+  real *v = NULL;
+  cl_uint *k = NULL;
+  int idx = pset_find(&sim->ps, field);
+  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  const struct pfield *f = &sim->ps.f[idx];
+  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
+              field, f->nout);
+  size_t n = sim->ps.n;
+  v = malloc(n * f->elem);
+  k = malloc(n * sizeof *k);
+  CLSPH_CHECK(v != NULL && k != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(kern_read(sim->dev, f->d, n * f->elem, v));
+  CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_kind), n * sizeof *k, k));
+  double a = HUGE_VAL, b = -HUGE_VAL, s = 0.0;
+  size_t c = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (kind >= 0 && k[i] != (cl_uint)kind) continue;
+    double x;
+    if (f->type == PF_REAL)
+      x = (double)v[i * (size_t)f->ncomp + (size_t)comp];
+    else
+      x = (double)((const cl_uint *)(const void *)v)[i * (size_t)f->ncomp + (size_t)comp];
+    a = fmin(a, x);
+    b = fmax(b, x);
+    s += x;
+    ++c;
+  }
+  CLSPH_CHECK(c > 0, CLSPH_E_INPUT, "metrics: no particle of that kind");
+  *mn = a;
+  *mx = b;
+  *mean = s / (double)c;
+done:
+  free(k);
+  free(v);
+  return st;
+}
+
+/* Positions and one component of a field of the particles of one kind (−1: all). */
+static enum clsph_status metric_particles(void *ctx, const char *field, int comp, int kind,
+                                          size_t *count, double **xy, double **values)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ctx;
+  real *v = NULL, *x = NULL;
+  cl_uint *k = NULL;
+  double *oxy = NULL, *ov = NULL;
+  int idx = pset_find(&sim->ps, field);
+  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  const struct pfield *f = &sim->ps.f[idx];
+  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
+              field, f->nout);
+  const size_t n = sim->ps.n;
+  v = malloc(n * f->elem);
+  x = malloc(2 * n * sizeof *x);
+  k = malloc(n * sizeof *k);
+  oxy = malloc(2 * n * sizeof *oxy + 1);
+  ov = malloc(n * sizeof *ov + 1);
+  CLSPH_CHECK(v != NULL && x != NULL && k != NULL && oxy != NULL && ov != NULL, CLSPH_E_NOMEM,
+              "out of memory");
+  CLSPH_TRY(kern_read(sim->dev, f->d, n * f->elem, v));
+  CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_pos), 2 * n * sizeof *x, x));
+  CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_kind), n * sizeof *k, k));
+  size_t c = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (kind >= 0 && k[i] != (cl_uint)kind) continue;
+    const size_t at = i * (size_t)f->ncomp + (size_t)comp;
+    oxy[2 * c] = (double)x[2 * i];
+    oxy[2 * c + 1] = (double)x[2 * i + 1];
+    ov[c] = f->type == PF_REAL ? (double)v[at] : (double)((const cl_uint *)(const void *)v)[at];
+    ++c;
+  }
+  *count = c;
+  *xy = oxy;
+  *values = ov;
+  oxy = ov = NULL;
+done:
+  free(ov);
+  free(oxy);
+  free(k);
+  free(x);
+  free(v);
+  return st;
+}
+
+static enum clsph_status metric_sample(void *ctx, const char *field, int comp, double x, double y,
+                                       double *value)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ctx;
+  double at[2] = {x, y}, out[4];
+  int idx = pset_find(&sim->ps, field);
+  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  CLSPH_CHECK(comp >= 0 && comp < sim->ps.f[idx].nout, CLSPH_E_INPUT,
+              "metrics: field '%s' has %d components", field, sim->ps.f[idx].nout);
+  CLSPH_TRY(sim_sample(sim, idx, 1, at, out));
+  *value = out[comp];
+done:
+  return st;
+}
+
+static enum clsph_status metric_sample_many(void *ctx, const char *field, int comp, int np,
+                                            const double *xy, double *values)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ctx;
+  double *out = NULL;
+  int idx = pset_find(&sim->ps, field);
+  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  const struct pfield *f = &sim->ps.f[idx];
+  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
+              field, f->nout);
+  out = malloc((size_t)np * (size_t)f->ncomp * sizeof *out);
+  CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(sim_sample(sim, idx, (size_t)np, xy, out));
+  for (int k = 0; k < np; ++k) values[k] = out[(size_t)k * (size_t)f->ncomp + (size_t)comp];
+done:
+  free(out);
+  return st;
+}
+
+/* The column block of wall group `group` in the recorded force rows (−1: not recorded). */
+static int force_group(const struct scene *s, const char *group)
+{
+  for (int k = 0; k < s->nforces; ++k)
+    if (strcmp(s->forces[k], group) == 0) return k;
+  return -1;
+}
+
+/* The recorded total force of a group at each row with t >= since: rows of (t, x, y). */
+static enum clsph_status metric_force_history(void *ctx, const char *group, double since, size_t *n,
+                                              double **rows)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ctx;
+  const int g = force_group(sim->scene, group);
+  *rows = NULL;
+  *n = 0;
+  CLSPH_CHECK(g >= 0, CLSPH_E_INPUT,
+              "metrics: sim.force_history: the case records no force of '%s' (force { \"%s\" })",
+              group, group);
+  const size_t cols = 1 + 4 * (size_t)sim->scene->nforces;
+  double *out = malloc(3 * (sim->nforce_rows + 1) * sizeof *out);
+  CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t r = 0; r < sim->nforce_rows; ++r) {
+    const double *row = sim->force_rows + r * cols;
+    if (row[0] < since * (1.0 - 1e-12)) continue;
+    out[3 * *n] = row[0];
+    out[3 * *n + 1] = row[1 + 4 * g] + row[3 + 4 * g]; /* pressure + viscous */
+    out[3 * *n + 2] = row[2 + 4 * g] + row[4 + 4 * g];
+    ++*n;
+  }
+  *rows = out;
+done:
+  return st;
+}
+
+/* Mean of the recorded forces of a group over the outputs at t >= since (since < 0: the last). */
+static enum clsph_status metric_force(void *ctx, const char *group, double since, double out[6],
+                                      int *samples)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ctx;
+  const struct scene *s = sim->scene;
+  const int g = force_group(s, group);
+  CLSPH_CHECK(g >= 0, CLSPH_E_INPUT,
+              "metrics: sim.force: the case records no force of '%s' "
+              "(force { \"%s\" })",
+              group, group);
+  CLSPH_CHECK(sim->nforce_rows > 0, CLSPH_E_INPUT, "metrics: sim.force: no force recorded yet");
+  const size_t cols = 1 + 4 * (size_t)s->nforces;
+  double sum[4] = {0.0, 0.0, 0.0, 0.0};
+  int c = 0;
+  for (size_t r = 0; r < sim->nforce_rows; ++r) {
+    const double *row = sim->force_rows + r * cols;
+    if (since < 0.0 ? r + 1 < sim->nforce_rows : row[0] < since * (1.0 - 1e-12)) continue;
+    for (int k = 0; k < 4; ++k) sum[k] += row[1 + 4 * g + k];
+    ++c;
+  }
+  CLSPH_CHECK(c > 0, CLSPH_E_INPUT, "metrics: sim.force: no force recorded at t >= %g s", since);
+  for (int k = 0; k < 4; ++k) sum[k] /= c;
+  out[0] = sum[0] + sum[2];
+  out[1] = sum[1] + sum[3];
+  for (int k = 0; k < 4; ++k) out[2 + k] = sum[k];
+  *samples = c;
+done:
+  return st;
+}
+
+void metrics_api(struct sim *sim, const char *dir, struct case_sim_api *api)
+{
+  memset(api, 0, sizeof *api);
+  api->ctx = sim;
+  api->time = sim->time;
+  api->steps = sim->step;
+  api->particles = (double)sim->ps.n;
+  api->wall_steps = sim->wall_steps;
+  api->wall_most = sim->wall_most;
+  api->stats = metric_stats;
+  api->sample_many = metric_sample_many;
+  api->sample = metric_sample;
+  api->force = metric_force;
+  api->force_history = metric_force_history;
+  api->dir = dir;
+  api->field_values = metric_particles;
+}

@@ -1,0 +1,41 @@
+/* out.h: the output folder of a run and the files open in it while the time loop runs (the CSV
+ * series, the snapshot index, the frames); each kind of output has its own file beside this one:
+ * series.c, snapshot.c, checkpoint.c, summary.c. */
+#ifndef CLSPH_OUT_H
+#define CLSPH_OUT_H
+
+#include <stdio.h>
+
+#include "frames.h"
+#include "io.h"
+#include "scene.h"
+
+struct run_out {
+  char dir[1024];
+  struct io_series series;
+  FILE *probes, *forces, *flow;
+  FILE **profiles;
+  int nsnap;
+  /* per force group, over the samples written: the largest |F| (time, fx, fy) and the last F */
+  struct force_stat {
+    double peak, peak_time, peak_f[2], last[2];
+  } * force_stats;
+  double *force_scratch; /* one row of the force history */
+  /* frames (--frames): the renderer, the walls as it reads them, the region shown, and a host
+   * copy of the arrays a frame reads (pos, vol, kind and the field's) */
+  struct frames *frames;
+  struct render_wall *walls;
+  double view[4];
+  double *frame_arrays[4];
+  struct render_array frame_in[4];
+  int nframe_arrays;
+};
+
+/** @brief `dir/name` into buf; a path that does not fit is an input error. */
+enum clsph_status out_path(const struct run_out *o, const char *name, char *buf, size_t size);
+/** @brief Create the folder (and its parents) and prove it can be written, before anything runs. */
+enum clsph_status out_prepare_dir(const char *dir);
+/** @brief Close every file and free what the run's outputs hold. */
+void out_close(const struct scene *s, struct run_out *o);
+
+#endif /* CLSPH_OUT_H */

@@ -1,0 +1,149 @@
+/* snapshot.c: the HDF5 snapshots of a run with their XDMF index, and a frame with each snapshot
+ * (--frames), drawn from a host copy of the device state. */
+#include "snapshot.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "scheme.h"
+#include "clsph_config.h"
+#include "kern.h"
+#include "series.h"
+/* The fields a frame can show: the output fields, by name and components. */
+int snapshot_frame_fields(const struct sim *sim, const char **names, int *ncomp)
+{
+  int n = 0;
+  for (int k = 0; k < sim->ps.nfields; ++k) {
+    if (!sim->ps.f[k].output) continue;
+    names[n] = sim->ps.f[k].name;
+    ncomp[n++] = sim->ps.f[k].nout;
+  }
+  return n;
+}
+
+/* Frames: resolve the field against the run's output fields, open the renderer, and list the
+ * arrays a frame reads from the device. */
+enum clsph_status snapshot_open_frames(struct sim *sim, const struct frames_opts *opts,
+                                       const char *out_dir, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  const char *names[PSET_MAX_FIELDS];
+  int ncomp[PSET_MAX_FIELDS];
+  const int n = snapshot_frame_fields(sim, names, ncomp);
+  CLSPH_TRY(frames_open(opts, out_dir, n, names, ncomp, &o->frames));
+  const char *want[4] = {"pos", "vol", "kind", frames_field(o->frames)->array};
+  for (int k = 0; k < 4; ++k) {
+    int dup = 0;
+    for (int j = 0; j < k; ++j) dup |= strcmp(want[j], want[k]) == 0;
+    if (dup) continue;
+    const int f = pset_find(&sim->ps, want[k]);
+    CLSPH_CHECK(f >= 0, CLSPH_E_INPUT, "frames: the run has no field '%s'", want[k]);
+    o->frame_in[o->nframe_arrays].name = sim->ps.f[f].name;
+    o->frame_in[o->nframe_arrays].ncomp = sim->ps.f[f].nout;
+    o->frame_arrays[o->nframe_arrays] =
+        malloc(sim->ps.cap * (size_t)sim->ps.f[f].nout * sizeof(double));
+    CLSPH_CHECK(o->frame_arrays[o->nframe_arrays] != NULL, CLSPH_E_NOMEM,
+                "out of memory for the frames");
+    o->frame_in[o->nframe_arrays].v = o->frame_arrays[o->nframe_arrays];
+    ++o->nframe_arrays;
+  }
+  if (s->nwalls > 0) {
+    o->walls = calloc((size_t)s->nwalls, sizeof *o->walls);
+    CLSPH_CHECK(o->walls != NULL, CLSPH_E_NOMEM, "out of memory");
+    for (int w = 0; w < s->nwalls; ++w)
+      o->walls[w] = (struct render_wall){s->walls[w].npts, s->walls[w].pts, s->walls[w].closed};
+  }
+  const double domain[4] = {s->lo[0], s->lo[1], s->hi[0], s->hi[1]};
+  frames_view(domain, s->nwalls, o->walls, o->view);
+done:
+  return st;
+}
+
+/* A frame of the device state now: the arrays it reads, copied to the host as doubles. */
+static enum clsph_status write_frame(struct sim *sim, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  unsigned char *h = NULL;
+  const size_t n = sim->ps.n;
+  for (int a = 0; a < o->nframe_arrays; ++a) {
+    const struct pfield *f = &sim->ps.f[pset_find(&sim->ps, o->frame_in[a].name)];
+    h = malloc(n > 0 ? n * f->elem : 1);
+    CLSPH_CHECK(h != NULL, CLSPH_E_NOMEM, "out of memory for a frame");
+    if (n > 0) CLSPH_TRY(kern_read(sim->dev, f->d, n * f->elem, h));
+    double *v = o->frame_arrays[a];
+    const size_t nc = (size_t)f->ncomp, nout = (size_t)f->nout;
+    for (size_t i = 0; i < n; ++i) {
+      for (size_t c = 0; c < nout; ++c) {
+        const size_t k = i * nc + c;
+        v[i * nout + c] = f->type == PF_REAL   ? (double)((const real *)(const void *)h)[k]
+                          : f->type == PF_UINT ? (double)((const cl_uint *)(const void *)h)[k]
+                                               : (double)((const cl_int *)(const void *)h)[k];
+      }
+    }
+    free(h);
+    h = NULL;
+  }
+  struct render_input in;
+  memset(&in, 0, sizeof in);
+  in.n = n;
+  in.narrays = o->nframe_arrays;
+  in.arrays = o->frame_in;
+  in.nwalls = sim->scene->nwalls;
+  in.walls = o->walls;
+  memcpy(in.view, o->view, sizeof in.view);
+  in.time = sim->time;
+  in.case_name = sim->scene->name;
+  in.scheme = sim->scheme->name;
+  CLSPH_TRY(frames_write(o->frames, &in, o->nsnap));
+done:
+  free(h);
+  return st;
+}
+
+void snapshot_meta(const struct sim *sim, struct io_meta *m)
+{
+  memset(m, 0, sizeof *m);
+  m->case_name = sim->scene->name;
+  m->case_path = sim->scene->case_path;
+  m->scheme = sim->scheme->name;
+  m->precision = CLSPH_PRECISION_NAME;
+  m->version = CLSPH_VERSION;
+  m->time = sim->time;
+  m->step = sim->step;
+  m->dt = sim->dt;
+  m->dim = 2;
+  m->params = sim->scene->params;
+  m->nparams = sim->scene->nparams;
+  m->has_domain = 1;
+  m->domain[0] = sim->scene->lo[0];
+  m->domain[1] = sim->scene->lo[1];
+  m->domain[2] = sim->scene->hi[0];
+  m->domain[3] = sim->scene->hi[1];
+  m->walls = sim->scene->walls;
+  m->nwalls = sim->scene->nwalls;
+  m->render = &sim->scene->render;
+}
+
+enum clsph_status snapshot_write(struct sim *sim, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  char name[64], path[1200];
+  struct io_meta m;
+  snapshot_meta(sim, &m);
+  snprintf(name, sizeof name, "snap_%06d.h5", o->nsnap);
+  CLSPH_TRY(out_path(o, name, path, sizeof path));
+  CLSPH_TRY(io_snapshot_write(path, sim->dev, &sim->ps, &m));
+  CLSPH_TRY(io_series_add(&o->series, name, sim->time, sim->ps.n));
+  CLSPH_TRY(out_path(o, "snapshots.xdmf", path, sizeof path));
+  CLSPH_TRY(io_xdmf_write(path, &o->series, &sim->ps, 2));
+  if (o->frames != NULL) CLSPH_TRY(write_frame(sim, o));
+  /* with run { sample_every }, the time series keep their own cadence (see sim_run) */
+  CLSPH_TRY(series_write(sim, o,
+                         sim->scene->sample_every > 0.0 && sim->time > 0.0
+                             ? SERIES_PROFILES
+                             : SERIES_TIME | SERIES_PROFILES));
+  ++o->nsnap;
+done:
+  return st;
+}

@@ -1,0 +1,141 @@
+/* summary.c: summary.json, what ran, its cost, its status and the case's metrics. */
+#include "summary.h"
+
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scheme.h"
+#include "clsph_config.h"
+#include "kern.h"
+#include "metrics.h"
+/* "profile": the run's device time per kernel, slowest first (--profile). */
+static enum clsph_status summary_profile(cJSON *root, struct kern_profile *p, double wall)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct kern_profile_entry *e = NULL;
+  size_t n = 0;
+  double device = 0.0;
+  CLSPH_TRY(kern_profile_entries(p, &e, &n, &device));
+  cJSON *prof = cJSON_AddObjectToObject(root, "profile");
+  int ok = prof != NULL && cJSON_AddNumberToObject(prof, "device_seconds", device) != NULL &&
+           cJSON_AddNumberToObject(prof, "wall_seconds", wall) != NULL;
+  cJSON *kernels = ok ? cJSON_AddArrayToObject(prof, "kernels") : NULL;
+  ok = kernels != NULL;
+  for (size_t i = 0; i < n && ok; ++i) {
+    cJSON *k = cJSON_CreateObject();
+    ok = k != NULL && cJSON_AddItemToArray(kernels, k) &&
+         cJSON_AddStringToObject(k, "name", e[i].name) != NULL &&
+         cJSON_AddNumberToObject(k, "launches", (double)e[i].launches) != NULL &&
+         cJSON_AddNumberToObject(k, "seconds", e[i].seconds) != NULL;
+  }
+  CLSPH_CHECK(ok, CLSPH_E_NOMEM, "out of memory writing the profile");
+done:
+  free(e);
+  return st;
+}
+
+enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double wall,
+                                struct case_script *script)
+{
+  enum clsph_status st = CLSPH_OK;
+  char path[1200];
+  char *text = NULL;
+  FILE *f = NULL;
+  cJSON *root = cJSON_CreateObject();
+  CLSPH_CHECK(root != NULL, CLSPH_E_NOMEM, "out of memory");
+  cJSON_AddStringToObject(root, "case", sim->scene->name);
+  cJSON_AddStringToObject(root, "case_path", sim->scene->case_path);
+  cJSON_AddStringToObject(root, "scheme", sim->scheme->name);
+  cJSON_AddStringToObject(root, "precision", CLSPH_PRECISION_NAME);
+  cJSON_AddStringToObject(root, "device", sim->dev->name);
+  cJSON_AddStringToObject(root, "clsph_version", CLSPH_VERSION);
+  cJSON_AddNumberToObject(root, "particles", (double)sim->ps.n);
+  cJSON_AddNumberToObject(root, "fluid_particles", (double)sim->geom.nfluid);
+  cJSON_AddNumberToObject(root, "steps", (double)sim->step);
+  cJSON_AddNumberToObject(root, "sim_time", sim->time);
+  /* wall time and rate of this run: a restarted one counts from its checkpoint */
+  if (sim->step0 > 0) cJSON_AddNumberToObject(root, "restarted_at_step", (double)sim->step0);
+  cJSON_AddNumberToObject(root, "wall_seconds", wall);
+  cJSON_AddNumberToObject(root, "particle_steps_per_second",
+                          wall > 0.0 ? (double)sim->ps.n * (double)(sim->step - sim->step0) / wall
+                                     : 0.0);
+  cJSON_AddStringToObject(root, "status", sim->status);
+  cJSON_AddStringToObject(root, "failure", sim->failure);
+  cJSON_AddNumberToObject(root, "snapshots", o->nsnap);
+  cJSON *params = cJSON_AddObjectToObject(root, "parameters");
+  for (int i = 0; i < sim->scene->nparams; ++i)
+    cJSON_AddNumberToObject(params, sim->scene->params[i].name, sim->scene->params[i].value);
+  if (sim->solver_steps > 0) {
+    cJSON *sv = cJSON_AddObjectToObject(root, "solver");
+    cJSON_AddNumberToObject(sv, "iterations_mean",
+                            (double)sim->solver_its_sum / (double)sim->solver_steps);
+    cJSON_AddNumberToObject(sv, "iterations_max", (double)sim->solver_its_max);
+    if (sim->aux_its_sum > 0) /* both components of the implicit viscous prediction */
+      cJSON_AddNumberToObject(sv, "viscous_iterations_mean",
+                              (double)sim->aux_its_sum / (double)sim->solver_steps);
+  }
+  if (o->force_stats != NULL) { /* over the rows of forces.csv (a restart's included) */
+    cJSON *fo = cJSON_AddObjectToObject(root, "forces");
+    CLSPH_CHECK(fo != NULL, CLSPH_E_NOMEM, "out of memory");
+    for (int g = 0; g < sim->scene->nforces; ++g) {
+      const struct force_stat *fs = &o->force_stats[g];
+      cJSON *e = cJSON_AddObjectToObject(fo, sim->scene->forces[g]);
+      CLSPH_CHECK(e != NULL, CLSPH_E_NOMEM, "out of memory");
+      cJSON_AddNumberToObject(e, "peak", fs->peak);
+      cJSON_AddNumberToObject(e, "peak_time", fs->peak_time);
+      cJSON_AddNumberToObject(e, "peak_fx", fs->peak_f[0]);
+      cJSON_AddNumberToObject(e, "peak_fy", fs->peak_f[1]);
+      cJSON_AddNumberToObject(e, "last_fx", fs->last[0]);
+      cJSON_AddNumberToObject(e, "last_fy", fs->last[1]);
+    }
+  }
+  if (sim->open_waiting_max >= 0) /* entry particles that waited for a recycled one */
+    cJSON_AddNumberToObject(root, "entry_waiting_max", (double)sim->open_waiting_max);
+  cJSON *wc = cJSON_AddObjectToObject(root, "wall_crossings");
+  CLSPH_CHECK(wc != NULL, CLSPH_E_NOMEM, "out of memory");
+  cJSON_AddNumberToObject(wc, "steps", (double)sim->wall_steps);
+  cJSON_AddNumberToObject(wc, "most_at_one_step", (double)sim->wall_most);
+  cJSON_AddNumberToObject(wc, "first_step", (double)sim->wall_first_step);
+  if (sim->wall_first_step >= 0) cJSON_AddNumberToObject(wc, "first_time", sim->wall_first_time);
+  cJSON_AddNumberToObject(wc, "deepest_dr", sim->wall_depth_max);
+  if (sim->health_checks > 0) { /* the health checks' worst values over the run */
+    cJSON *h = cJSON_AddObjectToObject(root, "health");
+    CLSPH_CHECK(h != NULL, CLSPH_E_NOMEM, "out of memory");
+    cJSON_AddNumberToObject(h, "checks", (double)sim->health_checks);
+    cJSON_AddNumberToObject(h, "velocity_scale", sim->u_ref);
+    cJSON_AddNumberToObject(h, "kinetic_energy_ratio_max", sim->energy_ratio_max);
+    cJSON_AddNumberToObject(h, "nearest_spacing_min_dr", sim->spacing_min);
+    cJSON_AddNumberToObject(h, "clustered_fraction_max", sim->cluster_max);
+  }
+  if (sim->dev->profile != NULL) CLSPH_TRY(summary_profile(root, sim->dev->profile, wall));
+  cJSON *metrics = cJSON_AddObjectToObject(root, "metrics");
+  CLSPH_CHECK(params != NULL && metrics != NULL, CLSPH_E_NOMEM, "out of memory");
+  if (script != NULL && strcmp(sim->status, "ok") == 0) {
+    struct case_sim_api api;
+    metrics_api(sim, o->dir, &api);
+    enum clsph_status ms = case_metrics(script, &api, metrics);
+    if (ms != CLSPH_OK) {
+      snprintf(sim->status, sizeof sim->status, "metrics failed");
+      snprintf(sim->failure, sizeof sim->failure, "metrics");
+    }
+    cJSON_ReplaceItemInObject(root, "status", cJSON_CreateString(sim->status));
+    cJSON_ReplaceItemInObject(root, "failure", cJSON_CreateString(sim->failure));
+  }
+  text = cJSON_Print(root);
+  CLSPH_CHECK(text != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(out_path(o, "summary.json", path, sizeof path));
+  f = fopen(path, "w");
+  CLSPH_CHECK(f != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
+  CLSPH_CHECK(fputs(text, f) >= 0 && fputc('\n', f) != EOF, CLSPH_E_IO, "cannot write %s", path);
+done:
+  if (f != NULL && fclose(f) != 0 && st == CLSPH_OK) {
+    log_error("cannot write %s", path);
+    st = CLSPH_E_IO;
+  }
+  free(text);
+  cJSON_Delete(root);
+  return st;
+}

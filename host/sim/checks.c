@@ -1,0 +1,121 @@
+/* checks.c: the blow-up checks of the time loop: the error flags the kernels raise (every step)
+ * and the health checks (kinetic energy, particle clustering; every checks.every steps and the
+ * last), reduced on the device (kernels/common/health.cl). The thresholds and the runs behind them
+ * are in host/scene/scene.c. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "kern.h"
+#include "sim.h"
+
+enum clsph_status sim_fail(struct sim *sim, const char *failure)
+{
+  snprintf(sim->failure, sizeof sim->failure, "%s", failure);
+  log_error("%s", sim->status);
+  return CLSPH_E_BLOWUP;
+}
+
+enum clsph_status sim_check_flags(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_uint f[3] = {0, 0, 0};
+  float depth = 0.0f; /* the deepest crossing of the step, m */
+  CLSPH_TRY(kern_read(sim->dev, sim->d_flags, sizeof f, f));
+  cl_uint flags = f[0];
+  if (flags & 8u) { /* counted; fatal only when deeper than checks.wall_depth dr */
+    memcpy(&depth, &f[2], sizeof depth);
+    if (sim->wall_steps++ == 0) {
+      sim->wall_first_step = sim->step;
+      sim->wall_first_time = sim->time;
+      log_warn("%u fluid particle(s) behind a wall at step %ld, t = %.9g s (%.3g dr deep)", f[1],
+               sim->step, sim->time, (double)depth / sim->scene->dr);
+    }
+    if ((long)f[1] > sim->wall_most) sim->wall_most = (long)f[1];
+    sim->wall_depth_max = fmax(sim->wall_depth_max, (double)depth / sim->scene->dr);
+    const cl_uint zeros[3] = {flags & ~8u, 0, 0};
+    CLSPH_TRY(kern_write(sim->dev, sim->d_flags, sizeof zeros, zeros));
+    flags &= ~8u;
+  }
+  if (flags & 1u) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a non-finite value (NaN or Inf) at step %ld, t = %.9g s", sim->step,
+             sim->time);
+    st = sim_fail(sim, "nan");
+  } else if (flags & 4u) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a particle left the domain at step %ld, t = %.9g s", sim->step, sim->time);
+    st = sim_fail(sim, "escaped");
+  } else if (flags & 2u) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a particle has more neighbours than its table holds at step %ld", sim->step);
+    st = sim_fail(sim, "neighbours");
+  } else if (sim->scene->checks.every > 0 &&
+             (double)depth > sim->scene->checks.wall_depth * sim->scene->dr) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a fluid particle crossed a wall (%.3g dr behind it, %u behind walls) at "
+             "step %ld, t = %.9g s",
+             (double)depth / sim->scene->dr, f[1], sim->step, sim->time);
+    st = sim_fail(sim, "wall_crossing");
+  }
+done:
+  return st;
+}
+
+enum clsph_status sim_check_health(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene_checks *c = &sim->scene->checks;
+  const double dr = sim->scene->dr;
+  real *part = NULL;
+  const size_t groups = sim_reduce_groups(sim->ps.n);
+  part = malloc(5 * groups * sizeof *part);
+  CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
+  /* the spacing needs a current cell table (sorting is idempotent: the next step sees the same) */
+  CLSPH_TRY(sim_sort(sim));
+  cl_uint n = (cl_uint)sim->ps.n;
+  const real close = (real)(c->cluster_spacing * dr);
+  cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
+  cl_mem vol = pset_mem(&sim->ps, sim->f_vol), kind = pset_mem(&sim->ps, sim->f_kind);
+  CLSPH_TRY(KERN_SET(sim->k_health, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
+                     KARG(pos), KARG(vel), KARG(vol), KARG(kind), KARG(close),
+                     KARG(sim->d_health)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_health, groups * 64, 64, NULL));
+  CLSPH_TRY(kern_read(sim->dev, sim->d_health, 5 * groups * sizeof *part, part));
+  double e = 0.0, v = 0.0, clustered = 0.0, count = 0.0, dmin = HUGE_VAL;
+  for (size_t g = 0; g < groups; ++g) {
+    e += (double)part[5 * g];
+    v += (double)part[5 * g + 1];
+    clustered += (double)part[5 * g + 2];
+    count += (double)part[5 * g + 3];
+    dmin = fmin(dmin, (double)part[5 * g + 4]);
+  }
+  if (!(count > 0.0)) goto done; /* no fluid */
+  ++sim->health_checks;
+  const double ratio = sim->u_ref > 0.0 ? e / (v * sim->u_ref * sim->u_ref) : 0.0;
+  const double frac = clustered / count;
+  sim->energy_ratio_max = fmax(sim->energy_ratio_max, ratio);
+  sim->cluster_max = fmax(sim->cluster_max, frac);
+  sim->spacing_min = fmin(sim->spacing_min, dmin / dr);
+  if (!isfinite(e)) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a non-finite velocity at step %ld, t = %.9g s", sim->step, sim->time);
+    st = sim_fail(sim, "nan");
+  } else if (frac > c->cluster_fraction) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: particles cluster: %.3g%% of the fluid has a neighbour closer than %g dr "
+             "(closest %.3g dr) at step %ld, t = %.9g s",
+             100.0 * frac, c->cluster_spacing, dmin / dr, sim->step, sim->time);
+    st = sim_fail(sim, "clustering");
+  } else if (c->energy > 0.0 && ratio > c->energy) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: the kinetic energy grew to %.3g times ½ M U² (U = %.3g m/s, the scene's "
+             "velocity scale) at step %ld, t = %.9g s",
+             ratio, sim->u_ref, sim->step, sim->time);
+    st = sim_fail(sim, "energy");
+  }
+done:
+  free(part);
+  return st;
+}

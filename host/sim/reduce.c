@@ -1,0 +1,113 @@
+/* reduce.c: reductions over the particles on the device, finished on the host in double (a few
+ * dozen partial results per reduction, kernels/common/reduce.cl), and interpolation at points
+ * (kernels/common/probe.cl). */
+#include <math.h>
+#include <stdlib.h>
+
+#include "kern.h"
+#include "sim.h"
+
+enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count)
+{
+  enum clsph_status st = CLSPH_OK;
+  real *part = NULL;
+  cl_uint n = (cl_uint)sim->ps.n;
+  size_t groups = sim_reduce_groups(sim->ps.n);
+  part = malloc(groups * sizeof *part);
+  CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(KERN_SET(sim->k_count, KARG(n), KARG(d_field), KARG(sim->d_partial)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_count, groups * 64, 64, NULL));
+  CLSPH_TRY(kern_read(sim->dev, sim->d_partial, groups * sizeof *part, part));
+  double c = 0.0;
+  for (size_t g = 0; g < groups; ++g) c += (double)part[g];
+  *count = c;
+done:
+  free(part);
+  return st;
+}
+
+enum clsph_status sim_slice_velocity(struct sim *sim, double x0, double x1, double *mean,
+                                     double *count)
+{
+  enum clsph_status st = CLSPH_OK;
+  real *part = NULL;
+  const struct scene *s = sim->scene;
+  cl_uint n = (cl_uint)sim->ps.n;
+  size_t groups = sim_reduce_groups(sim->ps.n);
+  const real rx0 = (real)x0, width = (real)(x1 - x0);
+  const real period = (real)(s->periodic[0] ? s->hi[0] - s->lo[0] : 0.0);
+  cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
+  cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
+  part = malloc(2 * groups * sizeof *part);
+  CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(KERN_SET(sim->k_slice, KARG(n), KARG(pos), KARG(vel), KARG(kind), KARG(rx0),
+                     KARG(width), KARG(period), KARG(sim->d_partial)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_slice, groups * 64, 64, NULL));
+  CLSPH_TRY(kern_read(sim->dev, sim->d_partial, 2 * groups * sizeof *part, part));
+  double u = 0.0, c = 0.0;
+  for (size_t g = 0; g < groups; ++g) {
+    u += (double)part[g];
+    c += (double)part[groups + g];
+  }
+  *mean = c > 0.0 ? u / c : 0.0;
+  *count = c;
+done:
+  free(part);
+  return st;
+}
+
+enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax)
+{
+  return sim_max_norm(sim, pset_mem(&sim->ps, sim->f_vel), kind, vmax);
+}
+
+enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *vmax)
+{
+  enum clsph_status st = CLSPH_OK;
+  real *part = NULL;
+  cl_uint n = (cl_uint)sim->ps.n;
+  cl_int only = kind;
+  size_t groups = sim_reduce_groups(sim->ps.n);
+  cl_mem vel = d_vec, kd = pset_mem(&sim->ps, sim->f_kind);
+  part = malloc(groups * sizeof *part);
+  CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(KERN_SET(sim->k_max_speed, KARG(n), KARG(vel), KARG(kd), KARG(only),
+                     KARG(sim->d_partial), KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_max_speed, groups * 64, 64, NULL));
+  CLSPH_TRY(kern_read(sim->dev, sim->d_partial, groups * sizeof *part, part));
+  double m = 0.0;
+  for (size_t g = 0; g < groups; ++g) m = fmax(m, (double)part[g]);
+  *vmax = m;
+done:
+  free(part);
+  return st;
+}
+
+enum clsph_status sim_sample(struct sim *sim, int field, size_t np, const double *at, double *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct pfield *f = &sim->ps.f[field];
+  real *buf = NULL;
+  cl_mem d_at = NULL, d_out = NULL;
+  cl_uint ncomp = (cl_uint)f->ncomp, npts = (cl_uint)np;
+  CLSPH_CHECK(f->type == PF_REAL && f->ncomp <= 4, CLSPH_E_INPUT,
+              "field '%s' cannot be interpolated", f->name);
+  buf = calloc(np * (2 + ncomp), sizeof *buf);
+  CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t p = 0; p < 2 * np; ++p) buf[p] = (real)at[p];
+  CLSPH_TRY(kern_buffer(sim->dev, 2 * np * sizeof(real), buf, &d_at, "sample points"));
+  CLSPH_TRY(kern_buffer(sim->dev, ncomp * np * sizeof(real), NULL, &d_out, "samples"));
+  cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vol = pset_mem(&sim->ps, sim->f_vol);
+  cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
+  CLSPH_TRY(KERN_SET(sim->k_probe, KARG(npts), KARG(d_at), KARG(sim->grid.geom),
+                     KARG(sim->grid.d_start), KARG(pos), KARG(vol), KARG(kind), KARG(f->d),
+                     KARG(ncomp), KARG(d_out)));
+  CLSPH_TRY(kern_launch(sim->dev, sim->k_probe, np, NULL));
+  CLSPH_TRY(kern_read(sim->dev, d_out, ncomp * np * sizeof(real), buf + 2 * np));
+  for (size_t k = 0; k < ncomp * np; ++k) out[k] = (double)buf[2 * np + k];
+done:
+  kern_release(&d_out);
+  kern_release(&d_at);
+  free(buf);
+  return st;
+}

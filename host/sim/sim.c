@@ -1,0 +1,337 @@
+/* sim.c: set-up of a simulation from a scene (geometry, program, fields, scheme), the sort by
+ * cell that precedes every step, `clsph info`, and release. The reductions over the particles are
+ * in reduce.c, the health checks in checks.c, the flow-rate control in flow.c; the time loop that
+ * drives a simulation is host/loop/loop.c. */
+#include "sim.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scheme.h"
+#include "clsph_config.h"
+#include "kern.h"
+#include "psolve.h"
+
+static const char *const common_sources[] = {OPS_SOURCES, "common/reduce.cl", "common/probe.cl",
+                                             "common/health.cl"};
+
+size_t sim_reduce_groups(size_t n)
+{
+  size_t g = (n + 63) / 64;
+  return g < 1 ? 1 : (g > 64 ? 64 : g);
+}
+
+/* ---- set-up ---- */
+
+static enum clsph_status check_options(const struct scene *s, const struct scheme_ops *sc)
+{
+  enum clsph_status st = CLSPH_OK;
+  for (int i = 0; i < s->noptions; ++i) {
+    int known = 0;
+    for (int k = 0; sc->options[k] != NULL; ++k)
+      known |= !strcmp(sc->options[k], s->options[i].key);
+    if (known) continue;
+    char list[512];
+    size_t used = 0;
+    list[0] = '\0';
+    for (int k = 0; sc->options[k] != NULL && used < sizeof list; ++k)
+      used +=
+          (size_t)snprintf(list + used, sizeof list - used, "%s%s", k ? ", " : "", sc->options[k]);
+    CLSPH_CHECK(0, CLSPH_E_INPUT, "%s: scheme '%s' has no option '%s' (options: %s)", s->case_path,
+                sc->name, s->options[i].key, used ? list : "none");
+  }
+done:
+  return st;
+}
+
+static const struct scene_option *find_option(const struct scene *s, const char *key)
+{
+  for (int i = 0; i < s->noptions; ++i)
+    if (strcmp(s->options[i].key, key) == 0) return &s->options[i];
+  return NULL;
+}
+
+static enum clsph_status build_program(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct prog_opts o = {0};
+  const char **sources = NULL;
+  size_t nc = sizeof common_sources / sizeof *common_sources, ns = 0;
+  while (sim->scheme->sources[ns] != NULL) ++ns;
+  sources = calloc(nc + ns + 1, sizeof *sources);
+  CLSPH_CHECK(sources != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t i = 0; i < nc; ++i) sources[i] = common_sources[i];
+  for (size_t i = 0; i < ns; ++i) sources[nc + i] = sim->scheme->sources[i];
+  CLSPH_TRY(grid_define(&sim->gspec, &o));
+  CLSPH_TRY(smoothing_define(&sim->sm, &o));
+  if (sim->scheme->define != NULL) CLSPH_TRY(sim->scheme->define(sim, &o));
+  CLSPH_TRY(prog_build(sim->dev, sources, &o, &sim->prog));
+done:
+  free(sources);
+  prog_opts_free(&o);
+  return st;
+}
+
+/* The common fields: position, velocity, kind, id, volume. */
+static enum clsph_status add_fields(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct geom *g = &sim->geom;
+  const size_t n = g->n, stride = 2;
+  real *xv = calloc(2 * stride * n + n, sizeof *xv);
+  cl_uint *u = calloc(2 * n, sizeof *u);
+  CLSPH_CHECK(xv != NULL && u != NULL, CLSPH_E_NOMEM, "out of memory for %zu particles", n);
+  real *v = xv + stride * n, *vol = xv + 2 * stride * n;
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t a = 0; a < 2; ++a) {
+      xv[stride * i + a] = (real)g->x[2 * i + a];
+      v[stride * i + a] = (real)g->v[2 * i + a];
+    }
+    vol[i] = (real)(sim->scene->dr * sim->scene->dr);
+    u[i] = (cl_uint)g->kind[i];
+    u[n + i] = (cl_uint)i;
+  }
+  pset_init(&sim->ps, n, n);
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, "pos", stride * sizeof(real), xv, &sim->f_pos));
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, "vel", stride * sizeof(real), v, &sim->f_vel));
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, "kind", sizeof(cl_uint), u, &sim->f_kind));
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, "id", sizeof(cl_uint), u + n, &sim->f_id));
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, "vol", sizeof(real), vol, &sim->f_vol));
+  pset_describe(&sim->ps, sim->f_kind, PF_UINT, 1, 1);
+  pset_describe(&sim->ps, sim->f_id, PF_UINT, 1, 1);
+done:
+  free(u);
+  free(xv);
+  return st;
+}
+
+/* The scene's velocity scale U of the energy check (m/s): the largest speed its drives give the
+ * fluid. The largest of: the walls' speeds (sliding, or |ω| times the farthest vertex from the
+ * centre), the inflow speeds, the flow-rate control's target, the initial fluid speeds, the speed
+ * √(2 |g + f| L) of a free fall over the domain's diagonal L, and for a constant body force f
+ * held by viscosity its viscous speed |f| L²/ν (a plane Poiseuille peak is |f| H²/(8ν), H <= L).
+ * 0 when nothing drives the flow: then the energy check is off. */
+static double velocity_scale(const struct scene *s, const struct geom *g)
+{
+  double u2 = 0.0;
+  for (int w = 0; w < s->nwalls; ++w) {
+    const struct scene_wall *wl = &s->walls[w];
+    u2 = fmax(u2, wl->velocity[0] * wl->velocity[0] + wl->velocity[1] * wl->velocity[1]);
+    for (int k = 0; k < wl->npts && wl->omega != 0.0; ++k) {
+      double r = hypot(wl->pts[2 * k] - wl->centre[0], wl->pts[2 * k + 1] - wl->centre[1]);
+      u2 = fmax(u2, wl->omega * wl->omega * r * r);
+    }
+  }
+  for (int k = 0; k < s->nsections; ++k)
+    u2 = fmax(u2, s->sections[k].velocity * s->sections[k].velocity);
+  if (s->flow.on) u2 = fmax(u2, s->flow.velocity * s->flow.velocity);
+  for (size_t i = 0; i < g->nfluid; ++i)
+    u2 = fmax(u2, g->v[2 * i] * g->v[2 * i] + g->v[2 * i + 1] * g->v[2 * i + 1]);
+  const double L = hypot(s->hi[0] - s->lo[0], s->hi[1] - s->lo[1]);
+  const double f = hypot(s->body_force[0], s->body_force[1]);
+  u2 =
+      fmax(u2, 2.0 * hypot(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]) * L);
+  if (s->nu > 0.0) u2 = fmax(u2, (f * L * L / s->nu) * (f * L * L / s->nu));
+  return sqrt(u2);
+}
+
+enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, struct sim *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim sim;
+  memset(&sim, 0, sizeof sim);
+  sim.dev = dev;
+  sim.scene = scene;
+  snprintf(sim.status, sizeof sim.status, "ok");
+  snprintf(sim.failure, sizeof sim.failure, "none");
+  sim.spacing_min = HUGE_VAL;
+
+  CLSPH_TRY(scheme_find(scene->scheme, &sim.scheme));
+  CLSPH_TRY(check_options(scene, sim.scheme));
+  /* smoothing function and length */
+  enum smoothing_kind kind;
+  CLSPH_TRY(smoothing_kind_from_name(scene->smoothing[0] ? scene->smoothing : sim.scheme->smoothing,
+                                     &kind));
+  double hr = scene->h_over_dr > 0.0 ? scene->h_over_dr : sim.scheme->h_over_dr;
+  CLSPH_TRY(smoothing_make(kind, 2, hr * scene->dr, &sim.sm));
+  /* particles */
+  const char *model = sim.scheme->wall_model;
+  const struct scene_option *wo = find_option(scene, "walls");
+  if (wo != NULL) {
+    CLSPH_CHECK(!wo->is_number && (!strcmp(wo->text, "usaw") || !strcmp(wo->text, "dummy") ||
+                                   !strcmp(wo->text, "none")),
+                CLSPH_E_INPUT, "%s: scheme option walls must be \"usaw\", \"dummy\" or \"none\"",
+                scene->case_path);
+    model = wo->text;
+  }
+  const struct scene_option *lo = find_option(scene, "wall_layers");
+  int layers = lo != NULL && lo->is_number ? (int)lo->number : 3;
+  CLSPH_TRY(geometry_build(scene, model, layers, &sim.geom));
+  /* the cell grid: the domain, with room for wall and section layers on non-periodic axes */
+  sim.gspec.dim = 2;
+  sim.gspec.support = sim.sm.support;
+  double margin = (layers + 4) * scene->dr + sim.sm.support;
+  for (int a = 0; a < 2; ++a) {
+    sim.gspec.periodic[a] = scene->periodic[a];
+    sim.gspec.lo[a] = scene->lo[a] - (scene->periodic[a] ? 0.0 : margin);
+    sim.gspec.hi[a] = scene->hi[a] + (scene->periodic[a] ? 0.0 : margin);
+  }
+  for (size_t i = 0; i < sim.geom.n; ++i)
+    for (int a = 0; a < 2; ++a)
+      CLSPH_CHECK(scene->periodic[a] || (sim.geom.x[2 * i + a] >= sim.gspec.lo[a] &&
+                                         sim.geom.x[2 * i + a] < sim.gspec.hi[a]),
+                  CLSPH_E_INPUT, "%s: a particle at (%g, %g) lies outside the domain",
+                  scene->case_path, sim.geom.x[2 * i], sim.geom.x[2 * i + 1]);
+  /* device state */
+  CLSPH_TRY(build_program(&sim));
+  CLSPH_TRY(add_fields(&sim));
+  CLSPH_TRY(grid_create(dev, sim.prog, &sim.gspec, sim.ps.cap, &sim.grid));
+  /* the bits, the count of particles behind a wall and the deepest (flags.h) */
+  const cl_uint zeros[3] = {0, 0, 0};
+  CLSPH_TRY(kern_buffer(dev, sizeof zeros, zeros, &sim.d_flags, "flags"));
+  sim.wall_first_step = -1;
+  sim.open_waiting = sim.open_waiting_max = -1;
+  CLSPH_TRY(prog_kernel(sim.prog, "probe_sample", &sim.k_probe));
+  CLSPH_TRY(prog_kernel(sim.prog, "reduce_max_speed", &sim.k_max_speed));
+  CLSPH_TRY(prog_kernel(sim.prog, "reduce_count", &sim.k_count));
+  CLSPH_TRY(prog_kernel(sim.prog, "grid_invert", &sim.k_invert));
+  CLSPH_TRY(prog_kernel(sim.prog, "reduce_slice_velocity", &sim.k_slice));
+  CLSPH_TRY(prog_kernel(sim.prog, "health_sums", &sim.k_health));
+  CLSPH_TRY(kern_buffer(dev, 5 * sim_reduce_groups(sim.ps.cap) * sizeof(real), NULL, &sim.d_health,
+                        "health partials"));
+  sim.u_ref = velocity_scale(scene, &sim.geom);
+  CLSPH_TRY(kern_buffer(dev, sim.ps.cap * sizeof(cl_uint), NULL, &sim.d_inv, "inverse index"));
+  CLSPH_TRY(kern_buffer(dev, 2 * (sim_reduce_groups(sim.ps.cap) + 1) * sizeof(real), NULL,
+                        &sim.d_partial, "reduction partials"));
+  sim.body_force[0] = scene->body_force[0];
+  sim.body_force[1] = scene->body_force[1];
+  sim.flow.force = scene->body_force[0];
+  if (sim.scheme->create != NULL) CLSPH_TRY(sim.scheme->create(&sim, &sim.state));
+  CLSPH_TRY(sim_sort(&sim));
+  *out = sim;
+  memset(&sim, 0, sizeof sim);
+done:
+  sim_destroy(&sim);
+  return st;
+}
+
+enum clsph_status sim_sort(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  CLSPH_TRY(
+      grid_sort(&sim->grid, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos), sim->d_flags));
+  CLSPH_TRY(pset_reorder(&sim->ps, &sim->grid, sim->dev));
+  cl_uint n = (cl_uint)sim->ps.n;
+  cl_mem id = pset_mem(&sim->ps, sim->f_id);
+  CLSPH_TRY(KERN_SET(sim->k_invert, KARG(n), KARG(id), KARG(sim->d_inv)));
+  CLSPH_TRY(kern_launch(sim->dev, sim->k_invert, sim->ps.n, NULL));
+done:
+  return st;
+}
+
+/* ---- info ---- */
+
+enum clsph_status sim_info(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  size_t count[5] = {0, 0, 0, 0, 0};
+  for (size_t i = 0; i < sim->geom.n; ++i)
+    if (sim->geom.kind[i] >= 0 && sim->geom.kind[i] < 5) ++count[sim->geom.kind[i]];
+  size_t per = 0;
+  for (int k = 0; k < sim->ps.nfields; ++k) per += sim->ps.f[k].elem;
+  size_t spare = 0;
+  for (int k = 0; k < sim->ps.nscratch; ++k) spare += sim->ps.scratch_elem[k];
+  size_t grid_bytes = 2 * (sim->grid.ncells + 1) * sizeof(cl_uint) + 3 * sim->ps.cap * 4;
+  double dt = HUGE_VAL;
+  if (sim->scheme->max_dt != NULL) CLSPH_TRY(sim->scheme->max_dt(sim, sim->state, &dt));
+  dt *= s->cfl;
+  printf("case %s (%s)\n", s->name, s->case_path);
+  printf("scheme %s: %s\n", sim->scheme->name, sim->scheme->summary);
+  printf("particles: %zu (fluid %zu, wall vertices %zu, dummy %zu, inflow %zu, outflow %zu), "
+         "%zu wall segments\n",
+         sim->geom.n, count[0], count[1], count[2], count[3], count[4], sim->geom.nseg);
+  printf("spacing dr = %g m, smoothing %s, h = %g m (%g dr), support %g m\n", s->dr,
+         smoothing_name(sim->sm.kind), sim->sm.h, sim->sm.h / s->dr, sim->sm.support);
+  printf("active: walls %s, periodic %s%s%s, gravity %s, body force %s, probes %d, profiles %d, "
+         "forces %d\n",
+         sim->geom.nseg ? "usaw"
+         : count[2]     ? "dummy"
+                        : "none",
+         s->periodic[0] || s->periodic[1] ? "" : "none", s->periodic[0] ? "x" : "",
+         s->periodic[1] ? "y" : "", s->gravity[0] || s->gravity[1] ? "on" : "off",
+         s->flow.on                             ? "flow-rate control"
+         : s->body_force[0] || s->body_force[1] ? "on"
+                                                : "off",
+         s->nprobes, s->nprofiles, s->nforces);
+  for (int i = 0; i < s->noptions; ++i) {
+    if (s->options[i].is_number)
+      printf("option %s = %g\n", s->options[i].key, s->options[i].number);
+    else
+      printf("option %s = %s\n", s->options[i].key, s->options[i].text);
+  }
+  printf("fields:");
+  for (int k = 0; k < sim->ps.nfields; ++k)
+    printf(" %s (%zu B)", sim->ps.f[k].name, sim->ps.f[k].elem);
+  printf("\nmemory: %zu B per particle (+ %zu B reorder spare), %.1f MiB in all with the grid of "
+         "%zu cells\n",
+         per, spare, (double)((per + spare) * sim->ps.cap + grid_bytes) / (1024.0 * 1024.0),
+         sim->grid.ncells);
+  if (isfinite(dt))
+    printf("time step %.6g s (cfl %g): about %.0f steps to t_end = %g s\n", dt, s->cfl,
+           ceil(s->t_end / dt), s->t_end);
+  else
+    printf("time step: set by the outputs (the scheme has no stability bound); t_end = %g s\n",
+           s->t_end);
+done:
+  return st;
+}
+
+enum clsph_status sim_psolve_options(const struct sim *sim, struct psolve_options *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  psolve_defaults(o);
+  for (int i = 0; i < s->noptions; ++i) {
+    const struct scene_option *opt = &s->options[i];
+    const char *key = NULL;
+    if (strcmp(opt->key, "solver") == 0)
+      key = "solver";
+    else if (strncmp(opt->key, "solver_", 7) == 0)
+      key = opt->key + 7;
+    if (key == NULL) continue;
+    enum clsph_status os = psolve_set(o, key, opt->is_number ? NULL : opt->text,
+                                      opt->is_number ? opt->number : (double)NAN);
+    CLSPH_CHECK(os == CLSPH_OK, os, "%s: in scheme option %s", s->case_path, opt->key);
+  }
+done:
+  return st;
+}
+
+void sim_destroy(struct sim *sim)
+{
+  if (sim->scheme != NULL && sim->scheme->destroy != NULL) sim->scheme->destroy(sim->state);
+  sim->state = NULL;
+  if (sim->k_probe != NULL) clReleaseKernel(sim->k_probe);
+  if (sim->k_max_speed != NULL) clReleaseKernel(sim->k_max_speed);
+  if (sim->k_count != NULL) clReleaseKernel(sim->k_count);
+  if (sim->k_invert != NULL) clReleaseKernel(sim->k_invert);
+  if (sim->k_slice != NULL) clReleaseKernel(sim->k_slice);
+  if (sim->k_health != NULL) clReleaseKernel(sim->k_health);
+  sim->k_probe = sim->k_max_speed = sim->k_count = sim->k_invert = sim->k_slice = NULL;
+  sim->k_health = NULL;
+  kern_release(&sim->d_health);
+  kern_release(&sim->d_inv);
+  kern_release(&sim->d_partial);
+  kern_release(&sim->d_flags);
+  grid_destroy(&sim->grid);
+  pset_destroy(&sim->ps);
+  if (sim->prog != NULL) clReleaseProgram(sim->prog);
+  sim->prog = NULL;
+  geometry_free(&sim->geom);
+  free(sim->force_rows);
+  sim->force_rows = NULL;
+  sim->nforce_rows = sim->force_rows_cap = 0;
+}
