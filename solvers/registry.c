@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "scheme.h"
+#include "spell.h"
 
 extern const struct scheme_ops scheme_none;
 extern const struct scheme_ops scheme_ballistic;
@@ -14,21 +15,29 @@ static const struct scheme_ops *const schemes[] = {&scheme_none, &scheme_ballist
                                                    &scheme_isph_usaw, &scheme_wcsph_usaw,
                                                    &scheme_isph_rotational};
 
-enum clsph_status scheme_find(const char *name, const struct scheme_ops **out)
+enum clsph_status scheme_find(const char *name, const char *where, const struct scheme_ops **out)
 {
   enum clsph_status st = CLSPH_OK;
+  enum { N = sizeof schemes / sizeof *schemes };
+  const char *names[N + 1];
   char list[512];
   size_t used = 0;
   list[0] = '\0';
-  for (size_t i = 0; i < sizeof schemes / sizeof *schemes; ++i) {
+  for (size_t i = 0; i < N; ++i) {
     if (strcmp(schemes[i]->name, name) == 0) {
       *out = schemes[i];
       goto done;
     }
-    used +=
-        (size_t)snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "", schemes[i]->name);
+    names[i] = schemes[i]->name;
+    used += (size_t)snprintf(list + used, used < sizeof list ? sizeof list - used : 0, "%s%s",
+                             i ? ", " : "", schemes[i]->name);
   }
-  CLSPH_CHECK(0, CLSPH_E_INPUT, "unknown scheme '%s'; schemes: %s", name, list);
+  names[N] = NULL;
+  const int near = spell_nearest(name, names);
+  char hint[96] = "";
+  if (near >= 0) snprintf(hint, sizeof hint, "; did you mean '%s'?", names[near]);
+  CLSPH_CHECK(0, CLSPH_E_INPUT, "%s%sunknown scheme '%s'%s (schemes: %s)", where ? where : "",
+              where ? ": scheme: " : "", name, hint, list);
 done:
   return st;
 }

@@ -42,8 +42,9 @@ struct scheme_ops {
   void (*destroy)(void *state);
 };
 
-/** @brief The scheme called `name`; an unknown name is reported with the list of schemes. */
-enum clsph_status scheme_find(const char *name, const struct scheme_ops **out);
+/** @brief The scheme called `name`; an unknown name is reported with `where` (the case's
+ *  "file:line", or NULL), the nearest scheme and the list of schemes. */
+enum clsph_status scheme_find(const char *name, const char *where, const struct scheme_ops **out);
 /** @brief Print the schemes, one line each. */
 void scheme_print_list(void);
 

@@ -25,7 +25,18 @@ clsph_cli_test(case_sandbox_os ARGS info ${CASE_DIR}/bad_os.lua RC 2
 clsph_cli_test(case_sandbox_load ARGS info ${CASE_DIR}/bad_load.lua RC 2
                REGEX "bad_load.lua:1: .*global 'load'")
 clsph_cli_test(case_unknown_scheme ARGS info ${CASE_DIR}/bad_scheme.lua RC 2
-               REGEX "unknown scheme 'isph-magic'; schemes: none, ballistic, isph-usaw, wcsph-usaw")
+               REGEX "bad_scheme.lua:5: scheme: unknown scheme 'isph-magic' \\(schemes: none, ballistic, isph-usaw, wcsph-usaw")
+clsph_cli_test(case_misspelt_scheme ARGS info ${CASE_DIR}/bad_scheme.lua --set which=2 RC 2
+               REGEX "bad_scheme.lua:5: scheme: unknown scheme 'wcsph-usw'; did you mean 'wcsph-usaw'\\?")
+# run { t_end } is what runs, whether or not the case declares a parameter t_end
+clsph_cli_test(case_run_t_end ARGS info ${CASE_DIR}/run_t_end.lua --set t_end=0.2 RC 0
+               REGEX "t_end = 0.6 s")
+clsph_cli_test(case_run_t_end_negative ARGS info ${CASE_DIR}/run_t_end.lua --set which=2 RC 2
+               REGEX "run_t_end.lua:11: run: t_end must be a positive time, not -1")
+clsph_cli_test(case_run_t_end_missing ARGS info ${CASE_DIR}/run_t_end.lua --set which=3 RC 2
+               REGEX "run_t_end.lua:13: run: needs t_end")
+clsph_cli_test(case_bad_h_over_dr ARGS info ${CASE_DIR}/bad_h_over_dr.lua RC 2
+               REGEX "bad_h_over_dr.lua:3: particles: h_over_dr must be in .0, 10., not 0")
 clsph_cli_test(case_unknown_option ARGS info ${CASE_DIR}/bad_option.lua RC 2
                REGEX "scheme 'none' has no option 'shifting'")
 clsph_cli_test(case_empty_region ARGS info ${CASE_DIR}/bad_empty_region.lua RC 2
@@ -42,8 +53,9 @@ clsph_cli_test(case_open_box ARGS info ${CASE_DIR}/bad_open_box.lua RC 2
                REGEX "walls do not close the fluid in: it can reach the top \\(y max\\) side.*needs a lid")
 clsph_cli_test(case_tank_gap ARGS info ${CASE_DIR}/bad_tank_gap.lua RC 2
                REGEX "walls do not close the fluid in: it can reach the right \\(x max\\) side of the domain near \\(0.98")
-clsph_cli_test(case_missing_file ARGS info ${CASE_DIR}/no_such_case.lua RC nonzero
-               REGEX "cannot read case")
+clsph_cli_test(case_missing_file ARGS info ${CASE_DIR}/no_such_case.lua RC 2
+               REGEX "cannot read case .*no_such_case.lua: No such file")
+clsph_cli_test(case_folder ARGS run ${CASE_DIR} RC 2 REGEX "case .*/case is a folder: name a case script")
 clsph_cli_test(case_unwritable_out RC nonzero
                ARGS run ${CMAKE_SOURCE_DIR}/cases/free_fall.lua --out /proc/clsph-cannot-write
                REGEX "output folder /proc/clsph-cannot-write cannot be")

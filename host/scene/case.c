@@ -14,8 +14,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "spectrum.h"
+#include "spell.h"
 
 struct case_script {
   lua_State *L;
@@ -73,45 +75,6 @@ static int current_line(lua_State *L)
   return 0;
 }
 
-/* Edit distance, for "did you mean" suggestions. */
-static int distance(const char *a, const char *b)
-{
-  size_t la = strlen(a), lb = strlen(b);
-  if (la > 63 || lb > 63) return 99;
-  int d[64][64];
-  for (size_t i = 0; i <= la; ++i) d[i][0] = (int)i;
-  for (size_t j = 0; j <= lb; ++j) d[0][j] = (int)j;
-  for (size_t i = 1; i <= la; ++i) {
-    for (size_t j = 1; j <= lb; ++j) {
-      int sub = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
-      int del = d[i - 1][j] + 1, ins = d[i][j - 1] + 1;
-      d[i][j] = sub < del ? (sub < ins ? sub : ins) : (del < ins ? del : ins);
-    }
-  }
-  return d[la][lb];
-}
-
-/* "; did you mean 'x'?" for the closest of `known` (NULL-terminated), or the list of them. */
-static void suggest(const char *word, const char *const *known, char *buf, size_t size)
-{
-  const char *best = NULL;
-  int bd = 99;
-  for (int i = 0; known[i] != NULL; ++i) {
-    int d = distance(word, known[i]);
-    if (d < bd) {
-      bd = d;
-      best = known[i];
-    }
-  }
-  if (best != NULL && bd <= 3) {
-    snprintf(buf, size, "; did you mean '%s'?", best);
-    return;
-  }
-  size_t used = (size_t)snprintf(buf, size, "; known:");
-  for (int i = 0; known[i] != NULL && used < size; ++i)
-    used += (size_t)snprintf(buf + used, size - used, " %s", known[i]);
-}
-
 /* Every string key of the table at idx must be one of `known`; integer keys only when allowed. */
 static void check_keys(lua_State *L, int idx, const char *fn, const char *const *known,
                        int positional)
@@ -124,7 +87,7 @@ static void check_keys(lua_State *L, int idx, const char *fn, const char *const 
       int ok = 0;
       for (int i = 0; known[i] != NULL; ++i) ok |= strcmp(k, known[i]) == 0;
       if (!ok) {
-        suggest(k, known, hint, sizeof hint);
+        spell_suggest(k, known, hint, sizeof hint);
         luaL_error(L, "%s: unknown key '%s'%s", fn, k, hint);
       }
     } else if (!positional || !lua_isinteger(L, -2)) {
@@ -193,7 +156,7 @@ static int get_choice(lua_State *L, int idx, const char *fn, const char *key,
     for (int i = 0; names[i] != NULL; ++i)
       if (strcmp(v, names[i]) == 0) r = i;
     if (r < 0) {
-      suggest(v, names, hint, sizeof hint);
+      spell_suggest(v, names, hint, sizeof hint);
       luaL_error(L, "%s: '%s' is not a valid %s%s", fn, v, key, hint);
     }
   }
@@ -306,12 +269,20 @@ static int l_particles(lua_State *L)
   struct scene *s = ld->s;
   s->dr = get_number(L, 1, "particles", "dr", NAN);
   if (!(s->dr > 0.0)) luaL_error(L, "particles: dr must be a positive spacing, not %f", s->dr);
-  s->h_over_dr = get_number(L, 1, "particles", "h_over_dr", 0.0);
-  if (s->h_over_dr < 0.0 || s->h_over_dr > 10.0)
+  s->h_over_dr = get_number(L, 1, "particles", "h_over_dr", NAN); /* absent: the scheme's */
+  if (!isnan(s->h_over_dr) && !(s->h_over_dr > 0.0 && s->h_over_dr <= 10.0))
     luaL_error(L, "particles: h_over_dr must be in (0, 10], not %f", s->h_over_dr);
+  if (isnan(s->h_over_dr)) s->h_over_dr = 0.0;
   int k = get_choice(L, 1, "particles", "smoothing", kinds, -1);
   if (k >= 0) snprintf(s->smoothing, SCENE_NAME, "%s", kinds[k]);
   return 0;
+}
+
+static void scheme_name(lua_State *L, const char *name, struct scene *s)
+{
+  if (name[0] == '\0' || strlen(name) >= SCENE_NAME)
+    luaL_error(L, "scheme: '%s' is not a scheme name (1 to %d characters)", name, SCENE_NAME - 1);
+  snprintf(s->scheme, SCENE_NAME, "%s", name);
 }
 
 static int l_scheme(lua_State *L)
@@ -319,15 +290,16 @@ static int l_scheme(lua_State *L)
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   once(L, &ld->line_scheme, "scheme");
+  s->scheme_line = ld->line_scheme;
   if (lua_gettop(L) == 1 && lua_type(L, 1) == LUA_TSTRING) {
-    snprintf(s->scheme, SCENE_NAME, "%s", lua_tostring(L, 1));
+    scheme_name(L, lua_tostring(L, 1), s);
     return 0;
   }
   need_table(L, "scheme");
   lua_geti(L, 1, 1);
   if (lua_type(L, -1) != LUA_TSTRING)
     luaL_error(L, "scheme: name the scheme first: scheme { \"name\", ... }");
-  snprintf(s->scheme, SCENE_NAME, "%s", lua_tostring(L, -1));
+  scheme_name(L, lua_tostring(L, -1), s);
   lua_pop(L, 1);
   lua_pushnil(L);
   while (lua_next(L, 1) != 0) {
@@ -820,7 +792,10 @@ static int l_run(lua_State *L)
   once(L, &ld->line_run, "run");
   check_keys(L, 1, "run", keys, 0);
   s->t_end = get_number(L, 1, "run", "t_end", NAN);
-  /* t_end is always a parameter, so --set t_end=... shortens any run */
+  if (isnan(s->t_end)) luaL_error(L, "run: needs t_end, the end time (s)");
+  /* t_end is always a parameter, so --set t_end=... shortens any run: a case that declares it
+   * computes run { t_end } from it (which may differ: run { t_end = 2 * t_end } is what runs),
+   * a case that does not gets it declared here with run's value */
   int declared = 0;
   for (int i = 0; i < s->nparams; ++i) declared |= strcmp(s->params[i].name, "t_end") == 0;
   if (!declared) {
@@ -835,7 +810,7 @@ static int l_run(lua_State *L)
       }
     }
   }
-  s->t_end = scene_param(s, "t_end", s->t_end);
+  if (!declared) s->t_end = scene_param(s, "t_end", s->t_end);
   if (!(s->t_end > 0.0)) luaL_error(L, "run: t_end must be a positive time, not %f", s->t_end);
   s->output_every = get_number(L, 1, "run", "output_every", 0.0);
   s->checkpoint_every = get_number(L, 1, "run", "checkpoint_every", 0.0);
@@ -971,7 +946,7 @@ static enum clsph_status finish(const char *path, struct loader *ld)
   for (int i = 0; i < s->nparams; ++i) names[i] = s->params[i].name;
   for (int k = 0; k < ld->nsets; ++k) {
     if (ld->set_used[k]) continue;
-    suggest(ld->set_names[k], names, hint, sizeof hint);
+    spell_suggest(ld->set_names[k], names, hint, sizeof hint);
     CLSPH_CHECK(0, CLSPH_E_INPUT, "--set %s: %s declares no parameter '%s'%s", ld->set_names[k],
                 path, ld->set_names[k], hint);
   }
@@ -1019,10 +994,15 @@ enum clsph_status case_load(const char *path, int nsets, char *const *sets, stru
   CLSPH_CHECK(L != NULL, CLSPH_E_NOMEM, "cannot create a Lua state");
   open_sandbox(L);
   register_api(L, &ld);
+  struct stat sb;
+  CLSPH_CHECK(stat(path, &sb) == 0, CLSPH_E_INPUT, "cannot read case %s: %s", path,
+              strerror(errno));
+  CLSPH_CHECK(!S_ISDIR(sb.st_mode), CLSPH_E_INPUT,
+              "case %s is a folder: name a case script, e.g. cases/cavity.lua", path);
   int err = luaL_loadfilex(L, path, "t"); /* text only: no precompiled chunks */
   if (err == LUA_ERRFILE) {
     log_error("cannot read case %s: %s", path, lua_tostring(L, -1));
-    st = CLSPH_E_IO;
+    st = CLSPH_E_INPUT;
     goto done;
   }
   if (err == LUA_OK) err = lua_pcall(L, 0, 0, 0);

@@ -142,6 +142,7 @@ struct scene {
   double body_force[2];           /* acceleration, m/s^2 (e.g. a pressure-gradient drive) */
   struct scene_flow_control flow; /* flow-rate control of the x body force (off unless given) */
   char scheme[SCENE_NAME];
+  int scheme_line; /* line of the case script that names it */
   int noptions;
   struct scene_option *options;
   char wall_model[SCENE_NAME]; /* "usaw" or "dummy": the scheme decides; "" until then */

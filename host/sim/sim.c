@@ -148,7 +148,9 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   snprintf(sim.failure, sizeof sim.failure, "none");
   sim.spacing_min = HUGE_VAL;
 
-  CLSPH_TRY(scheme_find(scene->scheme, &sim.scheme));
+  char where[sizeof scene->case_path + 16];
+  snprintf(where, sizeof where, "%s:%d", scene->case_path, scene->scheme_line);
+  CLSPH_TRY(scheme_find(scene->scheme, where, &sim.scheme));
   CLSPH_TRY(check_options(scene, sim.scheme));
   /* smoothing function and length */
   enum smoothing_kind kind;
