@@ -53,6 +53,29 @@ clsph_cli_test(case_open_box ARGS info ${CASE_DIR}/bad_open_box.lua RC 2
                REGEX "walls do not close the fluid in: it can reach the top \\(y max\\) side.*needs a lid")
 clsph_cli_test(case_tank_gap ARGS info ${CASE_DIR}/bad_tank_gap.lua RC 2
                REGEX "walls do not close the fluid in: it can reach the right \\(x max\\) side of the domain near \\(0.98")
+# The case sandbox's instruction budget (a count hook) and memory ceiling (its allocator): each
+# message names the file, the line and what ran out. The budget is lowered to 1e7 instructions
+# (0.02 s) but for the first, which shows that the default stops an endless loop (1e9: ~2 s).
+clsph_cli_test(case_sandbox_loop ARGS info ${CASE_DIR}/bad_sandbox_limits.lua RC 2
+               REGEX "bad_sandbox_limits.lua:20: the case script ran out of instructions: more than its budget of 1000000000")
+clsph_cli_test(case_sandbox_loop_fill ARGS info ${CASE_DIR}/bad_sandbox_limits.lua --set which=2
+               --case-instructions 1e7 RC 2
+               REGEX "bad_sandbox_limits.lua:15: the velocity function of fill 1 ran out of instructions")
+clsph_cli_test(case_sandbox_loop_meta ARGS info ${CASE_DIR}/bad_sandbox_limits.lua --set which=4
+               --case-instructions 1e7 RC 2
+               REGEX "bad_sandbox_limits.lua:7: the case script ran out of instructions")
+clsph_cli_test(case_sandbox_memory ARGS info ${CASE_DIR}/bad_sandbox_limits.lua --set which=5
+               RC 2 REGEX "bad_sandbox_limits.lua:22: the case script ran out of memory: a block of 1907 MiB would take it past the case sandbox's ceiling of 512 MiB")
+clsph_cli_test(case_sandbox_memory_table ARGS info ${CASE_DIR}/bad_sandbox_limits.lua --set which=6
+               --case-memory 64 RC 2
+               REGEX "bad_sandbox_limits.lua:25: the case script ran out of memory: .*ceiling of 64 MiB")
+# An endless metrics() after the run: summary.json is written, "metrics failed"
+clsph_add_test(case_sandbox_loop_metrics LABELS case COMMAND ${CMAKE_COMMAND}
+               -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CASE_DIR}/bad_sandbox_limits.lua
+               -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/sandbox_metrics -DSETS=which=3
+               "-DARGS=--case-instructions|1e7" -DRC=2 -DFAILURE=metrics "-DREGEX=metrics failed"
+               "-DMESSAGE=bad_sandbox_limits.lua:28: metrics\\(\\) ran out of instructions"
+               -P ${CASE_DIR}/run_failure.cmake)
 clsph_cli_test(case_missing_file ARGS info ${CASE_DIR}/no_such_case.lua RC 2
                REGEX "cannot read case .*no_such_case.lua: No such file")
 clsph_cli_test(case_folder ARGS run ${CASE_DIR} RC 2 REGEX "case .*/case is a folder: name a case script")

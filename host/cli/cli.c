@@ -38,6 +38,9 @@ void cli_usage(FILE *f)
         "  --out DIR             output folder of `run` (default out/CASE); of `render`, where\n"
         "                        the frames and the movie go (default OUTDIR)\n"
         "  --restart FILE        continue a run from one of its checkpoints\n"
+        "  --case-instructions N the case script's budget of Lua instructions for each call\n"
+        "                        into it (top level, a fill's velocity, metrics(); default 1e9)\n"
+        "  --case-memory MIB     the most memory the case script may hold (default 512)\n"
         "  --quiet               no progress line (and no --profile table)\n"
         "  --profile             time every kernel launch and transfer of `run` on the device\n"
         "                        (OpenCL profiling events): a table by kernel at the end, and\n"
@@ -191,6 +194,15 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
         c.out_dir = val;
       } else if (strcmp(a, "--restart") == 0) {
         c.restart = val;
+      } else if (strcmp(a, "--case-instructions") == 0) {
+        CLSPH_TRY(parse_real(a, val, &c.case_instructions));
+        CLSPH_CHECK(c.case_instructions >= 1e4 && c.case_instructions <= 1e15, CLSPH_E_INPUT,
+                    "%s: %s is not a budget from 1e4 to 1e15 instructions", a, val);
+      } else if (strcmp(a, "--case-memory") == 0) {
+        CLSPH_TRY(parse_real(a, val, &c.case_memory));
+        CLSPH_CHECK(c.case_memory >= 1.0 && c.case_memory <= 1048576.0, CLSPH_E_INPUT,
+                    "%s: %s is not a size from 1 to 1048576 MiB", a, val);
+        c.case_memory *= 1048576.0;
       } else if (strcmp(a, "--device") == 0) {
         CLSPH_TRY(parse_int(a, val, 0, 999999, &c.device));
       } else if (strcmp(a, "--kernel-dir") == 0) {

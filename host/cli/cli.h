@@ -13,20 +13,22 @@ struct cli {
   const char *case_path;    /* run, info: the case script */
   char *sets[CLI_MAX_SETS]; /* --set name=value, in order */
   int nsets;
-  const char *out_dir;     /* --out DIR (default out/<case>) */
-  const char *restart;     /* --restart FILE */
-  int quiet;               /* --quiet: no progress line */
-  int profile;             /* --profile: device time per kernel of a run */
-  const char *target;      /* bench: "neighbours", "psolve", "render" */
-  int device;              /* --device N, -1: $CLSPH_DEVICE or the default */
-  const char *kernel_dir;  /* --kernel-dir DIR, NULL: embedded sources */
-  const char *cache_dir;   /* --prog-cache-dir DIR ("" disables), NULL: default */
-  int fast_math;           /* --fast-math */
-  int verbose;             /* --verbose */
-  const char *bench_sizes; /* --bench-sizes 1e4,1e5,1e6 */
-  int bench_reps;          /* --bench-reps N */
-  double bench_direct_max; /* --bench-direct-max N: largest UMFPACK solve of `bench psolve` */
-  double demo_dr;          /* --demo-dr spacing of the demo lattice */
+  const char *out_dir;      /* --out DIR (default out/<case>) */
+  const char *restart;      /* --restart FILE */
+  double case_instructions; /* --case-instructions N: the case sandbox's budget (0: default) */
+  double case_memory;       /* --case-memory MIB: its memory ceiling, bytes (0: default) */
+  int quiet;                /* --quiet: no progress line */
+  int profile;              /* --profile: device time per kernel of a run */
+  const char *target;       /* bench: "neighbours", "psolve", "render" */
+  int device;               /* --device N, -1: $CLSPH_DEVICE or the default */
+  const char *kernel_dir;   /* --kernel-dir DIR, NULL: embedded sources */
+  const char *cache_dir;    /* --prog-cache-dir DIR ("" disables), NULL: default */
+  int fast_math;            /* --fast-math */
+  int verbose;              /* --verbose */
+  const char *bench_sizes;  /* --bench-sizes 1e4,1e5,1e6 */
+  int bench_reps;           /* --bench-reps N */
+  double bench_direct_max;  /* --bench-direct-max N: largest UMFPACK solve of `bench psolve` */
+  double demo_dr;           /* --demo-dr spacing of the demo lattice */
   /* frames: run --frames, render, bench render */
   const char *snap_dir; /* render: the output folder of a run */
   int frames;           /* --frames: a frame per snapshot and a movie */

@@ -23,7 +23,11 @@ static enum clsph_status setup(const struct cli *cli, struct dev *dev, struct sc
                                struct case_script **script, struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
-  CLSPH_TRY(case_load(cli->case_path, cli->nsets, cli->sets, scene, script));
+  struct case_limits lim;
+  case_limits_default(&lim);
+  if (cli->case_instructions > 0.0) lim.instructions = cli->case_instructions;
+  if (cli->case_memory > 0.0) lim.memory = cli->case_memory;
+  CLSPH_TRY(case_load(cli->case_path, cli->nsets, cli->sets, &lim, scene, script));
   CLSPH_TRY(dev_open(cli->device, CLSPH_DOUBLE, dev));
   CLSPH_TRY(sim_create(dev, scene, sim));
 done:

@@ -19,9 +19,115 @@
 #include "spectrum.h"
 #include "spell.h"
 
+/* The sandbox's limits at work: the bytes the Lua state holds (its allocator refuses beyond the
+ * ceiling) and the instructions of the current entry into the script (a count hook every
+ * SANDBOX_HOOK_EVERY instructions raises an error beyond the budget). */
+struct sandbox {
+  lua_State *L;
+  size_t used, limit;      /* bytes */
+  long long count, budget; /* instructions of this entry, and the most it may run */
+  const char *path;        /* the script */
+  const char *phase;       /* what runs: "the case script", "metrics()", ... */
+  char phase_buf[SCENE_NAME + 48];
+  int refused;          /* the allocator refused a block (memory ceiling) */
+  size_t refused_bytes; /* the size it was asked for */
+  char where[192];      /* file:line of the Lua code that asked, or "" */
+};
+
 struct case_script {
   lua_State *L;
+  struct sandbox sb; /* the allocator's state: lives as long as L */
 };
+
+enum { SANDBOX_HOOK_EVERY = 1000 };
+
+void case_limits_default(struct case_limits *l)
+{
+  l->instructions = 1e9;
+  l->memory = 512.0 * 1024.0 * 1024.0;
+}
+
+/* The first Lua function on the stack (the code that asked for memory or ran too long). */
+static void lua_code_at(lua_State *L, char *buf, size_t size)
+{
+  lua_Debug ar;
+  buf[0] = '\0';
+  for (int level = 0; level < 12 && lua_getstack(L, level, &ar); ++level) {
+    if (!lua_getinfo(L, "Sl", &ar) || ar.currentline <= 0) continue;
+    snprintf(buf, size, "%s:%d", ar.short_src, ar.currentline);
+    return;
+  }
+}
+
+/* lua_Alloc with a ceiling: a block that would take the state beyond sb->limit is refused (Lua
+ * then raises a memory error, LUA_ERRMEM, which sandbox_call reports). */
+static void *sandbox_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
+{
+  struct sandbox *sb = ud;
+  const size_t old = ptr != NULL ? osize : 0;
+  if (nsize == 0) {
+    free(ptr);
+    sb->used -= old;
+    return NULL;
+  }
+  if (nsize > old && (nsize - old > sb->limit || sb->used + (nsize - old) > sb->limit)) {
+    if (!sb->refused && sb->L != NULL) lua_code_at(sb->L, sb->where, sizeof sb->where);
+    sb->refused = 1;
+    sb->refused_bytes = nsize;
+    return NULL;
+  }
+  void *p = realloc(ptr, nsize);
+  if (p != NULL) sb->used = sb->used - old + nsize;
+  return p;
+}
+
+/* The count hook: the instruction budget of the current entry. */
+static void sandbox_hook(lua_State *L, lua_Debug *ar)
+{
+  void *ud = NULL;
+  lua_getallocf(L, &ud);
+  struct sandbox *sb = ud;
+  sb->count += SANDBOX_HOOK_EVERY;
+  if (sb->count <= sb->budget) return;
+  char where[192] = "";
+  if (lua_getinfo(L, "Sl", ar) && ar->currentline > 0)
+    snprintf(where, sizeof where, "%s:%d: ", ar->short_src, ar->currentline);
+  else
+    lua_code_at(L, where, sizeof where);
+  luaL_error(L,
+             "%s%s ran out of instructions: more than its budget of %I (an endless loop?); "
+             "--case-instructions N raises the budget",
+             where, sb->phase, (lua_Integer)sb->budget);
+}
+
+/* Call the function under its nargs arguments on the stack, as lua_pcall, with the instruction
+ * budget started afresh; `phase` says what runs. A failure is logged once, with the file, the
+ * line and what ran out. */
+static enum clsph_status sandbox_call(struct sandbox *sb, int nargs, int nresults,
+                                      const char *phase)
+{
+  enum clsph_status st = CLSPH_OK;
+  lua_State *L = sb->L;
+  sb->phase = phase;
+  sb->count = 0;
+  sb->refused = 0;
+  sb->where[0] = '\0';
+  const int err = lua_pcall(L, nargs, nresults, 0);
+  if (err == LUA_ERRMEM || (err != LUA_OK && sb->refused)) {
+    log_error("%s%s%s ran out of memory: a block of %.0f MiB would take it past the case "
+              "sandbox's ceiling of %.0f MiB (--case-memory MIB raises it)",
+              sb->where[0] ? sb->where : sb->path, ": ", phase,
+              (double)sb->refused_bytes / 1048576.0, (double)sb->limit / 1048576.0);
+    lua_pop(L, 1);
+    st = CLSPH_E_INPUT;
+  } else if (err != LUA_OK) {
+    log_error("%s", lua_tostring(L, -1));
+    lua_pop(L, 1);
+    st = CLSPH_E_INPUT;
+  }
+  sb->phase = NULL;
+  return st;
+}
 
 #define FILL_VELOCITY "clsph.fill_velocity" /* registry: the fills' velocity functions */
 
@@ -29,14 +135,17 @@ struct case_script {
 static enum clsph_status fill_velocity(void *ctx, int region, const double x[2], double v[2])
 {
   enum clsph_status st = CLSPH_OK;
-  lua_State *L = ctx;
+  struct case_script *cs = ctx;
+  lua_State *L = cs->L;
   const int top = lua_gettop(L);
   lua_getfield(L, LUA_REGISTRYINDEX, FILL_VELOCITY);
   CLSPH_CHECK(lua_istable(L, -1) && lua_rawgeti(L, -1, region + 1) == LUA_TFUNCTION, CLSPH_E_INPUT,
               "fill %d has no velocity function", region + 1);
   lua_pushnumber(L, x[0]);
   lua_pushnumber(L, x[1]);
-  CLSPH_CHECK(lua_pcall(L, 2, 2, 0) == LUA_OK, CLSPH_E_INPUT, "%s", lua_tostring(L, -1));
+  snprintf(cs->sb.phase_buf, sizeof cs->sb.phase_buf, "the velocity function of fill %d",
+           region + 1);
+  CLSPH_TRY(sandbox_call(&cs->sb, 2, 2, cs->sb.phase_buf));
   CLSPH_CHECK(lua_isnumber(L, -2) && lua_isnumber(L, -1), CLSPH_E_INPUT,
               "the velocity function returned %s, %s: it must return two numbers u, v",
               luaL_typename(L, -2), luaL_typename(L, -1));
@@ -968,16 +1077,20 @@ done:
   return st;
 }
 
-enum clsph_status case_load(const char *path, int nsets, char *const *sets, struct scene *out,
+enum clsph_status case_load(const char *path, int nsets, char *const *sets,
+                            const struct case_limits *limits, struct scene *out,
                             struct case_script **script)
 {
   enum clsph_status st = CLSPH_OK;
   struct scene s;
   struct loader ld;
-  lua_State *L = NULL;
+  struct case_script *cs = NULL;
+  struct case_limits lim;
   memset(&s, 0, sizeof s);
   memset(&ld, 0, sizeof ld);
   ld.s = &s;
+  case_limits_default(&lim);
+  if (limits != NULL) lim = *limits;
 
   CLSPH_CHECK(strlen(path) < sizeof s.case_path, CLSPH_E_INPUT, "case path too long: %s", path);
   snprintf(s.case_path, sizeof s.case_path, "%s", path);
@@ -990,8 +1103,16 @@ enum clsph_status case_load(const char *path, int nsets, char *const *sets, stru
   scene_checks_default(&s.checks);
   CLSPH_TRY(parse_sets(nsets, sets, &ld));
 
-  L = luaL_newstate();
-  CLSPH_CHECK(L != NULL, CLSPH_E_NOMEM, "cannot create a Lua state");
+  /* the sandbox: its own allocator with a ceiling, and an instruction budget per entry */
+  cs = calloc(1, sizeof *cs);
+  CLSPH_CHECK(cs != NULL, CLSPH_E_NOMEM, "out of memory");
+  cs->sb.limit = (size_t)lim.memory;
+  cs->sb.budget = (long long)lim.instructions;
+  cs->sb.path = s.case_path;
+  cs->L = lua_newstate(sandbox_alloc, &cs->sb);
+  CLSPH_CHECK(cs->L != NULL, CLSPH_E_NOMEM, "cannot create a Lua state");
+  lua_State *L = cs->sb.L = cs->L;
+  lua_sethook(L, sandbox_hook, LUA_MASKCOUNT, SANDBOX_HOOK_EVERY);
   open_sandbox(L);
   register_api(L, &ld);
   struct stat sb;
@@ -1005,26 +1126,24 @@ enum clsph_status case_load(const char *path, int nsets, char *const *sets, stru
     st = CLSPH_E_INPUT;
     goto done;
   }
-  if (err == LUA_OK) err = lua_pcall(L, 0, 0, 0);
   if (err != LUA_OK) {
     log_error("%s", lua_tostring(L, -1));
     st = CLSPH_E_INPUT;
     goto done;
   }
+  CLSPH_TRY(sandbox_call(&cs->sb, 0, 0, "the case script"));
   CLSPH_TRY(finish(path, &ld));
   *out = s;
   memset(&s, 0, sizeof s);
   if (script != NULL) {
-    struct case_script *cs = malloc(sizeof *cs);
-    CLSPH_CHECK(cs != NULL, CLSPH_E_NOMEM, "out of memory");
-    cs->L = L;
+    cs->sb.path = out->case_path;
     out->velocity_fn.eval = fill_velocity;
-    out->velocity_fn.ctx = L;
-    L = NULL;
+    out->velocity_fn.ctx = cs;
     *script = cs;
+    cs = NULL;
   }
 done:
-  if (L != NULL) lua_close(L);
+  case_close(cs);
   scene_free(&s);
   free(ld.set_names);
   free(ld.set_values);
@@ -1400,7 +1519,10 @@ enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api
   enum clsph_status st = CLSPH_OK;
   lua_State *L = cs->L;
   int top = lua_gettop(L);
-  lua_getglobal(L, "metrics");
+  /* raw access: a metamethod the script set on _G runs only inside the sandbox's calls */
+  lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
+  lua_pushliteral(L, "metrics");
+  lua_rawget(L, -2);
   if (lua_isnil(L, -1)) goto done;
   CLSPH_CHECK(lua_isfunction(L, -1), CLSPH_E_INPUT, "metrics must be a function");
   lua_newtable(L);
@@ -1429,11 +1551,7 @@ enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api
     lua_pushcclosure(L, fns[i].func, 1);
     lua_setfield(L, -2, fns[i].name);
   }
-  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-    log_error("metrics: %s", lua_tostring(L, -1));
-    st = CLSPH_E_INPUT;
-    goto done;
-  }
+  CLSPH_TRY(sandbox_call(&cs->sb, 1, 1, "metrics()"));
   CLSPH_CHECK(lua_istable(L, -1), CLSPH_E_INPUT, "metrics must return a table of name = number");
   lua_pushnil(L);
   while (lua_next(L, -2) != 0) {
@@ -1453,6 +1571,6 @@ done:
 void case_close(struct case_script *cs)
 {
   if (cs == NULL) return;
-  lua_close(cs->L);
+  if (cs->L != NULL) lua_close(cs->L);
   free(cs);
 }

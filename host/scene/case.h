@@ -40,11 +40,23 @@ struct case_sim_api {
                                     double **xy, double **values);
 };
 
+/** The limits of the case sandbox: every entry into the script (its top level, a fill's velocity
+ *  function, metrics()) may run `instructions` Lua VM instructions; the Lua state may hold
+ *  `memory` bytes. */
+struct case_limits {
+  double instructions; /* per entry (default 1e9, a few seconds) */
+  double memory;       /* bytes (default 512 MiB) */
+};
+
+/** @brief The default limits. */
+void case_limits_default(struct case_limits *l);
 /** @brief Run a case script and fill the scene.
  *  @param sets   --set overrides, "name=value" each; a name the case does not declare is refused
  *                with the nearest declared names
+ *  @param limits the sandbox's limits (NULL: the defaults)
  *  @param script receives the Lua state (kept for metrics); NULL to close it at once */
-enum clsph_status case_load(const char *path, int nsets, char *const *sets, struct scene *out,
+enum clsph_status case_load(const char *path, int nsets, char *const *sets,
+                            const struct case_limits *limits, struct scene *out,
                             struct case_script **script);
 /** @brief Run the case's `metrics(sim)` function, if it has one, adding its numbers to `out`
  *  (a JSON object). */

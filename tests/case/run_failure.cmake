@@ -1,19 +1,25 @@
-# Runs a case that must stop as a blow-up of one class: exit status 1, summary.json written with
+# Runs a case that must stop as a blow-up of one class: exit status RC (default 1), summary.json
+# written with
 # "failure" = FAILURE and a status matching REGEX (the health checks of host/sim/checks.c), and a
 # message matching MESSAGE (default: REGEX; a failure reported where it happened, such as the
 # pressure solver's, is worded there).
-#   cmake -DCLSPH=exe -DCASE=file -DOUT=dir -DSETS="a=1|b=2" -DFAILURE=energy -DREGEX=... -P ...
+#   cmake -DCLSPH=exe -DCASE=file -DOUT=dir -DSETS="a=1|b=2" -DFAILURE=energy -DREGEX=...
+#         [-DARGS="--opt|value"] [-DRC=2] -P ...
 string(REPLACE "|" ";" SETS "${SETS}")
 set(args "")
 foreach(s IN LISTS SETS)
   list(APPEND args --set ${s})
 endforeach()
+string(REPLACE "|" ";" ARGS "${ARGS}")
+if(NOT RC)
+  set(RC 1)
+endif()
 file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${CLSPH} run ${CASE} ${args} --out ${OUT} --quiet
+execute_process(COMMAND ${CLSPH} run ${CASE} ${args} ${ARGS} --out ${OUT} --quiet
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
 message("${out}")
-if(NOT rc EQUAL 1)
-  message(FATAL_ERROR "clsph run exited with ${rc}, not 1 (a blow-up)")
+if(NOT rc EQUAL RC)
+  message(FATAL_ERROR "clsph run exited with ${rc}, not ${RC}")
 endif()
 if(NOT EXISTS ${OUT}/summary.json)
   message(FATAL_ERROR "the run stopped without writing summary.json")
