@@ -76,6 +76,14 @@ clsph_add_test(case_sandbox_loop_metrics LABELS case COMMAND ${CMAKE_COMMAND}
                "-DARGS=--case-instructions|1e7" -DRC=2 -DFAILURE=metrics "-DREGEX=metrics failed"
                "-DMESSAGE=bad_sandbox_limits.lua:28: metrics\\(\\) ran out of instructions"
                -P ${CASE_DIR}/run_failure.cmake)
+# Output intervals that would flood the disk are refused before the folder is touched.
+clsph_cli_test(case_output_below_step ARGS run ${CASE_DIR}/bad_output_every.lua --quiet
+               --out ${CMAKE_CURRENT_BINARY_DIR}/runs/output_below_step RC 2
+               REGEX "bad_output_every.lua:11: run: output_every = 1e-12 s is below the first time step")
+clsph_cli_test(case_output_too_many ARGS run ${CASE_DIR}/bad_output_every.lua --quiet
+               --set every=0.05 --set t_end=1000
+               --out ${CMAKE_CURRENT_BINARY_DIR}/runs/output_too_many RC 2
+               REGEX "ask for 20000 snapshots and checkpoints up to t_end = 1000 s .*max_snapshots = 10000")
 clsph_cli_test(case_missing_file ARGS info ${CASE_DIR}/no_such_case.lua RC 2
                REGEX "cannot read case .*no_such_case.lua: No such file")
 clsph_cli_test(case_folder ARGS run ${CASE_DIR} RC 2 REGEX "case .*/case is a folder: name a case script")

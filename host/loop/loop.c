@@ -37,6 +37,40 @@ static double next_mark(double t, double every)
   return m > t ? m : m + every;
 }
 
+/* The cadences of the outputs, checked before anything is written: an output or checkpoint
+ * interval below the first time step would cut every step to it (the loop lands on each output),
+ * and more than run { max_snapshots } snapshots and checkpoints fill a disk unasked. */
+static enum clsph_status check_cadence(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  double dt = HUGE_VAL;
+  if (sim->scheme->max_dt != NULL) CLSPH_TRY(sim->scheme->max_dt(sim, sim->state, &dt));
+  dt = s->dt > 0.0 ? s->dt : dt * s->cfl;
+  const double every[2] = {s->output_every, s->checkpoint_every};
+  const char *name[2] = {"output_every", "checkpoint_every"};
+  double count = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    if (!(every[k] > 0.0)) continue;
+    CLSPH_CHECK(!isfinite(dt) || every[k] >= dt * (1.0 - 1e-9), CLSPH_E_INPUT,
+                "%s:%d: run: %s = %g s is below the first time step, %g s: every step would be "
+                "cut to it; give an interval of at least one step",
+                s->case_path, s->run_line, name[k], every[k], dt);
+    count += floor((s->t_end - sim->time) / every[k] + 1e-9);
+  }
+  size_t bytes = 0;
+  for (int k = 0; k < sim->ps.nfields; ++k)
+    if (sim->ps.f[k].output) bytes += sim->ps.f[k].elem;
+  CLSPH_CHECK(count <= s->max_snapshots, CLSPH_E_INPUT,
+              "%s:%d: run: output_every and checkpoint_every ask for %.0f snapshots and "
+              "checkpoints up to t_end = %g s (about %.3g GiB), more than run { max_snapshots = "
+              "%.0f } allows: give longer intervals, or a larger max_snapshots knowingly",
+              s->case_path, s->run_line, count, s->t_end,
+              count * (double)bytes * (double)sim->ps.n / 1073741824.0, s->max_snapshots);
+done:
+  return st;
+}
+
 /* Before the first step: what the outputs need is there (the wall groups of forces, the field
  * of frames), the folder is ready, a restart has its state back, and the series are open; a
  * fresh run writes its initial snapshot. */
@@ -59,6 +93,7 @@ static enum clsph_status start(struct sim *sim, const struct loop_options *opt, 
     const int n = snapshot_frame_fields(sim, names, ncomp);
     CLSPH_TRY(field_find(opt->frames->render.field, n, names, ncomp, &f));
   }
+  CLSPH_TRY(check_cadence(sim));
   CLSPH_TRY(out_prepare_dir(opt->out_dir));
   snprintf(o->dir, sizeof o->dir, "%s", opt->out_dir);
   if (opt->frames != NULL) CLSPH_TRY(snapshot_open_frames(sim, opt->frames, opt->out_dir, o));

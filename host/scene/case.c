@@ -893,12 +893,14 @@ static void run_checks(lua_State *L, int idx, struct scene *s)
 
 static int l_run(lua_State *L)
 {
-  static const char *const keys[] = {"t_end", "output_every", "checkpoint_every", "cfl",
-                                     "dt",    "sample_every", "checks",           NULL};
+  static const char *const keys[] = {"t_end",         "output_every", "checkpoint_every",
+                                     "cfl",           "dt",           "sample_every",
+                                     "max_snapshots", "checks",       NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "run");
   once(L, &ld->line_run, "run");
+  s->run_line = ld->line_run;
   check_keys(L, 1, "run", keys, 0);
   s->t_end = get_number(L, 1, "run", "t_end", NAN);
   if (isnan(s->t_end)) luaL_error(L, "run: needs t_end, the end time (s)");
@@ -928,6 +930,9 @@ static int l_run(lua_State *L)
   s->cfl = get_number(L, 1, "run", "cfl", 1.0);
   if (s->output_every < 0.0 || s->checkpoint_every < 0.0)
     luaL_error(L, "run: output_every and checkpoint_every must not be negative");
+  s->max_snapshots = get_number(L, 1, "run", "max_snapshots", 10000.0);
+  if (!(s->max_snapshots >= 1.0 && s->max_snapshots <= 1e9))
+    luaL_error(L, "run: max_snapshots must be from 1 to 1e9, not %f", s->max_snapshots);
   if (!(s->cfl > 0.0)) luaL_error(L, "run: cfl must be positive, not %f", s->cfl);
   s->dt = get_number(L, 1, "run", "dt", 0.0);
   if (s->dt < 0.0) luaL_error(L, "run: dt must be a positive time step, not %f", s->dt);

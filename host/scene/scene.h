@@ -151,6 +151,8 @@ struct scene {
   double output_every;         /* snapshot cadence, s (0: only the last) */
   double sample_every;         /* cadence of probes.csv and forces.csv, s (0: with snapshots) */
   double checkpoint_every;     /* checkpoint cadence, s (0: only the last) */
+  double max_snapshots;        /* most snapshots and checkpoints a run may write (10000) */
+  int run_line;                /* line of the case script's run { } */
   double cfl;                  /* time-step factor (1 = the scheme's bounds) */
   double dt;                   /* fixed time step, s (0: from the scheme's bounds) */
   struct scene_checks checks;  /* health-check thresholds */

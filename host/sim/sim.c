@@ -281,12 +281,19 @@ enum clsph_status sim_info(struct sim *sim)
          "%zu cells\n",
          per, spare, (double)((per + spare) * sim->ps.cap + grid_bytes) / (1024.0 * 1024.0),
          sim->grid.ncells);
+  if (s->dt > 0.0) dt = s->dt;
   if (isfinite(dt))
     printf("time step %.6g s (cfl %g): about %.0f steps to t_end = %g s\n", dt, s->cfl,
            ceil(s->t_end / dt), s->t_end);
   else
     printf("time step: set by the outputs (the scheme has no stability bound); t_end = %g s\n",
            s->t_end);
+  printf("outputs: %.0f snapshots (output_every %g s), %.0f checkpoints (checkpoint_every %g s; "
+         "0: at the end only)\n",
+         s->output_every > 0.0 ? floor(s->t_end / s->output_every + 1e-9) + 1.0 : 1.0,
+         s->output_every,
+         s->checkpoint_every > 0.0 ? floor(s->t_end / s->checkpoint_every + 1e-9) : 1.0,
+         s->checkpoint_every);
 done:
   return st;
 }
