@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "str.h"
+
 /* libpng's error and warning handlers: keep the message, jump back. */
 struct png_err {
   char msg[256];
@@ -57,9 +59,8 @@ enum clsph_status image_write_png(const char *path, const unsigned char *rgb, in
   png_structp png = NULL;
   png_infop info = NULL;
   FILE *f = NULL;
-  char tmp[1100];
-  int w = snprintf(tmp, sizeof tmp, "%s.tmp", path);
-  CLSPH_CHECK(w > 0 && (size_t)w < sizeof tmp, CLSPH_E_INPUT, "file name too long: %s", path);
+  char *tmp = str_printf("%s.tmp", path);
+  CLSPH_CHECK(tmp != NULL, CLSPH_E_NOMEM, "out of memory");
   f = fopen(tmp, "wb");
   CLSPH_CHECK(f != NULL, CLSPH_E_IO, "cannot write %s: %s", tmp, strerror(errno));
   png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &e, on_error, on_warning);
@@ -75,7 +76,8 @@ enum clsph_status image_write_png(const char *path, const unsigned char *rgb, in
 done:
   if (png != NULL) png_destroy_write_struct(&png, info != NULL ? &info : NULL);
   if (f != NULL) fclose(f);
-  if (st != CLSPH_OK) remove(tmp);
+  if (st != CLSPH_OK && tmp != NULL) remove(tmp);
+  free(tmp);
   return st;
 }
 

@@ -77,9 +77,9 @@ clsph_add_test(case_sandbox_loop_metrics LABELS case COMMAND ${CMAKE_COMMAND}
                "-DMESSAGE=bad_sandbox_limits.lua:28: metrics\\(\\) ran out of instructions"
                -P ${CASE_DIR}/run_failure.cmake)
 # Output intervals that would flood the disk are refused before the folder is touched.
-clsph_cli_test(case_output_below_step ARGS run ${CASE_DIR}/bad_output_every.lua --quiet
-               --out ${CMAKE_CURRENT_BINARY_DIR}/runs/output_below_step RC 2
-               REGEX "bad_output_every.lua:11: run: output_every = 1e-12 s is below the first time step")
+clsph_cli_test(case_output_flood ARGS run ${CASE_DIR}/bad_output_every.lua --quiet
+               --out ${CMAKE_CURRENT_BINARY_DIR}/runs/output_flood RC 2
+               REGEX "bad_output_every.lua:11: run: output_every and checkpoint_every ask for 1000000000000 snapshots")
 clsph_cli_test(case_output_too_many ARGS run ${CASE_DIR}/bad_output_every.lua --quiet
                --set every=0.05 --set t_end=1000
                --out ${CMAKE_CURRENT_BINARY_DIR}/runs/output_too_many RC 2
@@ -123,6 +123,9 @@ clsph_add_test(restart_bit_for_bit LABELS case COMMAND ${CMAKE_COMMAND}
                -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/free_fall.lua
                -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart "-DSETS=dr=0.04|t_end=0.1"
                -P ${CASE_DIR}/restart.cmake)
+clsph_add_test(long_out LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
+               -DCASE=${CMAKE_SOURCE_DIR}/cases/free_fall.lua
+               -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/long_out -P ${CASE_DIR}/long_out.cmake)
 clsph_add_test(restart_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
                -DCASE_A=${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua
                -DCASE_B=${CMAKE_SOURCE_DIR}/cases/free_fall.lua

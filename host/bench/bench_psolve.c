@@ -115,15 +115,20 @@ done:
 static void chart(const char *dir, const char *csv)
 {
   char cmd[4096];
-  snprintf(cmd, sizeof cmd,
-           "gnuplot -e \"set terminal pngcairo size 900,600; set output '%s/psolve.png'; "
-           "set datafile separator ','; set logscale xy; set grid; set key top left; "
-           "set xlabel 'unknowns'; set ylabel 'seconds per solve'; "
-           "set title 'pressure solve, corrected Morris Laplacian (jittered lattice)'; "
-           "plot for [s in 'bicgstab-stored-jacobi bicgstab-stored-sweeps "
-           "bicgstab-recompute-jacobi bicgstab-recompute-sweeps umfpack'] "
-           "'< grep ^'.s.', %s' using 2:4 with linespoints title s\" 2>&1",
-           dir, csv);
+  const int w =
+      snprintf(cmd, sizeof cmd,
+               "gnuplot -e \"set terminal pngcairo size 900,600; set output '%s/psolve.png'; "
+               "set datafile separator ','; set logscale xy; set grid; set key top left; "
+               "set xlabel 'unknowns'; set ylabel 'seconds per solve'; "
+               "set title 'pressure solve, corrected Morris Laplacian (jittered lattice)'; "
+               "plot for [s in 'bicgstab-stored-jacobi bicgstab-stored-sweeps "
+               "bicgstab-recompute-jacobi bicgstab-recompute-sweeps umfpack'] "
+               "'< grep ^'.s.', %s' using 2:4 with linespoints title s\" 2>&1",
+               dir, csv);
+  if (w < 0 || (size_t)w >= sizeof cmd) {
+    log_warn("the output path is too long for the chart's command; the CSV is %s", csv);
+    return;
+  }
   FILE *p = popen(cmd, "r");
   if (p == NULL) {
     log_warn("cannot run gnuplot; the CSV is %s", csv);
@@ -148,7 +153,8 @@ enum clsph_status bench_psolve(const struct cli *cli)
   CLSPH_TRY(dev_open(cli->device, CLSPH_DOUBLE, &dev));
   mkdir("out", 0755);
   mkdir(dir, 0755);
-  snprintf(path, sizeof path, "%s/psolve.csv", dir);
+  const int w = snprintf(path, sizeof path, "%s/psolve.csv", dir);
+  CLSPH_CHECK(w > 0 && (size_t)w < sizeof path, CLSPH_E_INPUT, "--out: path too long: %s", dir);
   csv = fopen(path, "w");
   CLSPH_CHECK(csv != NULL, CLSPH_E_IO, "cannot write %s", path);
   fprintf(csv, "solver,unknowns,iterations,seconds_per_solve,seconds_per_iteration,residual,"

@@ -107,7 +107,8 @@ static enum clsph_status bench_size(struct render *r, const struct cli *cli, con
   CLSPH_TRY(field_find("speed", 4, names, nc, &speed));
   CLSPH_TRY(field_find("vorticity", 4, names, nc, &vort));
   char path[1200];
-  snprintf(path, sizeof path, "%s/speed_%zu.png", out, s.n);
+  int w = snprintf(path, sizeof path, "%s/speed_%zu.png", out, s.n);
+  CLSPH_CHECK(w > 0 && (size_t)w < sizeof path, CLSPH_E_INPUT, "--out: path too long: %s", out);
   struct render_times rt;
   CLSPH_TRY(render_frame(r, &speed, &in, path, NULL, &rt)); /* warm-up */
   for (int k = 0; k < reps; ++k) {
@@ -123,7 +124,8 @@ static enum clsph_status bench_size(struct render *r, const struct cli *cli, con
   double m[5];
   for (int q = 0; q < 5; ++q) m[q] = median(t + q * reps, reps);
   /* vorticity: a whole frame, the field's time apart */
-  snprintf(path, sizeof path, "%s/vorticity_%zu.png", out, s.n);
+  w = snprintf(path, sizeof path, "%s/vorticity_%zu.png", out, s.n);
+  CLSPH_CHECK(w > 0 && (size_t)w < sizeof path, CLSPH_E_INPUT, "--out: path too long: %s", out);
   const int vreps = target >= 1000000 ? (reps < 3 ? reps : 3) : reps;
   for (int k = 0; k < vreps; ++k) {
     CLSPH_TRY(render_frame(r, &vort, &in, path, NULL, &rt));

@@ -18,6 +18,7 @@
 #include "loop.h"
 #include "scheme.h"
 #include "sim.h"
+#include "str.h"
 
 static enum clsph_status setup(const struct cli *cli, struct dev *dev, struct scene *scene,
                                struct case_script **script, struct sim *sim)
@@ -123,15 +124,13 @@ enum clsph_status run_command(const struct cli *cli)
   struct scene scene;
   struct sim sim;
   struct case_script *script = NULL;
-  char out[1024];
+  char *out = NULL;
   memset(&scene, 0, sizeof scene);
   memset(&sim, 0, sizeof sim);
   CLSPH_TRY(setup(cli, &dev, &scene, &script, &sim));
   if (cli->profile) CLSPH_TRY(kern_profile_create(&dev));
-  if (cli->out_dir != NULL)
-    snprintf(out, sizeof out, "%s", cli->out_dir);
-  else
-    snprintf(out, sizeof out, "out/%s", scene.name);
+  out = cli->out_dir != NULL ? str_printf("%s", cli->out_dir) : str_printf("out/%s", scene.name);
+  CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
   if (!cli->quiet)
     printf("clsph run %s: scheme %s, %zu particles (%zu fluid), %s on %s, output in %s\n",
            scene.name, sim.scheme->name, sim.ps.n, sim.geom.nfluid, CLSPH_PRECISION_NAME, dev.name,
@@ -147,6 +146,7 @@ enum clsph_status run_command(const struct cli *cli)
     if (st == CLSPH_OK) st = ps;
   }
 done:
+  free(out);
   sim_destroy(&sim);
   case_close(script);
   scene_free(&scene);
@@ -202,6 +202,17 @@ done:
   return st;
 }
 
+/* DIR/snap_NNNNNN.h5 into *path (malloc'd; the previous one freed). */
+static enum clsph_status snapshot_path(const char *dir, int k, char **path)
+{
+  enum clsph_status st = CLSPH_OK;
+  free(*path);
+  *path = str_printf("%s/snap_%06d.h5", dir, k);
+  CLSPH_CHECK(*path != NULL, CLSPH_E_NOMEM, "out of memory");
+done:
+  return st;
+}
+
 /* A frame's input from a snapshot: its arrays (those read), walls, view, time and names. */
 static enum clsph_status snapshot_input(const struct io_snapshot *s, struct render_array *arrays,
                                         struct render_wall **walls, struct render_input *in)
@@ -241,13 +252,13 @@ enum clsph_status render_command(const struct cli *cli)
   struct render_wall *walls = NULL;
   struct render_input in;
   double *val = NULL;
-  char path[1200];
+  char *path = NULL;
   const char *out = cli->out_dir != NULL ? cli->out_dir : cli->snap_dir;
   memset(&snap, 0, sizeof snap);
   CLSPH_TRY(list_snapshots(cli->snap_dir, &num, &count));
 
   /* the first snapshot: the fields there are, and the case's render choices */
-  snprintf(path, sizeof path, "%s/snap_%06d.h5", cli->snap_dir, num[0]);
+  CLSPH_TRY(snapshot_path(cli->snap_dir, num[0], &path));
   static const char *const nothing[] = {NULL};
   CLSPH_TRY(io_snapshot_read(path, nothing, &snap));
   if (!snap.has_domain)
@@ -274,7 +285,7 @@ enum clsph_status render_command(const struct cli *cli)
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     enum colormap_kind map = render_map_for(f, fo.render.map);
     for (int k = 0; k < count; ++k) {
-      snprintf(path, sizeof path, "%s/snap_%06d.h5", cli->snap_dir, num[k]);
+      CLSPH_TRY(snapshot_path(cli->snap_dir, num[k], &path));
       CLSPH_TRY(io_snapshot_read(path, only, &snap));
       CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
       const struct render_array *kind = field_array(&in, "kind");
@@ -296,7 +307,7 @@ enum clsph_status render_command(const struct cli *cli)
       printf("colour range of %s over %d snapshots: %g .. %g\n", f->name, count, lo, hi);
   }
   for (int k = 0; k < count; ++k) {
-    snprintf(path, sizeof path, "%s/snap_%06d.h5", cli->snap_dir, num[k]);
+    CLSPH_TRY(snapshot_path(cli->snap_dir, num[k], &path));
     CLSPH_TRY(io_snapshot_read(path, only, &snap));
     CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
     CLSPH_TRY(frames_write(fr, &in, num[k]));
@@ -304,6 +315,7 @@ enum clsph_status render_command(const struct cli *cli)
   }
   CLSPH_TRY(frames_finish(fr, cli->quiet));
 done:
+  free(path);
   free(val);
   free(walls);
   io_snapshot_free(&snap);

@@ -63,11 +63,11 @@ done:
 enum clsph_status checkpoint_write(struct sim *sim, struct run_out *o)
 {
   enum clsph_status st = CLSPH_OK;
-  char name[64], path[1200];
+  char name[64], *path = NULL;
   struct io_meta m;
   snapshot_meta(sim, &m);
   snprintf(name, sizeof name, "checkpoint_%06ld.h5", sim->step);
-  CLSPH_TRY(out_path(o, name, path, sizeof path));
+  CLSPH_TRY(out_path(o, name, &path));
   /* the flow-rate control's state and the scheme's host state travel in the blob, so a restart
    * continues bit for bit */
   unsigned char blob[sizeof sim->flow + 64 * sizeof(double)];
@@ -76,6 +76,7 @@ enum clsph_status checkpoint_write(struct sim *sim, struct run_out *o)
   CLSPH_TRY(io_checkpoint_write(path, sim->dev, &sim->ps, &m, bytes > 0 ? blob : NULL, bytes));
   log_debug("checkpoint %s at t = %g s", path, sim->time);
 done:
+  free(path);
   return st;
 }
 

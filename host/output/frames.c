@@ -12,12 +12,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "str.h"
+
 struct frames {
   struct frames_opts o;
   struct render *r;
   struct field_spec f;
-  char out[1024];   /* the output folder */
-  char dir[1100];   /* OUT/frames */
+  char *out;        /* the output folder */
+  char *dir;        /* OUT/frames */
   int first, count; /* frames written here: numbers first .. first + count − 1 */
   int last;         /* the last number written */
 };
@@ -67,10 +69,9 @@ enum clsph_status frames_open(const struct frames_opts *o, const char *out_dir, 
   fr->o = *o;
   fr->first = -1;
   CLSPH_TRY(field_find(o->render.field, narrays, names, ncomp, &fr->f));
-  CLSPH_CHECK(strlen(out_dir) + 8 < sizeof fr->out, CLSPH_E_INPUT, "output path too long: %s",
-              out_dir);
-  snprintf(fr->out, sizeof fr->out, "%s", out_dir);
-  snprintf(fr->dir, sizeof fr->dir, "%s/frames", out_dir);
+  fr->out = str_printf("%s", out_dir);
+  fr->dir = str_printf("%s/frames", out_dir);
+  CLSPH_CHECK(fr->out != NULL && fr->dir != NULL, CLSPH_E_NOMEM, "out of memory");
   CLSPH_TRY(make_dir(fr->dir));
   CLSPH_TRY(render_create(&o->render, &fr->r));
   *out = fr;
@@ -90,41 +91,45 @@ void frames_set_range(struct frames *fr, double lo, double hi)
   render_set_range(fr->r, lo, hi);
 }
 
-static void frame_path(const struct frames *fr, int index, char *buf, size_t size)
+/* OUT/frames/FIELD_NNNNNN.png, malloc'd (NULL: out of memory). */
+static char *frame_path(const struct frames *fr, int index)
 {
-  snprintf(buf, size, "%s/%s_%06d.png", fr->dir, fr->f.name, index);
+  return str_printf("%s/%s_%06d.png", fr->dir, fr->f.name, index);
 }
 
 enum clsph_status frames_write(struct frames *fr, const struct render_input *in, int index)
 {
   enum clsph_status st = CLSPH_OK;
-  char path[1200];
-  frame_path(fr, index, path, sizeof path);
+  char *path = frame_path(fr, index);
+  CLSPH_CHECK(path != NULL, CLSPH_E_NOMEM, "out of memory");
   CLSPH_TRY(render_frame(fr->r, &fr->f, in, path, NULL, NULL));
   if (fr->first < 0) fr->first = index;
   fr->last = index;
   ++fr->count;
 done:
+  free(path);
   return st;
 }
 
 enum clsph_status frames_finish(struct frames *fr, int quiet)
 {
   enum clsph_status st = CLSPH_OK;
-  char path[1200], pattern[1200], mp4[1200];
+  char *path = NULL, *pattern = NULL, *mp4 = NULL;
   int made = 0;
   if (fr == NULL || fr->count == 0) goto done;
   /* the movie runs over consecutive frames: those written here, and those before them that a
    * run restarted here left */
   int first = fr->first;
-  for (;;) {
-    frame_path(fr, first - 1, path, sizeof path);
-    if (first == 0 || access(path, F_OK) != 0) break;
-    --first;
+  for (; first > 0; --first) {
+    free(path);
+    path = frame_path(fr, first - 1);
+    CLSPH_CHECK(path != NULL, CLSPH_E_NOMEM, "out of memory");
+    if (access(path, F_OK) != 0) break;
   }
   const int count = fr->last - first + 1;
-  snprintf(pattern, sizeof pattern, "%s/%s_%%06d.png", fr->dir, fr->f.name);
-  snprintf(mp4, sizeof mp4, "%s/%s.mp4", fr->out, fr->f.name);
+  pattern = str_printf("%s/%s_%%06d.png", fr->dir, fr->f.name);
+  mp4 = str_printf("%s/%s.mp4", fr->out, fr->f.name);
+  CLSPH_CHECK(pattern != NULL && mp4 != NULL, CLSPH_E_NOMEM, "out of memory");
   if (fr->o.movie) CLSPH_TRY(movie_make(pattern, first, count, fr->o.fps, mp4, &made));
   if (!quiet) {
     printf("frames: %s/%s_%06d.png .. %06d.png (%d)", fr->dir, fr->f.name, fr->first, fr->last,
@@ -133,6 +138,9 @@ enum clsph_status frames_finish(struct frames *fr, int quiet)
     printf("\n");
   }
 done:
+  free(path);
+  free(pattern);
+  free(mp4);
   return st;
 }
 
@@ -140,6 +148,8 @@ void frames_close(struct frames *fr)
 {
   if (fr == NULL) return;
   render_destroy(fr->r);
+  free(fr->out);
+  free(fr->dir);
   free(fr);
 }
 

@@ -41,6 +41,7 @@
 
 #include "clsph_config.h"
 #include "kern.h"
+#include "str.h"
 
 #ifndef CLSPH_VERSION
 #define CLSPH_VERSION "unknown"
@@ -167,23 +168,6 @@ done:
 
 /* ---------------------------------------------------------------------------------------------
  * Small helpers */
-
-/* A malloc'd copy of a formatted string, or NULL when out of memory. */
-static char *str_printf(const char *fmt, ...) LOG_PRINTF(1, 2);
-static char *str_printf(const char *fmt, ...)
-{
-  va_list ap;
-  va_start(ap, fmt);
-  int len = vsnprintf(NULL, 0, fmt, ap);
-  va_end(ap);
-  if (len < 0) return NULL;
-  char *s = malloc((size_t)len + 1);
-  if (s == NULL) return NULL;
-  va_start(ap, fmt);
-  vsnprintf(s, (size_t)len + 1, fmt, ap);
-  va_end(ap);
-  return s;
-}
 
 static const char *or_empty(const char *s)
 {

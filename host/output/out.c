@@ -7,13 +7,13 @@
 #include <sys/stat.h>
 
 #include "log.h"
+#include "str.h"
 
-enum clsph_status out_path(const struct run_out *o, const char *name, char *buf, size_t size)
+enum clsph_status out_path(const struct run_out *o, const char *name, char **path)
 {
   enum clsph_status st = CLSPH_OK;
-  int w = snprintf(buf, size, "%s/%s", o->dir, name);
-  CLSPH_CHECK(w > 0 && (size_t)w < size, CLSPH_E_INPUT, "output path too long: %s/%s", o->dir,
-              name);
+  *path = str_printf("%s/%s", o->dir, name);
+  CLSPH_CHECK(*path != NULL, CLSPH_E_NOMEM, "out of memory");
 done:
   return st;
 }
@@ -21,9 +21,10 @@ done:
 enum clsph_status out_prepare_dir(const char *dir)
 {
   enum clsph_status st = CLSPH_OK;
-  char path[1100];
-  CLSPH_CHECK(strlen(dir) > 0 && strlen(dir) < 1024, CLSPH_E_INPUT, "--out: bad folder name");
-  snprintf(path, sizeof path, "%s", dir);
+  char *path = NULL;
+  CLSPH_CHECK(strlen(dir) > 0, CLSPH_E_INPUT, "--out: the folder name is empty");
+  path = str_printf("%s", dir);
+  CLSPH_CHECK(path != NULL, CLSPH_E_NOMEM, "out of memory");
   for (char *p = path + 1; *p != '\0'; ++p) {
     if (*p != '/') continue;
     *p = '\0';
@@ -35,7 +36,9 @@ enum clsph_status out_prepare_dir(const char *dir)
     st = CLSPH_E_IO;
     goto done;
   }
-  snprintf(path, sizeof path, "%s/.clsph-write-test", dir);
+  free(path);
+  path = str_printf("%s/.clsph-write-test", dir);
+  CLSPH_CHECK(path != NULL, CLSPH_E_NOMEM, "out of memory");
   FILE *f = fopen(path, "w");
   if (f == NULL) {
     log_error("output folder %s cannot be written: %s", dir, strerror(errno));
@@ -45,6 +48,7 @@ enum clsph_status out_prepare_dir(const char *dir)
   fclose(f);
   remove(path);
 done:
+  free(path);
   return st;
 }
 
@@ -62,4 +66,6 @@ void out_close(const struct scene *s, struct run_out *o)
   frames_close(o->frames);
   free(o->walls);
   for (int a = 0; a < o->nframe_arrays; ++a) free(o->frame_arrays[a]);
+  free(o->dir);
+  o->dir = NULL;
 }

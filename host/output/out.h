@@ -11,7 +11,7 @@
 #include "scene.h"
 
 struct run_out {
-  char dir[1024];
+  char *dir; /* the output folder (malloc'd) */
   struct io_series series;
   FILE *probes, *forces, *flow;
   FILE **profiles;
@@ -31,8 +31,8 @@ struct run_out {
   int nframe_arrays;
 };
 
-/** @brief `dir/name` into buf; a path that does not fit is an input error. */
-enum clsph_status out_path(const struct run_out *o, const char *name, char *buf, size_t size);
+/** @brief `dir/name` into a malloc'd *path (the caller frees it). */
+enum clsph_status out_path(const struct run_out *o, const char *name, char **path);
 /** @brief Create the folder (and its parents) and prove it can be written, before anything runs. */
 enum clsph_status out_prepare_dir(const char *dir);
 /** @brief Close every file and free what the run's outputs hold. */

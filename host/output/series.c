@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "scheme.h"
+#include "str.h"
 /* Real fields that probes and profiles record (not position or volume). */
 static int sampled(const struct pfield *f)
 {
@@ -45,16 +46,14 @@ static enum clsph_status series_keep(const char *restart, const char *name, doub
                                      struct kept_series *k)
 {
   enum clsph_status st = CLSPH_OK;
-  char path[1200];
   const char *slash = strrchr(restart, '/');
   const int dir = slash == NULL ? 0 : (int)(slash - restart);
-  int w = slash == NULL ? snprintf(path, sizeof path, "%s", name)
-                        : snprintf(path, sizeof path, "%.*s/%s", dir, restart, name);
+  char *path = slash == NULL ? str_printf("%s", name) : str_printf("%.*s/%s", dir, restart, name);
   char *line = NULL;
   size_t cap = 0, room = 0;
   FILE *f = NULL;
   memset(k, 0, sizeof *k);
-  CLSPH_CHECK(w > 0 && (size_t)w < sizeof path, CLSPH_E_INPUT, "path too long: %s", restart);
+  CLSPH_CHECK(path != NULL, CLSPH_E_NOMEM, "out of memory");
   f = fopen(path, "r");
   if (f == NULL) goto done;
   ssize_t len;
@@ -80,6 +79,7 @@ static enum clsph_status series_keep(const char *restart, const char *name, doub
 done:
   if (f != NULL) fclose(f);
   free(line);
+  free(path);
   return st;
 }
 
@@ -159,7 +159,7 @@ enum clsph_status series_open(struct sim *sim, struct run_out *o, const char *re
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
-  char path[1200], name[SCENE_NAME + 32], prefix[SCENE_NAME + 2];
+  char *path = NULL, name[SCENE_NAME + 32], prefix[SCENE_NAME + 2];
   const int np = s->nprofiles;
   /* the kept rows of the profiles, then of the probes, the flow control and the forces */
   struct kept_series *kept = calloc((size_t)np + 3, sizeof *kept);
@@ -175,7 +175,8 @@ enum clsph_status series_open(struct sim *sim, struct run_out *o, const char *re
     if (s->nforces > 0) CLSPH_TRY(series_keep(restart, "forces.csv", sim->time, 0, &kept[np + 2]));
   }
   if (s->nprobes > 0) {
-    CLSPH_TRY(out_path(o, "probes.csv", path, sizeof path));
+    free(path);
+    CLSPH_TRY(out_path(o, "probes.csv", &path));
     o->probes = fopen(path, "w");
     CLSPH_CHECK(o->probes != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
     fprintf(o->probes, "time");
@@ -192,7 +193,8 @@ enum clsph_status series_open(struct sim *sim, struct run_out *o, const char *re
   }
   for (int p = 0; p < np; ++p) {
     snprintf(name, sizeof name, "profile_%s.csv", s->profiles[p].name);
-    CLSPH_TRY(out_path(o, name, path, sizeof path));
+    free(path);
+    CLSPH_TRY(out_path(o, name, &path));
     o->profiles[p] = fopen(path, "w");
     CLSPH_CHECK(o->profiles[p] != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
     fprintf(o->profiles[p], "time,s,x,y");
@@ -201,14 +203,16 @@ enum clsph_status series_open(struct sim *sim, struct run_out *o, const char *re
     CLSPH_TRY(series_resume(o->profiles[p], path, &kept[p]));
   }
   if (s->flow.on) {
-    CLSPH_TRY(out_path(o, "flow_control.csv", path, sizeof path));
+    free(path);
+    CLSPH_TRY(out_path(o, "flow_control.csv", &path));
     o->flow = fopen(path, "w");
     CLSPH_CHECK(o->flow != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
     fprintf(o->flow, "time,dt,body_force_x,slice_velocity,slice_particles\n");
     CLSPH_TRY(series_resume(o->flow, path, &kept[np + 1]));
   }
   if (s->nforces > 0) {
-    CLSPH_TRY(out_path(o, "forces.csv", path, sizeof path));
+    free(path);
+    CLSPH_TRY(out_path(o, "forces.csv", &path));
     o->force_stats = calloc((size_t)s->nforces, sizeof *o->force_stats);
     o->force_scratch = malloc((1 + 4 * (size_t)s->nforces) * sizeof *o->force_scratch);
     CLSPH_CHECK(o->force_stats != NULL && o->force_scratch != NULL, CLSPH_E_NOMEM, "out of memory");
@@ -227,6 +231,7 @@ enum clsph_status series_open(struct sim *sim, struct run_out *o, const char *re
 done:
   for (int k = 0; kept != NULL && k < np + 3; ++k) kept_free(&kept[k]);
   free(kept);
+  free(path);
   return st;
 }
 

@@ -128,14 +128,16 @@ void snapshot_meta(const struct sim *sim, struct io_meta *m)
 enum clsph_status snapshot_write(struct sim *sim, struct run_out *o)
 {
   enum clsph_status st = CLSPH_OK;
-  char name[64], path[1200];
+  char name[64], *path = NULL;
   struct io_meta m;
   snapshot_meta(sim, &m);
   snprintf(name, sizeof name, "snap_%06d.h5", o->nsnap);
-  CLSPH_TRY(out_path(o, name, path, sizeof path));
+  CLSPH_TRY(out_path(o, name, &path));
   CLSPH_TRY(io_snapshot_write(path, sim->dev, &sim->ps, &m));
+  free(path);
+  path = NULL;
   CLSPH_TRY(io_series_add(&o->series, name, sim->time, sim->ps.n));
-  CLSPH_TRY(out_path(o, "snapshots.xdmf", path, sizeof path));
+  CLSPH_TRY(out_path(o, "snapshots.xdmf", &path));
   CLSPH_TRY(io_xdmf_write(path, &o->series, &sim->ps, 2));
   if (o->frames != NULL) CLSPH_TRY(write_frame(sim, o));
   /* with run { sample_every }, the time series keep their own cadence (see sim_run) */
@@ -145,5 +147,6 @@ enum clsph_status snapshot_write(struct sim *sim, struct run_out *o)
                              : SERIES_TIME | SERIES_PROFILES));
   ++o->nsnap;
 done:
+  free(path);
   return st;
 }

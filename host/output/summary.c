@@ -41,7 +41,7 @@ enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double
                                 struct case_script *script)
 {
   enum clsph_status st = CLSPH_OK;
-  char path[1200];
+  char *path = NULL;
   char *text = NULL;
   FILE *f = NULL;
   cJSON *root = cJSON_CreateObject();
@@ -126,7 +126,7 @@ enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double
   }
   text = cJSON_Print(root);
   CLSPH_CHECK(text != NULL, CLSPH_E_NOMEM, "out of memory");
-  CLSPH_TRY(out_path(o, "summary.json", path, sizeof path));
+  CLSPH_TRY(out_path(o, "summary.json", &path));
   f = fopen(path, "w");
   CLSPH_CHECK(f != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
   CLSPH_CHECK(fputs(text, f) >= 0 && fputc('\n', f) != EOF, CLSPH_E_IO, "cannot write %s", path);
@@ -136,6 +136,7 @@ done:
     st = CLSPH_E_IO;
   }
   free(text);
+  free(path);
   cJSON_Delete(root);
   return st;
 }

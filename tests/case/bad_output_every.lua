@@ -1,6 +1,6 @@
--- Output cadences that are refused before anything is written: an interval below the time step
--- (every = 1e-12), or more snapshots than run { max_snapshots } (every = 0.05 to t_end = 1000:
--- 20000 snapshots against the default 10000).
+-- Output cadences that are refused before anything is written, more snapshots than
+-- run { max_snapshots } (10000): every = 1e-12 s to t_end = 1 s (1e12 snapshots), or every =
+-- 0.05 s to t_end = 1000 s (20000).
 param { every = 1e-12, t_end = 1 }
 domain { 0, 0, 1, 1 }
 particles { dr = 0.1 }
