@@ -126,6 +126,9 @@ clsph_add_test(restart_bit_for_bit LABELS case COMMAND ${CMAKE_COMMAND}
 clsph_add_test(long_out LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
                -DCASE=${CMAKE_SOURCE_DIR}/cases/free_fall.lua
                -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/long_out -P ${CASE_DIR}/long_out.cmake)
+clsph_add_test(out_reuse LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
+               -DCASE=${CASE_DIR}/outputs.lua -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/out_reuse
+               -P ${CASE_DIR}/out_reuse.cmake)
 clsph_add_test(restart_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
                -DCASE_A=${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua
                -DCASE_B=${CMAKE_SOURCE_DIR}/cases/free_fall.lua
@@ -135,7 +138,7 @@ clsph_add_test(restart_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TA
 # fall through the floor, which they do not see, and leave the domain).
 clsph_cli_test(run_blowup_escape RC 1
                ARGS run ${CMAKE_SOURCE_DIR}/cases/free_fall.lua --set t_end=3 --set dr=0.05
-                    --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/blowup
+                    --quiet --overwrite --out ${CMAKE_CURRENT_BINARY_DIR}/runs/blowup
                REGEX "blow-up: a particle left the domain at step [0-9]+")
 clsph_cli_test(run_needs_case ARGS run RC 2 REGEX "run: name the case script")
 
@@ -167,7 +170,8 @@ clsph_run_test(run_cavity_coarse ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 
 clsph_run_test(run_cavity_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 t_end=10 wcsph=1
                BOUNDS "u_rms_vs_ghia<0.16" "v_rms_vs_ghia<0.06")
 clsph_cli_test(case_time_step_above_bound RC 2
-               ARGS run ${CASE_DIR}/bad_dt.lua --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/bad_dt
+               ARGS run ${CASE_DIR}/bad_dt.lua --quiet --overwrite
+                    --out ${CMAKE_CURRENT_BINARY_DIR}/runs/bad_dt
                REGEX "fixed time step 0.5 s exceeds the stability bound [0-9.e-]+ s of isph-usaw")
 
 # --profile: the device time per kernel of a tiny isph-usaw run, printed (not under --quiet) and

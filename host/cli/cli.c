@@ -37,11 +37,15 @@ void cli_usage(FILE *f)
         "                        --set dr=0.005 --set t_end=0.1\n"
         "  --out DIR             output folder of `run` (default out/CASE); of `render`, where\n"
         "                        the frames and the movie go (default OUTDIR)\n"
-        "  --restart FILE        continue a run from one of its checkpoints\n"
+        "  --restart FILE        continue a run from one of its checkpoints (in its folder, the\n"
+        "                        outputs after the checkpoint are removed)\n"
+        "  --overwrite           run: clear the outputs of an earlier run in --out (without it\n"
+        "                        such a folder is refused)\n"
         "  --case-instructions N the case script's budget of Lua instructions for each call\n"
         "                        into it (top level, a fill's velocity, metrics(); default 1e9)\n"
-        "  --case-memory MIB     the most memory the case script may hold (default 512)\n"
-        "  --quiet               no progress line (and no --profile table)\n"
+        "  --case-memory MIB     the most memory the case script may hold (default 512)\n",
+        f);
+  fputs("  --quiet               no progress line (and no --profile table)\n"
         "  --profile             time every kernel launch and transfer of `run` on the device\n"
         "                        (OpenCL profiling events): a table by kernel at the end, and\n"
         "                        \"profile\" in summary.json\n"
@@ -179,6 +183,8 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
       c.fast_math = 1;
     } else if (strcmp(a, "--quiet") == 0) {
       c.quiet = 1;
+    } else if (strcmp(a, "--overwrite") == 0) {
+      c.overwrite = 1;
     } else if (strcmp(a, "--profile") == 0) {
       c.profile = 1;
     } else if (strcmp(a, "--frames") == 0) {

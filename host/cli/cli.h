@@ -15,6 +15,7 @@ struct cli {
   int nsets;
   const char *out_dir;      /* --out DIR (default out/<case>) */
   const char *restart;      /* --restart FILE */
+  int overwrite;            /* --overwrite: clear an earlier run's outputs in --out */
   double case_instructions; /* --case-instructions N: the case sandbox's budget (0: default) */
   double case_memory;       /* --case-memory MIB: its memory ceiling, bytes (0: default) */
   int quiet;                /* --quiet: no progress line */

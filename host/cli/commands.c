@@ -137,7 +137,11 @@ enum clsph_status run_command(const struct cli *cli)
            out);
   struct frames_opts fo;
   if (cli->frames) CLSPH_TRY(frame_options(cli, &scene.render, &fo));
-  struct loop_options opt = {out, cli->restart, cli->quiet, cli->frames ? &fo : NULL};
+  struct loop_options opt = {.out_dir = out,
+                             .restart = cli->restart,
+                             .overwrite = cli->overwrite,
+                             .quiet = cli->quiet,
+                             .frames = cli->frames ? &fo : NULL};
   st = loop_run(&sim, &opt, script);
   if (!cli->quiet && st == CLSPH_OK)
     printf("done: t = %g s in %ld steps; %s/summary.json\n", sim.time, sim.step, out);

@@ -85,12 +85,16 @@ static enum clsph_status start(struct sim *sim, const struct loop_options *opt, 
     const int n = snapshot_frame_fields(sim, names, ncomp);
     CLSPH_TRY(field_find(opt->frames->render.field, n, names, ncomp, &f));
   }
+  /* a refused checkpoint, cadence or folder leaves the folder as it was (no summary.json) */
+  if (opt->restart != NULL) CLSPH_TRY(checkpoint_restore(sim, opt->restart, o));
   CLSPH_TRY(check_cadence(sim));
+  int here = 0; /* continuing a run in its own folder */
+  CLSPH_TRY(out_claim_dir(opt->out_dir, opt->restart, opt->overwrite, &here));
   CLSPH_TRY(out_prepare_dir(opt->out_dir));
   o->dir = str_printf("%s", opt->out_dir);
   CLSPH_CHECK(o->dir != NULL, CLSPH_E_NOMEM, "out of memory");
   if (opt->frames != NULL) CLSPH_TRY(snapshot_open_frames(sim, opt->frames, opt->out_dir, o));
-  if (opt->restart != NULL) CLSPH_TRY(checkpoint_restore(sim, opt->restart, o));
+  if (here) CLSPH_TRY(out_drop_after(opt->out_dir, o->nsnap, sim->step));
   CLSPH_TRY(series_open(sim, o, opt->restart));
   if (opt->restart == NULL) CLSPH_TRY(snapshot_write(sim, o));
 done:

@@ -11,6 +11,7 @@
 struct loop_options {
   const char *out_dir;              /* output folder (created) */
   const char *restart;              /* checkpoint to continue from, or NULL */
+  int overwrite;                    /* clear the outputs of an earlier run in out_dir */
   int quiet;                        /* no progress line */
   const struct frames_opts *frames; /* a frame per snapshot and a movie (frames.h), or NULL */
 };

@@ -33,6 +33,15 @@ struct run_out {
 
 /** @brief `dir/name` into a malloc'd *path (the caller frees it). */
 enum clsph_status out_path(const struct run_out *o, const char *name, char **path);
+/** @brief May a run write into `dir`? Yes when it holds no outputs of a run; with `overwrite`,
+ *  after removing them (refused when they hold the checkpoint `restart` continues from); when
+ *  `restart` (NULL: none) is a checkpoint in that folder, the run continues it there (*here
+ *  = 1; out_drop_after then removes what came after it). Otherwise refused, saying what to do. */
+enum clsph_status out_claim_dir(const char *dir, const char *restart, int overwrite, int *here);
+/** @brief A run continued in its own folder: remove the snapshots numbered from nsnap on, the
+ *  checkpoints after step `step`, their frames, the movies and unfinished files (they belong to
+ *  the abandoned continuation; the CSV series drop their rows by themselves, series.c). */
+enum clsph_status out_drop_after(const char *dir, long nsnap, long step);
 /** @brief Create the folder (and its parents) and prove it can be written, before anything runs. */
 enum clsph_status out_prepare_dir(const char *dir);
 /** @brief Close every file and free what the run's outputs hold. */

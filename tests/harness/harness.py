@@ -133,7 +133,9 @@ def run_one(exe, case, sets, out, device, timeout, rerun, collect_only):
             return s, "reused"
     if collect_only:
         return None, "missing"
-    cmd = [exe, "run", os.path.join(ROOT, "cases", case + ".lua"), "--out", out, "--quiet"]
+    # the harness decides what to reuse: a run it starts replaces what the folder held
+    cmd = [exe, "run", os.path.join(ROOT, "cases", case + ".lua"), "--out", out, "--quiet",
+           "--overwrite"]
     for k, v in sets:
         cmd += ["--set", f"{k}={v}"]
     if device is not None:

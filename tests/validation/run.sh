@@ -11,7 +11,7 @@ run() { # name case sets...
   shift 2
   local args=()
   for s in "$@"; do args+=(--set "$s"); done
-  "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet --profile || true
+  "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet --profile --overwrite || true
 }
 run hydrostatic_isph_usaw hydrostatic
 run hydrostatic_wcsph_usaw hydrostatic wcsph=1
@@ -38,7 +38,7 @@ run cavity_re400_n200_isph_usaw cavity re=400 n=200 t_end=30 checkpoint=1
 run cavity_re1000_n240_isph_usaw cavity re=1000 n=240 t_end=30 checkpoint=1
 # the cost of the paper's Re = 1000 resolution: 0.02 s (30 steps) of 240², profiled
 "$build/clsph" run cases/cavity.lua --set re=1000 --set n=240 --set t_end=0.02 --profile \
-  --out "$out/cavity_re1000_n240_cost_probe" --quiet || true
+  --out "$out/cavity_re1000_n240_cost_probe" --quiet --overwrite || true
 python3 tests/validation/cavity_pressure.py "$out/cavity_re400_n60_isph_usaw" \
   "$out/cavity_re400_n60_wcsph_usaw" tests/validation/cavity_re400_pressure || true
 # square cylinder, Re = 1 (Hosseini & Feng sec 4.3): C_D at H/40 and H/80, both projections
