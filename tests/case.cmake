@@ -87,7 +87,7 @@ clsph_cli_test(case_output_too_many ARGS run ${CASE_DIR}/bad_output_every.lua --
 clsph_cli_test(case_missing_file ARGS info ${CASE_DIR}/no_such_case.lua RC 2
                REGEX "cannot read case .*no_such_case.lua: No such file")
 clsph_cli_test(case_folder ARGS run ${CASE_DIR} RC 2 REGEX "case .*/case is a folder: name a case script")
-clsph_cli_test(case_unwritable_out RC nonzero
+clsph_cli_test(case_unwritable_out RC 1
                ARGS run ${CMAKE_SOURCE_DIR}/cases/free_fall.lua --out /proc/clsph-cannot-write
                REGEX "output folder /proc/clsph-cannot-write cannot be")
 
@@ -129,6 +129,12 @@ clsph_add_test(long_out LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FI
 clsph_add_test(out_reuse LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
                -DCASE=${CASE_DIR}/outputs.lua -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/out_reuse
                -P ${CASE_DIR}/out_reuse.cmake)
+if(Python3_Interpreter_FOUND)
+  clsph_add_test(restart_scene LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
+                 -DCASE=${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua -DPYTHON=${Python3_EXECUTABLE}
+                 -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart_scene
+                 -P ${CASE_DIR}/restart_scene.cmake)
+endif()
 clsph_add_test(restart_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
                -DCASE_A=${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua
                -DCASE_B=${CMAKE_SOURCE_DIR}/cases/free_fall.lua

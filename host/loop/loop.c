@@ -95,6 +95,7 @@ static enum clsph_status start(struct sim *sim, const struct loop_options *opt, 
   CLSPH_CHECK(o->dir != NULL, CLSPH_E_NOMEM, "out of memory");
   if (opt->frames != NULL) CLSPH_TRY(snapshot_open_frames(sim, opt->frames, opt->out_dir, o));
   if (here) CLSPH_TRY(out_drop_after(opt->out_dir, o->nsnap, sim->step));
+  if (opt->restart != NULL) CLSPH_TRY(snapshot_resume_index(o, opt->restart));
   CLSPH_TRY(series_open(sim, o, opt->restart));
   if (opt->restart == NULL) CLSPH_TRY(snapshot_write(sim, o));
 done:
@@ -232,6 +233,7 @@ enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
     if (sim->scene->flow.on) CLSPH_TRY(sim_flow_control(sim, dt, o.flow));
     CLSPH_TRY(sim->scheme->step(sim, sim->state, dt));
     advance(sim, dt, target, lands);
+    sim->wall = progress_now() - wall0; /* checkpoints record it */
     CLSPH_TRY(check_and_write(sim, &o, dt, lands));
     progress_show(sim, &pr, 0);
   }

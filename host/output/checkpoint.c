@@ -60,12 +60,56 @@ done:
   return st;
 }
 
+/* The figures of the whole run that summary.json reports (solver iterations, wall crossings,
+ * the health checks' worst values, the wall-clock time so far): a checkpoint carries them, so
+ * that the summary of a restarted run describes the whole run. */
+enum { NSTATS = 15 };
+struct run_stats {
+  const char *names[NSTATS];
+  double values[NSTATS];
+  long *l[NSTATS]; /* the field of struct sim each names (a long or a double) */
+  double *d[NSTATS];
+};
+
+static void stats_of(struct sim *sim, struct run_stats *r)
+{
+  int k = 0;
+  memset(r, 0, sizeof *r);
+#define STAT_L(field) r->names[k] = #field, r->l[k++] = &sim->field
+#define STAT_D(field) r->names[k] = #field, r->d[k++] = &sim->field
+  STAT_L(solver_its_sum);
+  STAT_L(solver_its_max);
+  STAT_L(solver_steps);
+  STAT_L(aux_its_sum);
+  STAT_L(open_waiting_max);
+  STAT_L(wall_steps);
+  STAT_L(wall_most);
+  STAT_L(wall_first_step);
+  STAT_D(wall_first_time);
+  STAT_D(wall_depth_max);
+  STAT_L(health_checks);
+  STAT_D(energy_ratio_max);
+  STAT_D(spacing_min);
+  STAT_D(cluster_max);
+  STAT_D(wall_before); /* the wall-clock seconds of the run up to the checkpoint */
+#undef STAT_L
+#undef STAT_D
+  for (int i = 0; i < NSTATS; ++i) r->values[i] = r->l[i] != NULL ? (double)*r->l[i] : *r->d[i];
+}
+
 enum clsph_status checkpoint_write(struct sim *sim, struct run_out *o)
 {
   enum clsph_status st = CLSPH_OK;
   char name[64], *path = NULL;
   struct io_meta m;
+  struct run_stats rs;
   snapshot_meta(sim, &m);
+  m.digest = sim->digest;
+  stats_of(sim, &rs);
+  rs.values[NSTATS - 1] = sim->wall_before + sim->wall; /* up to now */
+  m.nstats = NSTATS;
+  m.stat_names = rs.names;
+  m.stats = rs.values;
   snprintf(name, sizeof name, "checkpoint_%06ld.h5", sim->step);
   CLSPH_TRY(out_path(o, name, &path));
   /* the flow-rate control's state and the scheme's host state travel in the blob, so a restart
@@ -85,12 +129,28 @@ enum clsph_status checkpoint_restore(struct sim *sim, const char *path, struct r
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
   struct io_meta expect, got;
+  struct run_stats rs;
   void *blob = NULL;
   size_t blob_bytes = 0;
   snapshot_meta(sim, &expect);
+  expect.digest = sim->digest;
   memset(&got, 0, sizeof got);
+  stats_of(sim, &rs);
+  expect.nstats = NSTATS;
+  expect.stat_names = rs.names;
+  expect.stats = rs.values;
   CLSPH_TRY(io_checkpoint_read(path, sim->dev, &sim->ps, &expect, &got, &blob, &blob_bytes));
   CLSPH_TRY(restore_blob(sim, path, blob, blob_bytes));
+  if (got.stats_read == NSTATS) {
+    for (int k = 0; k < NSTATS; ++k) {
+      if (rs.l[k] != NULL) *rs.l[k] = (long)rs.values[k];
+      if (rs.d[k] != NULL) *rs.d[k] = rs.values[k];
+    }
+  } else {
+    log_warn("%s carries %d of the %d figures of the run before it (written by an older clsph): "
+             "summary.json's solver, wall-crossing and health figures start from the checkpoint",
+             path, got.stats_read, NSTATS);
+  }
   sim->body_force[0] = s->flow.on ? sim->flow.force : s->body_force[0];
   sim->time = got.time;
   sim->step = got.step;

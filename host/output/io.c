@@ -38,6 +38,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zlib.h>
 
 #include "clsph_config.h"
 #include "kern.h"
@@ -280,6 +281,32 @@ done:
   return st;
 }
 
+/* CRC-32 (zlib) of n bytes. */
+static uint32_t crc_of(const void *data, size_t n)
+{
+  const unsigned char *b = data;
+  uLong c = crc32(0L, Z_NULL, 0);
+  while (n > 0) { /* zlib takes at most UINT_MAX bytes a call */
+    const uInt k = n > 0x40000000u ? 0x40000000u : (uInt)n;
+    c = crc32(c, b, k);
+    b += k;
+    n -= k;
+  }
+  return (uint32_t)c;
+}
+
+/* The checkpoint's scalars under one checksum: time, step, dt, n and the scene digest. */
+static uint32_t meta_crc(double time, int64_t step, double dt, uint64_t n, uint64_t digest)
+{
+  unsigned char b[40];
+  memcpy(b, &time, 8);
+  memcpy(b + 8, &step, 8);
+  memcpy(b + 16, &dt, 8);
+  memcpy(b + 24, &n, 8);
+  memcpy(b + 32, &digest, 8);
+  return crc_of(b, sizeof b);
+}
+
 /* Root attributes and the /parameters group, common to snapshots and checkpoints. */
 static enum clsph_status write_meta(hid_t file, const struct io_meta *m, size_t n, const char *path)
 {
@@ -310,9 +337,10 @@ done:
   return st;
 }
 
-/* A dataset of n rows of ncomp values: shape (n) when ncomp is 1, else (n, ncomp). */
+/* A dataset of n rows of ncomp values: shape (n) when ncomp is 1, else (n, ncomp); with
+ * `bytes` > 0, an attribute "crc32", the CRC-32 of its `bytes` bytes (checkpoints). */
 static enum clsph_status write_dataset(hid_t loc, const char *name, hid_t type, size_t n, int ncomp,
-                                       const void *data, const char *path)
+                                       const void *data, size_t bytes, const char *path)
 {
   enum clsph_status st = CLSPH_OK;
   hid_t space = H5I_INVALID_HID, dset = H5I_INVALID_HID;
@@ -320,6 +348,10 @@ static enum clsph_status write_dataset(hid_t loc, const char *name, hid_t type, 
   IO_H5(space = H5Screate_simple(ncomp == 1 ? 1 : 2, dims, NULL), path);
   IO_H5(dset = H5Dcreate2(loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path);
   IO_H5(H5Dwrite(dset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), path);
+  if (bytes > 0) {
+    const uint32_t crc = crc_of(data, bytes);
+    CLSPH_TRY(attr_write(dset, "crc32", H5T_NATIVE_UINT32, &crc, path));
+  }
   CLSPH_TRY(h5_close_checked(&dset, path));
 done:
   h5_close_id(&dset);
@@ -341,7 +373,7 @@ static enum clsph_status write_frame_meta(hid_t file, const struct io_meta *m, c
       const struct scene_wall *sw = &m->walls[w];
       const int32_t closed = sw->closed != 0;
       snprintf(name, sizeof name, "wall_%03d", w);
-      CLSPH_TRY(write_dataset(grp, name, H5T_NATIVE_DOUBLE, (size_t)sw->npts, 2, sw->pts, path));
+      CLSPH_TRY(write_dataset(grp, name, H5T_NATIVE_DOUBLE, (size_t)sw->npts, 2, sw->pts, 0, path));
       IO_H5(dset = H5Dopen2(grp, name, H5P_DEFAULT), path);
       CLSPH_TRY(attr_write(dset, "closed", H5T_NATIVE_INT32, &closed, path));
       CLSPH_TRY(h5_close_checked(&dset, path));
@@ -410,13 +442,13 @@ enum clsph_status io_snapshot_write(const char *path, const struct dev *dev, con
     CLSPH_TRY(read_field(dev, ps, f, h));
     if (f->nout < f->ncomp)
       for (size_t i = 0; i < ps->n; ++i) memmove(h + i * row, h + i * f->elem, row);
-    CLSPH_TRY(write_dataset(grp, f->name, field_h5_type(f), ps->n, f->nout, h, path));
+    CLSPH_TRY(write_dataset(grp, f->name, field_h5_type(f), ps->n, f->nout, h, 0, path));
   }
   CLSPH_TRY(h5_close_checked(&grp, path));
 
   /* the vertex list of the XDMF topology */
   for (size_t i = 0; i < ps->n; ++i) vertex[i] = (int32_t)i;
-  CLSPH_TRY(write_dataset(file, "topology", H5T_NATIVE_INT32, ps->n, 1, vertex, path));
+  CLSPH_TRY(write_dataset(file, "topology", H5T_NATIVE_INT32, ps->n, 1, vertex, 0, path));
   CLSPH_TRY(write_frame_meta(file, m, path));
 
   CLSPH_TRY(h5_close_checked(&file, path));
@@ -452,18 +484,29 @@ enum clsph_status io_checkpoint_write(const char *path, const struct dev *dev,
   IO_H5(file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), path);
   CLSPH_TRY(attr_write(file, "clsph_checkpoint", H5T_NATIVE_INT32, &one, path));
   CLSPH_TRY(write_meta(file, m, ps->n, path));
+  /* the scene's digest, the whole run's figures, a checksum of the scalars */
+  const uint64_t digest = (uint64_t)m->digest;
+  const uint32_t mcrc =
+      meta_crc(m->time, (int64_t)m->step, m->dt, (uint64_t)ps->n, (uint64_t)m->digest);
+  CLSPH_TRY(attr_write(file, "scene_digest", H5T_NATIVE_UINT64, &digest, path));
+  CLSPH_TRY(attr_write(file, "meta_crc32", H5T_NATIVE_UINT32, &mcrc, path));
+  IO_H5(grp = H5Gcreate2(file, "statistics", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path);
+  for (int k = 0; k < m->nstats; ++k)
+    CLSPH_TRY(attr_write(grp, m->stat_names[k], H5T_NATIVE_DOUBLE, &m->stats[k], path));
+  CLSPH_TRY(h5_close_checked(&grp, path));
 
   /* every field, every component, in the native types: the bytes come back unchanged */
   IO_H5(grp = H5Gcreate2(file, "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path);
   for (int k = 0; k < ps->nfields; ++k) {
     const struct pfield *f = &ps->f[k];
     CLSPH_TRY(read_field(dev, ps, f, h));
-    CLSPH_TRY(write_dataset(grp, f->name, field_h5_type(f), ps->n, f->ncomp, h, path));
+    CLSPH_TRY(
+        write_dataset(grp, f->name, field_h5_type(f), ps->n, f->ncomp, h, ps->n * f->elem, path));
   }
   CLSPH_TRY(h5_close_checked(&grp, path));
 
   if (blob_bytes > 0)
-    CLSPH_TRY(write_dataset(file, "blob", H5T_NATIVE_UINT8, blob_bytes, 1, blob, path));
+    CLSPH_TRY(write_dataset(file, "blob", H5T_NATIVE_UINT8, blob_bytes, 1, blob, blob_bytes, path));
 
   CLSPH_TRY(h5_close_checked(&file, path));
   CLSPH_TRY(commit(tmp, path));
@@ -762,8 +805,29 @@ static const char *class_name(H5T_class_t cls, hid_t type)
 }
 
 /* Does the dataset of field f match it (type, component size, components)? Reads its rows. */
+/* The dataset's "crc32" against the CRC-32 of the `bytes` bytes read from it: a mismatch is a
+ * refusal naming `what`; *unchecked counts datasets without one (older checkpoints). */
+static enum clsph_status check_crc(hid_t dset, const void *data, size_t bytes, const char *what,
+                                   int *unchecked, const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  uint32_t stored = 0;
+  int found = 0;
+  CLSPH_TRY(attr_read(dset, "crc32", H5T_NATIVE_UINT32, &stored, &found, path));
+  if (!found) {
+    ++*unchecked;
+    goto done;
+  }
+  const uint32_t got = crc_of(data, bytes);
+  IO_REFUSE(got == stored,
+            "%s is damaged: %s fails its checksum (CRC-32 %08lx recorded, %08lx read)", path, what,
+            (unsigned long)stored, (unsigned long)got);
+done:
+  return st;
+}
+
 static enum clsph_status read_field_dataset(hid_t grp, const struct pfield *f, size_t n, void *h,
-                                            const char *path)
+                                            int *unchecked, const char *path)
 {
   enum clsph_status st = CLSPH_OK;
   hid_t dset = H5I_INVALID_HID, space = H5I_INVALID_HID, type = H5I_INVALID_HID;
@@ -809,6 +873,8 @@ static enum clsph_status read_field_dataset(hid_t grp, const struct pfield *f, s
   }
   IO_DAMAGED(mem = H5Tget_native_type(type, H5T_DIR_ASCEND));
   IO_DAMAGED(H5Dread(dset, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, h));
+  snprintf(why, sizeof why, "field '%s'", f->name);
+  CLSPH_TRY(check_crc(dset, h, n * f->elem, why, unchecked, path));
 done:
   h5_close_id(&mem);
   h5_close_id(&type);
@@ -818,7 +884,8 @@ done:
 }
 
 /* The blob, or NULL and 0 when the checkpoint has none. */
-static enum clsph_status read_blob(hid_t file, void **out, size_t *bytes, const char *path)
+static enum clsph_status read_blob(hid_t file, void **out, size_t *bytes, int *unchecked,
+                                   const char *path)
 {
   enum clsph_status st = CLSPH_OK;
   hid_t dset = H5I_INVALID_HID, space = H5I_INVALID_HID;
@@ -838,6 +905,7 @@ static enum clsph_status read_blob(hid_t file, void **out, size_t *bytes, const 
   b = malloc(dims[0] > 0 ? (size_t)dims[0] : 1);
   CLSPH_CHECK(b != NULL, CLSPH_E_NOMEM, "out of memory reading %s", path);
   IO_DAMAGED(H5Dread(dset, H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, b));
+  CLSPH_TRY(check_crc(dset, b, (size_t)dims[0], "the state blob", unchecked, path));
   *bytes = (size_t)dims[0];
   *out = b;
   b = NULL;
@@ -845,6 +913,98 @@ done:
   free(b);
   h5_close_id(&space);
   h5_close_id(&dset);
+  return st;
+}
+
+/* H5Aiterate2: the first attribute name that `expect` does not declare (t_end aside). */
+struct extra_param {
+  const struct io_meta *expect;
+  char name[64];
+};
+
+static herr_t find_extra(hid_t loc, const char *name, const H5A_info_t *info, void *data)
+{
+  (void)loc;
+  (void)info;
+  struct extra_param *x = data;
+  if (strcmp(name, "t_end") == 0) return 0;
+  for (int i = 0; i < x->expect->nparams; ++i)
+    if (strcmp(x->expect->params[i].name, name) == 0) return 0;
+  snprintf(x->name, sizeof x->name, "%s", name);
+  return 1;
+}
+
+/* The scene of the checkpoint is the scene of this run: the same parameters (t_end may change:
+ * a restart may run further) and the same digest (geometry_digest) when both have one. */
+static enum clsph_status check_scene(hid_t file, const struct io_meta *expect, uint64_t digest,
+                                     int has_digest, const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  hid_t grp = H5I_INVALID_HID;
+  htri_t exists;
+  IO_DAMAGED(exists = H5Lexists(file, "parameters", H5P_DEFAULT));
+  IO_REFUSE(exists, "%s records no parameters: it is not a clsph checkpoint", path);
+  IO_DAMAGED(grp = H5Gopen2(file, "parameters", H5P_DEFAULT));
+  for (int i = 0; i < expect->nparams; ++i) {
+    const struct scene_param *p = &expect->params[i];
+    double v = 0.0;
+    int found = 0;
+    if (strcmp(p->name, "t_end") == 0) continue;
+    CLSPH_TRY(attr_read(grp, p->name, H5T_NATIVE_DOUBLE, &v, &found, path));
+    IO_REFUSE(found,
+              "%s comes from another scene: its run declares no parameter '%s' (this run: %s = "
+              "%.10g); a restart continues the same scene, only t_end may change",
+              path, p->name, p->name, p->value);
+    IO_REFUSE(v == p->value,
+              "%s comes from another scene: its run had %s = %.10g, this run %s = %.10g; a "
+              "restart continues the same scene, only t_end may change",
+              path, p->name, v, p->name, p->value);
+  }
+  struct extra_param x = {expect, ""};
+  hsize_t at = 0;
+  IO_DAMAGED(H5Aiterate2(grp, H5_INDEX_NAME, H5_ITER_INC, &at, find_extra, &x));
+  IO_REFUSE(x.name[0] == '\0',
+            "%s comes from another scene: its run has a parameter '%s' that this case does not "
+            "declare",
+            path, x.name);
+  if (has_digest && expect->digest != 0)
+    IO_REFUSE(digest == (uint64_t)expect->digest,
+              "%s comes from another scene: the parameters agree, but the particles, walls, "
+              "domain, fluid or scheme options differ from the checkpoint's run (was the case "
+              "file changed?)",
+              path);
+  else
+    log_warn("%s records no digest of its scene (written by an older clsph): only its "
+             "parameters were compared",
+             path);
+done:
+  h5_close_id(&grp);
+  return st;
+}
+
+/* The statistics the caller asks for (ask->stat_names, into ask->stats), from the group
+ * "statistics"; how many into *count. */
+static enum clsph_status read_stats(hid_t file, const struct io_meta *ask, int *count,
+                                    const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  hid_t grp = H5I_INVALID_HID;
+  htri_t exists;
+  *count = 0;
+  if (ask == NULL || ask->nstats == 0) goto done;
+  IO_DAMAGED(exists = H5Lexists(file, "statistics", H5P_DEFAULT));
+  if (!exists) goto done;
+  IO_DAMAGED(grp = H5Gopen2(file, "statistics", H5P_DEFAULT));
+  for (int k = 0; k < ask->nstats; ++k) {
+    int found = 0;
+    double v = 0.0;
+    CLSPH_TRY(attr_read(grp, ask->stat_names[k], H5T_NATIVE_DOUBLE, &v, &found, path));
+    if (!found) continue;
+    ask->stats[k] = v;
+    ++*count;
+  }
+done:
+  h5_close_id(&grp);
   return st;
 }
 
@@ -862,7 +1022,10 @@ enum clsph_status io_checkpoint_read(const char *path, const struct dev *dev, st
   uint64_t n64 = 0;
   int64_t step = 0;
   double time = 0.0, dt = 0.0;
-  int found = 0, found_step = 0, found_time = 0, found_dt = 0;
+  int found = 0, found_step = 0, found_time = 0, found_dt = 0, has_digest = 0, unchecked = 0;
+  int stats_read = 0;
+  uint64_t digest = 0;
+  uint32_t mcrc = 0;
   htri_t is;
   FILE *probe = NULL;
   const char *want_precision =
@@ -904,6 +1067,19 @@ enum clsph_status io_checkpoint_read(const char *path, const struct dev *dev, st
     st = CLSPH_E_INPUT;
     goto done;
   }
+  CLSPH_TRY(attr_read(file, "scene_digest", H5T_NATIVE_UINT64, &digest, &has_digest, path));
+  CLSPH_TRY(attr_read(file, "meta_crc32", H5T_NATIVE_UINT32, &mcrc, &found, path));
+  if (found) {
+    const uint32_t got = meta_crc(time, step, dt, n64, has_digest ? digest : 0);
+    IO_REFUSE(got == mcrc,
+              "%s is damaged: its time, step, dt or particle count fails its checksum (CRC-32 "
+              "%08lx recorded, %08lx read)",
+              path, (unsigned long)mcrc, (unsigned long)got);
+  } else {
+    ++unchecked;
+  }
+  if (expect != NULL && expect->params != NULL)
+    CLSPH_TRY(check_scene(file, expect, digest, has_digest, path));
   IO_REFUSE(n64 <= (uint64_t)ps->cap, "%s holds %llu particles; this run has room for %zu", path,
             (unsigned long long)n64, ps->cap);
   n = (size_t)n64;
@@ -913,9 +1089,14 @@ enum clsph_status io_checkpoint_read(const char *path, const struct dev *dev, st
   for (int k = 0; k < ps->nfields; ++k) {
     h[k] = malloc(n > 0 ? n * ps->f[k].elem : 1);
     CLSPH_CHECK(h[k] != NULL, CLSPH_E_NOMEM, "out of memory reading %s", path);
-    CLSPH_TRY(read_field_dataset(grp, &ps->f[k], n, h[k], path));
+    CLSPH_TRY(read_field_dataset(grp, &ps->f[k], n, h[k], &unchecked, path));
   }
-  CLSPH_TRY(read_blob(file, &b, &bbytes, path));
+  CLSPH_TRY(read_blob(file, &b, &bbytes, &unchecked, path));
+  CLSPH_TRY(read_stats(file, expect, &stats_read, path));
+  if (unchecked > 0)
+    log_warn("%s carries no checksums on %d of its datasets (written by an older clsph): they "
+             "were read unchecked",
+             path, unchecked);
 
   /* accepted: to the device */
   for (int k = 0; k < ps->nfields && n > 0; ++k)
@@ -924,6 +1105,7 @@ enum clsph_status io_checkpoint_read(const char *path, const struct dev *dev, st
   m->time = time;
   m->step = (long)step;
   m->dt = dt;
+  m->stats_read = stats_read;
   *blob = b;
   *blob_bytes = bbytes;
   b = NULL; /* the caller owns it */

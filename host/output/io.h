@@ -25,6 +25,15 @@ struct io_meta {
   const struct scene_wall *walls; /* the wall polylines */
   int nwalls;
   const struct scene_render *render; /* the case's render { } choices */
+  /* checkpoints only */
+  unsigned long digest; /* geometry_digest of the scene (0: not recorded) */
+  int nstats;           /* figures of the whole run so far (summary.json's worst and
+                         * total values), by name: written from `stats`; a read fills
+                         * `stats` of its `expect` with the ones the checkpoint has and
+                         * counts them in the stats_read of its `m` */
+  const char *const *stat_names;
+  double *stats;
+  int stats_read;
 };
 
 /** A particle dataset of a snapshot read as doubles (io_snapshot_read). */
@@ -94,12 +103,17 @@ enum clsph_status io_checkpoint_write(const char *path, const struct dev *dev,
                                       const struct pset *ps, const struct io_meta *m,
                                       const void *blob, size_t blob_bytes);
 /** @brief Read a checkpoint into `ps` (whose fields, by name and size, must match). Refuses, with
- *  the reason, a file that is not a clsph checkpoint, is truncated, or comes from another case
- *  (`expect->case_name`; NULL: any) or precision (`expect->precision`; NULL: this build's), has
- *  more particles than `ps->cap`, or lacks a field of `ps` or stores it with another element
- *  type or size. A refusal is CLSPH_E_INPUT with one message, and leaves `ps` untouched. On
- *  success `ps->n` and every field on the device are those of the checkpoint.
- *  @param m    receives time, step and dt (strings in it are not touched)
+ *  the reason, a file that is not a clsph checkpoint, is truncated, or fails a checksum (each
+ *  dataset's CRC-32, and one over time, step, dt, n and the digest), comes from another case
+ *  (`expect->case_name`; NULL: any), another scene (a parameter of `expect->params` other than
+ *  t_end differs, is missing or is extra, naming it; then `expect->digest`, when not 0; params
+ *  NULL: not compared) or
+ *  precision (`expect->precision`; NULL: this build's), has more particles than `ps->cap`, or
+ *  lacks a field of `ps` or stores it with another element type or size. A refusal is
+ *  CLSPH_E_INPUT with one message, and leaves `ps` untouched. On success `ps->n` and every field
+ *  on the device are those of the checkpoint. A checkpoint of an older clsph without checksums,
+ *  digest or statistics is accepted with a warning.
+ *  @param m    receives time, step, dt and stats_read (nothing else in it is touched)
  *  @param blob receives a malloc'd copy of the blob (NULL when empty) */
 enum clsph_status io_checkpoint_read(const char *path, const struct dev *dev, struct pset *ps,
                                      const struct io_meta *expect, struct io_meta *m, void **blob,

@@ -1,14 +1,17 @@
 /* snapshot.c: the HDF5 snapshots of a run with their XDMF index, and a frame with each snapshot
  * (--frames), drawn from a host copy of the device state. */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include "snapshot.h"
 
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "scheme.h"
 #include "clsph_config.h"
 #include "kern.h"
 #include "series.h"
+#include "str.h"
 /* The fields a frame can show: the output fields, by name and components. */
 int snapshot_frame_fields(const struct sim *sim, const char **names, int *ncomp)
 {
@@ -148,5 +151,49 @@ enum clsph_status snapshot_write(struct sim *sim, struct run_out *o)
   ++o->nsnap;
 done:
   free(path);
+  return st;
+}
+
+enum clsph_status snapshot_resume_index(struct run_out *o, const char *restart)
+{
+  enum clsph_status st = CLSPH_OK;
+  static const char *const nothing[] = {NULL};
+  const char *slash = strrchr(restart, '/');
+  char *ckdir =
+      slash == NULL ? str_printf(".") : str_printf("%.*s", (int)(slash - restart), restart);
+  char *path = NULL, *name = NULL, *ckreal = NULL, *outreal = NULL;
+  struct io_snapshot snap;
+  memset(&snap, 0, sizeof snap);
+  CLSPH_CHECK(ckdir != NULL, CLSPH_E_NOMEM, "out of memory");
+  ckreal = realpath(ckdir, NULL);
+  outreal = realpath(o->dir, NULL);
+  const int here = ckreal != NULL && outreal != NULL && strcmp(ckreal, outreal) == 0;
+  int missing = 0;
+  for (int k = 0; k < o->nsnap; ++k) {
+    free(path);
+    free(name);
+    path = str_printf("%s/snap_%06d.h5", ckreal != NULL ? ckreal : ckdir, k);
+    /* in the run's own folder by name; elsewhere by the whole path, which ParaView follows */
+    name = here ? str_printf("snap_%06d.h5", k) : str_printf("%s", path != NULL ? path : "");
+    CLSPH_CHECK(path != NULL && name != NULL, CLSPH_E_NOMEM, "out of memory");
+    if (access(path, R_OK) != 0) {
+      ++missing;
+      continue;
+    }
+    CLSPH_TRY(io_snapshot_read(path, nothing, &snap));
+    CLSPH_TRY(io_series_add(&o->series, name, snap.time, snap.n));
+    io_snapshot_free(&snap);
+  }
+  if (missing > 0)
+    log_warn("%d of the %d snapshots before the checkpoint are not in %s: snapshots.xdmf lists "
+             "the others",
+             missing, o->nsnap, ckdir);
+done:
+  io_snapshot_free(&snap);
+  free(outreal);
+  free(ckreal);
+  free(name);
+  free(path);
+  free(ckdir);
   return st;
 }

@@ -19,4 +19,9 @@ void snapshot_meta(const struct sim *sim, struct io_meta *m);
  *  the series that go with it. */
 enum clsph_status snapshot_write(struct sim *sim, struct run_out *o);
 
+/** @brief A run continued from the checkpoint `restart`: the snapshots before it (numbers
+ *  0 .. o->nsnap − 1 in the checkpoint's folder) go into the index first, so that
+ *  snapshots.xdmf lists the whole run (by name in the same folder, else by their whole path). */
+enum clsph_status snapshot_resume_index(struct run_out *o, const char *restart);
+
 #endif /* CLSPH_SNAPSHOT_H */

@@ -57,7 +57,10 @@ enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double
   cJSON_AddNumberToObject(root, "steps", (double)sim->step);
   cJSON_AddNumberToObject(root, "sim_time", sim->time);
   /* wall time and rate of this run: a restarted one counts from its checkpoint */
-  if (sim->step0 > 0) cJSON_AddNumberToObject(root, "restarted_at_step", (double)sim->step0);
+  if (sim->step0 > 0) {
+    cJSON_AddNumberToObject(root, "restarted_at_step", (double)sim->step0);
+    cJSON_AddNumberToObject(root, "wall_seconds_whole_run", sim->wall_before + wall);
+  }
   cJSON_AddNumberToObject(root, "wall_seconds", wall);
   cJSON_AddNumberToObject(root, "particle_steps_per_second",
                           wall > 0.0 ? (double)sim->ps.n * (double)(sim->step - sim->step0) / wall

@@ -271,6 +271,11 @@ done:
 void dev_close(struct dev *dev)
 {
   kern_profile_free(&dev->profile);
+  /* what was enqueued runs to its end first: a run that stops early (a refused restart, a
+   * blow-up) would otherwise exit while PoCL's threads still compile or run its kernels, which
+   * crashed the process at exit */
+  if (dev->queue != NULL && clFinish(dev->queue) != CL_SUCCESS)
+    log_warn("clFinish at exit failed: the device may have been lost");
   if (dev->queue != NULL) clReleaseCommandQueue(dev->queue);
   if (dev->ctx != NULL) clReleaseContext(dev->ctx);
   dev->queue = NULL;

@@ -1043,6 +1043,11 @@ static int cmp_param(const void *a, const void *b)
   return strcmp(((const struct scene_param *)a)->name, ((const struct scene_param *)b)->name);
 }
 
+static int cmp_option(const void *a, const void *b)
+{
+  return strcmp(((const struct scene_option *)a)->key, ((const struct scene_option *)b)->key);
+}
+
 /* After the script: what must be there, and --set names nobody declared. */
 static enum clsph_status finish(const char *path, struct loader *ld)
 {
@@ -1077,6 +1082,8 @@ static enum clsph_status finish(const char *path, struct loader *ld)
                 s->periodic[0] ? " (periodic: be narrower than the period)" : "");
   }
   qsort(s->params, (size_t)s->nparams, sizeof *s->params, cmp_param);
+  /* by name: Lua visits a table's keys in an order that changes from run to run */
+  qsort(s->options, (size_t)s->noptions, sizeof *s->options, cmp_option);
 done:
   free(names);
   return st;

@@ -53,6 +53,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zlib.h>
 
 static const double geom_pi = 3.14159265358979323846;
 static const double max_lattice = 1e9;   /* lattice points one scan may visit */
@@ -1188,4 +1189,57 @@ void geometry_free(struct geom *g)
   free(g->seg_len);
   free(g->seg_wall);
   memset(g, 0, sizeof *g);
+}
+
+/* CRC-32 of n bytes, continued from crc. */
+static unsigned long digest_bytes(unsigned long crc, const void *p, size_t n)
+{
+  const unsigned char *b = p;
+  while (n > 0) { /* zlib takes at most UINT_MAX bytes a call */
+    const uInt k = n > 0x40000000u ? 0x40000000u : (uInt)n;
+    crc = crc32(crc, b, k);
+    b += k;
+    n -= k;
+  }
+  return crc;
+}
+
+unsigned long geometry_digest(const struct scene *s, const struct geom *g)
+{
+  unsigned long c = crc32(0L, Z_NULL, 0);
+  c = digest_bytes(c, &g->n, sizeof g->n);
+  c = digest_bytes(c, g->x, 2 * g->n * sizeof *g->x);
+  c = digest_bytes(c, g->v, 2 * g->n * sizeof *g->v);
+  c = digest_bytes(c, g->kind, g->n * sizeof *g->kind);
+  c = digest_bytes(c, g->group, g->n * sizeof *g->group);
+  c = digest_bytes(c, &g->nseg, sizeof g->nseg);
+  c = digest_bytes(c, g->seg_v, 2 * g->nseg * sizeof *g->seg_v);
+  c = digest_bytes(c, g->seg_len, g->nseg * sizeof *g->seg_len);
+  const double phys[] = {
+      s->lo[0],       s->lo[1],      s->hi[0],         s->hi[1],         s->periodic[0],
+      s->periodic[1], s->dr,         s->h_over_dr,     s->rho0,          s->nu,
+      s->gravity[0],  s->gravity[1], s->body_force[0], s->body_force[1], s->flow.velocity,
+      s->flow.on};
+  c = digest_bytes(c, phys, sizeof phys);
+  c = digest_bytes(c, s->smoothing, strlen(s->smoothing));
+  c = digest_bytes(c, s->scheme, strlen(s->scheme));
+  for (int i = 0; i < s->noptions; ++i) {
+    const struct scene_option *o = &s->options[i];
+    c = digest_bytes(c, o->key, strlen(o->key));
+    c = o->is_number ? digest_bytes(c, &o->number, sizeof o->number)
+                     : digest_bytes(c, o->text, strlen(o->text));
+  }
+  for (int w = 0; w < s->nwalls; ++w) {
+    const struct scene_wall *wl = &s->walls[w];
+    const double m[] = {wl->motion,    wl->velocity[0], wl->velocity[1],
+                        wl->centre[0], wl->centre[1],   wl->omega};
+    c = digest_bytes(c, m, sizeof m);
+  }
+  for (int k = 0; k < s->nsections; ++k) {
+    const struct scene_section *sc = &s->sections[k];
+    const double q[] = {sc->kind, sc->profile, sc->velocity, sc->layers,
+                        sc->a[0], sc->a[1],    sc->b[0],     sc->b[1]};
+    c = digest_bytes(c, q, sizeof q);
+  }
+  return c;
 }

@@ -46,6 +46,11 @@ struct geom {
  *          CLSPH_E_NOMEM */
 enum clsph_status geometry_build(const struct scene *s, const char *model, int layers,
                                  struct geom *out);
+/** @brief A digest (CRC-32) of what defines a scene besides its parameters' names: the generated
+ *  particles (positions, initial velocities, kinds, wall groups) and segments, the domain and its
+ *  periodic axes, the fluid's properties, the wall motions, the scheme and its options. Two runs
+ *  with equal digests start from the same state; a checkpoint records it (restarts compare). */
+unsigned long geometry_digest(const struct scene *s, const struct geom *g);
 /** @brief Free the arrays (safe on a zeroed struct). */
 void geometry_free(struct geom *g);
 

@@ -171,6 +171,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   const struct scene_option *lo = find_option(scene, "wall_layers");
   int layers = lo != NULL && lo->is_number ? (int)lo->number : 3;
   CLSPH_TRY(geometry_build(scene, model, layers, &sim.geom));
+  sim.digest = geometry_digest(scene, &sim.geom);
   /* the cell grid: the domain, with room for wall and section layers on non-periodic axes */
   sim.gspec.dim = 2;
   sim.gspec.support = sim.sm.support;
@@ -255,6 +256,8 @@ enum clsph_status sim_info(struct sim *sim)
   printf("particles: %zu (fluid %zu, wall vertices %zu, dummy %zu, inflow %zu, outflow %zu), "
          "%zu wall segments\n",
          sim->geom.n, count[0], count[1], count[2], count[3], count[4], sim->geom.nseg);
+  printf("scene digest %08lx (checkpoints record it: a restart must start from the same scene)\n",
+         sim->digest);
   printf("spacing dr = %g m, smoothing %s, h = %g m (%g dr), support %g m\n", s->dr,
          smoothing_name(sim->sm.kind), sim->sm.h, sim->sm.h / s->dr, sim->sm.support);
   printf("active: walls %s, periodic %s%s%s, gravity %s, body force %s, probes %d, profiles %d, "

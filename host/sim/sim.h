@@ -73,12 +73,14 @@ struct sim {
    * fraction of the fluid */
   long health_checks;
   double energy_ratio_max, spacing_min, cluster_max;
-  double wall;      /* wall-clock time of the last loop_run (summary.json wall_seconds), s */
-  char status[256]; /* "ok" or why the run stopped */
-  char failure[32]; /* "none", or the class of the failure (summary.json "failure"): "nan",
-                     * "escaped", "neighbours", "wall_crossing", "solver", "clustering",
-                     * "energy", "dt_collapse", "dt_bound", "flow_control", "metrics",
-                     * "error" */
+  double wall;          /* wall-clock time of this run so far (summary.json wall_seconds), s */
+  double wall_before;   /* of the run before its checkpoint (a restart's), s */
+  unsigned long digest; /* geometry_digest of the scene: checkpoints record it */
+  char status[256];     /* "ok" or why the run stopped */
+  char failure[32];     /* "none", or the class of the failure (summary.json "failure"): "nan",
+                         * "escaped", "neighbours", "wall_crossing", "solver", "clustering",
+                         * "energy", "dt_collapse", "dt_bound", "flow_control", "metrics",
+                         * "error" */
 };
 
 /** @brief Set up a simulation of a scene: geometry, program, fields, scheme. Nothing is written. */

@@ -28,7 +28,7 @@ string(REPEAT "${seg}/" 25 toolong)
 execute_process(COMMAND ${CLSPH} run ${CASE} --set dr=0.1 --out ${OUT}/${toolong} --quiet
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
 message("${out}")
-if(rc EQUAL 0 OR NOT out MATCHES "cannot be created: File name too long")
+if(NOT rc EQUAL 1 OR NOT out MATCHES "cannot be created: File name too long")
   message(FATAL_ERROR "a --out beyond PATH_MAX was not refused with its reason")
 endif()
 file(REMOVE_RECURSE ${OUT})

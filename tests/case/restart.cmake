@@ -1,6 +1,7 @@
 # A run continued from its mid-way checkpoint ends bit-for-bit where the uninterrupted run ended:
 # every particle field of the two final checkpoints is compared with h5diff (exit 0: identical).
-# Its CSV series (forces, profiles, probes, flow control) and its metrics read as one run's, both
+# Its CSV series (forces, profiles, probes, flow control), its metrics, the whole-run figures of its
+# summary and its snapshot index (snapshots.xdmf) read as one run's, both
 # when it goes on in another folder (the rows up to the checkpoint are copied from the
 # checkpoint's folder) and when it goes on in its own (the rows written after the checkpoint are
 # dropped).
@@ -54,15 +55,36 @@ foreach(dir resumed inplace)
       message(FATAL_ERROR "${dir}/${csv} differs from the uninterrupted run's")
     endif()
   endforeach()
-  file(READ ${OUT}/whole/summary.json a)
-  file(READ ${OUT}/${dir}/summary.json b)
-  string(JSON a GET "${a}" metrics)
-  string(JSON b GET "${b}" metrics)
-  if(NOT a STREQUAL b)
-    message(FATAL_ERROR "${dir}: metrics ${b} differ from the uninterrupted run's ${a}")
+  # the summary describes the whole run: the metrics, and the worst values and totals of the
+  # health checks, wall crossings and solver (the checkpoint carries them)
+  file(READ ${OUT}/whole/summary.json whole_json)
+  file(READ ${OUT}/${dir}/summary.json json)
+  foreach(key metrics health wall_crossings solver)
+    string(JSON a ERROR_VARIABLE err_a GET "${whole_json}" ${key})
+    string(JSON b ERROR_VARIABLE err_b GET "${json}" ${key})
+    if(NOT err_a STREQUAL err_b OR NOT a STREQUAL b)
+      message(FATAL_ERROR "${dir}: summary.json ${key} ${b} differs from the uninterrupted run's ${a}")
+    endif()
+  endforeach()
+  string(JSON whole_s GET "${json}" wall_seconds_whole_run)
+  string(JSON this_s GET "${json}" wall_seconds)
+  if(NOT whole_s GREATER this_s)
+    message(FATAL_ERROR "${dir}: wall_seconds_whole_run ${whole_s} is not above this run's ${this_s}")
+  endif()
+  # snapshots.xdmf lists the whole run: in place, the same text; elsewhere, the same times
+  file(READ ${OUT}/whole/snapshots.xdmf a)
+  file(READ ${OUT}/${dir}/snapshots.xdmf b)
+  if(dir STREQUAL "inplace" AND NOT a STREQUAL b)
+    message(FATAL_ERROR "inplace/snapshots.xdmf differs from the uninterrupted run's")
+  endif()
+  string(REGEX MATCHALL "<Time Value=\"[^\"]*\"/>" ta "${a}")
+  string(REGEX MATCHALL "<Time Value=\"[^\"]*\"/>" tb "${b}")
+  if(NOT ta STREQUAL tb)
+    message(FATAL_ERROR "${dir}/snapshots.xdmf lists the times ${tb}, the whole run ${ta}")
   endif()
 endforeach()
-message("series ${series} and metrics: identical, resumed elsewhere and in place")
+message("series ${series}, metrics, summary figures and snapshot index: identical, resumed "
+        "elsewhere and in place")
 execute_process(COMMAND ${H5DIFF} ${OUT}/whole/${last} ${OUT}/whole/${mid} /fields /fields
                 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
 if(rc EQUAL 0)
