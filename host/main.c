@@ -1,9 +1,11 @@
-/* main.c: entry point of clsph. Exit codes: 0 success, 1 failure, 2 bad command line. */
+/* main.c: entry point of clsph. Exit codes: 0 success, 1 failure, 2 bad command line or input,
+ * 130 and 143 a run interrupted by SIGINT or SIGTERM (with a checkpoint). */
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
 #include "dev.h"
+#include "interrupt.h"
 #include "prog.h"
 
 int main(int argc, char **argv)
@@ -37,5 +39,6 @@ int main(int argc, char **argv)
   else if (strcmp(cli.command, "bench") == 0)
     st = bench_run(&cli);
   if (st == CLSPH_E_INPUT) return 2;
+  if (st == CLSPH_E_INTERRUPTED) return 128 + interrupt_signal(); /* 130 SIGINT, 143 SIGTERM */
   return st == CLSPH_OK ? 0 : 1;
 }

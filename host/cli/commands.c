@@ -14,6 +14,7 @@
 #include "clsph_config.h"
 #include "frames.h"
 #include "io.h"
+#include "interrupt.h"
 #include "kern.h"
 #include "loop.h"
 #include "scheme.h"
@@ -127,6 +128,7 @@ enum clsph_status run_command(const struct cli *cli)
   char *out = NULL;
   memset(&scene, 0, sizeof scene);
   memset(&sim, 0, sizeof sim);
+  interrupt_catch(); /* a first Ctrl-C stops the run at a safe point, a second at once */
   CLSPH_TRY(setup(cli, &dev, &scene, &script, &sim));
   if (cli->profile) CLSPH_TRY(kern_profile_create(&dev));
   out = cli->out_dir != NULL ? str_printf("%s", cli->out_dir) : str_printf("out/%s", scene.name);
@@ -155,6 +157,7 @@ done:
   case_close(script);
   scene_free(&scene);
   dev_close(&dev);
+  interrupt_release();
   return st;
 }
 

@@ -22,6 +22,7 @@
 
 #include "scheme.h"
 #include "checkpoint.h"
+#include "interrupt.h"
 #include "kern.h"
 #include "progress.h"
 #include "series.h"
@@ -184,6 +185,22 @@ done:
   return st;
 }
 
+/* SIGINT or SIGTERM: the step is over; a checkpoint of the state reached (unless this step wrote
+ * one) and the status, so that the summary says so and --restart resumes. */
+static enum clsph_status interrupted(struct sim *sim, struct run_out *o, int sig)
+{
+  enum clsph_status st = CLSPH_OK;
+  if (o->checkpoint_step != sim->step) CLSPH_TRY(checkpoint_write(sim, o));
+  snprintf(sim->status, sizeof sim->status, "interrupted (%s) at step %ld, t = %.9g s",
+           interrupt_name(sig), sim->step, sim->time);
+  snprintf(sim->failure, sizeof sim->failure, "interrupted");
+  log_info("%s; to resume: clsph run %s --restart %s/checkpoint_%06ld.h5 (and the same --set)",
+           sim->status, sim->scene->case_path, o->dir, sim->step);
+  st = CLSPH_E_INTERRUPTED;
+done:
+  return st;
+}
+
 /* The end of a run, however it ended: the status and failure class worded, summary.json (with
  * the metrics of a run that ended well), the movie of the frames there are. */
 static enum clsph_status finish(struct sim *sim, const struct loop_options *opt,
@@ -203,7 +220,8 @@ static enum clsph_status finish(struct sim *sim, const struct loop_options *opt,
   if (o->dir != NULL) {
     enum clsph_status ws = summary_write(sim, o, sim->wall, script);
     if (st == CLSPH_OK) st = ws;
-    if (st == CLSPH_OK && strcmp(sim->status, "ok") != 0) st = CLSPH_E_INPUT;
+    if (st == CLSPH_OK && strcmp(sim->status, "ok") != 0) /* metrics() failed or was stopped */
+      st = strcmp(sim->failure, "interrupted") == 0 ? CLSPH_E_INTERRUPTED : CLSPH_E_INPUT;
   }
   if (o->frames != NULL) { /* the movie of what there is, also of a run that stopped */
     enum clsph_status fs = frames_finish(o->frames, opt->quiet);
@@ -223,9 +241,18 @@ enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
   const double wall0 = progress_now();
   kern_profile_start(sim->dev->profile);
 
+  o.checkpoint_step = -1;
+  if (interrupt_signal() != 0) { /* during the set-up: nothing written yet */
+    snprintf(sim->status, sizeof sim->status, "interrupted (%s) before the first step",
+             interrupt_name(interrupt_signal()));
+    snprintf(sim->failure, sizeof sim->failure, "interrupted");
+    log_info("%s", sim->status);
+    st = CLSPH_E_INTERRUPTED;
+    goto done;
+  }
   CLSPH_TRY(start(sim, opt, &o));
   pr.start = progress_now();
-  while (sim->time < sim->scene->t_end) {
+  while (sim->time < sim->scene->t_end && interrupt_signal() == 0) {
     double dt = 0.0, target = 0.0;
     int lands = 0;
     CLSPH_TRY(sim_sort(sim));
@@ -238,6 +265,7 @@ enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
     progress_show(sim, &pr, 0);
   }
   progress_show(sim, &pr, 1);
+  if (interrupt_signal() != 0) CLSPH_TRY(interrupted(sim, &o, interrupt_signal()));
 done:;
   /* the profiled window ends with its commands run, and leaves out the metrics' kernels */
   const enum clsph_status pst = kern_profile_stop(sim->dev->profile);

@@ -18,7 +18,9 @@ struct loop_options {
 
 /** @brief Run to the end time, writing the outputs into opt->out_dir (see README). A profile on
  *  the device (--profile) records from the start of the run to its end (the window of sim->wall)
- *  and goes into summary.json. */
+ *  and goes into summary.json. With interrupt_catch (runtime/interrupt.h) in force, a SIGINT or
+ *  SIGTERM ends the run after the step it interrupts, with a checkpoint and summary.json
+ *  (CLSPH_E_INTERRUPTED). */
 enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
                            struct case_script *script);
 

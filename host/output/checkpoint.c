@@ -118,6 +118,7 @@ enum clsph_status checkpoint_write(struct sim *sim, struct run_out *o)
   size_t bytes = 0;
   CLSPH_TRY(state_blob(sim, blob, sizeof blob, &bytes));
   CLSPH_TRY(io_checkpoint_write(path, sim->dev, &sim->ps, &m, bytes > 0 ? blob : NULL, bytes));
+  o->checkpoint_step = sim->step;
   log_debug("checkpoint %s at t = %g s", path, sim->time);
 done:
   free(path);

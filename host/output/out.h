@@ -16,6 +16,7 @@ struct run_out {
   FILE *probes, *forces, *flow;
   FILE **profiles;
   int nsnap;
+  long checkpoint_step; /* the step of the last checkpoint written (−1: none yet) */
   /* per force group, over the samples written: the largest |F| (time, fx, fy) and the last F */
   struct force_stat {
     double peak, peak_time, peak_f[2], last[2];

@@ -9,6 +9,7 @@
 
 #include "scheme.h"
 #include "clsph_config.h"
+#include "interrupt.h"
 #include "kern.h"
 #include "metrics.h"
 /* "profile": the run's device time per kernel, slowest first (--profile). */
@@ -120,7 +121,11 @@ enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double
     struct case_sim_api api;
     metrics_api(sim, o->dir, &api);
     enum clsph_status ms = case_metrics(script, &api, metrics);
-    if (ms != CLSPH_OK) {
+    if (ms != CLSPH_OK && interrupt_signal() != 0) { /* Ctrl-C while metrics() ran */
+      snprintf(sim->status, sizeof sim->status, "interrupted (%s) while metrics() ran",
+               interrupt_name(interrupt_signal()));
+      snprintf(sim->failure, sizeof sim->failure, "interrupted");
+    } else if (ms != CLSPH_OK) {
       snprintf(sim->status, sizeof sim->status, "metrics failed");
       snprintf(sim->failure, sizeof sim->failure, "metrics");
     }

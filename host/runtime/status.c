@@ -16,6 +16,7 @@ const char *clsph_status_str(enum clsph_status st)
       [CLSPH_E_UNSUPPORTED] = "CLSPH_E_UNSUPPORTED",
       [CLSPH_E_NODEVICE] = "CLSPH_E_NODEVICE",
       [CLSPH_E_BLOWUP] = "CLSPH_E_BLOWUP",
+      [CLSPH_E_INTERRUPTED] = "CLSPH_E_INTERRUPTED",
   };
   if ((unsigned)st < sizeof names / sizeof *names && names[st] != NULL) return names[st];
   return "CLSPH_E_UNKNOWN";

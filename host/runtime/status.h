@@ -14,7 +14,8 @@ enum clsph_status {
   CLSPH_E_NOFP64,
   CLSPH_E_UNSUPPORTED,
   CLSPH_E_NODEVICE,
-  CLSPH_E_BLOWUP, /* the run stopped: non-finite values, particles lost, time step collapsed */
+  CLSPH_E_BLOWUP,      /* the run stopped: non-finite values, particles lost, time step collapsed */
+  CLSPH_E_INTERRUPTED, /* SIGINT or SIGTERM: the run stopped after a step, with a checkpoint */
 };
 
 /** @brief Name of a status code, e.g. "CLSPH_E_CL". */

@@ -16,6 +16,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "interrupt.h"
 #include "spectrum.h"
 #include "spell.h"
 
@@ -88,12 +89,14 @@ static void sandbox_hook(lua_State *L, lua_Debug *ar)
   lua_getallocf(L, &ud);
   struct sandbox *sb = ud;
   sb->count += SANDBOX_HOOK_EVERY;
-  if (sb->count <= sb->budget) return;
+  const int sig = interrupt_signal();
+  if (sb->count <= sb->budget && sig == 0) return;
   char where[192] = "";
   if (lua_getinfo(L, "Sl", ar) && ar->currentline > 0)
     snprintf(where, sizeof where, "%s:%d: ", ar->short_src, ar->currentline);
   else
     lua_code_at(L, where, sizeof where);
+  if (sig != 0) luaL_error(L, "%s%s interrupted (%s)", where, sb->phase, interrupt_name(sig));
   luaL_error(L,
              "%s%s ran out of instructions: more than its budget of %I (an endless loop?); "
              "--case-instructions N raises the budget",
