@@ -32,9 +32,9 @@ clsph_cli_test(case_misspelt_scheme ARGS info ${CASE_DIR}/bad_scheme.lua --set w
 clsph_cli_test(case_run_t_end ARGS info ${CASE_DIR}/run_t_end.lua --set t_end=0.2 RC 0
                REGEX "t_end = 0.6 s")
 clsph_cli_test(case_run_t_end_negative ARGS info ${CASE_DIR}/run_t_end.lua --set which=2 RC 2
-               REGEX "run_t_end.lua:11: run: t_end must be a positive time, not -1")
+               REGEX "run_t_end.lua:12: run: t_end must be a positive time, not -1")
 clsph_cli_test(case_run_t_end_missing ARGS info ${CASE_DIR}/run_t_end.lua --set which=3 RC 2
-               REGEX "run_t_end.lua:13: run: needs t_end")
+               REGEX "run_t_end.lua:14: run: needs t_end")
 clsph_cli_test(case_bad_h_over_dr ARGS info ${CASE_DIR}/bad_h_over_dr.lua RC 2
                REGEX "bad_h_over_dr.lua:3: particles: h_over_dr must be in .0, 10., not 0")
 clsph_cli_test(case_unknown_option ARGS info ${CASE_DIR}/bad_option.lua RC 2
@@ -57,24 +57,24 @@ clsph_cli_test(case_tank_gap ARGS info ${CASE_DIR}/bad_tank_gap.lua RC 2
 # message names the file, the line and what ran out. The budget is lowered to 1e7 instructions
 # (0.02 s) but for the first, which shows that the default stops an endless loop (1e9: ~2 s).
 clsph_cli_test(case_sandbox_loop ARGS info ${CASE_DIR}/bad_sandbox_limits.lua RC 2
-               REGEX "bad_sandbox_limits.lua:20: the case script ran out of instructions: more than its budget of 1000000000")
+               REGEX "bad_sandbox_limits.lua:21: the case script ran out of instructions: more than its budget of 1000000000")
 clsph_cli_test(case_sandbox_loop_fill ARGS info ${CASE_DIR}/bad_sandbox_limits.lua --set which=2
                --case-instructions 1e7 RC 2
-               REGEX "bad_sandbox_limits.lua:15: the velocity function of fill 1 ran out of instructions")
+               REGEX "bad_sandbox_limits.lua:16: the velocity function of fill 1 ran out of instructions")
 clsph_cli_test(case_sandbox_loop_meta ARGS info ${CASE_DIR}/bad_sandbox_limits.lua --set which=4
                --case-instructions 1e7 RC 2
                REGEX "bad_sandbox_limits.lua:7: the case script ran out of instructions")
 clsph_cli_test(case_sandbox_memory ARGS info ${CASE_DIR}/bad_sandbox_limits.lua --set which=5
-               RC 2 REGEX "bad_sandbox_limits.lua:22: the case script ran out of memory: a block of 1907 MiB would take it past the case sandbox's ceiling of 512 MiB")
+               RC 2 REGEX "bad_sandbox_limits.lua:23: the case script ran out of memory: a block of 1907 MiB would take it past the case sandbox's ceiling of 512 MiB")
 clsph_cli_test(case_sandbox_memory_table ARGS info ${CASE_DIR}/bad_sandbox_limits.lua --set which=6
                --case-memory 64 RC 2
-               REGEX "bad_sandbox_limits.lua:25: the case script ran out of memory: .*ceiling of 64 MiB")
+               REGEX "bad_sandbox_limits.lua:26: the case script ran out of memory: .*ceiling of 64 MiB")
 # An endless metrics() after the run: summary.json is written, "metrics failed"
 clsph_add_test(case_sandbox_loop_metrics LABELS case COMMAND ${CMAKE_COMMAND}
                -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CASE_DIR}/bad_sandbox_limits.lua
                -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/sandbox_metrics -DSETS=which=3
                "-DARGS=--case-instructions|1e7" -DRC=2 -DFAILURE=metrics "-DREGEX=metrics failed"
-               "-DMESSAGE=bad_sandbox_limits.lua:28: metrics\\(\\) ran out of instructions"
+               "-DMESSAGE=bad_sandbox_limits.lua:29: metrics\\(\\) ran out of instructions"
                -P ${CASE_DIR}/run_failure.cmake)
 # Output intervals that would flood the disk are refused before the folder is touched.
 clsph_cli_test(case_output_flood ARGS run ${CASE_DIR}/bad_output_every.lua --quiet

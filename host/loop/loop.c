@@ -170,6 +170,7 @@ static enum clsph_status check_and_write(struct sim *sim, struct run_out *o, dou
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
   const int at_end = sim->time >= s->t_end;
+  CLSPH_TRY(sim_domain_check(sim));
   CLSPH_TRY(sim_check_flags(sim));
   if (s->checks.every > 0 && (sim->step % s->checks.every == 0 || at_end))
     CLSPH_TRY(sim_check_health(sim));

@@ -747,7 +747,7 @@ static enum clsph_status check_enclosed(struct build *b)
   const double c = 0.5 * b->dr; /* cell size */
   unsigned char *mark = NULL;   /* 1: a wall crosses it, 2: reached */
   size_t *queue = NULL;
-  if (b->nfluid == 0 || s->nwalls == 0) return CLSPH_OK;
+  if (b->nfluid == 0) return CLSPH_OK; /* no walls at all: the flood reaches the domain's edges */
   /* a non-periodic axis gets a margin of one cell on each side, where walls on the domain's edge
    * fall; reaching a margin cell is leaving the domain */
   long n[2];

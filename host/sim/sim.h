@@ -38,6 +38,7 @@ struct sim {
   cl_kernel k_max_speed; /* reduction */
   cl_mem d_partial;      /* per-work-group partial results of reductions */
   cl_kernel k_count;     /* reduction: nonzero entries of a uint field */
+  cl_kernel k_domain;    /* fluid outside the domain's box (domain.c) */
   cl_kernel k_invert;    /* inv[id[k]] = k */
   cl_mem d_inv;          /* current index of each original particle index (after sim_sort) */
   double body_force[2];  /* body force now, m/s²: the scene's, x under flow-rate control */
@@ -106,6 +107,9 @@ enum clsph_status sim_fail(struct sim *sim, const char *failure);
 /** @brief Flow-rate control (Leroy et al. 2014 eqs 67-68): set the x body force for a step of
  *  length dt from the slice velocity; one row to `log` (flow_control.csv) when not NULL. */
 enum clsph_status sim_flow_control(struct sim *sim, double dt, FILE *log);
+/** @brief Raise the escape flag (read by sim_check_flags) when a fluid particle is more than dr
+ *  beyond the domain's box on a non-periodic axis, but for the side gravity points away from. */
+enum clsph_status sim_domain_check(struct sim *sim);
 /** @brief Work-groups of 64 of a reduction over n particles: at most 64, so a few dozen partial
  *  results come back to the host per reduction (reduce.cl). */
 size_t sim_reduce_groups(size_t n);

@@ -10,6 +10,7 @@ param { t_end = 0.02 }
 domain { 0, 0, 1, 1 }
 particles { dr = 0.25 }
 scheme "ballistic"
+box_wall { 0, 0, 1, 1 }
 fill { 0.25, 0.25, 0.75, 0.75,
        velocity = function(x, y)
          while which == 2 do end

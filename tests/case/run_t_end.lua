@@ -4,6 +4,7 @@ param { t_end = 0.1, which = 1 }
 domain { 0, 0, 1, 1 }
 particles { dr = 0.1 }
 scheme "ballistic"
+box_wall { 0, 0, 1, 1 }
 fill { 0.1, 0.1, 0.9, 0.9 }
 if which == 1 then
   run { t_end = 3 * t_end }
