@@ -75,7 +75,8 @@ enum clsph_status sim_check_health(struct sim *sim)
   /* the spacing needs a current cell table (sorting is idempotent: the next step sees the same) */
   CLSPH_TRY(sim_sort(sim));
   cl_uint n = (cl_uint)sim->ps.n;
-  const real close = (real)(c->cluster_spacing * dr);
+  const double limit = c->cluster_h * sim->sm.h; /* the clustering distance, m */
+  const real close = (real)limit;
   cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
   cl_mem vol = pset_mem(&sim->ps, sim->f_vol), kind = pset_mem(&sim->ps, sim->f_kind);
   CLSPH_TRY(KERN_SET(sim->k_health, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
@@ -104,9 +105,11 @@ enum clsph_status sim_check_health(struct sim *sim)
     st = sim_fail(sim, "nan");
   } else if (frac > c->cluster_fraction) {
     snprintf(sim->status, sizeof sim->status,
-             "blow-up: particles cluster: %.3g%% of the fluid has a neighbour closer than %g dr "
-             "(closest %.3g dr) at step %ld, t = %.9g s",
-             100.0 * frac, c->cluster_spacing, dmin / dr, sim->step, sim->time);
+             "blow-up: particles cluster: %.3g%% of the fluid has a fluid neighbour closer than "
+             "%g h = %.3g dr (closest %.3g dr) at step %ld, t = %.9g s (run { checks = { "
+             "cluster_h = %g, cluster_fraction = %g } } sets these limits)",
+             100.0 * frac, c->cluster_h, limit / dr, dmin / dr, sim->step, sim->time, c->cluster_h,
+             c->cluster_fraction);
     st = sim_fail(sim, "clustering");
   } else if (c->energy > 0.0 && ratio > c->energy) {
     snprintf(sim->status, sizeof sim->status,
