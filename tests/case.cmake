@@ -226,6 +226,8 @@ function(clsph_failure_test name case failure regex)
                  -DFAILURE=${failure} "-DREGEX=${regex}" "-DMESSAGE=${T_MESSAGE}"
                  -P ${CASE_DIR}/run_failure.cmake)
 endfunction()
+# Every stop message names the run { checks = { ... } } setting that sets its limit, with its
+# value, or says what to look at where no setting controls the check.
 # Clustering: on a still lattice (scheme "none", h = 2 dr) every nearest fluid neighbour is
 # dr = h/2 away; counted as clustered below 0.505 h = 1.01 dr, the whole fluid is (100% > 0.5%)
 # and the run stops at its first check; below 0.495 h none is, and the run ends "ok" (the distance
@@ -250,16 +252,20 @@ clsph_cli_test(health_cluster_spacing_refused ARGS info ${CASE_DIR}/health_clust
 # the domain's diagonal L, so the mean square speed passes 4 U² at f t = 4.2 m/s, t = 2.1 s
 # (run_periodic_drift stops at 1 s, at 0.9 U²).
 clsph_failure_test(health_energy ${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua energy
-                   "kinetic energy grew to [0-9.]+ times" SETS dr=0.05 t_end=3)
+                   "kinetic energy grew to [0-9.]+ times .*\\(run { checks = { energy = 4 } } sets this limit\\)"
+                   SETS dr=0.05 t_end=3)
 # Wall crossing: isph-usaw at four times its CFL bound (the stability map of the cavity, README)
 # lets a particle through a wall within 13 steps; a particle more than
 # dr/2 behind a wall stops the run. (Shallower crossings are counted: the wcsph-usaw cavity,
 # run_cavity_coarse_wcsph, has some and ends "ok".)
 clsph_failure_test(health_wall_crossing ${CMAKE_SOURCE_DIR}/cases/cavity.lua wall_crossing
-                   "a fluid particle crossed a wall \\([0-9.]+ dr behind it" SETS n=20 cfl=4 t_end=5)
-# A particle leaving the domain is classified too (the message: run_blowup_escape).
+                   "a fluid particle crossed a wall \\([0-9.]+ dr behind it.*\\(run { checks = { wall_depth = 0.5 } } sets this limit, in dr\\)"
+                   SETS n=20 cfl=4 t_end=5)
+# A particle leaving the domain is classified too (the message: run_blowup_escape); no setting
+# controls it, so the message says where to look.
 clsph_failure_test(health_escaped ${CMAKE_SOURCE_DIR}/cases/free_fall.lua escaped
-                   "a particle left the domain at step [0-9]+" SETS t_end=3 dr=0.05)
+                   "a particle left the domain at step [0-9]+, t = [0-9.]+ s; no setting controls this check: look in the last snapshot"
+                   SETS t_end=3 dr=0.05)
 # The pressure solver: ten solves in a row that do not converge stop the run.
 clsph_failure_test(health_solver ${CASE_DIR}/solver_starved.lua solver
                    "the pressure solve failed at step 10,"
