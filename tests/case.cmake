@@ -286,32 +286,70 @@ function(clsph_failure_test name case failure regex)
                  -DFAILURE=${failure} "-DREGEX=${regex}" "-DMESSAGE=${T_MESSAGE}"
                  -P ${CASE_DIR}/run_failure.cmake)
 endfunction()
-# Clustering: on a still lattice every nearest fluid neighbour is dr away; counted as clustered
-# below 1.01 dr, the whole fluid is (100% > 5%) and the run stops at its first check; below
-# 0.99 dr none is, and the run ends "ok" (the distance and the threshold are compared exactly).
+# Every stop message names the run { checks = { ... } } setting that sets its limit, with its
+# value, or says what to look at where no setting controls the check.
+# Clustering: on a still lattice (scheme "none", h = 2 dr) every nearest fluid neighbour is
+# dr = h/2 away; counted as clustered below 0.505 h = 1.01 dr, the whole fluid is (100% > 0.5%)
+# and the run stops at its first check; below 0.495 h none is, and the run ends "ok" (the distance
+# and the threshold are compared exactly).
 clsph_failure_test(health_clustering ${CASE_DIR}/still_lattice.lua clustering
-                   "particles cluster: 100% of the fluid has a neighbour closer than 1.01 dr"
-                   SETS spacing=1.01)
-clsph_run_test(health_clustering_below ${CASE_DIR}/still_lattice.lua SETS spacing=0.99)
+                   "particles cluster: 100% of the fluid has a fluid neighbour closer than 0.505 h = 1.01 dr .*\\(run { checks = { cluster_h = 0.505, cluster_fraction = 0.005 } } sets these limits\\)"
+                   SETS cluster=0.505)
+clsph_run_test(health_clustering_below ${CASE_DIR}/still_lattice.lua SETS cluster=0.495)
+# A recorded clustering failure (study cavity_re_cfl): isph-usaw without shifting on the 16²
+# cavity at Re = 400 packs pairs closer than h/8 = 0.25 dr from t = 1.25 s (4 of 256 particles,
+# 0.16 dr at the check that stops it); with the check off it goes on clumping until a particle
+# goes through a wall at step 181, t = 2.26 s (81 steps later).
+clsph_failure_test(health_clustering_cavity ${CMAKE_SOURCE_DIR}/cases/cavity.lua clustering
+                   "particles cluster: [0-9.]+% of the fluid has a fluid neighbour closer than 0.125 h = 0.25 dr .*\\(run { checks = { cluster_h = 0.125, cluster_fraction = 0.005 } } sets these limits\\)"
+                   SETS n=16 re=400 cfl=1 shift=0 t_end=2)
+# The clustering distance was cluster_spacing, in dr; a script that still sets it is refused with
+# what replaced it and the equivalent value.
+clsph_cli_test(health_cluster_spacing_refused ARGS info ${CASE_DIR}/health_cluster_spacing.lua
+               RC 2 REGEX "health_cluster_spacing.lua:[0-9]+: run: checks: cluster_spacing \\(a distance in dr\\) was replaced by cluster_h.*cluster_spacing = 0.25 is cluster_h = 0.125 where h = 2 dr")
 # Energy growth: ballistic particles under a body force that nothing resists (periodic in x, no
 # viscosity) gain f t of speed; the scene's velocity scale is the free-fall speed √(2 f L) over
 # the domain's diagonal L, so the mean square speed passes 4 U² at f t = 4.2 m/s, t = 2.1 s
 # (run_periodic_drift stops at 1 s, at 0.9 U²).
 clsph_failure_test(health_energy ${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua energy
-                   "kinetic energy grew to [0-9.]+ times" SETS dr=0.05 t_end=3)
+                   "kinetic energy grew to [0-9.]+ times .*\\(run { checks = { energy = 4 } } sets this limit\\)"
+                   SETS dr=0.05 t_end=3)
 # Wall crossing: isph-usaw at four times its CFL bound (the stability map of the cavity, README)
 # lets a particle through a wall within 13 steps; a particle more than
 # dr/2 behind a wall stops the run. (Shallower crossings are counted: the wcsph-usaw cavity,
 # run_cavity_coarse_wcsph, has some and ends "ok".)
 clsph_failure_test(health_wall_crossing ${CMAKE_SOURCE_DIR}/cases/cavity.lua wall_crossing
-                   "a fluid particle crossed a wall \\([0-9.]+ dr behind it" SETS n=20 cfl=4 t_end=5)
-# A particle leaving the domain is classified too (the message: run_blowup_escape).
+                   "a fluid particle crossed a wall \\([0-9.]+ dr behind it.*\\(run { checks = { wall_depth = 0.5 } } sets this limit, in dr\\)"
+                   SETS n=20 cfl=4 t_end=5)
+# A particle leaving the domain is classified too (the message: run_blowup_escape); no setting
+# controls it, so the message says where to look.
 clsph_failure_test(health_escaped ${CMAKE_SOURCE_DIR}/cases/free_fall.lua escaped
-                   "a particle left the domain at step [0-9]+" SETS t_end=3 dr=0.05)
+                   "a particle left the domain at step [0-9]+, t = [0-9.]+ s; no setting controls this check: look in the last snapshot"
+                   SETS t_end=3 dr=0.05)
 # The pressure solver: ten solves in a row that do not converge stop the run.
 clsph_failure_test(health_solver ${CASE_DIR}/solver_starved.lua solver
                    "the pressure solve failed at step 10,"
                    MESSAGE "the pressure solve failed 10 times in a row")
+# Healthy runs that the clustering check lets through with the default checks: flows that press
+# particles together as they should, and reach their end (health.* bounds read summary.json's
+# health block). Both came within the old limit, 0.5 dr, and were stopped there.
+# The Taylor-Green vortex (isph-usaw, n = 32, Re = 100, to t = 1): the saddle points press pairs
+# to 0.41 dr at t = 0.2 (12.5% of the fluid closer than 0.5 dr), then shifting spreads them. Its
+# velocity error against the exact solution, in units of the exact amplitude, measured 0.0279 RMS
+# and 0.0373 largest in double (0.0279 and 0.0379 in float), the kinetic energy 7.1% low (both);
+# at n = 16 the same run gives 0.085, 0.110 and −20%, at n = 64 0.012, 0.016 and −3.0%. The
+# bounds (0.04, 0.055, −10%) fail a run that has lost half the gain of one halving of dr.
+clsph_run_test(health_taylor_green ${CMAKE_SOURCE_DIR}/cases/taylor_green.lua
+               BOUNDS "vel_rms<0.04" "vel_max<0.055" "energy_error>-0.1" "energy_error<0"
+                      "health.nearest_spacing_min_dr<0.45")
+# The coarse dam break (isph-usaw, 20 particles across the column, to t = 0.4 s, the front near
+# the far wall): impacts press pairs to isph-usaw's collision distance, 0.5 dr, and below (the
+# old check stopped it at t = 0.354 s with 2.4% of the fluid closer than 0.5 dr; closest pairs
+# 0.495 dr in double, 0.491 dr in float). Bounds: no fluid lost, and the surge front behind
+# Ritter's ideal (frictionless) front, L + 2 √(gH) t, i.e. (front − L)/H < 2 t √(g/H) = 4.57 at
+# t = 0.4 s (measured 2.67 in double, 2.74 in float).
+clsph_run_test(health_dam_break ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
+               BOUNDS "volume_ratio>0.999" "front_over_H<4.57")
 
 # Body-force Poiseuille flow at Re = 1 with isph-rotational (Hosseini & Feng 2011 sec 4.1), both
 # projections, against the Morris et al. 1997 series (errors in units of U0 over the particle

@@ -113,6 +113,8 @@ enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double
     cJSON_AddNumberToObject(h, "kinetic_energy_ratio_max", sim->energy_ratio_max);
     cJSON_AddNumberToObject(h, "nearest_spacing_min_dr", sim->spacing_min);
     cJSON_AddNumberToObject(h, "clustered_fraction_max", sim->cluster_max);
+    cJSON_AddNumberToObject(h, "cluster_distance_dr",
+                            sim->scene->checks.cluster_h * sim->sm.h / sim->scene->dr);
   }
   if (sim->dev->profile != NULL) CLSPH_TRY(summary_profile(root, sim->dev->profile, wall));
   cJSON *metrics = cJSON_AddObjectToObject(root, "metrics");

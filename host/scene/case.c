@@ -871,26 +871,38 @@ static int l_force(lua_State *L)
   return 0;
 }
 
-/* run { checks = { every = 10, cluster_spacing = 0.5, ... } }: the health-check thresholds
- * (struct scene_checks; defaults in scene_checks_default) */
+/* run { checks = { every = 10, cluster_h = 0.125, ... } }: the health-check thresholds
+ * (struct scene_checks; defaults in scene_checks_default). cluster_spacing, the clustering
+ * distance in dr until cluster_h replaced it, is refused with its equivalent. */
 static void run_checks(lua_State *L, int idx, struct scene *s)
 {
-  static const char *const keys[] = {"every",  "cluster_spacing", "cluster_fraction",
-                                     "energy", "wall_depth",      NULL};
+  static const char *const keys[] = {"every",  "cluster_h",  "cluster_fraction",
+                                     "energy", "wall_depth", NULL};
   const char *fn = "run: checks";
   struct scene_checks *c = &s->checks;
   if (!lua_istable(L, idx)) luaL_error(L, "%s: expects a table { every = 10, ... }", fn);
+  lua_getfield(L, idx, "cluster_spacing");
+  if (!lua_isnil(L, -1)) {
+    const double v = lua_isnumber(L, -1) ? lua_tonumber(L, -1) : 0.5;
+    char eq[96]; /* lua_pushfstring has no %g */
+    snprintf(eq, sizeof eq, "cluster_spacing = %g is cluster_h = %g", v, v / 2.0);
+    luaL_error(L,
+               "%s: cluster_spacing (a distance in dr) was replaced by cluster_h, the distance in "
+               "smoothing lengths h: %s where h = 2 dr (isph-usaw, wcsph-usaw; `clsph info` "
+               "prints a scene's h); the default, cluster_h = 0.125, lets healthy runs through",
+               fn, eq);
+  }
+  lua_pop(L, 1);
   check_keys(L, idx, fn, keys, 0);
   double every = get_number(L, idx, fn, "every", c->every);
   if (!(every >= 1.0 && every <= 1e9 && every == floor(every)))
     luaL_error(L, "%s: every must be a whole number of steps, at least 1", fn);
   c->every = (int)every;
-  c->cluster_spacing = get_number(L, idx, fn, "cluster_spacing", c->cluster_spacing);
+  c->cluster_h = get_number(L, idx, fn, "cluster_h", c->cluster_h);
   c->cluster_fraction = get_number(L, idx, fn, "cluster_fraction", c->cluster_fraction);
   c->energy = get_number(L, idx, fn, "energy", c->energy);
   c->wall_depth = get_number(L, idx, fn, "wall_depth", c->wall_depth);
-  if (c->cluster_spacing < 0.0 || c->cluster_fraction < 0.0 || c->energy < 0.0 ||
-      c->wall_depth < 0.0)
+  if (c->cluster_h < 0.0 || c->cluster_fraction < 0.0 || c->energy < 0.0 || c->wall_depth < 0.0)
     luaL_error(L, "%s: thresholds must not be negative", fn);
 }
 

@@ -21,15 +21,50 @@ void scene_free(struct scene *s)
 
 /* The defaults of the health checks, from runs that hold and runs that do not (the cavity's
  * stability sweep, 16² particles, 2 s, Re 100 to 3200, cfl 0.5 to 4, tests/validation/
- * cavity_re_cfl.csv; the coarse cavity and cylinder-array runs of tests/case.cmake):
+ * cavity_re_cfl.csv; the coarse runs of tests/case.cmake; the Taylor-Green vortex and the dam
+ * breaks):
  *  - every 10 steps: a check costs one neighbour sweep and a sort; measured with --profile on the
  *    cavity at 40², 0.4% of the wall time of wcsph-usaw and 0.03% of isph-usaw (a NaN or a
  *    particle through a wall is caught at every step).
- *  - cluster_spacing 0.5, cluster_fraction 0.02: a run that holds keeps its nearest fluid
- *    neighbours at 0.5 dr or more (smallest seen: isph-usaw 0.51 dr, wcsph-usaw 0.50 dr, both at
- *    cfl 2 at Re 100, at most 0.8% of the fluid below 0.5 dr); isph-usaw without shifting packs
- *    2% to 14% of the fluid closer than that (down to 0.07 dr) before particles go through the
- *    walls.
+ *  - cluster_h 0.125, cluster_fraction 0.005: a fluid particle is clustered when its nearest
+ *    fluid neighbour is closer than h/8 (0.25 dr at the h = 2 dr of isph-usaw and wcsph-usaw,
+ *    0.15 dr at isph-rotational's 1.2 dr), and the run stops when more than 0.5% of the fluid is.
+ *    Nearest fluid spacing (dr) and largest clustered fraction, measured at every check:
+ *    healthy runs
+ *      isph-usaw   Taylor-Green (cases/taylor_green.lua, Re 100) n = 16, 32, 64: 0.42, 0.41,
+ *                  0.26, none clustered; n = 128 to t = 0.5: 0.23, 0.10% (16 of 16384 at the
+ *                  saddle points, t = 0.2); Re 1000, n = 32: 0.41. Dam break (cases/
+ *                  dam_break.lua) n = 20 to t = 0.78 s: 0.34, n = 40: 0.36; wedge (cases/
+ *                  dam_break_wedge.lua) δr = 0.04 to 0.01 m: 0.31 to 0.35, none clustered. Pairs
+ *                  pressed by impacts sit at its collision distance, 0.5 dr = h/4, which the old
+ *                  limit (0.5 dr) counted: it stopped the n = 32 vortex at t = 0.13 s and the
+ *                  n = 20 dam break at t = 0.354 s.
+ *      wcsph-usaw  Taylor-Green n = 32: 0.34 (0.29 without background pressure), none clustered;
+ *                  dam break n = 20: 0.42; wedge δr = 0.04, 0.03: 0.39, 0.38; δr = 0.02: one
+ *                  pair at 0.12 dr for five checks, 0.13%; δr = 0.01: pairs in the splash
+ *                  collapse (down to 1e-7 dr) while the run stays accurate (wedge force within
+ *                  3% of isph-usaw), at most 9 of 6000 particles, 0.15%.
+ *      isph-rotational  Taylor-Green n = 16, 32: 0.56; the square cylinder maps (tests/
+ *                  validation/square_cylinder_*.csv) at most 0.094% closer than 0.5 dr, so
+ *                  below 0.5% closer than 0.15 dr.
+ *      the coarse runs of tests/case.cmake: 0.46 dr or more.
+ *    failing runs: the cavity map without shifting clumps particles until one goes through a wall;
+ *      the check stops each first (step, time, nearest spacing, clustered fraction; the wall
+ *      crossing that stops the same run without it): Re 100, cfl 0.5: 120, 0.75 s, 0.25 dr,
+ *      0.78% (crossing at step 134); Re 400, cfl 0.5: 240, 1.5 s, 0.20 dr, 0.78% (445, 2.78 s);
+ *      Re 400, cfl 1: 100, 1.25 s, 0.16 dr, 1.6% (181, 2.26 s); Re 1000, cfl 1: 160, 2 s,
+ *      0.24 dr, 0.78% (277, 3.46 s); Re 1000, cfl 2: 70, 1.75 s, 0.06 dr, 1.6% (78); wcsph-usaw
+ *      Re 100, cfl 4: 150, 1.5 s, 0.18 dr, 0.78% (152). Left to them, the clumps deepen to
+ *      0.03-0.09 dr and 2-5% of the fluid. At 32² (Re 400, cfl 1) the wall crossing comes first
+ *      (step 83; 0.39% clustered at step 80). isph-usaw without shifting on the Taylor-Green
+ *      vortex stops at t = 0.26 s (4.7% clustered, 0.18 dr); left to run, 7.8% of its fluid
+ *      sits at 0.04-0.08 dr and its velocity error is twice the shifted run's (5.7% against
+ *      2.8% RMS at t = 0.5 s), though it does not blow up.
+ *    Neither the trend of the nearest spacing nor the pressure residual separates the two sets:
+ *    the spacing falls over tens of checks in healthy vortices too (wcsph-usaw without background
+ *    pressure: 0.92 to 0.29 dr over 24 checks, then back to 0.49), and the failing runs' solves
+ *    converge to 1e-9 up to the crossing. The check counts with the same kernel as before (one
+ * neighbour sweep).
  *  - energy 4: ½ M U² bounds the kinetic energy of a flow driven by a wall of speed U (its speeds
  *    stay below U) or by gravity (v² <= 2 g L); the largest ratio seen is 1.5, the cylinder
  *    array, where U is the flow-rate control's mean velocity and the fluid squeezes past the
@@ -43,8 +78,8 @@ void scene_free(struct scene *s)
 void scene_checks_default(struct scene_checks *c)
 {
   c->every = 10;
-  c->cluster_spacing = 0.5;
-  c->cluster_fraction = 0.02;
+  c->cluster_h = 0.125;
+  c->cluster_fraction = 0.005;
   c->energy = 4.0;
   c->wall_depth = 0.5;
 }

@@ -116,8 +116,8 @@ struct scene_render {
  *  blow-up with its reason in summary.json. */
 struct scene_checks {
   int every;               /* steps between the clustering and energy checks (and the last) */
-  double cluster_spacing;  /* a fluid particle is clustered when its nearest fluid neighbour is
-                            * closer than cluster_spacing dr */
+  double cluster_h;        /* a fluid particle is clustered when its nearest fluid neighbour is
+                            * closer than cluster_h h (h the smoothing length) */
   double cluster_fraction; /* the run fails when more than this fraction of the fluid is
                             * clustered */
   double energy;           /* the run fails when the kinetic energy of the fluid exceeds energy

@@ -1,7 +1,9 @@
 /* checks.c: the blow-up checks of the time loop: the error flags the kernels raise (every step)
  * and the health checks (kinetic energy, particle clustering; every checks.every steps and the
  * last), reduced on the device (kernels/common/health.cl). The thresholds and the runs behind them
- * are in host/scene/scene.c. */
+ * are in host/scene/scene.c. Every stop message names the run { checks = { ... } } setting that
+ * sets its limit, or, for the checks no setting controls (non-finite values, a particle out of the
+ * domain, neighbour overflow), what to look at. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +18,12 @@ enum clsph_status sim_fail(struct sim *sim, const char *failure)
   log_error("%s", sim->status);
   return CLSPH_E_BLOWUP;
 }
+
+/* What to look at after a non-finite value, which no setting controls. */
+static const char *const nan_hint =
+    "no setting controls this check: look at the progress lines before it (pressure solves that "
+    "did not converge) and the last snapshot; a time step at the scheme's bound may be too long "
+    "for the scene (run { cfl = 0.5 })";
 
 enum clsph_status sim_check_flags(struct sim *sim)
 {
@@ -40,23 +48,32 @@ enum clsph_status sim_check_flags(struct sim *sim)
   }
   if (flags & 1u) {
     snprintf(sim->status, sizeof sim->status,
-             "blow-up: a non-finite value (NaN or Inf) at step %ld, t = %.9g s", sim->step,
-             sim->time);
+             "blow-up: a non-finite value (NaN or Inf) at step %ld, t = %.9g s; %s", sim->step,
+             sim->time, nan_hint);
     st = sim_fail(sim, "nan");
   } else if (flags & 4u) {
-    snprintf(sim->status, sizeof sim->status,
-             "blow-up: a particle left the domain at step %ld, t = %.9g s", sim->step, sim->time);
+    snprintf(
+        sim->status, sizeof sim->status,
+        "blow-up: a particle left the domain at step %ld, t = %.9g s; no setting controls this "
+        "check: look in the last snapshot for fluid thrown over a wall or out through a gap "
+        "(particles must stay within the domain { } box and a margin of a few dr around it)",
+        sim->step, sim->time);
     st = sim_fail(sim, "escaped");
   } else if (flags & 2u) {
-    snprintf(sim->status, sizeof sim->status,
-             "blow-up: a particle has more neighbours than its table holds at step %ld", sim->step);
+    snprintf(
+        sim->status, sizeof sim->status,
+        "blow-up: a particle has more neighbours than its table holds at step %ld, t = %.9g s; "
+        "no setting controls this check: particles have piled up; the last snapshot shows "
+        "where",
+        sim->step, sim->time);
     st = sim_fail(sim, "neighbours");
   } else if (sim->scene->checks.every > 0 &&
              (double)depth > sim->scene->checks.wall_depth * sim->scene->dr) {
     snprintf(sim->status, sizeof sim->status,
              "blow-up: a fluid particle crossed a wall (%.3g dr behind it, %u behind walls) at "
-             "step %ld, t = %.9g s",
-             (double)depth / sim->scene->dr, f[1], sim->step, sim->time);
+             "step %ld, t = %.9g s (run { checks = { wall_depth = %g } } sets this limit, in dr)",
+             (double)depth / sim->scene->dr, f[1], sim->step, sim->time,
+             sim->scene->checks.wall_depth);
     st = sim_fail(sim, "wall_crossing");
   }
 done:
@@ -75,7 +92,8 @@ enum clsph_status sim_check_health(struct sim *sim)
   /* the spacing needs a current cell table (sorting is idempotent: the next step sees the same) */
   CLSPH_TRY(sim_sort(sim));
   cl_uint n = (cl_uint)sim->ps.n;
-  const real close = (real)(c->cluster_spacing * dr);
+  const double limit = c->cluster_h * sim->sm.h; /* the clustering distance, m */
+  const real close = (real)limit;
   cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
   cl_mem vol = pset_mem(&sim->ps, sim->f_vol), kind = pset_mem(&sim->ps, sim->f_kind);
   CLSPH_TRY(KERN_SET(sim->k_health, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
@@ -100,19 +118,23 @@ enum clsph_status sim_check_health(struct sim *sim)
   sim->spacing_min = fmin(sim->spacing_min, dmin / dr);
   if (!isfinite(e)) {
     snprintf(sim->status, sizeof sim->status,
-             "blow-up: a non-finite velocity at step %ld, t = %.9g s", sim->step, sim->time);
+             "blow-up: a non-finite velocity at step %ld, t = %.9g s; %s", sim->step, sim->time,
+             nan_hint);
     st = sim_fail(sim, "nan");
   } else if (frac > c->cluster_fraction) {
     snprintf(sim->status, sizeof sim->status,
-             "blow-up: particles cluster: %.3g%% of the fluid has a neighbour closer than %g dr "
-             "(closest %.3g dr) at step %ld, t = %.9g s",
-             100.0 * frac, c->cluster_spacing, dmin / dr, sim->step, sim->time);
+             "blow-up: particles cluster: %.3g%% of the fluid has a fluid neighbour closer than "
+             "%g h = %.3g dr (closest %.3g dr) at step %ld, t = %.9g s (run { checks = { "
+             "cluster_h = %g, cluster_fraction = %g } } sets these limits)",
+             100.0 * frac, c->cluster_h, limit / dr, dmin / dr, sim->step, sim->time, c->cluster_h,
+             c->cluster_fraction);
     st = sim_fail(sim, "clustering");
   } else if (c->energy > 0.0 && ratio > c->energy) {
     snprintf(sim->status, sizeof sim->status,
              "blow-up: the kinetic energy grew to %.3g times ½ M U² (U = %.3g m/s, the scene's "
-             "velocity scale) at step %ld, t = %.9g s",
-             ratio, sim->u_ref, sim->step, sim->time);
+             "velocity scale) at step %ld, t = %.9g s (run { checks = { energy = %g } } sets this "
+             "limit)",
+             ratio, sim->u_ref, sim->step, sim->time, c->energy);
     st = sim_fail(sim, "energy");
   }
 done:

@@ -69,19 +69,22 @@ struct sim {
   cl_kernel k_health;    /* reduction: kinetic energy, volume and spacing of the fluid */
   cl_mem d_health;       /* its per-work-group results */
   double u_ref;          /* the scene's velocity scale of the energy check, m/s (0: no check) */
-  /* health checks of this run (sim_check_health): how many, the largest kinetic energy over
-   * ½ M U², the smallest nearest-fluid-neighbour distance over dr, the largest clustered
-   * fraction of the fluid */
+  /* health checks of this run (sim_check_health), the whole-run state a restart continues:
+   * health_checks     checks done;
+   * energy_ratio_max  the largest kinetic energy of the fluid over ½ M U² (U = u_ref);
+   * spacing_min       the smallest nearest-fluid-neighbour distance over dr (HUGE_VAL: none yet);
+   * cluster_max       the largest fraction of the fluid closer than checks.cluster_h h to
+   *                   another fluid particle (the clustered fraction) */
   long health_checks;
   double energy_ratio_max, spacing_min, cluster_max;
   double wall;          /* wall-clock time of this run so far (summary.json wall_seconds), s */
   double wall_before;   /* of the run before its checkpoint (a restart's), s */
   unsigned long digest; /* geometry_digest of the scene: checkpoints record it */
-  char status[256];     /* "ok" or why the run stopped */
+  char status[512];     /* "ok" or why the run stopped */
   char failure[32];     /* "none", or the class of the failure (summary.json "failure"): "nan",
                          * "escaped", "neighbours", "wall_crossing", "solver", "clustering",
                          * "energy", "dt_collapse", "dt_bound", "flow_control", "metrics",
-                         * "error" */
+                         * "interrupted", "error" */
 };
 
 /** @brief Set up a simulation of a scene: geometry, program, fields, scheme. Nothing is written. */
@@ -96,8 +99,8 @@ enum clsph_status sim_sort(struct sim *sim);
  *  checks.wall_depth dr behind the wall. */
 enum clsph_status sim_check_flags(struct sim *sim);
 /** @brief The health checks (scene checks): particle clustering, the fraction of the fluid
- *  whose nearest fluid neighbour is closer than checks.cluster_spacing dr, above
- *  checks.cluster_fraction; and energy growth, the kinetic energy of the fluid above
+ *  whose nearest fluid neighbour is closer than checks.cluster_h h (h the smoothing length),
+ *  above checks.cluster_fraction; and energy growth, the kinetic energy of the fluid above
  *  checks.energy times ½ M U² (M its mass, U = sim->u_ref). Reduced on the device; a failed
  *  check ends the run (CLSPH_E_BLOWUP) with the reason in sim->status and sim->failure. */
 enum clsph_status sim_check_health(struct sim *sim);
