@@ -56,7 +56,8 @@ enum clsph_status sim_check_flags(struct sim *sim)
         sim->status, sizeof sim->status,
         "blow-up: a particle left the domain at step %ld, t = %.9g s; no setting controls this "
         "check: look in the last snapshot for fluid thrown over a wall or out through a gap "
-        "(particles must stay within the domain { } box and a margin of a few dr around it)",
+        "(fluid particles must stay within dr of the domain { } box, but on the side gravity "
+        "points away from)",
         sim->step, sim->time);
     st = sim_fail(sim, "escaped");
   } else if (flags & 2u) {
