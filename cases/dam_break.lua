@@ -4,10 +4,24 @@
 -- across the depth (dr = H/n). The surge front runs along the floor; Ritter's ideal (inviscid,
 -- frictionless) front speed 2 √(gH) = 3.43 m/s bounds it, and the front reaches the downstream
 -- wall at about t √(g/H) = 2.4 (sensor 1's impact in the experiment, t* = 2.44).
--- Metrics at the end: the front (the largest x of the fluid on the floor, within 2 dr of it) and
--- the largest fluid speed, both over √(gH); the fluid's volume against the column's.
+-- Metrics at the end (the fluid "on the floor" is the fluid within 2 dr of it):
+--   front, front_over_H     the largest x of the fluid on the floor; (front − L)/H
+--   front_over_ritter       (front − L)/(2 √(gH) t): the front's mean speed since the release over
+--                           Ritter's (its x is L + 2 √(gH) t)
+--   bulk_front              the largest x of the fluid on the floor that has at least 4 other fluid
+--                           particles within 4 dr (the kernel's support at h = 2 dr): the body of
+--                           the surge, without the single particles ahead of it
+--   lead_ahead_dr           (front − bulk_front)/dr: how far single particles run ahead
+--   floor_speed_max         the largest speed along the floor (x) of the fluid on the floor over
+--                           2 √(gH): nothing on the floor outruns Ritter's front (a particle thrown
+--                           along the floor by a bad pressure does)
+--   max_speed_over_sqrt_gH  the largest fluid speed over √(gH); volume_ratio, the fluid's volume
+--                           against the column's; time_star = t √(g/H)
+-- checkpoint > 0 writes a checkpoint that often (s); tests/case/run_checkpoints.cmake resumes
+-- each one to read the metrics along the run. cluster_spacing is the clustering check's threshold
+-- (in dr; 0.5 is the checks' default).
 -- --set wcsph=1 runs the weakly-compressible baseline (c0 = 10 · 2 √(gH)).
-param { n = 20, t_end = 0.4, wcsph = 0 }
+param { n = 20, t_end = 0.4, wcsph = 0, checkpoint = 0, cluster_spacing = 0.5 }
 
 local g, H, L, tank, top = 9.81, 0.3, 0.6, 1.61, 1.0
 local dr = H / n
@@ -23,21 +37,43 @@ fluid { density = 997, viscosity = 8.9e-7, gravity = {0, -g} }
 wall { {0, top}, {0, 0}, {tank, 0}, {tank, top}, fluid = "left", group = "tank" }
 fill { 0, 0, L, H, name = "water" }
 probe { "sensor_1", {tank - dr, 0.003} }
-run { t_end = t_end, output_every = 0.05 }
+run { t_end = t_end, output_every = 0.05,
+      checkpoint_every = checkpoint > 0 and checkpoint or nil,
+      checks = { cluster_spacing = cluster_spacing } }
 
 function metrics(sim)
-  local f = sim.field("pos", 1)
-  local y = sim.field("pos", 2)
-  local front = 0
-  for i = 1, #f.value do
-    if y.value[i] < 2 * dr then front = math.max(front, f.value[i]) end
+  local U = 2 * math.sqrt(g * H) -- Ritter's front speed
+  local x, y = sim.field("pos", 1), sim.field("pos", 2)
+  local u = sim.field("vel", 1)
+  local px, py = x.value, y.value
+  -- the fluid on the floor, furthest first
+  local floor = {}
+  for i = 1, #px do
+    if py[i] < 2 * dr then floor[#floor + 1] = i end
   end
-  local speed = 0
+  table.sort(floor, function(a, b) return px[a] > px[b] end)
+  local front = #floor > 0 and px[floor[1]] or 0
+  local speed = 0 -- along the floor
+  for _, i in ipairs(floor) do speed = math.max(speed, u.value[i]) end
+  -- the body's front: the furthest floor particle with company within the kernel's support
+  local bulk, reach2 = 0, (4 * dr) ^ 2
+  for _, i in ipairs(floor) do
+    local company = 0
+    for j = 1, #px do
+      if j ~= i and (px[j] - px[i]) ^ 2 + (py[j] - py[i]) ^ 2 < reach2 then company = company + 1 end
+    end
+    if company >= 4 then
+      bulk = px[i]
+      break
+    end
+  end
+  local top_speed = 0
   for c = 1, 2 do
-    speed = math.max(speed, math.abs(sim.min("vel", c)), math.abs(sim.max("vel", c)))
+    top_speed = math.max(top_speed, math.abs(sim.min("vel", c)), math.abs(sim.max("vel", c)))
   end
-  local U = math.sqrt(g * H)
-  return { front = front, front_over_H = (front - L) / H, max_speed_over_sqrt_gH = speed / U,
-           volume_ratio = #f.value * dr * dr / (L * H),
-           time_star = sim.time * math.sqrt(g / H) }
+  return { front = front, front_over_H = (front - L) / H,
+           front_over_ritter = sim.time > 0 and (front - L) / (U * sim.time) or 0,
+           bulk_front = bulk, lead_ahead_dr = (front - bulk) / dr, floor_speed_max = speed / U,
+           max_speed_over_sqrt_gH = top_speed / math.sqrt(g * H),
+           volume_ratio = #px * dr * dr / (L * H), time_star = sim.time * math.sqrt(g / H) }
 end

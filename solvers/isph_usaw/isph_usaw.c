@@ -6,7 +6,8 @@
  *   4. free surface: D{r} ≤ 1.5 unless about to hit a wall (eq 39, free_surface.cl)
  *   5. Morris Σ 2V F (P_a − P_b) = γ (ρ/δt) D{u*} + 2 Σ_s (∇P)_s·∇γ_as, P = p̃ + ρgz   (44, ppe.cl)
  *      solved on the device by BiCGStab (solvers/pressure), P = ρgz on free-surface rows;
- *      a flow with no free surface is singular: the diagonal is reinforced (sec 3.3)
+ *      a flow with no free surface is singular: the diagonal is reinforced (sec 3.3);
+ *      with gravity, p̃ ≥ 0 within h q_max/2 of the free surface (no tension, ppe.cl)
  *   6. ũ = u* − (δt/ρ) G+{p̃}                                     (32, project.cl)
  *      (default: ũ = u* − δt g − (δt/ρ) G−{P}, corrected to first order near the free surface)
  *   7. r̃ = r* + δt/2 ũ                                           (34)
@@ -29,7 +30,8 @@ struct isph {
   struct psolve_options popt;
   int f_p, f_P, f_ustar, f_visc, f_gam, f_ggam, f_free, f_theta, f_shift, f_vnew, f_rhs, f_divr,
       f_acc, f_normal;
-  cl_kernel k_half, k_predict, k_free, k_rhs, k_pressure, k_project, k_shift, k_apply, k_strain;
+  cl_kernel k_half, k_predict, k_free, k_rhs, k_pressure, k_no_tension, k_project, k_shift, k_apply,
+      k_strain;
   cl_mem d_strain;  /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
   double c_shift;   /* shifting coefficient (0: off) */
   double fs_offset; /* distance of the free surface beyond its particles, in dr */
@@ -219,11 +221,11 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   struct {
     cl_kernel *k;
     const char *name;
-  } ks[] = {{&is->k_half, "isph_half_move"},      {&is->k_predict, "usaw_predict"},
-            {&is->k_free, "isph_free_surface"},   {&is->k_rhs, "isph_ppe_rhs"},
-            {&is->k_pressure, "isph_pressure"},   {&is->k_project, "isph_project"},
-            {&is->k_shift, "isph_shift"},         {&is->k_apply, "isph_apply_shift"},
-            {&is->k_strain, "usaw_vertex_strain"}};
+  } ks[] = {{&is->k_half, "isph_half_move"},    {&is->k_predict, "usaw_predict"},
+            {&is->k_free, "isph_free_surface"}, {&is->k_rhs, "isph_ppe_rhs"},
+            {&is->k_pressure, "isph_pressure"}, {&is->k_no_tension, "isph_no_tension"},
+            {&is->k_project, "isph_project"},   {&is->k_shift, "isph_shift"},
+            {&is->k_apply, "isph_apply_shift"}, {&is->k_strain, "usaw_vertex_strain"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
   CLSPH_TRY(kern_buffer(sim->dev, 3 * ps->cap * sizeof(real), NULL, &is->d_strain, "strain"));
@@ -328,6 +330,17 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   cl_uint n = (cl_uint)ps->n;
   CLSPH_TRY(KERN_SET(is->k_pressure, KARG(n), KARG(pos), KARG(P), KARG(rho), KARG(grav), KARG(p)));
   CLSPH_TRY(kern_launch(sim->dev, is->k_pressure, ps->n, NULL));
+  /* no tension next to the air (scenes with gravity, where a free surface is physics; ppe.cl) */
+  const cl_uint stop_at_walls = hypot(sc->gravity[0], sc->gravity[1]) > 0.0;
+  if (stop_at_walls && nfree > 0.0) {
+    CLSPH_TRY(prefix(sim, is, is->k_no_tension, &i));
+    CLSPH_TRY(arg(is->k_no_tension, &i, sizeof fs, &fs));
+    CLSPH_TRY(arg(is->k_no_tension, &i, sizeof rho, &rho));
+    CLSPH_TRY(arg(is->k_no_tension, &i, sizeof grav, &grav));
+    CLSPH_TRY(arg(is->k_no_tension, &i, sizeof P, &P));
+    CLSPH_TRY(arg(is->k_no_tension, &i, sizeof p, &p));
+    CLSPH_TRY(kern_launch(sim->dev, is->k_no_tension, ps->n, NULL));
+  }
   /* 5. projection, second half move */
   CLSPH_TRY(prefix(sim, is, is->k_project, &i));
   CLSPH_TRY(arg(is->k_project, &i, sizeof ustar, &ustar));
@@ -340,7 +353,6 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_project, &i, sizeof divr, &divr));
   const cl_uint free_flow = nfree > 0.0;
   CLSPH_TRY(arg(is->k_project, &i, sizeof free_flow, &free_flow));
-  const cl_uint stop_at_walls = hypot(sc->gravity[0], sc->gravity[1]) > 0.0;
   CLSPH_TRY(arg(is->k_project, &i, sizeof stop_at_walls, &stop_at_walls));
   CLSPH_TRY(arg(is->k_project, &i, sizeof vel, &vel));
   cl_mem acc = pset_mem(ps, is->f_acc); /* the accelerations, kept for the next free surface */
@@ -422,8 +434,8 @@ static void isph_destroy(void *state)
 {
   struct isph *is = state;
   if (is == NULL) return;
-  cl_kernel *ks[] = {&is->k_half,    &is->k_predict, &is->k_free,  &is->k_rhs,   &is->k_pressure,
-                     &is->k_project, &is->k_shift,   &is->k_apply, &is->k_strain};
+  cl_kernel *ks[] = {&is->k_half,       &is->k_predict, &is->k_free,  &is->k_rhs,   &is->k_pressure,
+                     &is->k_no_tension, &is->k_project, &is->k_shift, &is->k_apply, &is->k_strain};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   kern_release(&is->d_strain);
