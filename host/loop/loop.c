@@ -243,6 +243,7 @@ enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
   kern_profile_start(sim->dev->profile);
 
   o.checkpoint_step = -1;
+  o.script = script;
   if (interrupt_signal() != 0) { /* during the set-up: nothing written yet */
     snprintf(sim->status, sizeof sim->status, "interrupted (%s) before the first step",
              interrupt_name(interrupt_signal()));

@@ -7,12 +7,15 @@
 #include <string.h>
 
 #include "kern.h"
-static enum clsph_status metric_stats(void *ctx, const char *field, int comp, int kind, double *mn,
-                                      double *mx, double *mean)
+
+/* Statistics of a field over the particles of a kind (−1: all) in a box (NULL: everywhere). */
+static enum clsph_status metric_stats(void *ctx, const char *field, int comp, int kind,
+                                      const double *region, double *mn, double *mx, double *mean,
+                                      size_t *count)
 {
   enum clsph_status st = CLSPH_OK;
   struct sim *sim = ctx;
-  real *v = NULL;
+  real *v = NULL, *x = NULL;
   cl_uint *k = NULL;
   int idx = pset_find(&sim->ps, field);
   CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
@@ -20,32 +23,65 @@ static enum clsph_status metric_stats(void *ctx, const char *field, int comp, in
   CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
               field, f->nout);
   size_t n = sim->ps.n;
-  v = malloc(n * f->elem);
-  k = malloc(n * sizeof *k);
-  CLSPH_CHECK(v != NULL && k != NULL, CLSPH_E_NOMEM, "out of memory");
+  v = malloc(n * f->elem + 1);
+  k = malloc(n * sizeof *k + 1);
+  x = region != NULL ? malloc(2 * n * sizeof *x + 1) : NULL;
+  CLSPH_CHECK(v != NULL && k != NULL && (region == NULL || x != NULL), CLSPH_E_NOMEM,
+              "out of memory");
   CLSPH_TRY(kern_read(sim->dev, f->d, n * f->elem, v));
   CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_kind), n * sizeof *k, k));
+  if (region != NULL)
+    CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_pos), 2 * n * sizeof *x, x));
   double a = HUGE_VAL, b = -HUGE_VAL, s = 0.0;
   size_t c = 0;
   for (size_t i = 0; i < n; ++i) {
     if (kind >= 0 && k[i] != (cl_uint)kind) continue;
-    double x;
+    if (region != NULL && !((double)x[2 * i] >= region[0] && (double)x[2 * i] <= region[2] &&
+                            (double)x[2 * i + 1] >= region[1] && (double)x[2 * i + 1] <= region[3]))
+      continue;
+    double y;
     if (f->type == PF_REAL)
-      x = (double)v[i * (size_t)f->ncomp + (size_t)comp];
+      y = (double)v[i * (size_t)f->ncomp + (size_t)comp];
     else
-      x = (double)((const cl_uint *)(const void *)v)[i * (size_t)f->ncomp + (size_t)comp];
-    a = fmin(a, x);
-    b = fmax(b, x);
-    s += x;
+      y = (double)((const cl_uint *)(const void *)v)[i * (size_t)f->ncomp + (size_t)comp];
+    a = fmin(a, y);
+    b = fmax(b, y);
+    s += y;
     ++c;
   }
-  CLSPH_CHECK(c > 0, CLSPH_E_INPUT, "metrics: no particle of that kind");
   *mn = a;
   *mx = b;
-  *mean = s / (double)c;
+  *mean = c > 0 ? s / (double)c : 0.0;
+  *count = c;
 done:
+  free(x);
   free(k);
   free(v);
+  return st;
+}
+
+/* What sample() recorded under `name`: rows of (t, value). */
+static enum clsph_status metric_series(void *ctx, const char *name, size_t *n, double **rows)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct sim *sim = ctx;
+  const struct sim_samples *h = &sim->samples;
+  int col = -1;
+  *n = 0;
+  *rows = NULL;
+  for (int c = 0; c < h->ncols; ++c)
+    if (strcmp(h->names[c], name) == 0) col = c;
+  CLSPH_CHECK(col >= 0, CLSPH_E_INPUT, "metrics: sample() records no value '%s'", name);
+  double *out = malloc(2 * (h->nrows + 1) * sizeof *out);
+  CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
+  const size_t cols = 1 + (size_t)h->ncols;
+  for (size_t r = 0; r < h->nrows; ++r) {
+    out[2 * r] = h->rows[r * cols];
+    out[2 * r + 1] = h->rows[r * cols + 1 + (size_t)col];
+  }
+  *n = h->nrows;
+  *rows = out;
+done:
   return st;
 }
 
@@ -216,4 +252,5 @@ void metrics_api(struct sim *sim, const char *dir, struct case_sim_api *api)
   api->force_history = metric_force_history;
   api->dir = dir;
   api->field_values = metric_particles;
+  api->series = metric_series;
 }

@@ -204,6 +204,8 @@ void out_close(const struct scene *s, struct run_out *o)
   if (o->probes != NULL) fclose(o->probes);
   if (o->forces != NULL) fclose(o->forces);
   if (o->flow != NULL) fclose(o->flow);
+  if (o->samples != NULL) fclose(o->samples);
+  case_values_free(&o->values);
   for (int p = 0; o->profiles != NULL && p < s->nprofiles; ++p)
     if (o->profiles[p] != NULL) fclose(o->profiles[p]);
   free(o->profiles);

@@ -6,6 +6,7 @@
 
 #include <stdio.h>
 
+#include "case.h"
 #include "frames.h"
 #include "io.h"
 #include "scene.h"
@@ -13,7 +14,9 @@
 struct run_out {
   char *dir; /* the output folder (malloc'd) */
   struct io_series series;
-  FILE *probes, *forces, *flow;
+  struct case_script *script; /* the case: its sample(sim) writes series.csv (NULL: none) */
+  FILE *probes, *forces, *flow, *samples;
+  struct case_values values; /* the last values of sample(sim) */
   FILE **profiles;
   int nsnap;
   long checkpoint_step; /* the step of the last checkpoint written (−1: none yet) */

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "metrics.h"
 #include "scheme.h"
 #include "str.h"
 /* Real fields that probes and profiles record (not position or volume). */
@@ -152,6 +153,67 @@ done:
   return st;
 }
 
+/* The case's sample(sim) now, into o->values; a failure is the run's (status, class). */
+static enum clsph_status sample_call(struct sim *sim, struct run_out *o,
+                                     const struct case_sim_api *api)
+{
+  enum clsph_status st = case_sample(o->script, api, &o->values);
+  if (st != CLSPH_OK) {
+    snprintf(sim->status, sizeof sim->status, "sample() failed at step %ld, t = %.9g s", sim->step,
+             sim->time);
+    snprintf(sim->failure, sizeof sim->failure, "metrics");
+  }
+  return st;
+}
+
+/* One row of the samples' history (sim->samples): time, then the values in column order. */
+static enum clsph_status samples_row(struct sim *sim, double t, const double *v)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim_samples *h = &sim->samples;
+  const size_t cols = 1 + (size_t)h->ncols;
+  if (h->nrows == h->cap) {
+    const size_t cap = h->cap ? 2 * h->cap : 64;
+    double *r = realloc(h->rows, cap * cols * sizeof *r);
+    CLSPH_CHECK(r != NULL, CLSPH_E_NOMEM, "out of memory for the sample history");
+    h->rows = r;
+    h->cap = cap;
+  }
+  h->rows[h->nrows * cols] = t;
+  memcpy(h->rows + h->nrows * cols + 1, v, (size_t)h->ncols * sizeof *v);
+  ++h->nrows;
+done:
+  return st;
+}
+
+/* The history starts with the columns of o->values and the kept rows of series.csv (a
+ * restart's: the values as the file holds them, 9 digits, like the rows written later). */
+static enum clsph_status samples_init(struct sim *sim, struct run_out *o,
+                                      const struct kept_series *k)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim_samples *h = &sim->samples;
+  double *v = NULL;
+  free(h->names);
+  h->names = malloc((size_t)o->values.n * sizeof *h->names);
+  v = malloc((size_t)o->values.n * sizeof *v);
+  CLSPH_CHECK(h->names != NULL && v != NULL, CLSPH_E_NOMEM, "out of memory");
+  memcpy(h->names, o->values.names, (size_t)o->values.n * sizeof *h->names);
+  h->ncols = o->values.n;
+  h->nrows = 0;
+  for (const char *c = k->rows; c != NULL && c < k->rows + k->bytes;) {
+    char *end = NULL;
+    const double t = strtod(c, &end);
+    for (int j = 0; j < h->ncols; ++j) v[j] = strtod(end + 1, &end);
+    CLSPH_TRY(samples_row(sim, t, v));
+    c = strchr(end, '\n');
+    if (c != NULL) ++c;
+  }
+done:
+  free(v);
+  return st;
+}
+
 /* Open the CSV series of the run. On a restart (restart: the checkpoint's path), each goes on
  * from the rows the restarted run wrote up to the checkpoint's time, so that it reads as one
  * run. */
@@ -161,8 +223,9 @@ enum clsph_status series_open(struct sim *sim, struct run_out *o, const char *re
   const struct scene *s = sim->scene;
   char *path = NULL, name[SCENE_NAME + 32], prefix[SCENE_NAME + 2];
   const int np = s->nprofiles;
-  /* the kept rows of the profiles, then of the probes, the flow control and the forces */
-  struct kept_series *kept = calloc((size_t)np + 3, sizeof *kept);
+  /* the kept rows of the profiles, then of the probes, the flow control, the forces and the
+   * case's samples */
+  struct kept_series *kept = calloc((size_t)np + 4, sizeof *kept);
   CLSPH_CHECK(kept != NULL, CLSPH_E_NOMEM, "out of memory");
   if (restart != NULL) {
     for (int p = 0; p < np; ++p) {
@@ -173,6 +236,8 @@ enum clsph_status series_open(struct sim *sim, struct run_out *o, const char *re
     if (s->flow.on) /* its rows are written as each step begins */
       CLSPH_TRY(series_keep(restart, "flow_control.csv", sim->time, 1, &kept[np + 1]));
     if (s->nforces > 0) CLSPH_TRY(series_keep(restart, "forces.csv", sim->time, 0, &kept[np + 2]));
+    if (case_has_sample(o->script))
+      CLSPH_TRY(series_keep(restart, "series.csv", sim->time, 0, &kept[np + 3]));
   }
   if (s->nprobes > 0) {
     free(path);
@@ -228,8 +293,24 @@ enum clsph_status series_open(struct sim *sim, struct run_out *o, const char *re
     CLSPH_TRY(series_resume(o->forces, path, &kept[np + 2]));
     CLSPH_TRY(forces_reload(sim, o, &kept[np + 2]));
   }
+  if (case_has_sample(o->script)) {
+    /* a first call names the columns (a fresh run's state at t = 0, a restart's at its
+     * checkpoint: a row for it is written with the snapshot, or was kept) */
+    struct case_sim_api api;
+    metrics_api(sim, o->dir, &api);
+    CLSPH_TRY(sample_call(sim, o, &api));
+    free(path);
+    CLSPH_TRY(out_path(o, "series.csv", &path));
+    o->samples = fopen(path, "w");
+    CLSPH_CHECK(o->samples != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
+    fprintf(o->samples, "time");
+    for (int c = 0; c < o->values.n; ++c) fprintf(o->samples, ",%s", o->values.names[c]);
+    fprintf(o->samples, "\n");
+    CLSPH_TRY(series_resume(o->samples, path, &kept[np + 3]));
+    CLSPH_TRY(samples_init(sim, o, &kept[np + 3]));
+  }
 done:
-  for (int k = 0; kept != NULL && k < np + 3; ++k) kept_free(&kept[k]);
+  for (int k = 0; kept != NULL && k < np + 4; ++k) kept_free(&kept[k]);
   free(kept);
   free(path);
   return st;
@@ -364,6 +445,19 @@ enum clsph_status series_write(struct sim *sim, struct run_out *o, int what)
     fprintf(o->forces, "\n");
     fflush(o->forces);
     CLSPH_TRY(force_row(sim, o, row));
+  }
+  if (o->samples != NULL && (what & SERIES_TIME)) {
+    struct case_sim_api api;
+    metrics_api(sim, o->dir, &api);
+    CLSPH_TRY(sample_call(sim, o, &api));
+    fprintf(o->samples, "%.17g", sim->time);
+    for (int c = 0; c < o->values.n; ++c) {
+      o->values.values[c] = recorded(o->values.values[c]);
+      fprintf(o->samples, ",%.9g", o->values.values[c]);
+    }
+    fprintf(o->samples, "\n");
+    fflush(o->samples);
+    CLSPH_TRY(samples_row(sim, sim->time, o->values.values));
   }
   if (o->flow != NULL) fflush(o->flow);
 done:

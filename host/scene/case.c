@@ -1197,17 +1197,78 @@ static int kind_of(lua_State *L, int idx)
                     k);
 }
 
-/* sim.min/max/mean(field [, component [, kind]]) over fluid particles unless a kind is given */
+/* A region {x0, y0, x1, y1} at idx into box (x0 < x1, y0 < y1). */
+static void region_of(lua_State *L, int idx, double box[4])
+{
+  if (lua_rawlen(L, idx) != 4)
+    luaL_error(L, "sim: a region is {x0, y0, x1, y1}, the box x0 <= x <= x1, y0 <= y <= y1");
+  for (int k = 0; k < 4; ++k) {
+    lua_rawgeti(L, idx, k + 1);
+    if (lua_type(L, -1) != LUA_TNUMBER)
+      luaL_error(L, "sim: region entry %d is not a number", k + 1);
+    box[k] = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+  }
+  if (!(box[0] <= box[2] && box[1] <= box[3]))
+    luaL_error(L, "sim: the region {%f, %f, %f, %f} is empty (x0 <= x1 and y0 <= y1 needed)",
+               box[0], box[1], box[2], box[3]);
+}
+
+/* sim.min/max/mean(field [, component [, kind]] [, region]) over the fluid particles unless a
+ * kind is given, in the box region = {x0, y0, x1, y1} when one is (nil when no particle is in
+ * it) */
 static int l_stat(lua_State *L, int which)
 {
   const struct case_sim_api *api = api_of(L);
   const char *field = luaL_checkstring(L, 1);
   int comp = (int)luaL_optinteger(L, 2, 1) - 1;
-  int kind = kind_of(L, 3);
+  double box[4];
+  const double *region = NULL;
+  int kind = 0;
+  if (lua_istable(L, 3)) {
+    region_of(L, 3, box);
+    region = box;
+  } else {
+    kind = kind_of(L, 3);
+    if (lua_istable(L, 4)) {
+      region_of(L, 4, box);
+      region = box;
+    }
+  }
   double v[3];
-  if (api->stats(api->ctx, field, comp, kind, &v[0], &v[1], &v[2]) != CLSPH_OK)
+  size_t count = 0;
+  if (api->stats(api->ctx, field, comp, kind, region, &v[0], &v[1], &v[2], &count) != CLSPH_OK)
     return luaL_error(L, "sim: no statistics for field '%s' component %d", field, comp + 1);
+  if (count == 0 && region != NULL) {
+    lua_pushnil(L);
+    return 1;
+  }
+  if (count == 0) return luaL_error(L, "sim: no particle of that kind");
   lua_pushnumber(L, v[which]);
+  return 1;
+}
+
+/* sim.series(name): what sample() recorded under `name` so far, a table of arrays `time` and
+ * `value` (the rows of series.csv, a restart's included) */
+static int l_series(lua_State *L)
+{
+  const struct case_sim_api *api = api_of(L);
+  const char *name = luaL_checkstring(L, 1);
+  size_t n = 0;
+  double *rows = NULL;
+  if (api->series == NULL || api->series(api->ctx, name, &n, &rows) != CLSPH_OK)
+    return luaL_error(L, "sim.series: sample() records no value '%s'", name);
+  lua_createtable(L, 0, 2);
+  const char *names[] = {"time", "value"};
+  for (int c = 0; c < 2; ++c) {
+    lua_createtable(L, (int)n, 0);
+    for (size_t i = 0; i < n; ++i) {
+      lua_pushnumber(L, rows[2 * i + (size_t)c]);
+      lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+    lua_setfield(L, -2, names[c]);
+  }
+  free(rows);
   return 1;
 }
 
@@ -1540,18 +1601,9 @@ static int l_profile_at(lua_State *L)
   return 1;
 }
 
-enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api *api,
-                               struct cJSON *out)
+/* The table `sim` that metrics() and sample() receive, on the stack. */
+static void push_sim(lua_State *L, const struct case_sim_api *api)
 {
-  enum clsph_status st = CLSPH_OK;
-  lua_State *L = cs->L;
-  int top = lua_gettop(L);
-  /* raw access: a metamethod the script set on _G runs only inside the sandbox's calls */
-  lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
-  lua_pushliteral(L, "metrics");
-  lua_rawget(L, -2);
-  if (lua_isnil(L, -1)) goto done;
-  CLSPH_CHECK(lua_isfunction(L, -1), CLSPH_E_INPUT, "metrics must be a function");
   lua_newtable(L);
   lua_pushnumber(L, api->time);
   lua_setfield(L, -2, "time");
@@ -1570,6 +1622,7 @@ enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api
                                  {"field", l_field_values},
                                  {"force", l_force_metric},
                                  {"force_history", l_force_history},
+                                 {"series", l_series},
                                  {"spectrum_peak", l_spectrum_peak},
                                  {"profile_error", l_profile_error},
                                  {"profile", l_profile_at}};
@@ -1578,21 +1631,138 @@ enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api
     lua_pushcclosure(L, fns[i].func, 1);
     lua_setfield(L, -2, fns[i].name);
   }
-  CLSPH_TRY(sandbox_call(&cs->sb, 1, 1, "metrics()"));
-  CLSPH_CHECK(lua_istable(L, -1), CLSPH_E_INPUT, "metrics must return a table of name = number");
+}
+
+/* The global function `name` of the script on the stack (raw access: a metamethod the script set
+ * on _G runs only inside the sandbox's calls); returns whether there is one. */
+static int push_hook(lua_State *L, const char *name)
+{
+  lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
+  lua_pushstring(L, name);
+  lua_rawget(L, -2);
+  lua_remove(L, -2);
+  return !lua_isnil(L, -1);
+}
+
+/* Call the hook on the stack with the table `sim`: its result, a table of name = number, is left
+ * on the stack. */
+static enum clsph_status call_hook(struct case_script *cs, const char *phase,
+                                   const struct case_sim_api *api)
+{
+  enum clsph_status st = CLSPH_OK;
+  lua_State *L = cs->L;
+  CLSPH_CHECK(lua_isfunction(L, -1), CLSPH_E_INPUT, "%s: %.*s must be a function", cs->sb.path,
+              (int)(strlen(phase) - 2), phase);
+  push_sim(L, api);
+  CLSPH_TRY(sandbox_call(&cs->sb, 1, 1, phase));
+  CLSPH_CHECK(lua_istable(L, -1), CLSPH_E_INPUT, "%s: %s must return a table of name = number",
+              cs->sb.path, phase);
   lua_pushnil(L);
   while (lua_next(L, -2) != 0) {
-    if (lua_type(L, -2) != LUA_TSTRING || !lua_isnumber(L, -1)) {
-      log_error("metrics: every entry must be name = number");
-      st = CLSPH_E_INPUT;
-      goto done;
-    }
+    CLSPH_CHECK(lua_type(L, -2) == LUA_TSTRING && lua_type(L, -1) == LUA_TNUMBER, CLSPH_E_INPUT,
+                "%s: %s: every entry must be name = number (%s = %s)", cs->sb.path, phase,
+                lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : luaL_typename(L, -2),
+                luaL_typename(L, -1));
+    lua_pop(L, 1);
+  }
+done:
+  return st;
+}
+
+enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api *api,
+                               struct cJSON *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  lua_State *L = cs->L;
+  int top = lua_gettop(L);
+  if (!push_hook(L, "metrics")) goto done;
+  CLSPH_TRY(call_hook(cs, "metrics()", api));
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
     cJSON_AddNumberToObject(out, lua_tostring(L, -2), lua_tonumber(L, -1));
     lua_pop(L, 1);
   }
 done:
   lua_settop(L, top);
   return st;
+}
+
+int case_has_sample(const struct case_script *cs)
+{
+  if (cs == NULL) return 0;
+  const int top = lua_gettop(cs->L);
+  const int has = push_hook(cs->L, "sample");
+  lua_settop(cs->L, top);
+  return has;
+}
+
+static int cmp_name(const void *a, const void *b)
+{
+  return strcmp((const char *)a, (const char *)b);
+}
+
+enum clsph_status case_sample(struct case_script *cs, const struct case_sim_api *api,
+                              struct case_values *v)
+{
+  enum clsph_status st = CLSPH_OK;
+  lua_State *L = cs->L;
+  const int top = lua_gettop(L);
+  char(*names)[SCENE_NAME] = NULL;
+  int n = 0;
+  CLSPH_CHECK(push_hook(L, "sample"), CLSPH_E_INPUT, "%s declares no sample(sim)", cs->sb.path);
+  CLSPH_TRY(call_hook(cs, "sample()", api));
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    ++n;
+    lua_pop(L, 1);
+  }
+  CLSPH_CHECK(n > 0, CLSPH_E_INPUT, "%s: sample() returned no values", cs->sb.path);
+  names = calloc((size_t)n, sizeof *names);
+  CLSPH_CHECK(names != NULL, CLSPH_E_NOMEM, "out of memory");
+  int k = 0;
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    const char *name = lua_tostring(L, -2);
+    CLSPH_CHECK(name[0] != '\0' && strlen(name) < SCENE_NAME && strpbrk(name, ",\"\n\r") == NULL,
+                CLSPH_E_INPUT,
+                "%s: sample(): '%s' is not a column name (1 to %d characters, no "
+                "comma, quote or line break)",
+                cs->sb.path, name, SCENE_NAME - 1);
+    snprintf(names[k++], SCENE_NAME, "%s", name);
+    lua_pop(L, 1);
+  }
+  qsort(names, (size_t)n, sizeof *names, cmp_name);
+  if (v->n == 0) { /* the first call: its names are the columns */
+    v->values = calloc((size_t)n, sizeof *v->values);
+    CLSPH_CHECK(v->values != NULL, CLSPH_E_NOMEM, "out of memory");
+    v->names = names;
+    names = NULL;
+    v->n = n;
+  } else {
+    int same = n == v->n;
+    for (int i = 0; same && i < n; ++i) same = strcmp(names[i], v->names[i]) == 0;
+    CLSPH_CHECK(same, CLSPH_E_INPUT,
+                "%s: sample() returned other names than at its first call (%d values, then %d): "
+                "series.csv has one column per name, so every call must return the same names",
+                cs->sb.path, v->n, n);
+  }
+  for (int i = 0; i < v->n; ++i) {
+    lua_pushstring(L, v->names[i]);
+    lua_rawget(L, -2); /* raw: a metatable of the script's runs only inside the sandbox */
+    v->values[i] = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+  }
+done:
+  free(names);
+  lua_settop(L, top);
+  return st;
+}
+
+void case_values_free(struct case_values *v)
+{
+  free(v->names);
+  free(v->values);
+  memset(v, 0, sizeof *v);
 }
 
 void case_close(struct case_script *cs)

@@ -16,9 +16,10 @@ struct case_sim_api {
   double particles; /* particle count */
   long wall_steps;  /* steps at which a fluid particle was behind a wall */
   long wall_most;   /* most fluid particles behind a wall at one step */
-  /** Statistics of component `comp` of a field over the particles of `kind` (−1: all). */
-  enum clsph_status (*stats)(void *ctx, const char *field, int comp, int kind, double *min,
-                             double *max, double *mean);
+  /** Statistics of component `comp` of a field over the particles of `kind` (−1: all) in the
+   *  box region = {x0, y0, x1, y1} (NULL: everywhere); *count of them (0: min, max, mean unset). */
+  enum clsph_status (*stats)(void *ctx, const char *field, int comp, int kind, const double *region,
+                             double *min, double *max, double *mean, size_t *count);
   /** Interpolated values of component `comp` of a field at np points (x, y pairs). */
   enum clsph_status (*sample_many)(void *ctx, const char *field, int comp, int np, const double *xy,
                                    double *values);
@@ -38,6 +39,17 @@ struct case_sim_api {
    *  field, in arrays the caller frees. */
   enum clsph_status (*field_values)(void *ctx, const char *field, int comp, int kind, size_t *n,
                                     double **xy, double **values);
+  /** What sample() recorded under `name`: n rows of (time, value) in an array the caller frees;
+   *  an input error when it records no such name (NULL: no sample()). */
+  enum clsph_status (*series)(void *ctx, const char *name, size_t *n, double **rows);
+};
+
+/** The values one call of the case's sample(sim) returned, by name: the names (sorted) are those
+ *  of its first call, which every later call must return too. */
+struct case_values {
+  int n;
+  char (*names)[SCENE_NAME];
+  double *values;
 };
 
 /** The limits of the case sandbox: every entry into the script (its top level, a fill's velocity
@@ -62,6 +74,15 @@ enum clsph_status case_load(const char *path, int nsets, char *const *sets,
  *  (a JSON object). */
 enum clsph_status case_metrics(struct case_script *cs, const struct case_sim_api *api,
                                struct cJSON *out);
+/** @brief Does the case declare sample(sim) (NULL: no script, no)? */
+int case_has_sample(const struct case_script *cs);
+/** @brief Call the case's sample(sim), which returns named numbers (series.csv, one row per
+ *  call): into v (v->n = 0 before the first call: its names become the columns; afterwards the
+ *  same names are required). */
+enum clsph_status case_sample(struct case_script *cs, const struct case_sim_api *api,
+                              struct case_values *v);
+/** @brief Free what case_sample allocated, and zero it. */
+void case_values_free(struct case_values *v);
 /** @brief Close the Lua state (NULL is fine). */
 void case_close(struct case_script *cs);
 

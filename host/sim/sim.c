@@ -348,5 +348,8 @@ void sim_destroy(struct sim *sim)
   geometry_free(&sim->geom);
   free(sim->force_rows);
   sim->force_rows = NULL;
+  free(sim->samples.names);
+  free(sim->samples.rows);
+  memset(&sim->samples, 0, sizeof sim->samples);
   sim->nforce_rows = sim->force_rows_cap = 0;
 }

@@ -45,8 +45,16 @@ struct sim {
   struct sim_flow flow;  /* flow-rate control state (scene->flow.on) */
   cl_kernel k_slice;     /* reduction: x velocity and count of the fluid in the control slice */
   double time, dt;       /* simulated time and last step, s */
-  double *force_rows;    /* wall forces at each output: time, then per group of scene->forces
-                          * pressure x, y and viscous x, y (N/m) */
+  /* what the case's sample(sim) returned at each sample (series.csv), a restart's rows too:
+   * ncols named values per row after the time */
+  struct sim_samples {
+    int ncols;
+    char (*names)[SCENE_NAME];
+    double *rows; /* nrows x (1 + ncols) */
+    size_t nrows, cap;
+  } samples;
+  double *force_rows; /* wall forces at each output: time, then per group of scene->forces
+                       * pressure x, y and viscous x, y (N/m) */
   size_t nforce_rows, force_rows_cap;
   long step;
   long step0;        /* the step this run started from (a restart's checkpoint; 0 otherwise) */
