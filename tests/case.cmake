@@ -84,6 +84,16 @@ clsph_cli_test(case_output_too_many ARGS run ${CASE_DIR}/bad_output_every.lua --
                --set every=0.05 --set t_end=1000
                --out ${CMAKE_CURRENT_BINARY_DIR}/runs/output_too_many RC 2
                REGEX "ask for 20000 snapshots and checkpoints up to t_end = 1000 s .*max_snapshots = 10000")
+# A wall that crosses itself or turns back on itself, and a probe or profile outside the domain
+# (they would read NaN), are refused with the file and line.
+clsph_cli_test(case_wall_crosses ARGS info ${CASE_DIR}/bad_wall_cross.lua RC 2
+               REGEX "bad_wall_cross.lua:10: wall: the polyline crosses itself: its segment 1, .* meets its segment 3")
+clsph_cli_test(case_wall_turns_back ARGS info ${CASE_DIR}/bad_wall_cross.lua --set which=2 RC 2
+               REGEX "bad_wall_cross.lua:12: wall: the polyline turns back on itself at its point 2, .0.9, 0.5.")
+clsph_cli_test(case_probe_outside ARGS info ${CASE_DIR}/bad_wall_cross.lua --set which=3 RC 2
+               REGEX "bad_wall_cross.lua:15: probe 'outside' at .1.5, 0.5. lies outside the domain")
+clsph_cli_test(case_profile_outside ARGS info ${CASE_DIR}/bad_wall_cross.lua --set which=4 RC 2
+               REGEX "bad_wall_cross.lua:16: profile 'long' from .0.5, 0. to .0.5, 2. leaves the domain")
 clsph_cli_test(case_missing_file ARGS info ${CASE_DIR}/no_such_case.lua RC 2
                REGEX "cannot read case .*no_such_case.lua: No such file")
 clsph_cli_test(case_folder ARGS run ${CASE_DIR} RC 2 REGEX "case .*/case is a folder: name a case script")

@@ -570,6 +570,62 @@ static void reverse_points(double *p, int n)
   }
 }
 
+/* (b − a) × (c − a): > 0 when c is left of a → b. */
+static double orient2(const double *a, const double *b, const double *c)
+{
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+/* Is c, collinear with a → b, within its bounding box? */
+static int within(const double *a, const double *b, const double *c)
+{
+  return fmin(a[0], b[0]) <= c[0] && c[0] <= fmax(a[0], b[0]) && fmin(a[1], b[1]) <= c[1] &&
+         c[1] <= fmax(a[1], b[1]);
+}
+
+/* Do the segments a → b and c → d share a point (crossing, touching or overlapping)? */
+static int segments_meet(const double *a, const double *b, const double *c, const double *d)
+{
+  const double d1 = orient2(c, d, a), d2 = orient2(c, d, b);
+  const double d3 = orient2(a, b, c), d4 = orient2(a, b, d);
+  if (((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) &&
+      ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)))
+    return 1;
+  return (d1 == 0.0 && within(c, d, a)) || (d2 == 0.0 && within(c, d, b)) ||
+         (d3 == 0.0 && within(a, b, c)) || (d4 == 0.0 && within(a, b, d));
+}
+
+/* A wall polyline must not cross or touch itself (but at the vertex two neighbouring segments
+ * share): its fluid side would change along it, and a closed one would enclose no single
+ * region. */
+static void check_simple(lua_State *L, const char *fn, const struct scene_wall *w)
+{
+  const int nseg = w->closed ? w->npts : w->npts - 1;
+  for (int i = 0; i < nseg; ++i) {
+    const double *a = &w->pts[2 * i], *b = &w->pts[2 * ((i + 1) % w->npts)];
+    /* the next segment may not turn straight back along this one */
+    if (i + 1 < nseg || w->closed) {
+      const double *d = &w->pts[2 * ((i + 2) % w->npts)];
+      if (orient2(a, b, d) == 0.0 &&
+          (b[0] - a[0]) * (d[0] - b[0]) + (b[1] - a[1]) * (d[1] - b[1]) < 0.0)
+        luaL_error(L, "%s: the polyline turns back on itself at its point %d, (%f, %f)", fn,
+                   (i + 1) % w->npts + 1, b[0], b[1]);
+    }
+    for (int j = i + 2; j < nseg; ++j) {
+      if (i == 0 && j == nseg - 1 &&
+          (w->closed ||
+           (w->pts[0] == w->pts[2 * w->npts - 2] && w->pts[1] == w->pts[2 * w->npts - 1])))
+        continue; /* they share the first point (a closed wall, or one drawn back to its start) */
+      const double *c = &w->pts[2 * j], *d = &w->pts[2 * ((j + 1) % w->npts)];
+      if (segments_meet(a, b, c, d))
+        luaL_error(L,
+                   "%s: the polyline crosses itself: its segment %d, (%f, %f) to (%f, %f), meets "
+                   "its segment %d, (%f, %f) to (%f, %f)",
+                   fn, i + 1, a[0], a[1], b[0], b[1], j + 1, c[0], c[1], d[0], d[1]);
+    }
+  }
+}
+
 /* Motion keys shared by every wall declaration. */
 static void wall_motion(lua_State *L, const char *fn, struct scene_wall *w)
 {
@@ -633,6 +689,7 @@ static int l_wall(lua_State *L)
     lua_pop(L, 1);
   }
   wall_motion(L, "wall", w);
+  check_simple(L, "wall", w);
   orient(L, "wall", w, get_choice(L, 1, "wall", "fluid", fluid_sides, 0));
   return 0;
 }
@@ -807,6 +864,7 @@ static int l_probe(lua_State *L)
   need_table(L, "probe");
   check_keys(L, 1, "probe", keys, 1);
   struct scene_probe *p = grow(L, (void **)&s->probes, &s->nprobes, sizeof *p);
+  p->line = current_line(L);
   lua_geti(L, 1, 1);
   if (lua_type(L, -1) == LUA_TSTRING) {
     snprintf(p->name, SCENE_NAME, "%s", lua_tostring(L, -1));
@@ -831,6 +889,7 @@ static int l_profile(lua_State *L)
   need_table(L, "profile");
   check_keys(L, 1, "profile", keys, 1);
   struct scene_profile_line *p = grow(L, (void **)&s->profiles, &s->nprofiles, sizeof *p);
+  p->line = current_line(L);
   lua_geti(L, 1, 1);
   if (lua_type(L, -1) == LUA_TSTRING) snprintf(p->name, SCENE_NAME, "%s", lua_tostring(L, -1));
   lua_pop(L, 1);
@@ -1063,6 +1122,16 @@ static int cmp_option(const void *a, const void *b)
   return strcmp(((const struct scene_option *)a)->key, ((const struct scene_option *)b)->key);
 }
 
+/* Is x in the domain's box (its edges included, to a millionth of its size)? */
+static int in_domain(const struct scene *s, const double x[2])
+{
+  for (int a = 0; a < 2; ++a) {
+    const double tol = 1e-6 * (s->hi[a] - s->lo[a]);
+    if (!(x[a] >= s->lo[a] - tol && x[a] <= s->hi[a] + tol)) return 0;
+  }
+  return 1;
+}
+
 /* After the script: what must be there, and --set names nobody declared. */
 static enum clsph_status finish(const char *path, struct loader *ld)
 {
@@ -1095,6 +1164,19 @@ static enum clsph_status finish(const char *path, struct loader *ld)
                 "range [%g, %g]%s",
                 path, c->line, c->slice[0], c->slice[1], s->lo[0], s->hi[0],
                 s->periodic[0] ? " (periodic: be narrower than the period)" : "");
+  }
+  /* probes and profiles sample the fluid: outside the domain there is none (a column of NaN) */
+  for (int k = 0; k < s->nprobes; ++k)
+    CLSPH_CHECK(in_domain(s, s->probes[k].x), CLSPH_E_INPUT,
+                "%s:%d: probe '%s' at (%g, %g) lies outside the domain {%g, %g, %g, %g}", path,
+                s->probes[k].line, s->probes[k].name, s->probes[k].x[0], s->probes[k].x[1],
+                s->lo[0], s->lo[1], s->hi[0], s->hi[1]);
+  for (int k = 0; k < s->nprofiles; ++k) {
+    const struct scene_profile_line *p = &s->profiles[k];
+    CLSPH_CHECK(in_domain(s, p->a) && in_domain(s, p->b), CLSPH_E_INPUT,
+                "%s:%d: profile '%s' from (%g, %g) to (%g, %g) leaves the domain {%g, %g, %g, %g}",
+                path, p->line, p->name, p->a[0], p->a[1], p->b[0], p->b[1], s->lo[0], s->lo[1],
+                s->hi[0], s->hi[1]);
   }
   qsort(s->params, (size_t)s->nparams, sizeof *s->params, cmp_param);
   /* by name: Lua visits a table's keys in an order that changes from run to run */

@@ -82,12 +82,14 @@ struct scene_section {
 struct scene_probe {
   char name[SCENE_NAME];
   double x[2];
+  int line; /* line of the case script */
 };
 
 struct scene_profile_line {
   char name[SCENE_NAME];
   double a[2], b[2];
   int npts; /* sample points from a to b inclusive */
+  int line; /* line of the case script */
 };
 
 /** Flow-rate control (Leroy et al. 2014 eqs 67-68, after Morris et al. 1997): the x component of
