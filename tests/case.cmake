@@ -153,6 +153,9 @@ if(Python3_Interpreter_FOUND)
   clsph_add_test(interrupt LABELS case COMMAND ${Python3_EXECUTABLE} ${CASE_DIR}/interrupt.py
                  $<TARGET_FILE:clsph> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/runs/interrupt)
 endif()
+clsph_add_test(memory_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
+               -DCASE=${CMAKE_SOURCE_DIR}/cases/cavity.lua
+               -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/memory_refused -P ${CASE_DIR}/memory.cmake)
 clsph_add_test(restart_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
                -DCASE_A=${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua
                -DCASE_B=${CMAKE_SOURCE_DIR}/cases/free_fall.lua

@@ -64,6 +64,8 @@ void cli_usage(FILE *f)
         "  --font FILE           TrueType font of frames (default $CLSPH_FONT, else DejaVu Sans)\n"
         "  --device N            device index from `clsph devices` (default: $CLSPH_DEVICE, else\n"
         "                        the first GPU, else the first CPU)\n"
+        "  --device-memory MIB   run, info: the most device memory a run may use (default: the\n"
+        "                        device's); a scene that needs more is refused before it runs\n"
         "  --kernel-dir DIR      read OpenCL sources from DIR instead of the embedded copy\n"
         "  --prog-cache-dir DIR  cache of built programs (default ~/.cache/clsph; '' disables)\n"
         "  --fast-math           allow -cl-fast-relaxed-math (off by default)\n"
@@ -211,6 +213,11 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
         c.case_memory *= 1048576.0;
       } else if (strcmp(a, "--device") == 0) {
         CLSPH_TRY(parse_int(a, val, 0, 999999, &c.device));
+      } else if (strcmp(a, "--device-memory") == 0) {
+        CLSPH_TRY(parse_real(a, val, &c.device_memory));
+        CLSPH_CHECK(c.device_memory >= 1.0 && c.device_memory <= 1e9, CLSPH_E_INPUT,
+                    "%s: %s is not a size from 1 to 1e9 MiB", a, val);
+        c.device_memory *= 1048576.0;
       } else if (strcmp(a, "--kernel-dir") == 0) {
         c.kernel_dir = val;
       } else if (strcmp(a, "--prog-cache-dir") == 0) {

@@ -22,6 +22,8 @@ struct cli {
   int profile;              /* --profile: device time per kernel of a run */
   const char *target;       /* bench: "neighbours", "psolve", "render" */
   int device;               /* --device N, -1: $CLSPH_DEVICE or the default */
+  double device_memory;     /* --device-memory MIB: the most device memory a run may use, bytes
+                             * (0: the device's) */
   const char *kernel_dir;   /* --kernel-dir DIR, NULL: embedded sources */
   const char *cache_dir;    /* --prog-cache-dir DIR ("" disables), NULL: default */
   int fast_math;            /* --fast-math */

@@ -31,6 +31,8 @@ static enum clsph_status setup(const struct cli *cli, struct dev *dev, struct sc
   if (cli->case_memory > 0.0) lim.memory = cli->case_memory;
   CLSPH_TRY(case_load(cli->case_path, cli->nsets, cli->sets, &lim, scene, script));
   CLSPH_TRY(dev_open(cli->device, CLSPH_DOUBLE, dev));
+  if (cli->device_memory > 0.0 && cli->device_memory < (double)dev->mem_limit)
+    dev->mem_limit = (cl_ulong)cli->device_memory;
   CLSPH_TRY(sim_create(dev, scene, sim));
 done:
   return st;

@@ -262,6 +262,10 @@ enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
     if (sim->scene->flow.on) CLSPH_TRY(sim_flow_control(sim, dt, o.flow));
     CLSPH_TRY(sim->scheme->step(sim, sim->state, dt));
     advance(sim, dt, target, lands);
+    if (sim->step == sim->step0 + 1)
+      log_debug("device memory after the first step: %.1f MiB in buffers (estimated before the "
+                "run: %.1f MiB)",
+                (double)kern_allocated() / 1048576.0, sim->mem_estimate / 1048576.0);
     sim->wall = progress_now() - wall0; /* checkpoints record it */
     CLSPH_TRY(check_and_write(sim, &o, dt, lands));
     progress_show(sim, &pr, 0);

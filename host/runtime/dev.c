@@ -152,6 +152,9 @@ static enum clsph_status describe(const struct dev_entry *e, struct dev *d)
       clGetDeviceInfo(e->id, CL_DEVICE_MAX_WORK_GROUP_SIZE, sizeof d->max_wg, &d->max_wg, NULL));
   CLSPH_CL_TRY(clGetDeviceInfo(e->id, CL_DEVICE_GLOBAL_MEM_SIZE, sizeof d->global_mem,
                                &d->global_mem, NULL));
+  CLSPH_CL_TRY(clGetDeviceInfo(e->id, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof d->max_alloc,
+                               &d->max_alloc, NULL));
+  d->mem_limit = d->global_mem;
   d->fp64 = fp != 0;
   d->wg = d->max_wg < 64 ? d->max_wg : 64;
 done:

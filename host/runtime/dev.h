@@ -39,6 +39,8 @@ struct dev {
   size_t max_wg;                /* largest work-group size */
   size_t wg;                    /* work-group size used for 1-D launches */
   cl_ulong global_mem;          /* bytes */
+  cl_ulong max_alloc;           /* the largest buffer it allocates, bytes */
+  cl_ulong mem_limit;           /* the most a run may use: global_mem, or less (--device-memory) */
   struct kern_profile *profile; /* device time per kernel (--profile, kern.h); NULL: off */
 };
 

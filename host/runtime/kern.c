@@ -358,18 +358,45 @@ done:
   return st;
 }
 
+/* Device memory in kern_buffer's buffers, and what modules announced (process-wide: one device
+ * at a time in a process). */
+static size_t allocated = 0;
+static double reserved = 0.0;
+
+size_t kern_allocated(void)
+{
+  return allocated;
+}
+
+void kern_reserve(double bytes)
+{
+  reserved += bytes;
+  if (reserved < 0.0) reserved = 0.0;
+}
+
+size_t kern_reserved(void)
+{
+  return (size_t)reserved;
+}
+
 enum clsph_status kern_buffer(const struct dev *dev, size_t bytes, const void *init, cl_mem *out,
                               const char *name)
 {
   enum clsph_status st = CLSPH_OK;
   cl_int err = CL_SUCCESS;
   cl_mem_flags flags = CL_MEM_READ_WRITE | (init != NULL ? CL_MEM_COPY_HOST_PTR : 0);
+  CLSPH_CHECK(dev->max_alloc == 0 || (cl_ulong)bytes <= dev->max_alloc, CLSPH_E_NOMEM,
+              "the buffer '%s' needs %.1f MiB, more than the %.1f MiB the device %s allocates at "
+              "once (CL_DEVICE_MAX_MEM_ALLOC_SIZE): a coarser dr, or another device (clsph "
+              "devices)",
+              name, (double)bytes / 1048576.0, (double)dev->max_alloc / 1048576.0, dev->name);
   cl_mem d = clCreateBuffer(dev->ctx, flags, bytes > 0 ? bytes : 1, (void *)(size_t)init, &err);
   if (err != CL_SUCCESS) {
     log_error("clCreateBuffer(%s, %zu bytes): %s", name, bytes, dev_cl_error_str(err));
     st = CLSPH_E_CL;
     goto done;
   }
+  allocated += bytes > 0 ? bytes : 1;
   *out = d;
 done:
   return st;
@@ -436,6 +463,9 @@ done:
 
 void kern_release(cl_mem *d)
 {
+  size_t bytes = 0;
+  if (*d != NULL && clGetMemObjectInfo(*d, CL_MEM_SIZE, sizeof bytes, &bytes, NULL) == CL_SUCCESS)
+    allocated -= bytes <= allocated ? bytes : allocated;
   if (*d != NULL) clReleaseMemObject(*d);
   *d = NULL;
 }

@@ -89,5 +89,12 @@ enum clsph_status kern_fill(const struct dev *dev, cl_mem d, const void *pattern
 enum clsph_status kern_copy(const struct dev *dev, cl_mem dst, cl_mem src, size_t bytes);
 /** @brief Release a buffer and clear the handle. */
 void kern_release(cl_mem *d);
+/** @brief Device memory in buffers made by kern_buffer and not released yet, bytes. */
+size_t kern_allocated(void);
+/** @brief Device memory that modules have announced they will allocate at their first use (the
+ *  pressure solver's stored operator), bytes: `bytes` is added (negative: taken back). */
+void kern_reserve(double bytes);
+/** @brief The sum of what kern_reserve announced, bytes. */
+size_t kern_reserved(void);
 
 #endif /* CLSPH_KERN_H */

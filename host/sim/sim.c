@@ -137,6 +137,29 @@ static double velocity_scale(const struct scene *s, const struct geom *g)
   return sqrt(u2);
 }
 
+/* The device memory the run needs, before anything runs or is written: the buffers made so far
+ * (the particle fields, the grid, the scheme's) and what the scheme announced for its first step
+ * (the pressure solver's stored operator). A device lazily backs a buffer, so a scene too large
+ * otherwise failed only at its first step, after writing its initial snapshot. */
+static enum clsph_status check_memory(struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  const double mib = 1024.0 * 1024.0;
+  const double made = (double)kern_allocated(), later = (double)kern_reserved();
+  sim->mem_estimate = made + later;
+  CLSPH_CHECK(made + later <= (double)sim->dev->mem_limit, CLSPH_E_INPUT,
+              "%s: the scene needs about %.0f MiB of device memory (%zu particles: %.0f MiB of "
+              "fields and buffers, %.0f MiB for the pressure solver's stored operator), more than "
+              "the %.0f MiB %s of %s: a coarser dr, solver_apply = \"recompute\" (no stored "
+              "operator), or another device (clsph devices)",
+              sim->scene->case_path, (made + later) / mib, sim->ps.cap, made / mib, later / mib,
+              (double)sim->dev->mem_limit / mib,
+              sim->dev->mem_limit < sim->dev->global_mem ? "--device-memory allows" : "of memory",
+              sim->dev->name);
+done:
+  return st;
+}
+
 enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, struct sim *out)
 {
   enum clsph_status st = CLSPH_OK;
@@ -213,6 +236,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   sim.body_force[1] = scene->body_force[1];
   sim.flow.force = scene->body_force[0];
   if (sim.scheme->create != NULL) CLSPH_TRY(sim.scheme->create(&sim, &sim.state));
+  CLSPH_TRY(check_memory(&sim));
   CLSPH_TRY(sim_sort(&sim));
   *out = sim;
   memset(&sim, 0, sizeof sim);
@@ -285,6 +309,10 @@ enum clsph_status sim_info(struct sim *sim)
          "%zu cells\n",
          per, spare, (double)((per + spare) * sim->ps.cap + grid_bytes) / (1024.0 * 1024.0),
          sim->grid.ncells);
+  printf("device memory: about %.1f MiB with the scheme's buffers and its first step's (the "
+         "device: %.0f MiB, of which the run may use %.0f)\n",
+         sim->mem_estimate / (1024.0 * 1024.0), (double)sim->dev->global_mem / (1024.0 * 1024.0),
+         (double)sim->dev->mem_limit / (1024.0 * 1024.0));
   if (s->dt > 0.0) dt = s->dt;
   if (isfinite(dt))
     printf("time step %.6g s (cfl %g): about %.0f steps to t_end = %g s\n", dt, s->cfl,
@@ -307,6 +335,9 @@ enum clsph_status sim_psolve_options(const struct sim *sim, struct psolve_option
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
   psolve_defaults(o);
+  /* the neighbours within the support: the nonzeros of a row of the operator */
+  const double q = sim->sm.support / s->dr;
+  o->row_estimate = 3.14159265358979 * q * q + 1.0;
   for (int i = 0; i < s->noptions; ++i) {
     const struct scene_option *opt = &s->options[i];
     const char *key = NULL;

@@ -88,6 +88,7 @@ struct sim {
   double wall;          /* wall-clock time of this run so far (summary.json wall_seconds), s */
   double wall_before;   /* of the run before its checkpoint (a restart's), s */
   unsigned long digest; /* geometry_digest of the scene: checkpoints record it */
+  double mem_estimate;  /* device memory the run needs, estimated at set-up, bytes */
   char status[512];     /* "ok" or why the run stopped */
   char failure[32];     /* "none", or the class of the failure (summary.json "failure"): "nan",
                          * "escaped", "neighbours", "wall_crossing", "solver", "clustering",

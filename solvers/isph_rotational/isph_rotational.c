@@ -730,9 +730,8 @@ static void rot_destroy(void *state)
                       r->k_open_p, r->k_classify, r->k_recycle};
   for (size_t k = 0; k < sizeof open / sizeof *open; ++k)
     if (open[k] != NULL) clReleaseKernel(open[k]);
-  cl_mem bufs[] = {r->d_sec, r->d_role, r->d_list, r->d_count};
-  for (size_t k = 0; k < sizeof bufs / sizeof *bufs; ++k)
-    if (bufs[k] != NULL) clReleaseMemObject(bufs[k]);
+  cl_mem *bufs[] = {&r->d_sec, &r->d_role, &r->d_list, &r->d_count};
+  for (size_t k = 0; k < sizeof bufs / sizeof *bufs; ++k) kern_release(bufs[k]);
   cl_kernel visc[] = {r->k_visc_count, r->k_visc_coeffs, r->k_visc_split, r->k_visc_gather};
   for (size_t k = 0; k < sizeof visc / sizeof *visc; ++k)
     if (visc[k] != NULL) clReleaseKernel(visc[k]);

@@ -143,6 +143,13 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
   CLSPH_TRY(kern_buffer(dev, ((ps.cap + 1) / PSOLVE_SCAN_BLOCK + 2) * sizeof(cl_uint), NULL,
                         &ps.d_block, "csr scan blocks"));
   if (opt->precond == PSOLVE_MULTIGRID) CLSPH_TRY(mg_create(dev, prog, ps.cap, &ps.mg));
+  /* what the first solve allocates: the stored operator (a quarter more than its nonzeros,
+   * store()) and the multigrid's coarse operators (cell stencils, about 3 reals a particle) */
+  const double rows = opt->row_estimate > 0.0 ? opt->row_estimate : 50.0;
+  if (opt->apply == PSOLVE_STORED)
+    ps.reserved += 1.25 * (double)ps.cap * rows * (double)(sizeof(cl_uint) + sizeof(real));
+  if (opt->precond == PSOLVE_MULTIGRID) ps.reserved += 3.0 * (double)ps.cap * sizeof(real);
+  kern_reserve(ps.reserved);
   ps.h_partial = malloc(2 * 64 * sizeof *ps.h_partial);
   CLSPH_CHECK(ps.h_partial != NULL, CLSPH_E_NOMEM, "out of memory");
   *out = ps;
@@ -633,4 +640,6 @@ void psolve_destroy(struct psolve *ps)
   mg_destroy(&ps->mg);
   free(ps->h_partial);
   ps->h_partial = NULL;
+  kern_reserve(-ps->reserved);
+  ps->reserved = 0.0;
 }

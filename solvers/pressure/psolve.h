@@ -45,12 +45,14 @@ struct psolve_options {
   enum psolve_precond precond;
   int sweeps; /* Jacobi sweeps per application of PSOLVE_JACOBI_SWEEPS */
   enum psolve_singular singular;
-  double reinforce; /* ε of PSOLVE_REINFORCE */
-  double rtol;      /* stop when ||b − A x|| <= rtol ||b|| */
-  double atol;      /* or when ||b − A x|| <= atol */
-  int max_it;       /* iterations per solve */
-  int max_failures; /* consecutive non-converged solves before the run stops */
-  const char *name; /* what the messages call the solve: "pressure" (default), "viscous" */
+  double reinforce;    /* ε of PSOLVE_REINFORCE */
+  double rtol;         /* stop when ||b − A x|| <= rtol ||b|| */
+  double atol;         /* or when ||b − A x|| <= atol */
+  int max_it;          /* iterations per solve */
+  int max_failures;    /* consecutive non-converged solves before the run stops */
+  const char *name;    /* what the messages call the solve: "pressure" (default), "viscous" */
+  double row_estimate; /* nonzeros per row expected of the stored operator (its memory is
+                        * announced at create, kern_reserve); 0: 50, 2-D at h = 2 dr */
 };
 
 /** Reasons: > 0 converged, < 0 failed. */
@@ -80,7 +82,8 @@ struct psolve {
   cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags;
   cl_mem d_row, d_col, d_val, d_count, d_block; /* stored layout */
   size_t nnz_cap;
-  int ngroups; /* work-groups of the reductions */
+  double reserved; /* bytes announced for the stored operator and the multigrid levels */
+  int ngroups;     /* work-groups of the reductions */
   double *h_partial;
   struct kern_timer t_apply; /* device time of operator applications (benchmarks) */
   struct mg mg;              /* the multigrid preconditioner (PSOLVE_MULTIGRID) */
