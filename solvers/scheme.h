@@ -15,6 +15,9 @@ struct wall_force {
   double viscous[2];
 };
 
+/** Initial fields besides the velocity that a case's fill { } may set (scheme_ops.fill_fields). */
+enum { SCHEME_FILL_PRESSURE = 1u, SCHEME_FILL_DENSITY = 2u };
+
 struct scheme_ops {
   const char *name;           /* "isph-usaw" */
   const char *summary;        /* one line with its reference */
@@ -23,6 +26,8 @@ struct scheme_ops {
   const char *smoothing;      /* default smoothing function name */
   double h_over_dr;           /* default smoothing length / spacing */
   const char *const *options; /* option names the scheme accepts, NULL-terminated */
+  unsigned fill_fields;       /* the initial fields fill { } may give it (SCHEME_FILL_*): the
+                               * scheme's create takes them from geom.p0 and geom.rho0 */
   /** -D switches of the scheme's kernels (NULL: none). */
   enum clsph_status (*define)(const struct sim *sim, struct prog_opts *o);
   /** Add the scheme's particle fields and kernels; called after the common fields exist. */

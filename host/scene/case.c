@@ -133,6 +133,8 @@ static enum clsph_status sandbox_call(struct sandbox *sb, int nargs, int nresult
 }
 
 #define FILL_VELOCITY "clsph.fill_velocity" /* registry: the fills' velocity functions */
+#define FILL_PRESSURE "clsph.fill_pressure" /* and their pressure and density functions */
+#define FILL_DENSITY  "clsph.fill_density"
 
 /* scene_velocity_fn.eval: u, v = the velocity function of fill `region` at x. */
 static enum clsph_status fill_velocity(void *ctx, int region, const double x[2], double v[2])
@@ -156,6 +158,31 @@ static enum clsph_status fill_velocity(void *ctx, int region, const double x[2],
   v[1] = lua_tonumber(L, -1);
   CLSPH_CHECK(isfinite(v[0]) && isfinite(v[1]), CLSPH_E_INPUT,
               "the velocity function returned (%g, %g): it must be finite", v[0], v[1]);
+done:
+  lua_settop(L, top);
+  return st;
+}
+
+/* scene_velocity_fn.scalar: the pressure (what = 0) or density (1) function of fill `region` at
+ * x. */
+static enum clsph_status fill_scalar(void *ctx, int region, int what, const double x[2], double *v)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct case_script *cs = ctx;
+  lua_State *L = cs->L;
+  const int top = lua_gettop(L);
+  const char *name = what == 0 ? "pressure" : "density";
+  lua_getfield(L, LUA_REGISTRYINDEX, what == 0 ? FILL_PRESSURE : FILL_DENSITY);
+  CLSPH_CHECK(lua_istable(L, -1) && lua_rawgeti(L, -1, region + 1) == LUA_TFUNCTION, CLSPH_E_INPUT,
+              "fill %d has no %s function", region + 1, name);
+  lua_pushnumber(L, x[0]);
+  lua_pushnumber(L, x[1]);
+  snprintf(cs->sb.phase_buf, sizeof cs->sb.phase_buf, "the %s function of fill %d", name,
+           region + 1);
+  CLSPH_TRY(sandbox_call(&cs->sb, 2, 1, cs->sb.phase_buf));
+  CLSPH_CHECK(lua_type(L, -1) == LUA_TNUMBER, CLSPH_E_INPUT,
+              "the %s function returned %s: it must return a number", name, luaL_typename(L, -1));
+  *v = lua_tonumber(L, -1);
 done:
   lua_settop(L, top);
   return st;
@@ -482,7 +509,7 @@ static int l_fluid(lua_State *L)
 
 static int l_fill(lua_State *L)
 {
-  static const char *const keys[] = {"polygon", "name", "velocity", NULL};
+  static const char *const keys[] = {"polygon", "name", "velocity", "pressure", "density", NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "fill");
@@ -514,6 +541,36 @@ static int l_fill(lua_State *L)
     to_point(L, "fill", "velocity", r->u0);
   }
   lua_pop(L, 1);
+  /* the initial pressure and density: a number, or a function (x, y) -> value kept like the
+   * velocity's */
+  static const char *const scalar_key[2] = {"pressure", "density"};
+  static const char *const scalar_reg[2] = {FILL_PRESSURE, FILL_DENSITY};
+  for (int k = 0; k < 2; ++k) {
+    int *mode = k == 0 ? &r->pressure : &r->density;
+    double *value = k == 0 ? &r->p0 : &r->rho0;
+    lua_getfield(L, 1, scalar_key[k]);
+    if (lua_isfunction(L, -1)) {
+      *mode = 2;
+      if (lua_getfield(L, LUA_REGISTRYINDEX, scalar_reg[k]) != LUA_TTABLE) {
+        lua_pop(L, 1);
+        lua_newtable(L);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, LUA_REGISTRYINDEX, scalar_reg[k]);
+      }
+      lua_pushvalue(L, -2);
+      lua_rawseti(L, -2, s->nregions);
+      lua_pop(L, 1);
+    } else if (!lua_isnil(L, -1)) {
+      if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
+        luaL_error(L, "fill '%s': %s must be a number (%s) or a function (x, y) returning one",
+                   r->name, scalar_key[k], k == 0 ? "Pa" : "kg/m^3");
+      *mode = 1;
+      *value = lua_tonumber(L, -1);
+      if (k == 1 && !(*value > 0.0))
+        luaL_error(L, "fill '%s': density must be positive, not %f", r->name, *value);
+    }
+    lua_pop(L, 1);
+  }
   lua_getfield(L, 1, "polygon");
   if (!lua_isnil(L, -1)) {
     int t = lua_gettop(L);
@@ -1247,6 +1304,7 @@ enum clsph_status case_load(const char *path, int nsets, char *const *sets,
   if (script != NULL) {
     cs->sb.path = out->case_path;
     out->velocity_fn.eval = fill_velocity;
+    out->velocity_fn.scalar = fill_scalar;
     out->velocity_fn.ctx = cs;
     *script = cs;
     cs = NULL;

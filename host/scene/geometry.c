@@ -67,6 +67,7 @@ enum wall_model { MODEL_NONE, MODEL_USAW, MODEL_DUMMY };
 /** One particle while the arrays are built. */
 struct particle {
   double x[2], v[2], normal[2]; /* m, m/s, unit */
+  double p0, rho0;              /* initial pressure and density (NAN: the scheme's), Pa, kg/m^3 */
   double theta, dist;           /* rad, m */
   int kind, group;              /* group: the region index while fluid is checked, then −1 */
 };
@@ -594,6 +595,38 @@ static int near_obstacle(const struct build *b, const double p[2], double cleara
 
 /* ---- fluid -------------------------------------------------------------------------------- */
 
+/* The initial pressure and density of a fluid particle at x in region g (index r): the fill's
+ * constants or functions (case.c), checked finite (and the density positive). */
+static enum clsph_status fill_scalars(const struct scene *s, const struct scene_region *g, int r,
+                                      const double x[2], struct particle *p)
+{
+  enum clsph_status st = CLSPH_OK;
+  const int mode[2] = {g->pressure, g->density};
+  const double value[2] = {g->p0, g->rho0};
+  static const char *const what[2] = {"pressure", "density"};
+  double v[2] = {NAN, NAN};
+  for (int k = 0; k < 2; ++k) {
+    if (mode[k] == 0) continue;
+    v[k] = value[k];
+    if (mode[k] == 2) {
+      CLSPH_CHECK(s->velocity_fn.scalar != NULL, CLSPH_E_INPUT,
+                  "%s:%d: fluid region '%s': its %s function is gone (the case script was closed)",
+                  s->case_path, g->line, g->name, what[k]);
+      CLSPH_CHECK(s->velocity_fn.scalar(s->velocity_fn.ctx, r, k, x, &v[k]) == CLSPH_OK,
+                  CLSPH_E_INPUT, "%s:%d: fluid region '%s': its %s at (%g, %g) failed",
+                  s->case_path, g->line, g->name, what[k], x[0], x[1]);
+    }
+    CLSPH_CHECK(isfinite(v[k]) && (k == 0 || v[k] > 0.0), CLSPH_E_INPUT,
+                "%s:%d: fluid region '%s': its initial %s at (%g, %g) is %g: it must be %s",
+                s->case_path, g->line, g->name, what[k], x[0], x[1], v[k],
+                k == 0 ? "finite" : "positive");
+  }
+  p->p0 = v[0];
+  p->rho0 = v[1];
+done:
+  return st;
+}
+
 static enum clsph_status fill_fluid(struct build *b)
 {
   enum clsph_status st = CLSPH_OK;
@@ -665,7 +698,9 @@ static enum clsph_status fill_fluid(struct build *b)
                   "%s:%d: fluid region '%s' extends past the wall of line %d: the particle at "
                   "(%g, %g) is outside it (a counter-clockwise closed wall holds its fluid inside)",
                   s->case_path, g->line, g->name, s->walls[container].line, x, y);
-      struct particle p = {.x = {xy[0], xy[1]}, .kind = KIND_FLUID, .group = first};
+      struct particle p = {
+          .x = {xy[0], xy[1]}, .kind = KIND_FLUID, .group = first, .p0 = NAN, .rho0 = NAN};
+      CLSPH_TRY(fill_scalars(s, g, first, xy, &p));
       if (g->velocity == 1) memcpy(p.v, g->u0, sizeof p.v);
       if (g->velocity == 2) {
         CLSPH_CHECK(s->velocity_fn.eval != NULL, CLSPH_E_INPUT,
@@ -1088,13 +1123,15 @@ static enum clsph_status emit(struct build *b, struct geom *g)
   if (n > 0) {
     t.x = malloc(2 * n * sizeof *t.x);
     t.v = malloc(2 * n * sizeof *t.v);
+    t.p0 = malloc(n * sizeof *t.p0);
+    t.rho0 = malloc(n * sizeof *t.rho0);
     t.normal = malloc(2 * n * sizeof *t.normal);
     t.theta = malloc(n * sizeof *t.theta);
     t.dist = malloc(n * sizeof *t.dist);
     t.kind = malloc(n * sizeof *t.kind);
     t.group = malloc(n * sizeof *t.group);
-    CLSPH_CHECK(t.x != NULL && t.v != NULL && t.normal != NULL && t.theta != NULL &&
-                    t.dist != NULL && t.kind != NULL && t.group != NULL,
+    CLSPH_CHECK(t.x != NULL && t.v != NULL && t.p0 != NULL && t.rho0 != NULL && t.normal != NULL &&
+                    t.theta != NULL && t.dist != NULL && t.kind != NULL && t.group != NULL,
                 CLSPH_E_NOMEM, "geometry: out of memory for %zu particles", n);
   }
   if (ns > 0) {
@@ -1112,6 +1149,8 @@ static enum clsph_status emit(struct build *b, struct geom *g)
       t.v[2 * i + (size_t)a] = p->v[a];
       t.normal[2 * i + (size_t)a] = p->normal[a];
     }
+    t.p0[i] = p->kind == KIND_FLUID ? p->p0 : NAN;
+    t.rho0[i] = p->kind == KIND_FLUID ? p->rho0 : NAN;
     t.theta[i] = p->theta;
     t.dist[i] = p->dist;
     t.kind[i] = p->kind;
@@ -1164,6 +1203,10 @@ enum clsph_status geometry_build(const struct scene *s, const char *model, int l
   /* after the walls and sections, whose own errors say more about a broken wall */
   if (b.model != MODEL_NONE) CLSPH_TRY(check_enclosed(&b));
   CLSPH_TRY(emit(&b, out));
+  for (int r = 0; r < s->nregions; ++r) { /* the first fill that gives them: for messages */
+    if (s->regions[r].pressure && !out->has_p0) out->has_p0 = s->regions[r].line;
+    if (s->regions[r].density && !out->has_rho0) out->has_rho0 = s->regions[r].line;
+  }
   log_debug("geometry: %zu fluid, %zu %s wall particles, %zu segments, %zu inflow/outflow "
             "particles",
             b.nfluid, nwallp, model, b.nseg, b.np - b.nfluid - nwallp);
@@ -1179,6 +1222,8 @@ void geometry_free(struct geom *g)
 {
   free(g->x);
   free(g->v);
+  free(g->p0);
+  free(g->rho0);
   free(g->normal);
   free(g->theta);
   free(g->dist);

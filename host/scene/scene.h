@@ -33,12 +33,17 @@ struct scene_region {
   int line;              /* line of the case script that declared it */
   int velocity;          /* initial velocity: 0 at rest, 1 u0, 2 scene.velocity_fn's */
   double u0[2];          /* the constant initial velocity, m/s */
+  int pressure, density; /* initial pressure and density: 0 the scheme's, 1 the constant below,
+                          * 2 scene.velocity_fn's scalar function */
+  double p0, rho0;       /* the constant initial pressure (Pa) and density (kg/m^3) */
 };
 
 /** The initial velocity of a region's fluid given as a function of position by the case script
  *  (fill { velocity = function(x, y) ... }): eval fills v (m/s) at x for region `region`. */
 struct scene_velocity_fn {
   enum clsph_status (*eval)(void *ctx, int region, const double x[2], double v[2]);
+  /** The initial pressure (what = 0, Pa) or density (1, kg/m^3) function of region `region`. */
+  enum clsph_status (*scalar)(void *ctx, int region, int what, const double x[2], double *v);
   void *ctx; /* the case script's state: valid while it is open */
 };
 

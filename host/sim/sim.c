@@ -195,6 +195,14 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   int layers = lo != NULL && lo->is_number ? (int)lo->number : 3;
   CLSPH_TRY(geometry_build(scene, model, layers, &sim.geom));
   sim.digest = geometry_digest(scene, &sim.geom);
+  CLSPH_CHECK(!sim.geom.has_p0 || (sim.scheme->fill_fields & SCHEME_FILL_PRESSURE), CLSPH_E_INPUT,
+              "%s:%d: fill { pressure }: scheme '%s' takes no initial pressure (it has none, or "
+              "solves for it from the start)",
+              scene->case_path, sim.geom.has_p0, sim.scheme->name);
+  CLSPH_CHECK(!sim.geom.has_rho0 || (sim.scheme->fill_fields & SCHEME_FILL_DENSITY), CLSPH_E_INPUT,
+              "%s:%d: fill { density }: scheme '%s' takes no initial density (an incompressible "
+              "scheme holds it at the fluid's density: give the weakly-compressible schemes one)",
+              scene->case_path, sim.geom.has_rho0, sim.scheme->name);
   /* the cell grid: the domain, with room for wall and section layers on non-periodic axes */
   sim.gspec.dim = 2;
   sim.gspec.support = sim.sm.support;

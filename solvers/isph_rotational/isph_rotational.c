@@ -403,7 +403,9 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
   CLSPH_TRY(pset_add(ps, sim->dev, "wall_normal", rv, host, &r->f_normal));
   for (size_t i = 0; i < 2 * geo->n; ++i) host[i] = (real)geo->v[i];
   CLSPH_TRY(pset_add(ps, sim->dev, "wall_vel", rv, host, &r->f_uwall));
-  CLSPH_TRY(pset_add(ps, sim->dev, "p", sizeof(real), NULL, &r->f_p));
+  for (size_t i = 0; i < geo->n; ++i) /* fill { pressure }, the p^k of the first prediction */
+    host[i] = i < geo->nfluid && isfinite(geo->p0[i]) ? (real)geo->p0[i] : 0;
+  CLSPH_TRY(pset_add(ps, sim->dev, "p", sizeof(real), host, &r->f_p));
   CLSPH_TRY(pset_add(ps, sim->dev, "div_ustar", sizeof(real), NULL, &r->f_div));
   const struct {
     const char *name;
@@ -748,6 +750,7 @@ const struct scheme_ops scheme_isph_rotational = {
     .wall_model = "dummy",
     .smoothing = "gaussian",
     .h_over_dr = 1.2,
+    .fill_fields = SCHEME_FILL_PRESSURE,
     .options = options,
     .define = rot_define,
     .create = rot_create,

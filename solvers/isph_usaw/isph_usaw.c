@@ -209,6 +209,22 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
   }
   CLSPH_TRY(pset_add(ps, sim->dev, "theta", sizeof(real), theta, &is->f_theta));
+  if (geo->has_p0) { /* fill { pressure }: p, and P = p − ρ g·x (eq 42), the solver's guess */
+    real *pp = calloc(2 * geo->n + 1, sizeof *pp);
+    CLSPH_CHECK(pp != NULL, CLSPH_E_NOMEM, "out of memory");
+    for (size_t i = 0; i < geo->nfluid; ++i) {
+      if (!isfinite(geo->p0[i])) continue;
+      pp[i] = (real)geo->p0[i];
+      pp[geo->n + i] =
+          (real)(geo->p0[i] - sim->scene->rho0 * (sim->scene->gravity[0] * geo->x[2 * i] +
+                                                  sim->scene->gravity[1] * geo->x[2 * i + 1]));
+    }
+    enum clsph_status ws = kern_write(sim->dev, pset_mem(ps, is->f_p), geo->n * sizeof *pp, pp);
+    if (ws == CLSPH_OK)
+      ws = kern_write(sim->dev, pset_mem(ps, is->f_P), geo->n * sizeof *pp, pp + geo->n);
+    free(pp);
+    CLSPH_TRY(ws);
+  }
   /* Volumes: the fluid lattice (first row δr/2 from the wall) tiles the fluid domain, so the
    * wall vertices carry no volume of their own in the sums over b ∈ P (they would count the
    * strip along the wall twice); their values enter through the segments (eq 5-10). */
@@ -452,6 +468,7 @@ const struct scheme_ops scheme_isph_usaw = {
     .wall_model = "usaw",
     .smoothing = "wendland",
     .h_over_dr = 2.0,
+    .fill_fields = SCHEME_FILL_PRESSURE,
     .options = options,
     .define = isph_define,
     .create = isph_create,
