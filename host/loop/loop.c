@@ -130,8 +130,10 @@ static enum clsph_status step_length(struct sim *sim, double *dt_out, double *ta
   }
   if (!(dt > 0.0) || (isfinite(dt) && dt < 1e-12 * fmax(t_end, 1.0))) {
     snprintf(sim->status, sizeof sim->status,
-             "blow-up: the time step collapsed to %g s at step %ld, t = %.9g s", dt, sim->step,
-             sim->time);
+             "blow-up: the time step collapsed to %g s at step %ld, t = %.9g s; no setting "
+             "controls this check (a step below 1e-12 of the run): look in the last snapshot for "
+             "a particle that moves much faster than the flow",
+             dt, sim->step, sim->time);
     st = sim_fail(sim, "dt_collapse");
     goto done;
   }
@@ -210,7 +212,8 @@ static enum clsph_status finish(struct sim *sim, const struct loop_options *opt,
   if (st == CLSPH_E_BLOWUP && strcmp(sim->status, "ok") == 0) {
     /* the only blow-up the time loop does not word itself: the pressure solver's (psolve.c) */
     snprintf(sim->status, sizeof sim->status,
-             "blow-up: the %s solve failed at step %ld, t = %.9g s",
+             "blow-up: the %s solve failed at step %ld, t = %.9g s (scheme options solver_rtol, "
+             "solver_max_it, solver_precond)",
              sim->failed_solve != NULL ? sim->failed_solve : "pressure", sim->step + 1, sim->time);
     snprintf(sim->failure, sizeof sim->failure, "solver");
   }

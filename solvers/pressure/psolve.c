@@ -546,7 +546,9 @@ static enum clsph_status solve(struct psolve *ps, const struct psolve_op *op, cl
     log_warn("%s solve %s after %d iterations (residual %.3g, tolerance %.3g)", ps->opt.name,
              reason_str(res->reason), res->its, res->rnorm, ps->opt.rtol);
     CLSPH_CHECK(ps->failures < ps->opt.max_failures, CLSPH_E_BLOWUP,
-                "the %s solve failed %d times in a row (last residual %.3g): stopping",
+                "the %s solve failed %d times in a row (last residual %.3g): stopping; the "
+                "scheme options solver_rtol, solver_max_it and solver_precond set what a solve "
+                "must reach and how",
                 ps->opt.name, ps->failures, res->rnorm);
   }
 done:
