@@ -162,6 +162,11 @@ if(Python3_Interpreter_FOUND)
   clsph_add_test(interrupt LABELS case COMMAND ${Python3_EXECUTABLE} ${CASE_DIR}/interrupt.py
                  $<TARGET_FILE:clsph> ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/runs/interrupt)
 endif()
+# A scene far too large is refused before its particles are made (4e8 of them here: minutes of
+# geometry and gigabytes of host memory otherwise).
+clsph_cli_test(case_fluid_too_large ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set n=20000
+               --device-memory 100 RC 2
+               REGEX "the fluid regions hold about 4e\\+08 particles at dr = 5e-05: their positions and velocities alone need [0-9]+ MiB")
 clsph_add_test(memory_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
                -DCASE=${CMAKE_SOURCE_DIR}/cases/cavity.lua
                -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/memory_refused -P ${CASE_DIR}/memory.cmake)

@@ -824,7 +824,14 @@ static int arc_common(lua_State *L, int full)
   if (!full && !(a1 > a0)) luaL_error(L, "arc: needs from < to (radians, counter-clockwise)");
   int side = get_choice(L, 1, fn, "fluid", fluid_sides, full ? 2 : 1);
   if (side != 1 && side != 2) luaL_error(L, "%s: fluid must be \"inside\" or \"outside\"", fn);
-  int segs = (int)ceil(r * (a1 - a0) / s->dr);
+  if (!full && a1 - a0 > 2.0 * 3.14159265358979323846 * (1.0 + 1e-12))
+    luaL_error(L, "arc: from %f to %f turns more than once around; a full turn is a circle", a0,
+               a1);
+  const double length = ceil(r * (a1 - a0) / s->dr);
+  if (!(length <= 1e7))
+    luaL_error(L, "%s: %.0f vertices about dr apart: more than 1e7 (radius %f at dr = %f)", fn,
+               length, r, s->dr);
+  int segs = (int)length;
   if (segs < (full ? 8 : 1)) segs = full ? 8 : 1;
   int n = full ? segs : segs + 1;
   struct scene_wall *w = grow(L, (void **)&s->walls, &s->nwalls, sizeof *w);
@@ -879,8 +886,10 @@ static int section_common(lua_State *L, enum scene_section_kind kind)
   to_point(L, fn, "the second end", c->b);
   lua_pop(L, 1);
   if (c->a[0] == c->b[0] && c->a[1] == c->b[1]) luaL_error(L, "%s: the section has no width", fn);
-  c->layers = (int)get_number(L, 1, fn, "layers", 3);
-  if (c->layers < 1 || c->layers > 8) luaL_error(L, "%s: layers must be 1 to 8", fn);
+  const double layers = get_number(L, 1, fn, "layers", 3);
+  if (!(layers >= 1 && layers <= 8 && layers == floor(layers)))
+    luaL_error(L, "%s: layers must be a whole number from 1 to 8, not %f", fn, layers);
+  c->layers = (int)layers;
   if (kind == SCENE_INFLOW) {
     c->velocity = get_number(L, 1, fn, "velocity", NAN);
     if (!isfinite(c->velocity)) luaL_error(L, "inflow: needs velocity = (m/s)");

@@ -160,6 +160,36 @@ done:
   return st;
 }
 
+/* Before the particles are made: the fluid regions' area over dr² (their overlaps counted twice,
+ * the domain's area at most) times the fields every particle has (position, velocity, volume,
+ * kind and id) must fit in the device memory the run may use. A scene far too large is refused
+ * here, before minutes of geometry and gigabytes of host memory. */
+static enum clsph_status check_fluid_count(const struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  double area = 0.0;
+  for (int r = 0; r < s->nregions; ++r) {
+    const struct scene_region *g = &s->regions[r];
+    double a = 0.0;
+    for (int i = 0; i < g->npts; ++i) {
+      const int j = (i + 1) % g->npts;
+      a += g->pts[2 * i] * g->pts[2 * j + 1] - g->pts[2 * j] * g->pts[2 * i + 1];
+    }
+    area += 0.5 * fabs(a);
+  }
+  area = fmin(area, (s->hi[0] - s->lo[0]) * (s->hi[1] - s->lo[1]));
+  const double n = area / (s->dr * s->dr), bytes = n * (5.0 * sizeof(real) + 8.0);
+  CLSPH_CHECK(bytes <= (double)sim->dev->mem_limit, CLSPH_E_INPUT,
+              "%s: the fluid regions hold about %.3g particles at dr = %g: their positions and "
+              "velocities alone need %.0f MiB of device memory, more than the %.0f MiB the run "
+              "may use on %s: a coarser dr, or another device (clsph devices)",
+              s->case_path, n, s->dr, bytes / 1048576.0, (double)sim->dev->mem_limit / 1048576.0,
+              sim->dev->name);
+done:
+  return st;
+}
+
 enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, struct sim *out)
 {
   enum clsph_status st = CLSPH_OK;
@@ -192,7 +222,13 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
     model = wo->text;
   }
   const struct scene_option *lo = find_option(scene, "wall_layers");
-  int layers = lo != NULL && lo->is_number ? (int)lo->number : 3;
+  CLSPH_CHECK(lo == NULL || (lo->is_number && lo->number >= 1.0 && lo->number <= 8.0 &&
+                             lo->number == floor(lo->number)),
+              CLSPH_E_INPUT,
+              "%s: scheme option wall_layers must be a whole number of dummy layers from 1 to 8",
+              scene->case_path);
+  int layers = lo != NULL ? (int)lo->number : 3;
+  CLSPH_TRY(check_fluid_count(&sim));
   CLSPH_TRY(geometry_build(scene, model, layers, &sim.geom));
   sim.digest = geometry_digest(scene, &sim.geom);
   CLSPH_CHECK(!sim.geom.has_p0 || (sim.scheme->fill_fields & SCHEME_FILL_PRESSURE), CLSPH_E_INPUT,
