@@ -167,6 +167,16 @@ endif()
 clsph_cli_test(case_fluid_too_large ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set n=20000
                --device-memory 100 RC 2
                REGEX "the fluid regions hold about 4e\\+08 particles at dr = 5e-05: their positions and velocities alone need [0-9]+ MiB")
+# sample() values that cannot go into series.csv stop the run with the reason (status "sample()
+# failed", class "metrics")
+foreach(which 1 2 3)
+  clsph_add_test(case_bad_sample_${which} LABELS case COMMAND ${CMAKE_COMMAND}
+                 -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CASE_DIR}/bad_sample.lua
+                 -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/bad_sample_${which} -DSETS=which=${which}
+                 -DRC=2 -DFAILURE=metrics "-DREGEX=sample\\(\\) failed at step"
+                 "-DMESSAGE=is not a column name|returned other names than at its first call|every entry must be name = number"
+                 -P ${CASE_DIR}/run_failure.cmake)
+endforeach()
 clsph_add_test(memory_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
                -DCASE=${CMAKE_SOURCE_DIR}/cases/cavity.lua
                -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/memory_refused -P ${CASE_DIR}/memory.cmake)

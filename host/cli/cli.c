@@ -301,6 +301,8 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
                 "%s is an option of frames: use it with `clsph run CASE --frames` or `clsph "
                 "render OUTDIR`",
                 given);
+    CLSPH_CHECK((c.restart == NULL && !c.overwrite) || strcmp(c.command, "run") == 0, CLSPH_E_INPUT,
+                "%s belongs to `clsph run CASE`", c.restart != NULL ? "--restart" : "--overwrite");
     CLSPH_CHECK(!c.frames || strcmp(c.command, "run") == 0, CLSPH_E_INPUT,
                 "--frames belongs to `clsph run CASE`; `clsph render OUTDIR` draws frames of a "
                 "finished run");

@@ -1872,10 +1872,11 @@ enum clsph_status case_sample(struct case_script *cs, const struct case_sim_api 
   lua_pushnil(L);
   while (lua_next(L, -2) != 0) {
     const char *name = lua_tostring(L, -2);
-    CLSPH_CHECK(name[0] != '\0' && strlen(name) < SCENE_NAME && strpbrk(name, ",\"\n\r") == NULL,
+    CLSPH_CHECK(name[0] != '\0' && strlen(name) < SCENE_NAME && strpbrk(name, ",\"\n\r") == NULL &&
+                    strcmp(name, "time") != 0,
                 CLSPH_E_INPUT,
                 "%s: sample(): '%s' is not a column name (1 to %d characters, no "
-                "comma, quote or line break)",
+                "comma, quote or line break, not 'time')",
                 cs->sb.path, name, SCENE_NAME - 1);
     snprintf(names[k++], SCENE_NAME, "%s", name);
     lua_pop(L, 1);
