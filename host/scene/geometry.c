@@ -1149,8 +1149,8 @@ static enum clsph_status emit(struct build *b, struct geom *g)
       t.v[2 * i + (size_t)a] = p->v[a];
       t.normal[2 * i + (size_t)a] = p->normal[a];
     }
-    t.p0[i] = p->kind == KIND_FLUID ? p->p0 : NAN;
-    t.rho0[i] = p->kind == KIND_FLUID ? p->rho0 : NAN;
+    t.p0[i] = p->kind == KIND_FLUID ? p->p0 : (double)NAN;
+    t.rho0[i] = p->kind == KIND_FLUID ? p->rho0 : (double)NAN;
     t.theta[i] = p->theta;
     t.dist[i] = p->dist;
     t.kind[i] = p->kind;

@@ -1,7 +1,8 @@
 -- A block of ballistic particles (they see no walls) moving right at 1 m/s in a closed unit box:
 -- its front, at x = 0.475 m, passes the wall at t = 0.525 s and is more than dr beyond the domain
--- at t = 0.575 s, where the run must stop as escaped (the cell grid, which reaches some 11 dr
--- beyond the domain for wall layers, would let it run on to t ≈ 1.1 s).
+-- at t = 0.575 s (where it lands on dr beyond exactly: in float the step after, 0.6 s), where the
+-- run must stop as escaped (the cell grid, which reaches some 11 dr beyond the domain for wall
+-- layers, would let it run on to t ≈ 1.1 s).
 domain { 0, 0, 1, 1 }
 particles { dr = 0.05 }
 scheme "ballistic"
