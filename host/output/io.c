@@ -730,9 +730,9 @@ static htri_t h5_is_hdf5(const char *path)
 #endif
 }
 
-/* A scalar attribute read into `type` (HDF5 converts numbers); *found = 0 when absent. */
-static enum clsph_status attr_read(hid_t loc, const char *name, hid_t type, void *value, int *found,
-                                   const char *path)
+/* A 1-D attribute of exactly `count` values read into `type`; *found = 0 when absent. */
+static enum clsph_status attr_read_array(hid_t loc, const char *name, hid_t type, size_t count,
+                                         void *value, int *found, const char *path)
 {
   enum clsph_status st = CLSPH_OK;
   hid_t attr = H5I_INVALID_HID, space = H5I_INVALID_HID;
@@ -742,8 +742,8 @@ static enum clsph_status attr_read(hid_t loc, const char *name, hid_t type, void
   if (!exists) goto done;
   IO_DAMAGED(attr = H5Aopen(loc, name, H5P_DEFAULT));
   IO_DAMAGED(space = H5Aget_space(attr));
-  if (H5Sget_simple_extent_npoints(space) != 1) {
-    damaged(path, "an attribute is not a single value");
+  if (H5Sget_simple_extent_npoints(space) != (hssize_t)count) {
+    damaged(path, "an attribute has the wrong number of values");
     st = CLSPH_E_INPUT;
     goto done;
   }
@@ -753,6 +753,13 @@ done:
   h5_close_id(&space);
   h5_close_id(&attr);
   return st;
+}
+
+/* A scalar attribute read into `type` (HDF5 converts numbers); *found = 0 when absent. */
+static enum clsph_status attr_read(hid_t loc, const char *name, hid_t type, void *value, int *found,
+                                   const char *path)
+{
+  return attr_read_array(loc, name, type, 1, value, found, path);
 }
 
 /* A string attribute (fixed-length or variable-length) as a malloc'd string; NULL when absent. */
@@ -1121,31 +1128,6 @@ done:
 
 /* ---------------------------------------------------------------------------------------------
  * Reading a snapshot (for frames) */
-
-/* A 1-D attribute of exactly `count` values read into `type`; *found = 0 when absent. */
-static enum clsph_status attr_read_array(hid_t loc, const char *name, hid_t type, size_t count,
-                                         void *value, int *found, const char *path)
-{
-  enum clsph_status st = CLSPH_OK;
-  hid_t attr = H5I_INVALID_HID, space = H5I_INVALID_HID;
-  htri_t exists;
-  *found = 0;
-  IO_DAMAGED(exists = H5Aexists(loc, name));
-  if (!exists) goto done;
-  IO_DAMAGED(attr = H5Aopen(loc, name, H5P_DEFAULT));
-  IO_DAMAGED(space = H5Aget_space(attr));
-  if (H5Sget_simple_extent_npoints(space) != (hssize_t)count) {
-    damaged(path, "an attribute has the wrong number of values");
-    st = CLSPH_E_INPUT;
-    goto done;
-  }
-  IO_DAMAGED(H5Aread(attr, type, value));
-  *found = 1;
-done:
-  h5_close_id(&space);
-  h5_close_id(&attr);
-  return st;
-}
 
 /* Shape of a dataset: rows and components (1 for a 1-D dataset). */
 static enum clsph_status dataset_shape(hid_t dset, hsize_t *rows, int *ncomp, const char *what,

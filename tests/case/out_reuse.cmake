@@ -5,15 +5,7 @@
 # checkpoint, and a restart into a folder of other outputs is refused.
 #   cmake -DCLSPH=exe -DCASE=tests/case/outputs.lua -DOUT=dir -P out_reuse.cmake
 file(REMOVE_RECURSE ${OUT})
-function(clsph expect_rc)
-  execute_process(COMMAND ${CLSPH} ${ARGN} --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out
-                  ERROR_VARIABLE out)
-  message("clsph ${ARGN}: ${rc}\n${out}")
-  if(NOT rc EQUAL expect_rc)
-    message(FATAL_ERROR "exit status ${rc}, expected ${expect_rc}")
-  endif()
-  set(out "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/clsph.cmake)
 function(listing dir var)
   file(GLOB_RECURSE files RELATIVE ${dir} ${dir}/*.h5 ${dir}/frames/*.png)
   list(SORT files)

@@ -4,15 +4,7 @@
 # field, or of its time) fails its checksum.
 #   cmake -DCLSPH=exe -DCASE=cases/periodic_drift.lua -DOUT=dir -DPYTHON=python3 -P ...
 file(REMOVE_RECURSE ${OUT})
-function(clsph expect_rc)
-  execute_process(COMMAND ${CLSPH} ${ARGN} --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out
-                  ERROR_VARIABLE out)
-  message("clsph ${ARGN}: ${rc}\n${out}")
-  if(NOT rc EQUAL expect_rc)
-    message(FATAL_ERROR "exit status ${rc}, expected ${expect_rc}")
-  endif()
-  set(out "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/clsph.cmake)
 clsph(0 run ${CASE} --set dr=0.05 --set t_end=0.1 --out ${OUT}/a)
 file(GLOB cps ${OUT}/a/checkpoint_*.h5)
 list(GET cps 0 cp)
