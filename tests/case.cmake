@@ -171,6 +171,28 @@ clsph_run_test(run_hydrostatic_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/hydrostati
                SETS dr=0.05 t_end=1 wcsph=1
                BOUNDS "speed_ratio<1e-3" "pressure_error<0.03" "crossed_wall<0.5")
 
+# wcsph-usaw's default sound speed, c0 = 10 U (solvers/wcsph_usaw/wcsph_usaw.c), printed when the
+# scheme is created, by `clsph info` and `clsph run` alike: a tank of water 0.4 m deep gets
+# U = √(2 g D) from the water's depth, the same with side walls 1 m and 2.5 m high (it took
+# 10 √(g H) from the domain's height H before: 31.32 and 49.52 m/s), and the time step 0.2 h/c0
+# follows; set going at 4 m/s it gets U = 4 m/s (before: 31.32 m/s again). A case that sets
+# sound_speed is told the default it overrides.
+set(c0_message "sound speed c0 = 28.01 m/s = 10 U, U = 2.801 m/s from .*D = 0.4 m the fluid's depth")
+clsph_cli_test(case_wcsph_sound_speed ARGS info ${CASE_DIR}/sound_speed.lua RC 0
+               REGEX "${c0_message}" REGEX2 "time step 0.000713922 s")
+clsph_cli_test(case_wcsph_sound_speed_walls ARGS info ${CASE_DIR}/sound_speed.lua --set top=2.5
+               RC 0 REGEX "${c0_message}" REGEX2 "time step 0.000713922 s")
+clsph_cli_test(case_wcsph_sound_speed_velocity ARGS info ${CASE_DIR}/sound_speed.lua --set u=4
+               RC 0 REGEX "sound speed c0 = 40 m/s = 10 U, U = 4 m/s from the initial fluid speed"
+               REGEX2 "time step 0.0005 s")
+clsph_cli_test(case_wcsph_sound_speed_run RC 0
+               ARGS run ${CASE_DIR}/sound_speed.lua --set top=2.5 --overwrite
+                    --out ${CMAKE_CURRENT_BINARY_DIR}/runs/wcsph_sound_speed
+               REGEX "${c0_message}" REGEX2 "done: t = 0.001 s")
+clsph_cli_test(case_wcsph_sound_speed_given ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
+               --set wcsph=1 RC 0
+               REGEX "sound speed c0 = 34.31 m/s \\(scheme option sound_speed; the default 10 U would be 24.26 m/s, U = 2.426 m/s from .*D = 0.3 m")
+
 # isph-usaw: the lid-driven cavity at Re = 100, coarse (20 particles per side, 10 s): the
 # centreline velocities against Ghia et al. 1982 within the coarse run's deviation (measured
 # RMS 0.116 U for u and 0.031 U for v at this resolution; the bounds leave 30% for the float
