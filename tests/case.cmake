@@ -165,7 +165,7 @@ clsph_run_test(run_hydrostatic_coarse ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
                BOUNDS "speed_ratio<1e-3" "pressure_error<0.03" "crossed_wall<0.5")
 
 # wcsph-usaw on the same tank (pressure_form = "dynamic", the case's default for the baseline):
-# measured 1.4% and 6.5e-4 √(gH) at 1 s; the same bounds. Its density diffusion once diffused the
+# measured 1.4% and 6.4e-4 √(gH) at 1 s; the same bounds. Its density diffusion once diffused the
 # hydrostatic stratification instead of leaving it out, and the tank sank through its bottom.
 clsph_run_test(run_hydrostatic_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
                SETS dr=0.05 t_end=1 wcsph=1
@@ -200,9 +200,11 @@ clsph_cli_test(case_wcsph_sound_speed_given ARGS info ${CMAKE_SOURCE_DIR}/cases/
 clsph_run_test(run_cavity_coarse ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 t_end=10
                BOUNDS "u_rms_vs_ghia<0.15" "v_rms_vs_ghia<0.045" "wall_crossing_steps<0.5")
 
-# wcsph-usaw, the baseline, on the same coarse cavity (measured RMS 0.121 U for u, 0.043 U for v).
-# Its particles do cross the walls near the lid's corners (about 700 of 5000 steps have one or two
-# fluid particles behind a wall; one seen 7e-4 dr deep): measured and reported, not bounded here.
+# wcsph-usaw, the baseline, on the same coarse cavity (measured RMS 0.137 U for u, 0.039 U for v;
+# 0.121 U and 0.043 U with dρ/dt from u^n, and at 32 across 0.070 U and 0.026 U against 0.074 U and
+# 0.028 U).
+# Its particles do cross the walls near the lid's corners (about 870 of 5000 steps have one or two
+# fluid particles behind a wall; the deepest 0.21 dr): measured and reported, not bounded here.
 clsph_run_test(run_cavity_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 t_end=10 wcsph=1
                BOUNDS "u_rms_vs_ghia<0.16" "v_rms_vs_ghia<0.06")
 clsph_cli_test(case_time_step_above_bound RC 2
@@ -268,7 +270,8 @@ clsph_run_test(run_wedge_coarse ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua SE
 
 # The same with wcsph-usaw (its wall guard and collisions of u*, usaw/common.cl; without them the
 # meniscus crept through the left wall from 0.087 s and pairs clumped at 0.67 s): measured 0 wall
-# crossings, 0.51 √(gH) at 2 s and 1075 N/m (5% below isph-usaw); the same bounds.
+# crossings, 0.31 √(gH) at 2 s and 1046 N/m (9% below isph-usaw; 0.30 and 1042 N/m in float, and
+# 0.51 and 1075 N/m with dρ/dt from u^n, before the symplectic density update); the same bounds.
 clsph_run_test(run_wedge_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua
                SETS dr=0.02 wcsph=1
                BOUNDS "crossed_wall<0.5" "max_speed_over_sqrt_gH<1" "wedge_force_mean>900"
@@ -526,3 +529,16 @@ clsph_cli_test(case_shift_velocity ARGS info ${CASE_DIR}/bad_shift_velocity.lua 
 clsph_run_test(run_dam_break_coarse ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
                SETS n=20 t_end=0.42 every=0.002
                BOUNDS "floor_speed_max<0.95" "volume_ratio>0.999" "front_over_ritter<1")
+
+# The same with wcsph-usaw (c0 = 10 × 2 √(gH)). Nothing on the floor may outrun Ritter's front
+# (floor_speed_max < 1) and the front must keep running (its mean speed over Ritter's above 0.62).
+# With dρ/dt taken from u^n (forward Euler for density and velocity) the thin tongue under the
+# front breathed with a growing amplitude from t = 0.29 s (density 0.80 to 1.26 ρ0), threw
+# particles along the floor at 2.83 × 2 √(gH) (3.36 in float) and stalled the front
+# (front_over_ritter 0.581, 0.608 in float); with dρ/dt from u^{n+1} (symplectic Euler,
+# solvers/wcsph_usaw/wcsph_usaw.c) the floor's largest speed is the front's tip, 0.915 (0.907 in
+# float; 0.91 to 0.94 at cfl 0.5 to 0.9), and front_over_ritter is 0.663 (0.663). About 6 s.
+clsph_run_test(run_dam_break_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
+               SETS n=20 t_end=0.42 every=0.002 wcsph=1
+               BOUNDS "floor_speed_max<1" "front_over_ritter>0.62" "front_over_ritter<1"
+                      "volume_ratio>0.999")
