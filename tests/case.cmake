@@ -202,11 +202,33 @@ clsph_run_test(run_hydrostatic_coarse ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
                BOUNDS "speed_ratio<1e-3" "pressure_error<0.03" "crossed_wall<0.5")
 
 # wcsph-usaw on the same tank (pressure_form = "dynamic", the case's default for the baseline):
-# measured 1.4% and 6.5e-4 √(gH) at 1 s; the same bounds. Its density diffusion once diffused the
+# measured 1.4% and 6.4e-4 √(gH) at 1 s; the same bounds. Its density diffusion once diffused the
 # hydrostatic stratification instead of leaving it out, and the tank sank through its bottom.
 clsph_run_test(run_hydrostatic_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
                SETS dr=0.05 t_end=1 wcsph=1
                BOUNDS "speed_ratio<1e-3" "pressure_error<0.03" "crossed_wall<0.5")
+
+# wcsph-usaw's default sound speed, c0 = 10 U (solvers/wcsph_usaw/wcsph_usaw.c), printed when the
+# scheme is created, by `clsph info` and `clsph run` alike: a tank of water 0.4 m deep gets
+# U = √(2 g D) from the water's depth, the same with side walls 1 m and 2.5 m high (it took
+# 10 √(g H) from the domain's height H before: 31.32 and 49.52 m/s), and the time step 0.2 h/c0
+# follows; set going at 4 m/s it gets U = 4 m/s (before: 31.32 m/s again). A case that sets
+# sound_speed is told the default it overrides.
+set(c0_message "sound speed c0 = 28.01 m/s = 10 U, U = 2.801 m/s from .*D = 0.4 m the fluid's depth")
+clsph_cli_test(case_wcsph_sound_speed ARGS info ${CASE_DIR}/sound_speed.lua RC 0
+               REGEX "${c0_message}" REGEX2 "time step 0.000713922 s")
+clsph_cli_test(case_wcsph_sound_speed_walls ARGS info ${CASE_DIR}/sound_speed.lua --set top=2.5
+               RC 0 REGEX "${c0_message}" REGEX2 "time step 0.000713922 s")
+clsph_cli_test(case_wcsph_sound_speed_velocity ARGS info ${CASE_DIR}/sound_speed.lua --set u=4
+               RC 0 REGEX "sound speed c0 = 40 m/s = 10 U, U = 4 m/s from the initial fluid speed"
+               REGEX2 "time step 0.0005 s")
+clsph_cli_test(case_wcsph_sound_speed_run RC 0
+               ARGS run ${CASE_DIR}/sound_speed.lua --set top=2.5 --overwrite
+                    --out ${CMAKE_CURRENT_BINARY_DIR}/runs/wcsph_sound_speed
+               REGEX "${c0_message}" REGEX2 "done: t = 0.001 s")
+clsph_cli_test(case_wcsph_sound_speed_given ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
+               --set wcsph=1 RC 0
+               REGEX "sound speed c0 = 34.31 m/s \\(scheme option sound_speed; the default 10 U would be 24.26 m/s, U = 2.426 m/s from .*D = 0.3 m")
 
 # isph-usaw: the lid-driven cavity at Re = 100, coarse (20 particles per side, 10 s): the
 # centreline velocities against Ghia et al. 1982 within the coarse run's deviation (measured
@@ -215,9 +237,11 @@ clsph_run_test(run_hydrostatic_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/hydrostati
 clsph_run_test(run_cavity_coarse ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 t_end=10
                BOUNDS "u_rms_vs_ghia<0.15" "v_rms_vs_ghia<0.045" "wall_crossing_steps<0.5")
 
-# wcsph-usaw, the baseline, on the same coarse cavity (measured RMS 0.121 U for u, 0.043 U for v).
-# Its particles do cross the walls near the lid's corners (about 700 of 5000 steps have one or two
-# fluid particles behind a wall; one seen 7e-4 dr deep): measured and reported, not bounded here.
+# wcsph-usaw, the baseline, on the same coarse cavity (measured RMS 0.137 U for u, 0.039 U for v;
+# 0.121 U and 0.043 U with dρ/dt from u^n, and at 32 across 0.070 U and 0.026 U against 0.074 U and
+# 0.028 U).
+# Its particles do cross the walls near the lid's corners (about 870 of 5000 steps have one or two
+# fluid particles behind a wall; the deepest 0.21 dr): measured and reported, not bounded here.
 clsph_run_test(run_cavity_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 t_end=10 wcsph=1
                BOUNDS "u_rms_vs_ghia<0.16" "v_rms_vs_ghia<0.06")
 clsph_cli_test(case_time_step_above_bound RC 2
@@ -283,7 +307,8 @@ clsph_run_test(run_wedge_coarse ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua SE
 
 # The same with wcsph-usaw (its wall guard and collisions of u*, usaw/common.cl; without them the
 # meniscus crept through the left wall from 0.087 s and pairs clumped at 0.67 s): measured 0 wall
-# crossings, 0.51 √(gH) at 2 s and 1075 N/m (5% below isph-usaw); the same bounds.
+# crossings, 0.31 √(gH) at 2 s and 1046 N/m (9% below isph-usaw; 0.30 and 1042 N/m in float, and
+# 0.51 and 1075 N/m with dρ/dt from u^n, before the symplectic density update); the same bounds.
 clsph_run_test(run_wedge_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua
                SETS dr=0.02 wcsph=1
                BOUNDS "crossed_wall<0.5" "max_speed_over_sqrt_gH<1" "wedge_force_mean>900"
@@ -311,7 +336,8 @@ clsph_run_test(validate_cylinder_array ${CMAKE_SOURCE_DIR}/cases/cylinder_array.
 
 # Dam break over a wedge at the paper's δr = 0.01 m, 2 s, both schemes: no wall crossing (the
 # issue's criterion); mean normal force on the wedge's left side from 0.25 s measured 1102 N/m
-# (isph-usaw) and 1072 N/m (wcsph-usaw), within 3% of the coarse runs: ±20% as in CI.
+# (isph-usaw) and 1052 N/m (wcsph-usaw; 1072 N/m with dρ/dt from u^n), within 5% of the coarse
+# runs: ±20% as in CI.
 clsph_run_test(validate_wedge ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua LABELS slow
                BOUNDS "crossed_wall<0.5" "wedge_force_mean>900" "wedge_force_mean<1400")
 clsph_run_test(validate_wedge_wcsph ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua LABELS slow
@@ -549,3 +575,16 @@ clsph_cli_test(case_shift_velocity ARGS info ${CASE_DIR}/bad_shift_velocity.lua 
 clsph_run_test(run_dam_break_coarse ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
                SETS n=20 t_end=0.42 every=0.002
                BOUNDS "floor_speed_max<0.95" "volume_ratio>0.999" "front_over_ritter<1")
+
+# The same with wcsph-usaw (c0 = 10 × 2 √(gH)). Nothing on the floor may outrun Ritter's front
+# (floor_speed_max < 1) and the front must keep running (its mean speed over Ritter's above 0.62).
+# With dρ/dt taken from u^n (forward Euler for density and velocity) the thin tongue under the
+# front breathed with a growing amplitude from t = 0.29 s (density 0.80 to 1.26 ρ0), threw
+# particles along the floor at 2.83 × 2 √(gH) (3.36 in float) and stalled the front
+# (front_over_ritter 0.581, 0.608 in float); with dρ/dt from u^{n+1} (symplectic Euler,
+# solvers/wcsph_usaw/wcsph_usaw.c) the floor's largest speed is the front's tip, 0.915 (0.907 in
+# float; 0.91 to 0.94 at cfl 0.5 to 0.9), and front_over_ritter is 0.663 (0.663). About 6 s.
+clsph_run_test(run_dam_break_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
+               SETS n=20 t_end=0.42 every=0.002 wcsph=1
+               BOUNDS "floor_speed_max<1" "front_over_ritter>0.62" "front_over_ritter<1"
+                      "volume_ratio>0.999")

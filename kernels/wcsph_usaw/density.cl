@@ -9,7 +9,9 @@
  * its bottom wall at 0.05 m/s), the linear
  * equation of state p = c0² (ρ − ρ0) + p_bg, and the wall vertices' pressure as the
  * Shepard mean of the fluid's, carried hydrostatically to the wall (Ferrand et al. 2013):
- *   p_v = Σ_b V_b (p_b + ρ_b g·(r_v − r_b)) w_vb / Σ_b V_b w_vb. */
+ *   p_v = Σ_b V_b (p_b + ρ_b g·(r_v − r_b)) w_vb / Σ_b V_b w_vb.
+ * dρ/dt is taken from the new velocities u^{n+1} at r^n (the step's order: wcsph_usaw.c), so that
+ * ρ^{n+1} = ρ^n + δt dρ/dt is symplectic Euler with the velocity, as the positions are. */
 __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
                                __global const real *rho, const real c0, const realv gravity,
                                const real rho0_c2, __global real *drho)

@@ -11,7 +11,7 @@
  * against 3e-2 √(gH)). Where the free surface moves it does harm: P = ρ0 |g| (z − z_top) ≠ 0 on
  * the surface, whose truncated kernel sum then acts like a surface tension (the dam-break column
  * hardly collapses). p_bg stays in P: its 2 p_bg ε_a is the regularising force it is there for.
- * Then positions, density, volume and pressure (symplectic Euler):
+ * Then positions, density, volume and pressure (symplectic Euler, dρ/dt from u^{n+1}):
  *   r^{n+1} = r^n + δt u^{n+1},  ρ^{n+1} = ρ^n + δt dρ/dt,  V = m/ρ,  p = c0² (ρ − ρ0) + p_bg. */
 __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ustar,
                              __global const real *p, __global const real *rho, const real dt,

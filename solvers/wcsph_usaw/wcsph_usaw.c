@@ -2,17 +2,19 @@
  * same unified semi-analytical walls and operators as isph-usaw, with density by continuity
  * (and Ferrari density diffusion), a linear equation of state with a background pressure, and
  * an explicit time step (kernels/wcsph_usaw/). One step at r^n:
- *   γ; wall-vertex pressure; dρ/dt; u* = u^n + δt (a_visc + g + f);
+ *   γ; wall-vertex pressure; u* = u^n + δt (a_visc + g + f);
  *   u^{n+1} = u* − δt/ρ G+{p}, or with pressure_form = "dynamic" u* − δt/ρ G+{P} − δt (ρ0/ρ) g,
  *   P = p − ρ0 g·r less its value at rest (update.cl);
+ *   dρ/dt from u^{n+1} (symplectic Euler for ρ as for r: wcsph_step);
  *   r, ρ, V = m/ρ, p.
- * Options: sound_speed c0 (m/s; default 10 times the largest of the wall speed and √(g H)),
+ * Options: sound_speed c0 (m/s; default 10 U, U the scene's velocity scale: velocity_scale()),
  * background_pressure p_bg (Pa, default 0; the paper uses one for the cavity), density_diffusion
  * (factor of the Ferrari term, 1), pressure_form ("total": G+ of p, the paper's; "dynamic": G+ of
  * the pressure less its hydrostatic part, which holds a tank at rest but glues a moving free
  * surface, update.cl).
  * Time step (48-49) with u_ref = c0: min(0.2 h/c0, 0.125 h²/ν, 0.25 √(h/|a|)). */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -68,6 +70,75 @@ done:
 
 #define ARG(k, i, x) CLSPH_TRY(kern_set_at((k), (i)++, KARG(x)))
 
+/* The scene's velocity scale U of the default sound speed c0 = 10 U, and what sets it. */
+struct velocity_scale {
+  double u;       /* m/s */
+  char what[160]; /* "the walls' speed", "√(2 g D), D = 0.3 m the fluid's depth", ... */
+};
+
+/* U is the largest of: the walls' speeds (sliding, or |ω| times the wall vertex farthest from the
+ * centre: a polyline's farthest point from a point is one of its vertices), the inflow speeds,
+ * the flow-rate control's target, the initial fluid speeds (fill velocities) and, under gravity,
+ * the speed √(2 g D) of a fall through the fluid's depth D, its extent along g: the highest less
+ * the lowest fluid particle along −g, plus dr (the particles sit dr/2 inside the filled region),
+ * not the domain's height (raising a tank's side walls changed c0 before).
+ * Free-surface flows: the paper fixes c0 at "10 times the maximum flow velocity" (Leroy et al.
+ * 2014 sec 3.4, after eq 49) and scales its dam break by √(g H), H the initial fluid depth
+ * (sec 4.3, t+ = t √(g/H)). Fluid set going by gravity alone takes its speed from the height it
+ * falls, at most √(2 g D) for the whole depth (½ u² = g D), √2 times the paper's scale: it is
+ * the larger of the two and the nearer to the largest speeds measured. In the dam break of
+ * cases/dam_break.lua (H = 0.3 m, n = 20 and 40) the fluid's largest speed, at the tip of its
+ * front, reaches 3.1 to 3.3 m/s = 1.3 √(2 g H), 1.8 √(g H): Mach 0.13 against 10 √(2 g D), where
+ * 10 √(g D) would give 0.19. The paper's own wedge run took 20 m/s = 4.5 √(2 g H) (H = 1 m);
+ * cases/dam_break_wedge.lua keeps that value explicitly. */
+static void velocity_scale(const struct scene *s, const struct geom *g, struct velocity_scale *vs)
+{
+  double u = 0.0;
+  const char *what = "nothing: no drive";
+  for (int w = 0; w < s->nwalls; ++w) {
+    const struct scene_wall *wl = &s->walls[w];
+    double uw = hypot(wl->velocity[0], wl->velocity[1]);
+    for (int k = 0; k < wl->npts && wl->omega != 0.0; ++k)
+      uw = fmax(uw, fabs(wl->omega) *
+                        hypot(wl->pts[2 * k] - wl->centre[0], wl->pts[2 * k + 1] - wl->centre[1]));
+    if (uw > u) {
+      u = uw;
+      what = "the walls' speed";
+    }
+  }
+  for (int k = 0; k < s->nsections; ++k)
+    if (fabs(s->sections[k].velocity) > u) {
+      u = fabs(s->sections[k].velocity);
+      what = "the inflow speed";
+    }
+  if (s->flow.on && fabs(s->flow.velocity) > u) {
+    u = fabs(s->flow.velocity);
+    what = "the flow-rate control's target";
+  }
+  for (size_t i = 0; i < g->nfluid; ++i)
+    if (hypot(g->v[2 * i], g->v[2 * i + 1]) > u) {
+      u = hypot(g->v[2 * i], g->v[2 * i + 1]);
+      what = "the initial fluid speed";
+    }
+  snprintf(vs->what, sizeof vs->what, "%s", what);
+  const double gn = hypot(s->gravity[0], s->gravity[1]);
+  if (gn > 0.0 && g->nfluid > 0) {
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (size_t i = 0; i < g->nfluid; ++i) {
+      const double z = -(s->gravity[0] * g->x[2 * i] + s->gravity[1] * g->x[2 * i + 1]) / gn;
+      lo = fmin(lo, z);
+      hi = fmax(hi, z);
+    }
+    const double depth = hi - lo + s->dr, uf = sqrt(2.0 * gn * depth);
+    if (uf > u) {
+      u = uf;
+      snprintf(vs->what, sizeof vs->what, "√(2 g D), D = %.4g m the fluid's depth along gravity",
+               depth);
+    }
+  }
+  vs->u = u;
+}
+
 static enum clsph_status wcsph_create(struct sim *sim, void **state)
 {
   enum clsph_status st = CLSPH_OK;
@@ -79,14 +150,13 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   CLSPH_CHECK(sim->sm.kind == SMOOTHING_WENDLAND_C2, CLSPH_E_INPUT,
               "%s: wcsph-usaw computes γ analytically for the Wendland C2 kernel only",
               sc->case_path);
-  double u_wall = 0.0;
-  for (size_t i = 0; i < geo->n; ++i) {
+  for (size_t i = 0; i < geo->n; ++i)
     CLSPH_CHECK(geo->kind[i] <= KIND_VERTEX, CLSPH_E_INPUT,
                 "%s: wcsph-usaw has no inflow or outflow sections", sc->case_path);
-    if (geo->kind[i] == KIND_VERTEX) u_wall = fmax(u_wall, hypot(geo->v[2 * i], geo->v[2 * i + 1]));
-  }
-  double gh = sqrt(hypot(sc->gravity[0], sc->gravity[1]) * (sc->hi[1] - sc->lo[1]));
-  ws->c0 = 10.0 * fmax(u_wall, gh); /* Leroy et al. 2014: 10 U */
+  struct velocity_scale vs;
+  velocity_scale(sc, geo, &vs);
+  ws->c0 = 10.0 * vs.u; /* Leroy et al. 2014 sec 3.4: 10 U */
+  int c0_given = 0;
   ws->diffusion = 1.0;
   for (int i = 0; i < sc->noptions; ++i) {
     const struct scene_option *o = &sc->options[i];
@@ -94,6 +164,7 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
       CLSPH_CHECK(o->is_number && o->number > 0.0, CLSPH_E_INPUT,
                   "%s: sound_speed must be a positive speed (m/s)", sc->case_path);
       ws->c0 = o->number;
+      c0_given = 1;
     } else if (strcmp(o->key, "density_diffusion") == 0) {
       CLSPH_CHECK(o->is_number && o->number >= 0.0 && o->number <= 1.0, CLSPH_E_INPUT,
                   "%s: density_diffusion must be a factor from 0 (off) to 1", sc->case_path);
@@ -110,8 +181,17 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
     }
   }
   CLSPH_CHECK(ws->c0 > 0.0, CLSPH_E_INPUT,
-              "%s: wcsph-usaw needs a sound speed: set the scheme option sound_speed (m/s)",
+              "%s: wcsph-usaw needs a sound speed: nothing drives the flow (no gravity, moving "
+              "wall, inflow, flow-rate control nor initial velocity): set the scheme option "
+              "sound_speed (m/s)",
               sc->case_path);
+  if (c0_given)
+    log_info("wcsph-usaw: sound speed c0 = %.4g m/s (scheme option sound_speed; the default 10 U "
+             "would be %.4g m/s, U = %.4g m/s from %s)",
+             ws->c0, 10.0 * vs.u, vs.u, vs.what);
+  else
+    log_info("wcsph-usaw: sound speed c0 = %.4g m/s = 10 U, U = %.4g m/s from %s", ws->c0, vs.u,
+             vs.what);
   ws->mass = sc->rho0 * sc->dr * sc->dr;
   /* fields: density, pressure, and the USAW helpers */
   struct pset *ps = &sim->ps;
@@ -202,15 +282,6 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   ARG(ws->k_vertex, i, grav);
   ARG(ws->k_vertex, i, p);
   CLSPH_TRY(kern_launch(sim->dev, ws->k_vertex, ps->n, NULL));
-  CLSPH_TRY(prefix(sim, ws, ws->k_cont, 1, &i));
-  ARG(ws->k_cont, i, vel);
-  ARG(ws->k_cont, i, rho);
-  const real cd = (real)(ws->diffusion * ws->c0), r0c2 = (real)(sc->rho0 / (ws->c0 * ws->c0));
-  ARG(ws->k_cont, i, cd);
-  ARG(ws->k_cont, i, grav);
-  ARG(ws->k_cont, i, r0c2);
-  ARG(ws->k_cont, i, drho);
-  CLSPH_TRY(kern_launch(sim->dev, ws->k_cont, ps->n, NULL));
   CLSPH_TRY(prefix(sim, ws, ws->k_predict, 1, &i));
   ARG(ws->k_predict, i, vel);
   ARG(ws->k_predict, i, rdt);
@@ -236,6 +307,32 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   ARG(ws->k_velocity, i, id);
   ARG(ws->k_velocity, i, vel);
   CLSPH_TRY(kern_launch(sim->dev, ws->k_velocity, ps->n, NULL));
+  /* dρ/dt with u^{n+1} (at r^n), after the velocity: ρ^{n+1} = ρ^n + δt D{u^{n+1}} as
+   * r^{n+1} = r^n + δt u^{n+1}, symplectic Euler for the pair (ρ, u) as for (r, u). The paper gives
+   * the continuity equation (eq 9, D of eq 13) and the time step (eqs 48-49) but not the order of
+   * the updates. With dρ/dt from u^n, as before, (ρ, u) went by forward Euler, under which an
+   * undamped oscillation of frequency ω grows by (ω δt)²/2 a step at any δt. The density
+   * diffusion damps sound waves in the bulk but not the breathing of a thin layer, uniform across
+   * it (p > 0 pushes its free surface out, p < 0 pulls it in, through the kernel sum the air
+   * truncates). Under the front of the dam break (cases/dam_break.lua, n = 20, c0 = 34 m/s) the
+   * tongue on the floor beyond x = 1 m, 1 to 3 particles thick (γ 0.59 to 0.86, 5 to 25 fluid
+   * neighbours, Shepard sum of the fluid 0.35 to 0.97), breathed with a period of 5.8 ms
+   * (ω δt = 0.18) and grew 1.5 times a period from t = 0.29 s: its density swung from 0.80 ρ0 to
+   * 1.26 ρ0 (p from −2.3e5 to 3.1e5 Pa, ρ0 g H = 2.9e3 Pa), its particles took 1e3 to 1e4 m/s²,
+   * were thrown along the floor at up to 2.8 × 2 √(gH) and the front stalled near x = 1.35 m.
+   * Halving δt hid it (growth ∝ δt over a given time). Now the density stays within 1% of ρ0
+   * (p ≥ −1.1e4 Pa, at the front's tip), the floor's largest speed is that of the front's tip,
+   * 0.92 × 2 √(gH) (0.96 at n = 40, against 1.88 before), and the front runs on (its mean speed
+   * 0.66 of Ritter's at 0.42 s, 0.58 before). */
+  CLSPH_TRY(prefix(sim, ws, ws->k_cont, 1, &i));
+  ARG(ws->k_cont, i, vel);
+  ARG(ws->k_cont, i, rho);
+  const real cd = (real)(ws->diffusion * ws->c0), r0c2 = (real)(sc->rho0 / (ws->c0 * ws->c0));
+  ARG(ws->k_cont, i, cd);
+  ARG(ws->k_cont, i, grav);
+  ARG(ws->k_cont, i, r0c2);
+  ARG(ws->k_cont, i, drho);
+  CLSPH_TRY(kern_launch(sim->dev, ws->k_cont, ps->n, NULL));
   CLSPH_TRY(KERN_SET(ws->k_advance, KARG(n), KARG(sim->grid.geom), KARG(rdt), KARG(mass),
                      KARG(rho0), KARG(c0), KARG(pbg), KARG(kind), KARG(pos), KARG(vel), KARG(rho),
                      KARG(drho), KARG(vol), KARG(p), KARG(sim->d_flags)));
