@@ -211,6 +211,12 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   for (size_t i = 0; i < geo->n; ++i) {
     double z = up[0] * geo->x[2 * i] + up[1] * geo->x[2 * i + 1];
     double ph = geo->kind[i] == KIND_FLUID && gn > 0.0 ? sc->rho0 * gn * (ztop - z) : 0.0;
+    /* fill { density } or fill { pressure } (the pressure without p_bg) instead, through the
+     * equation of state p = c0² (ρ − ρ0) + p_bg */
+    if (i < geo->nfluid && isfinite(geo->rho0[i]))
+      ph = ws->c0 * ws->c0 * (geo->rho0[i] - sc->rho0);
+    else if (i < geo->nfluid && isfinite(geo->p0[i]))
+      ph = geo->p0[i];
     buf[i] = (real)(sc->rho0 + ph / (ws->c0 * ws->c0));
     buf[geo->n + i] = (real)(ws->p_bg + ph);
   }
@@ -398,6 +404,7 @@ const struct scheme_ops scheme_wcsph_usaw = {
     .wall_model = "usaw",
     .smoothing = "wendland",
     .h_over_dr = 2.0,
+    .fill_fields = SCHEME_FILL_PRESSURE | SCHEME_FILL_DENSITY,
     .options = options,
     .create = wcsph_create,
     .step = wcsph_step,
