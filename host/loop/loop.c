@@ -9,6 +9,7 @@
  *   checkpoint_NNNNNN.h5               at the checkpoint cadence and at the end (--restart)
  *   probes.csv, profile_<name>.csv     interpolated fields at the output cadence
  *   forces.csv                         wall-group forces at the output cadence
+ *   series.csv                         what the case's sample(sim) returns, at the same cadence
  *   frames/FIELD_NNNNNN.png, FIELD.mp4 with --frames: a frame with each snapshot, drawn from a
  *                                      host copy of the device state, and the movie at the end
  *   summary.json                       what ran, its cost (with --profile, the device time per
@@ -65,8 +66,9 @@ done:
 }
 
 /* Before the first step: what the outputs need is there (the wall groups of forces, the field
- * of frames), the folder is ready, a restart has its state back, and the series are open; a
- * fresh run writes its initial snapshot. */
+ * of frames), a restart has its state back, the cadences are sane, the folder is this run's and
+ * ready (what a run continued in place wrote after its checkpoint is gone), the snapshot index
+ * and the series go on from the checkpoint's, and a fresh run writes its initial snapshot. */
 static enum clsph_status start(struct sim *sim, const struct loop_options *opt, struct run_out *o)
 {
   enum clsph_status st = CLSPH_OK;
@@ -152,6 +154,10 @@ static void advance(struct sim *sim, double dt, double target, int lands)
   sim->time = lands ? target : sim->time + dt;
   sim->dt = dt;
   ++sim->step;
+  if (sim->step == sim->step0 + 1) /* the solvers have made their buffers */
+    log_debug("device memory after the first step: %.1f MiB in buffers (estimated before the "
+              "run: %.1f MiB)",
+              (double)kern_allocated() / 1048576.0, sim->mem_estimate / 1048576.0);
   if (sim->solver_its > 0) {
     sim->solver_its_sum += sim->solver_its;
     sim->solver_steps += 1;
@@ -189,10 +195,19 @@ done:
 }
 
 /* SIGINT or SIGTERM: the step is over; a checkpoint of the state reached (unless this step wrote
- * one) and the status, so that the summary says so and --restart resumes. */
+ * one) and the status, so that the summary says so and --restart resumes. During the set-up,
+ * before the folder is claimed, nothing is written. */
 static enum clsph_status interrupted(struct sim *sim, struct run_out *o, int sig)
 {
   enum clsph_status st = CLSPH_OK;
+  if (o->dir == NULL) { /* during the set-up: nothing is written */
+    snprintf(sim->status, sizeof sim->status, "interrupted (%s) before the first step",
+             interrupt_name(sig));
+    snprintf(sim->failure, sizeof sim->failure, "interrupted");
+    log_info("%s", sim->status);
+    st = CLSPH_E_INTERRUPTED;
+    goto done;
+  }
   if (o->checkpoint_step != sim->step) CLSPH_TRY(checkpoint_write(sim, o));
   snprintf(sim->status, sizeof sim->status, "interrupted (%s) at step %ld, t = %.9g s",
            interrupt_name(sig), sim->step, sim->time);
@@ -247,14 +262,7 @@ enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
 
   o.checkpoint_step = -1;
   o.script = script;
-  if (interrupt_signal() != 0) { /* during the set-up: nothing written yet */
-    snprintf(sim->status, sizeof sim->status, "interrupted (%s) before the first step",
-             interrupt_name(interrupt_signal()));
-    snprintf(sim->failure, sizeof sim->failure, "interrupted");
-    log_info("%s", sim->status);
-    st = CLSPH_E_INTERRUPTED;
-    goto done;
-  }
+  if (interrupt_signal() != 0) CLSPH_TRY(interrupted(sim, &o, interrupt_signal()));
   CLSPH_TRY(start(sim, opt, &o));
   pr.start = progress_now();
   while (sim->time < sim->scene->t_end && interrupt_signal() == 0) {
@@ -265,10 +273,6 @@ enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
     if (sim->scene->flow.on) CLSPH_TRY(sim_flow_control(sim, dt, o.flow));
     CLSPH_TRY(sim->scheme->step(sim, sim->state, dt));
     advance(sim, dt, target, lands);
-    if (sim->step == sim->step0 + 1)
-      log_debug("device memory after the first step: %.1f MiB in buffers (estimated before the "
-                "run: %.1f MiB)",
-                (double)kern_allocated() / 1048576.0, sim->mem_estimate / 1048576.0);
     sim->wall = progress_now() - wall0; /* checkpoints record it */
     CLSPH_TRY(check_and_write(sim, &o, dt, lands));
     progress_show(sim, &pr, 0);
