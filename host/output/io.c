@@ -923,6 +923,23 @@ done:
   return st;
 }
 
+/* Open a file that should be a clsph `what` ("checkpoint", "snapshot") read-only: a missing file
+ * and a file that is not HDF5 are refused with the reason, a damaged one as damaged. */
+static enum clsph_status open_clsph_file(const char *path, const char *what, hid_t *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  htri_t is;
+  FILE *probe = fopen(path, "rb");
+  IO_REFUSE(probe != NULL, "cannot open %s %s: %s", what, path, strerror(errno));
+  fclose(probe);
+  is = h5_is_hdf5(path);
+  IO_REFUSE(is != 0, "%s is not a clsph %s (not an HDF5 file)", path, what);
+  IO_DAMAGED(is);
+  IO_DAMAGED(*out = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT));
+done:
+  return st;
+}
+
 /* H5Aiterate2: the first attribute name that `expect` does not declare (t_end aside). */
 struct extra_param {
   const struct io_meta *expect;
@@ -1033,8 +1050,6 @@ enum clsph_status io_checkpoint_read(const char *path, const struct dev *dev, st
   int stats_read = 0;
   uint64_t digest = 0;
   uint32_t mcrc = 0;
-  htri_t is;
-  FILE *probe = NULL;
   const char *want_precision =
       expect != NULL && expect->precision != NULL ? expect->precision : CLSPH_PRECISION_NAME;
 
@@ -1043,14 +1058,7 @@ enum clsph_status io_checkpoint_read(const char *path, const struct dev *dev, st
   *blob_bytes = 0;
   CLSPH_TRY(check_fields(ps));
 
-  /* an HDF5 file at all? */
-  probe = fopen(path, "rb");
-  IO_REFUSE(probe != NULL, "cannot open checkpoint %s: %s", path, strerror(errno));
-  fclose(probe);
-  is = h5_is_hdf5(path);
-  IO_REFUSE(is != 0, "%s is not a clsph checkpoint (not an HDF5 file)", path);
-  IO_DAMAGED(is);
-  IO_DAMAGED(file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT));
+  CLSPH_TRY(open_clsph_file(path, "checkpoint", &file));
 
   /* a checkpoint, of this precision and this case? */
   CLSPH_TRY(attr_read(file, "clsph_checkpoint", H5T_NATIVE_INT32, &magic, &found, path));
@@ -1237,18 +1245,10 @@ enum clsph_status io_snapshot_read(const char *path, const char *const *only,
   int64_t step = 0;
   int found_n = 0, found_t = 0, found_s = 0;
   H5G_info_t info;
-  htri_t is;
-  FILE *probe = NULL;
   memset(&s, 0, sizeof s);
   h5_quiet();
 
-  probe = fopen(path, "rb");
-  IO_REFUSE(probe != NULL, "cannot open snapshot %s: %s", path, strerror(errno));
-  fclose(probe);
-  is = h5_is_hdf5(path);
-  IO_REFUSE(is != 0, "%s is not a clsph snapshot (not an HDF5 file)", path);
-  IO_DAMAGED(is);
-  IO_DAMAGED(file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT));
+  CLSPH_TRY(open_clsph_file(path, "snapshot", &file));
   CLSPH_TRY(attr_read(file, "n", H5T_NATIVE_UINT64, &n64, &found_n, path));
   CLSPH_TRY(attr_read(file, "time", H5T_NATIVE_DOUBLE, &s.time, &found_t, path));
   CLSPH_TRY(attr_read(file, "step", H5T_NATIVE_INT64, &step, &found_s, path));
