@@ -154,6 +154,8 @@ static void advance(struct sim *sim, double dt, double target, int lands)
   sim->time = lands ? target : sim->time + dt;
   sim->dt = dt;
   ++sim->step;
+  sim->substeps_sum += sim->substeps;
+  sim->pairs_sum += sim->pairs;
   if (sim->step == sim->step0 + 1) /* the solvers have made their buffers */
     log_debug("device memory after the first step: %.1f MiB in buffers (estimated before the "
               "run: %.1f MiB)",

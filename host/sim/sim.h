@@ -64,6 +64,13 @@ struct sim {
   long aux_its; /* a second solve's iterations of the last step (isph-rotational's
                  * implicit viscous prediction, both components), 0: none */
   long aux_its_sum;
+  /* dual-criteria time stepping (wcsph-riemann): the acoustic sub-steps of the last step (0: the
+   * scheme has none) and their sum over this run */
+  long substeps, substeps_sum;
+  /* pair interactions the scheme evaluated in the last step (0: it does not count them) and their
+   * sum over this run: a pair loop over n particles with on average k neighbours inside the
+   * support counts n k */
+  double pairs, pairs_sum;
   /* entry layer particles left waiting for a recycled exit particle (isph-rotational's open
    * boundaries) at the last step, and the most at one step over this run; −1: no entry */
   long open_waiting, open_waiting_max;
