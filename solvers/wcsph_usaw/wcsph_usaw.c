@@ -7,7 +7,7 @@
  *   P = p − ρ0 g·r less its value at rest (update.cl);
  *   dρ/dt from u^{n+1} (symplectic Euler for ρ as for r: wcsph_step);
  *   r, ρ, V = m/ρ, p.
- * Options: sound_speed c0 (m/s; default 10 U, U the scene's velocity scale: velocity_scale()),
+ * Options: sound_speed c0 (m/s; default 10 U, U the scene's velocity scale: solvers/sound/sound.c),
  * background_pressure p_bg (Pa, default 0; the paper uses one for the cavity), density_diffusion
  * (factor of the Ferrari term, 1), pressure_form ("total": G+ of p, the paper's; "dynamic": G+ of
  * the pressure less its hydrostatic part, which holds a tank at rest but glues a moving free
@@ -21,6 +21,7 @@
 #include "../scheme.h"
 #include "clsph_config.h"
 #include "sim.h"
+#include "sound.h"
 #include "walls.h"
 
 struct wcsph {
@@ -70,75 +71,6 @@ done:
 
 #define ARG(k, i, x) CLSPH_TRY(kern_set_at((k), (i)++, KARG(x)))
 
-/* The scene's velocity scale U of the default sound speed c0 = 10 U, and what sets it. */
-struct velocity_scale {
-  double u;       /* m/s */
-  char what[160]; /* "the walls' speed", "√(2 g D), D = 0.3 m the fluid's depth", ... */
-};
-
-/* U is the largest of: the walls' speeds (sliding, or |ω| times the wall vertex farthest from the
- * centre: a polyline's farthest point from a point is one of its vertices), the inflow speeds,
- * the flow-rate control's target, the initial fluid speeds (fill velocities) and, under gravity,
- * the speed √(2 g D) of a fall through the fluid's depth D, its extent along g: the highest less
- * the lowest fluid particle along −g, plus dr (the particles sit dr/2 inside the filled region),
- * not the domain's height (raising a tank's side walls changed c0 before).
- * Free-surface flows: the paper fixes c0 at "10 times the maximum flow velocity" (Leroy et al.
- * 2014 sec 3.4, after eq 49) and scales its dam break by √(g H), H the initial fluid depth
- * (sec 4.3, t+ = t √(g/H)). Fluid set going by gravity alone takes its speed from the height it
- * falls, at most √(2 g D) for the whole depth (½ u² = g D), √2 times the paper's scale: it is
- * the larger of the two and the nearer to the largest speeds measured. In the dam break of
- * cases/dam_break.lua (H = 0.3 m, n = 20 and 40) the fluid's largest speed, at the tip of its
- * front, reaches 3.1 to 3.3 m/s = 1.3 √(2 g H), 1.8 √(g H): Mach 0.13 against 10 √(2 g D), where
- * 10 √(g D) would give 0.19. The paper's own wedge run took 20 m/s = 4.5 √(2 g H) (H = 1 m);
- * cases/dam_break_wedge.lua keeps that value explicitly. */
-static void velocity_scale(const struct scene *s, const struct geom *g, struct velocity_scale *vs)
-{
-  double u = 0.0;
-  const char *what = "nothing: no drive";
-  for (int w = 0; w < s->nwalls; ++w) {
-    const struct scene_wall *wl = &s->walls[w];
-    double uw = hypot(wl->velocity[0], wl->velocity[1]);
-    for (int k = 0; k < wl->npts && wl->omega != 0.0; ++k)
-      uw = fmax(uw, fabs(wl->omega) *
-                        hypot(wl->pts[2 * k] - wl->centre[0], wl->pts[2 * k + 1] - wl->centre[1]));
-    if (uw > u) {
-      u = uw;
-      what = "the walls' speed";
-    }
-  }
-  for (int k = 0; k < s->nsections; ++k)
-    if (fabs(s->sections[k].velocity) > u) {
-      u = fabs(s->sections[k].velocity);
-      what = "the inflow speed";
-    }
-  if (s->flow.on && fabs(s->flow.velocity) > u) {
-    u = fabs(s->flow.velocity);
-    what = "the flow-rate control's target";
-  }
-  for (size_t i = 0; i < g->nfluid; ++i)
-    if (hypot(g->v[2 * i], g->v[2 * i + 1]) > u) {
-      u = hypot(g->v[2 * i], g->v[2 * i + 1]);
-      what = "the initial fluid speed";
-    }
-  snprintf(vs->what, sizeof vs->what, "%s", what);
-  const double gn = hypot(s->gravity[0], s->gravity[1]);
-  if (gn > 0.0 && g->nfluid > 0) {
-    double lo = HUGE_VAL, hi = -HUGE_VAL;
-    for (size_t i = 0; i < g->nfluid; ++i) {
-      const double z = -(s->gravity[0] * g->x[2 * i] + s->gravity[1] * g->x[2 * i + 1]) / gn;
-      lo = fmin(lo, z);
-      hi = fmax(hi, z);
-    }
-    const double depth = hi - lo + s->dr, uf = sqrt(2.0 * gn * depth);
-    if (uf > u) {
-      u = uf;
-      snprintf(vs->what, sizeof vs->what, "√(2 g D), D = %.4g m the fluid's depth along gravity",
-               depth);
-    }
-  }
-  vs->u = u;
-}
-
 static enum clsph_status wcsph_create(struct sim *sim, void **state)
 {
   enum clsph_status st = CLSPH_OK;
@@ -153,8 +85,8 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   for (size_t i = 0; i < geo->n; ++i)
     CLSPH_CHECK(geo->kind[i] <= KIND_VERTEX, CLSPH_E_INPUT,
                 "%s: wcsph-usaw has no inflow or outflow sections", sc->case_path);
-  struct velocity_scale vs;
-  velocity_scale(sc, geo, &vs);
+  struct sound_scale vs;
+  sound_velocity_scale(sc, geo, &vs);
   ws->c0 = 10.0 * vs.u; /* Leroy et al. 2014 sec 3.4: 10 U */
   int c0_given = 0;
   ws->diffusion = 1.0;

@@ -1,0 +1,183 @@
+/* acoustic.cl (wcsph-riemann): the acoustic sub-steps of the dual-criteria time stepping (Wang,
+ * Sun & Hu sec 2.5; Zhang, Rezavand & Hu 2020): the pressure relaxation and the continuity
+ * equation with the linearised Riemann solver between each pair (eqs 15-19, Zhang, Hu & Adams
+ * 2017), over the neighbour list of the advection step (config.cl).
+ *
+ * A sub-step of length δt is position Verlet (kick-drift-kick in ρ and r):
+ *   ρ += ½δt dρ/dt, r += ½δt v, p = p(ρ)          (wcr_drift)
+ *   dv/dt = a_prior + a^p (eq 19)                 (wcr_momentum, into acc)
+ *   dρ/dt from v^{n+1} = v + δt dv/dt (eq 15)     (wcr_continuity, into drho)
+ *   v += δt dv/dt, r += ½δt v, ρ += ½δt dρ/dt     (wcr_drift)
+ * and the drift that ends a sub-step and the one that starts the next are one launch.
+ * Equation of state (eq 3): p = c0² (ρ − ρ0) + p_bg (p_bg = 0 unless the case sets one).
+ *
+ * Riemann problem between i (left) and j (right) along e = (x_j − x_i)/r_ij: the jump
+ * U_ij = (v_i − v_j)·e = −v_ij·r_ij/r_ij (> 0 when the pair closes up),
+ *   p* = p̄_ij + ½ ρ0 β_ij U_ij,  β_ij = min(η max(U_ij, 0), c0), η = 3           (eq 18)
+ *   v* = v̄_ij + (p_i − p_j)/(2 ρ0 c0) e                                          (eq 16)
+ * Eq 18 prints ½ β ρ0 c0 U with β = min(η max(U, 0), c0), a speed: a pressure times a speed.
+ * We read it as Zhang, Hu & Adams (2017) define the low-dissipation limiter, ½ ρ0 β U, which is
+ * the acoustic solver's ½ ρ0 c0 U where the pair closes faster than c0/η and fades linearly
+ * below (no dissipation where the pair opens up).
+ * Momentum with the reverse kernel gradient correction on the mean pressure (eq 19):
+ *   a^p_i = −(1/ρ_i) Σ_j V_j [(p_i B_j + p_j B_i) + ρ0 β_ij U_ij I] ∇W_ij,
+ * continuity (eq 15, with v* above):
+ *   dρ_i/dt = 2 ρ_i Σ_j V_j (v_i − v*)·∇W_ij = ρ_i Σ_j V_j F [v_ij·r_ij + r (p_i − p_j)/(ρ0 c0)].
+ * With ARD on (-D WCR_ARD=1; sec 3.1, eqs 31-32) the Riemann dissipation leaves eq 19 and acts as
+ * a viscosity µ_R = ½ ρ0 β_ij h between the pair, the larger of it and the physical one, µ_c =
+ * max(µ_R, µ̃) (eq 32): the physical part is in the advection step's a_prior, so the sub-step
+ * adds (2/ρ_i) Σ_j max(µ_R − µ̃, 0) V_j F v_ij (eq 31 form), with the sub-step's velocities.
+ *
+ * Walls (the one-sided Riemann problem of Zhang et al. 2017 on dummy particles, Adami et al.
+ * 2012): a dummy particle w shows i the state
+ *   v_w = 2 u_w − v_i  (no penetration, no slip; u_w the wall's velocity),
+ *   p_w = p_i + ρ_i max(0, −a_i·r_iw)  (the pressure a column of fluid under i's acceleration
+ *         a_i = a_prior (gravity, body force, viscous) would add towards the wall),
+ *   B_w = B_i, V_w = dr²,
+ * and the pair is then treated as a fluid pair. With wall_dissipation = "full"
+ * (-D WCR_WALL_FULL=1) the wall pair takes β = c0 whatever U (the paper's choice for the
+ * wall-bounded RANS flows, sec 4.3: "the low-dissipation limiter ... is not employed"). */
+#ifndef WCR_ETA
+#define WCR_ETA R(3.0)
+#endif
+#ifndef WCR_ARD
+#define WCR_ARD 0
+#endif
+#ifndef WCR_WALL_FULL
+#define WCR_WALL_FULL 0
+#endif
+
+real wcr_beta(real u, real c0, uint wall)
+{
+#if WCR_WALL_FULL
+  if (wall) return c0;
+#else
+  (void)wall;
+#endif
+  return fmin(WCR_ETA * fmax(u, R(0.0)), c0);
+}
+
+/* r += dt_x v + shift (shift: once, at the start of an advection step), v += dt_v acc,
+ * ρ += dt_rho dρ/dt, then V = m/ρ and p = c0² (ρ − ρ0) + p_bg; fluid only */
+__kernel void wcr_drift(const uint n, const struct grid g, __global const uint *kind,
+                        const real dt_v, const real dt_x, const real dt_rho,
+                        __global const realv *acc, const uint use_shift,
+                        __global const realv *shift, const real mass, const real rho0,
+                        const real c0, const real p_bg, __global realv *pos, __global realv *vel,
+                        __global real *rho, __global const real *drho, __global real *vol,
+                        __global real *p, __global uint *flags)
+{
+  const uint i = get_global_id(0);
+  if (i >= n || kind[i] != WCR_FLUID) return;
+  realv v = vel[i];
+  if (dt_v != R(0.0)) v += dt_v * acc[i];
+  realv x = pos[i] + dt_x * v;
+  if (use_shift) x += shift[i];
+#if PERIODIC_X
+  x.x = g.lo.x + (x.x - g.lo.x) - g.len.x * floor((x.x - g.lo.x) / g.len.x);
+  if (x.x >= g.lo.x + g.len.x) x.x = g.lo.x; /* round-off of the line above */
+#endif
+#if PERIODIC_Y
+  x.y = g.lo.y + (x.y - g.lo.y) - g.len.y * floor((x.y - g.lo.y) / g.len.y);
+  if (x.y >= g.lo.y + g.len.y) x.y = g.lo.y;
+#endif
+  const real r = rho[i] + dt_rho * drho[i];
+  if (!all(isfinite(x)) || !all(isfinite(v)) || !isfinite(r) || !(r > R(0.0)))
+    flags_raise(flags, CLSPH_FLAG_NAN);
+  vel[i] = v;
+  pos[i] = x;
+  rho[i] = r;
+  vol[i] = mass / r;
+  p[i] = c0 * c0 * (r - rho0) + p_bg;
+}
+
+/* dv/dt = a_prior + a^p (eq 19), and with ARD the Riemann viscosity (eq 31-32); fluid only */
+__kernel void wcr_momentum(const uint n, const struct grid g, __global const realv *pos,
+                           __global const realv *vel, __global const real *vol,
+                           __global const uint *kind, __global const real *rho,
+                           __global const real *p, __global const uint *nlist,
+                           __global const uint *ncount, __global const real4 *bmat,
+                           __global const realv *acc_prior, const real rho0, const real c0,
+                           const real mu, const real h, __global realv *acc)
+{
+  const uint i = get_global_id(0);
+  if (i >= n || kind[i] != WCR_FLUID) return;
+  const realv x = pos[i], vi = vel[i], ai = acc_prior[i];
+  const real pi = p[i], ri = rho[i];
+  const real4 bi = bmat[i];
+  realv sum = (realv)(R(0.0)); /* Σ V_j [(p_i B_j + p_j B_i) ∇W + ρ0 β U ∇W] */
+#if WCR_ARD
+  realv visc = (realv)(R(0.0));
+#endif
+  const uint c = ncount[i];
+  __global const uint *row = nlist + (size_t)i * WCR_MAXN;
+  for (uint k = 0; k < c; ++k) {
+    const uint j = row[k];
+    const realv r = wcr_sep(x, pos[j], &g);
+    const real r2 = dot(r, r), rr = sqrt(r2);
+    const real f = smoothing_f(rr) * vol[j];
+    const uint kj = kind[j], wall = kj == WCR_DUMMY;
+    realv vj;
+    real pj;
+    real4 bj;
+    if (wall) {
+      vj = R(2.0) * vel[j] - vi;
+      pj = pi + ri * fmax(R(0.0), -dot(ai, r));
+      bj = bi;
+    } else {
+      vj = vel[j];
+      pj = p[j];
+      bj = bmat[j];
+    }
+    const realv vij = vi - vj;
+    const real u = rr > R(0.0) ? -dot(vij, r) / rr : R(0.0);
+    const real beta = wcr_beta(u, c0, wall);
+    sum += f * (pi * wcr_apply(bj, r) + pj * wcr_apply(bi, r));
+#if WCR_ARD
+    visc += fmax(R(0.5) * rho0 * beta * h - mu, R(0.0)) * f * vij;
+#else
+    sum += f * (rho0 * beta * u) * r;
+#endif
+  }
+  realv a = ai - sum / ri;
+#if WCR_ARD
+  a += R(2.0) / ri * visc;
+#endif
+  acc[i] = a;
+}
+
+/* dρ/dt (eq 15) from v^{n+1} = v + δt dv/dt of both particles; fluid only */
+__kernel void wcr_continuity(const uint n, const struct grid g, __global const realv *pos,
+                             __global const realv *vel, __global const realv *acc, const real dt,
+                             __global const real *vol, __global const uint *kind,
+                             __global const real *rho, __global const real *p,
+                             __global const uint *nlist, __global const uint *ncount,
+                             __global const realv *acc_prior, const real rho0, const real c0,
+                             __global real *drho)
+{
+  const uint i = get_global_id(0);
+  if (i >= n || kind[i] != WCR_FLUID) return;
+  const realv x = pos[i], vi = vel[i] + dt * acc[i], ai = acc_prior[i];
+  const real pi = p[i], ri = rho[i], inv_z = R(1.0) / (rho0 * c0);
+  real s = R(0.0);
+  const uint c = ncount[i];
+  __global const uint *row = nlist + (size_t)i * WCR_MAXN;
+  for (uint k = 0; k < c; ++k) {
+    const uint j = row[k];
+    const realv r = wcr_sep(x, pos[j], &g);
+    const real rr = sqrt(dot(r, r));
+    const real f = smoothing_f(rr) * vol[j];
+    const uint kj = kind[j];
+    realv vj;
+    real pj;
+    if (kj == WCR_DUMMY) {
+      vj = R(2.0) * vel[j] - vi;
+      pj = pi + ri * fmax(R(0.0), -dot(ai, r));
+    } else {
+      vj = kj == WCR_FLUID ? vel[j] + dt * acc[j] : vel[j];
+      pj = p[j];
+    }
+    s += f * (dot(vi - vj, r) + rr * (pi - pj) * inv_z);
+  }
+  drho[i] = ri * s;
+}

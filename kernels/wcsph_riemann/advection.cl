@@ -1,0 +1,78 @@
+/* advection.cl (wcsph-riemann): what an advection step computes once for its acoustic sub-steps
+ * (Wang, Sun & Hu sec 2.5): the viscous acceleration with the body forces, the transport-velocity
+ * position correction, and the ARD indicator.
+ *
+ * Viscous acceleration (eq 21, the pairwise form of Hu & Adams 2006), written with V_j = m_j/ρ_j:
+ *   a_i^ν = (2/ρ_i) Σ_j µ̃_ij V_j F(r_ij) (v_i − v_j),   F = W'/r,
+ * µ̃_ij the harmonic mean of the two viscosities (one viscosity here: µ). A dummy wall particle
+ * shows i the mirrored velocity 2 u_w − v_i (no slip; u_w its wall's velocity, which moves a
+ * sliding or rotating wall).
+ *
+ * Transport-velocity correction (sec 2.4 and 3.2, eqs 25-26 and 33-34), once per advection step:
+ *   R_i = Σ_j (B_i + B_j) ∇W_ij V_j   (eq 26; B_j = B_i for a dummy particle),
+ *   Δr_i = −α h² β R_i,  β = min(m h² |R_i|², 1) (LTVF, eq 33; β = 1: the original TVF, eq 25),
+ * α = 0.2, m = 1000. R points from i towards the side where its neighbours crowd (∇_i W_ij
+ * points from i to j), so the correction moves i the other way, down the gradient of the number
+ * density, as the background pressure of Adami et al.'s transport velocity does: eq 25 prints
+ * +α h² R with the residue taken the other way round. In free-surface flows the correction is
+ * applied only where the kernel sum is complete (sigma >= bulk, config.cl): at the surface R
+ * measures the missing air, and the correction would push the surface out.
+ *
+ * ARD indicator (eq 42): the number of neighbours j for which the Riemann dissipation's viscosity
+ * µ_R = ½ ρ0 β_ij h (eq 31) exceeds the physical one, µ_R > µ̃_ij, at the advection step's
+ * velocities; β_ij = min(η max(U_ij, 0), c0) as in acoustic.cl. Eq 42 writes ρ β h, twice eq 31's
+ * µ_R; we count where eq 32 switches, which is what the indicator is said to show. */
+
+/* the velocity neighbour j shows particle i (a dummy: the mirror 2 u_w − v_i) */
+realv wcr_vel_seen(uint kj, realv vj, realv vi)
+{
+  return kj == WCR_DUMMY ? R(2.0) * vj - vi : vj;
+}
+
+__kernel void wcr_advection(const uint n, const struct grid g, __global const realv *pos,
+                            __global const realv *vel, __global const real *vol,
+                            __global const uint *kind, __global const real *rho,
+                            __global const uint *nlist, __global const uint *ncount,
+                            __global const real4 *bmat, __global const real *sigma, const real mu,
+                            const realv accel, const real tvf_a, const real tvf_m, const real bulk,
+                            const real rho0, const real c0, const real h,
+                            __global realv *acc_prior, __global realv *shift, __global real *ard)
+{
+  const uint i = get_global_id(0);
+  if (i >= n || kind[i] != WCR_FLUID) return;
+  const realv x = pos[i], vi = vel[i];
+  const real4 bi = bmat[i];
+  realv visc = (realv)(R(0.0)), res = (realv)(R(0.0));
+  real count = R(0.0);
+  const uint c = ncount[i];
+  __global const uint *row = nlist + (size_t)i * WCR_MAXN;
+  for (uint k = 0; k < c; ++k) {
+    const uint j = row[k];
+    const realv r = wcr_sep(x, pos[j], &g);
+    const real r2 = dot(r, r);
+    const real f = smoothing_f(sqrt(r2)) * vol[j];
+    const uint kj = kind[j];
+    const realv vij = vi - wcr_vel_seen(kj, vel[j], vi);
+    visc += f * vij;
+    const real4 bj = kj == WCR_DUMMY ? bi : bmat[j];
+    res += f * wcr_apply(bi + bj, r); /* (B_i + B_j) ∇W V */
+#if WCR_ARD
+    const real u = -dot(vij, r) * rsqrt(fmax(r2, REAL_EPS * SMOOTH_SUPPORT2));
+    const real beta = fmin(WCR_ETA * fmax(u, R(0.0)), c0);
+    if (R(0.5) * rho0 * beta * h > mu) count += R(1.0);
+#endif
+  }
+  acc_prior[i] = accel + R(2.0) * mu / rho[i] * visc;
+  realv d = (realv)(R(0.0));
+  if (tvf_a > R(0.0) && sigma[i] >= bulk) {
+    const real lim = tvf_m > R(0.0) ? fmin(tvf_m * dot(res, res), R(1.0)) : R(1.0);
+    d = -tvf_a * lim * res;
+  }
+  shift[i] = d;
+#if WCR_ARD
+  ard[i] = count;
+#else
+  (void)ard;
+  (void)count;
+#endif
+}

@@ -1,0 +1,148 @@
+/* config.cl (wcsph-riemann): the particle configuration of an advection step (Wang, Sun & Hu,
+ * sec 2.5, after Zhang, Rezavand & Hu 2020): the neighbour list the acoustic sub-steps reuse, the
+ * kernel gradient correction matrix B (eq 20) and the density re-initialisation.
+ *
+ * Conventions: r_ij = x_i − x_j (the nearest periodic image), ∇_i W_ij = F(r) r_ij with
+ * F = W'(r)/r < 0 (common/smoothing.h), V_j = m_j/ρ_j for fluid and open-boundary layer particles
+ * and dr² for dummy wall particles. Kinds: WCR_FLUID moves; WCR_DUMMY is a fixed wall particle
+ * whose state each fluid particle extrapolates for itself (acoustic.cl); WCR_INFLOW and
+ * WCR_OUTFLOW are the entry and exit layers, whose state the open-boundary module sets.
+ *
+ * The list: the neighbours j != i within the support at the start of the advection step, at
+ * most WCR_MAXN each (CLSPH_FLAG_NEIGH_OVERFLOW beyond), row i at nlist[i WCR_MAXN ...]. As in
+ * the dual-criteria scheme the pairs are fixed for the advection step; unlike it, each sum
+ * recomputes r_ij from the current positions (a pair that enters the support during the step is
+ * missed, at W' ≈ 0; one that leaves it gets F = 0).
+ *
+ * B_i = (−Σ_j r_ij ⊗ ∇W_ij V_j)^−1 (eq 20) over every neighbour. Where the support is truncated
+ * (a free surface, a lone particle) the matrix A = −Σ r_ij ⊗ ∇W_ij V_j becomes singular; the
+ * paper does not say what it does there, and we blend the inverse with the identity as its code
+ * (SPHinXsys) does: B = w A^−1 + (1 − w) I, w = det A / (det A + max(WCR_B_DET − det A, 0)), so
+ * that B = A^−1 where det A >= WCR_B_DET (0.3; det A = 1 in a full support, about 0.5 on a flat
+ * free surface) and B → I as det A → 0.
+ *
+ * Density (Zhang et al. 2020 sec 3.2): ρ_sum = ρ0 Σ_j W_ij / Σ_j W⁰_ij, W⁰ on the initial lattice
+ * (its sum, with V = dr², is sigma0 = Σ W⁰ dr², computed on the host); the density is re-set at
+ * each advection step to ρ_sum (flows without a free surface, reinit = 1) or to max(ρ, ρ_sum)
+ * (free-surface flows, reinit = 2, where the truncated sum would pull the surface in); reinit = 0
+ * keeps the continuity equation's density. */
+#define WCR_FLUID   0u
+#define WCR_DUMMY   2u
+#define WCR_INFLOW  3u
+#define WCR_OUTFLOW 4u
+#ifndef WCR_MAXN
+#define WCR_MAXN 64
+#endif
+#define WCR_B_DET R(0.3)
+
+/* r_ij between the nearest images on the periodic axes (the support is shorter than half a
+ * period: the grid needs 2 GRID_SUB + 1 cells on a periodic axis) */
+realv wcr_sep(realv xi, realv xj, const struct grid *g)
+{
+  realv r = xi - xj;
+#if PERIODIC_X
+  r.x -= g->len.x * rint(r.x / g->len.x);
+#endif
+#if PERIODIC_Y
+  r.y -= g->len.y * rint(r.y / g->len.y);
+#endif
+  return r;
+}
+
+/* B = w A^−1 + (1 − w) I for the symmetric A = (axx, axy; axy, ayy); stored as (xx, xy, yx, yy) */
+real4 wcr_correction(real axx, real axy, real ayy)
+{
+  const real det = axx * ayy - axy * axy;
+  if (!(det > R(1e-12))) return (real4)(R(1.0), R(0.0), R(0.0), R(1.0));
+  const real lack = fmax(WCR_B_DET - det, R(0.0)), w = det / (det + lack);
+  const real4 inv = (real4)(ayy, -axy, -axy, axx) / det;
+  return w * inv + (R(1.0) - w) * (real4)(R(1.0), R(0.0), R(0.0), R(1.0));
+}
+
+/* B applied to a vector */
+realv wcr_apply(real4 b, realv v)
+{
+  return (realv)(b.x * v.x + b.y * v.y, b.z * v.x + b.w * v.y);
+}
+
+/* The configuration of the fluid and layer particles: list, B, ρ, the normalised kernel sum
+ * sigma = Σ_j W_ij dr² / sigma0 (1 in a full support; advection.cl tells the free surface by it)
+ * and the distance to the nearest dummy particle less dr/2 (about the distance to the wall; for
+ * the wall-adjacent layers of a wall model; −1: no dummy particle within the support). */
+__kernel void wcr_config(const uint n, const struct grid g, __global const uint *cell_start,
+                         __global const realv *pos, __global const real *vol,
+                         __global const uint *kind, const real dr, const real sigma0,
+                         const real rho0, const uint reinit, __global uint *nlist,
+                         __global uint *ncount, __global real4 *bmat, __global real *sigma,
+                         __global real *rho, __global real *wall_dist, __global uint *flags)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  if (kind[i] == WCR_DUMMY) {
+    ncount[i] = 0u;
+    return;
+  }
+  const realv x = pos[i];
+  real axx = R(0.0), axy = R(0.0), ayy = R(0.0), s = smoothing_w(R(0.0)), dmin = INFINITY;
+  uint c = 0u;
+  __global uint *row = nlist + (size_t)i * WCR_MAXN;
+  struct neigh_iter it;
+  neigh_begin(&it, &g, x);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    const realv r = x - (pos[j] + it.shift);
+    const real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    const real rr = sqrt(r2), vj = vol[j], f = smoothing_f(rr) * vj;
+    axx -= f * r.x * r.x; /* −Σ r ⊗ ∇W V (eq 20) */
+    axy -= f * r.x * r.y;
+    ayy -= f * r.y * r.y;
+    s += smoothing_w(rr);
+    if (kind[j] == WCR_DUMMY) dmin = fmin(dmin, rr);
+    if (c < WCR_MAXN) row[c] = j;
+    ++c;
+  }
+  if (c > WCR_MAXN) {
+    flags_raise(flags, CLSPH_FLAG_NEIGH_OVERFLOW);
+    c = WCR_MAXN;
+  }
+  ncount[i] = c;
+  bmat[i] = wcr_correction(axx, axy, ayy);
+  const real sn = s * dr * dr / sigma0;
+  sigma[i] = sn;
+  wall_dist[i] = isfinite(dmin) ? fmax(dmin - R(0.5) * dr, R(0.0)) : R(-1.0);
+  if (kind[i] != WCR_FLUID) return;
+  const real rs = rho0 * sn;
+  if (reinit == 1u)
+    rho[i] = rs;
+  else if (reinit == 2u)
+    rho[i] = fmax(rho[i], rs);
+}
+
+/* Σ of the fluid particles' list lengths (pairs per sum over the fluid), per work-group */
+__kernel void wcr_count_pairs(const uint n, __global const uint *kind, __global const uint *ncount,
+                              __global real *partial)
+{
+  __local real s[REDUCE_WG];
+  const uint l = get_local_id(0);
+  real c = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) c += kind[i] == WCR_FLUID ? (real)ncount[i] : R(0.0);
+  s[l] = c;
+  reduce_local_sum(s);
+  if (l == 0) partial[get_group_id(0)] = s[0];
+}
+
+/* Σ_k W(|x_k|) dr² over the square lattice of spacing dr around a particle, itself included:
+ * sigma0, the kernel sum of a full support at rest (one work-item) */
+__kernel void wcr_lattice_sum(const real dr, __global real *out)
+{
+  if (get_global_id(0) != 0) return;
+  const int m = (int)ceil(SMOOTH_SUPPORT / dr) + 1;
+  real s = R(0.0);
+  for (int a = -m; a <= m; ++a)
+    for (int b = -m; b <= m; ++b) {
+      const real r = dr * sqrt((real)(a * a + b * b));
+      if (r < SMOOTH_SUPPORT) s += smoothing_w(r);
+    }
+  out[0] = s * dr * dr;
+}

@@ -1,0 +1,570 @@
+/* wcsph_riemann.c: Riemann-solver weakly-compressible SPH with the transport-velocity correction
+ * and dual-criteria time stepping (Wang, Sun & Hu, sec 2.3-3.2 and 2.5: Zhang, Hu & Adams 2017
+ * for the Riemann solver, Zhang, Rezavand & Hu 2020 for the time stepping), on dummy-particle
+ * walls. One step of the time loop is one advection step (eq 27):
+ *   Δt_ad = CFL_ad min(h / max(|v|max, U), h² / ν),  CFL_ad = 0.25,
+ * U the scene's velocity scale (solvers/sound/sound.c), which bounds the first steps of a flow
+ * that starts at rest. It
+ *   1. builds the configuration: neighbour list, correction matrices B (eq 20), the density
+ *      re-initialisation (config.cl);
+ *   2. computes the viscous and body accelerations, the transport-velocity correction
+ *      (TVF/LTVF, eqs 25-26, 33-34) and the ARD indicator (eq 42) (advection.cl);
+ *   3. holds n_ac = ⌈Δt_ad/Δt_ac⌉ equal acoustic sub-steps, Δt_ac = CFL_ac h/(c0 + |v|max),
+ *      CFL_ac = 0.6: pressure relaxation (eqs 16-19), continuity (eq 15), positions, in position
+ *      Verlet (acoustic.cl).
+ * The loop counts advection steps (sim->step); the acoustic sub-steps go into sim->substeps.
+ * Options:
+ *   sound_speed          c0, m/s (default 10 U)
+ *   background_pressure  p_bg added by the equation of state, Pa (default 0)
+ *   transport_velocity   "limited" (LTVF, eqs 33-34; the default), "full" (eq 25) or "off"
+ *   ard                  1: adaptive Riemann-eddy dissipation (sec 3.1), 0: off (default)
+ *   density              "free_surface" (ρ = max(ρ, ρ_sum) each advection step; the default
+ *                        under gravity), "summation" (ρ = ρ_sum; the default otherwise) or
+ *                        "continuity" (no re-initialisation)
+ *   wall_dissipation     "limited" (the fluid pairs' limiter; default) or "full" (sec 4.3)
+ *   advection_cfl, acoustic_cfl  CFL_ad (0.25) and CFL_ac (0.6)
+ *   walls, wall_layers   as for every scheme (dummy walls, 3 layers: the support is 2.6 dr).
+ * Room for the k-ε model (its own issue): the viscosity enters the viscous sums as µ̃_ij, and
+ * config.cl measures every fluid particle's distance to the nearest dummy particle (field
+ * wall_dist), which picks out the wall-adjacent layers of the wall model. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../scheme.h"
+#include "clsph_config.h"
+#include "sim.h"
+#include "sound.h"
+
+enum { WCR_TVF_OFF = 0, WCR_TVF_FULL = 1, WCR_TVF_LIMITED = 2 };
+enum { WCR_REINIT_OFF = 0, WCR_REINIT_SUM = 1, WCR_REINIT_FREE = 2 };
+
+struct wcr {
+  int f_rho, f_p, f_drho, f_ard, f_wall, f_wdist;
+  cl_uint maxn;                   /* neighbour list stride */
+  cl_mem d_nlist, d_ncount;       /* neighbour list of the advection step */
+  cl_mem d_bmat, d_sigma;         /* B (4 reals) and the normalised kernel sum */
+  cl_mem d_prior, d_shift, d_acc; /* a_prior, the TVF correction, dv/dt of a sub-step */
+  cl_mem d_partial, d_force, d_mask, d_none;
+  real *h_partial, *h_force;
+  size_t cap;
+  cl_kernel k_config, k_count, k_adv, k_drift, k_mom, k_cont, k_force, k_lattice;
+  double c0, p_bg, mass, sigma0, u_scale;
+  double cfl_ad, cfl_ac;
+  int tvf, ard, wall_full;
+  cl_uint reinit;
+  double vmax;    /* the fluid's largest speed at the last max_dt, m/s */
+  int configured; /* the list and B belong to the particles' current order */
+};
+
+static const char *const sources[] = {"wcsph_riemann/config.cl", "wcsph_riemann/advection.cl",
+                                      "wcsph_riemann/acoustic.cl", "wcsph_riemann/force.cl", NULL};
+static const char *const options[] = {"sound_speed",
+                                      "background_pressure",
+                                      "transport_velocity",
+                                      "ard",
+                                      "density",
+                                      "wall_dissipation",
+                                      "advection_cfl",
+                                      "acoustic_cfl",
+                                      "walls",
+                                      "wall_layers",
+                                      NULL};
+
+static const struct scene_option *option(const struct scene *s, const char *key)
+{
+  for (int i = 0; i < s->noptions; ++i)
+    if (strcmp(s->options[i].key, key) == 0) return &s->options[i];
+  return NULL;
+}
+
+/* a text option among `names` (NULL-terminated): its index, or `fallback` when not given */
+static enum clsph_status option_choice(const struct scene *s, const char *key,
+                                       const char *const *names, int fallback, int *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene_option *o = option(s, key);
+  *out = fallback;
+  if (o == NULL) goto done;
+  char list[160] = "";
+  size_t used = 0;
+  for (int k = 0; names[k] != NULL; ++k) {
+    if (!o->is_number && strcmp(o->text, names[k]) == 0) {
+      *out = k;
+      goto done;
+    }
+    used += (size_t)snprintf(list + used, used < sizeof list ? sizeof list - used : 0,
+                             "%s\"%s\"", k ? ", " : "", names[k]);
+  }
+  CLSPH_CHECK(0, CLSPH_E_INPUT, "%s: wcsph-riemann option %s must be one of %s", s->case_path,
+              key, list);
+done:
+  return st;
+}
+
+static enum clsph_status option_number(const struct scene *s, const char *key, double lo,
+                                       double hi, const char *what, double *v)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene_option *o = option(s, key);
+  if (o == NULL) goto done;
+  CLSPH_CHECK(o->is_number && o->number >= lo && o->number <= hi, CLSPH_E_INPUT,
+              "%s: wcsph-riemann option %s must be %s, from %g to %g", s->case_path, key, what, lo,
+              hi);
+  *v = o->number;
+done:
+  return st;
+}
+
+/* the options, with the checks on the sound speed and the two time steps */
+static enum clsph_status read_options(const struct sim *sim, struct wcr *w)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *sc = sim->scene;
+  static const char *const tvf_names[] = {"off", "full", "limited", NULL};
+  static const char *const dens_names[] = {"continuity", "summation", "free_surface", NULL};
+  static const char *const wall_names[] = {"limited", "full", NULL};
+  const int gravity = hypot(sc->gravity[0], sc->gravity[1]) > 0.0;
+  int reinit = 0;
+  CLSPH_TRY(option_choice(sc, "transport_velocity", tvf_names, WCR_TVF_LIMITED, &w->tvf));
+  CLSPH_TRY(option_choice(sc, "density", dens_names, gravity ? WCR_REINIT_FREE : WCR_REINIT_SUM,
+                          &reinit));
+  w->reinit = (cl_uint)reinit;
+  CLSPH_TRY(option_choice(sc, "wall_dissipation", wall_names, 0, &w->wall_full));
+  double ard = 0.0;
+  CLSPH_TRY(option_number(sc, "ard", 0.0, 1.0, "1 (on) or 0 (off)", &ard));
+  CLSPH_CHECK(ard == 0.0 || ard == 1.0, CLSPH_E_INPUT,
+              "%s: wcsph-riemann option ard must be 1 (on) or 0 (off)", sc->case_path);
+  w->ard = ard == 1.0;
+  w->cfl_ad = 0.25;
+  w->cfl_ac = 0.6;
+  CLSPH_TRY(option_number(sc, "advection_cfl", 1e-3, 1.0, "a CFL number", &w->cfl_ad));
+  /* beyond c0 Δt = h the Riemann sub-step outruns the support */
+  CLSPH_TRY(option_number(sc, "acoustic_cfl", 1e-3, 1.0, "a CFL number", &w->cfl_ac));
+  CLSPH_TRY(option_number(sc, "background_pressure", 0.0, HUGE_VAL, "a pressure in Pa",
+                          &w->p_bg));
+  /* the sound speed: 10 U by default, and the Mach number it implies */
+  struct sound_scale vs;
+  sound_velocity_scale(sc, &sim->geom, &vs);
+  w->u_scale = vs.u;
+  const struct scene_option *o = option(sc, "sound_speed");
+  w->c0 = 10.0 * vs.u;
+  if (o != NULL) {
+    CLSPH_CHECK(o->is_number && o->number > 0.0 && isfinite(o->number), CLSPH_E_INPUT,
+                "%s: wcsph-riemann option sound_speed must be a positive speed (m/s)",
+                sc->case_path);
+    w->c0 = o->number;
+  }
+  CLSPH_CHECK(w->c0 > 0.0, CLSPH_E_INPUT,
+              "%s: wcsph-riemann needs a sound speed: nothing drives the flow (no gravity, moving "
+              "wall, inflow, flow-rate control nor initial velocity): set the scheme option "
+              "sound_speed (m/s), about 10 times the largest speed expected",
+              sc->case_path);
+  /* density varies as the square of the Mach number: 1% at U/c0 = 0.1, 9% at 0.3 */
+  const double mach = vs.u / w->c0;
+  CLSPH_CHECK(mach <= 0.3, CLSPH_E_INPUT,
+              "%s: wcsph-riemann option sound_speed = %g m/s is too low for the scene's velocity "
+              "scale U = %g m/s (%s): Mach U/c0 = %.3g lets the density vary by about %.0f%%; a "
+              "weakly-compressible flow needs Mach 0.1 or less (c0 >= %g m/s)",
+              sc->case_path, w->c0, vs.u, vs.what, mach, 100.0 * mach * mach, 10.0 * vs.u);
+  if (mach > 0.1)
+    log_warn("%s: wcsph-riemann: Mach U/c0 = %.3g (U = %g m/s from %s, c0 = %g m/s): density "
+             "varies by about %.1f%%",
+             sc->case_path, mach, vs.u, vs.what, w->c0, 100.0 * mach * mach);
+  /* the dual criteria: an advection step must hold at least one acoustic step at the velocity
+   * scale, Δt_ad/Δt_ac = (CFL_ad/CFL_ac)(c0 + U)/U >= 1 */
+  if (vs.u > 0.0) {
+    const double ratio = (w->cfl_ad / w->cfl_ac) * (w->c0 + vs.u) / vs.u;
+    CLSPH_CHECK(ratio >= 1.0, CLSPH_E_INPUT,
+                "%s: wcsph-riemann options advection_cfl = %g and acoustic_cfl = %g make the "
+                "advection step %.3g times the acoustic step at U = %g m/s, c0 = %g m/s: the "
+                "dual-criteria scheme needs an advection step at least as long (raise "
+                "advection_cfl or lower acoustic_cfl)",
+                sc->case_path, w->cfl_ad, w->cfl_ac, ratio, vs.u, w->c0);
+  }
+  log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), transport "
+           "velocity %s, ARD %s, density %s, walls' dissipation %s",
+           w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach, tvf_names[w->tvf],
+           w->ard ? "on" : "off", dens_names[reinit], wall_names[w->wall_full]);
+done:
+  return st;
+}
+
+/* the stride of the neighbour list: twice the neighbours of a full support on the lattice (π q²,
+ * q = support/dr: 21 at h = 1.3 dr), and 8, to a multiple of 4 */
+static long list_stride(const struct sim *sim)
+{
+  const double q = sim->sm.support / sim->scene->dr;
+  return 4 * (((long)ceil(2.0 * 3.141592653589793 * q * q) + 8 + 3) / 4);
+}
+
+static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct wcr w;
+  memset(&w, 0, sizeof w);
+  /* the options decide the switches; read_options reports a bad one here, before the build */
+  CLSPH_TRY(read_options(sim, &w));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_MAXN", list_stride(sim)));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_ARD", w.ard));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_FULL", w.wall_full));
+done:
+  return st;
+}
+
+/* a field from the geometry's per-particle doubles, or zero */
+static enum clsph_status add_field(struct sim *sim, const char *name, const real *init, int out,
+                                   int *f)
+{
+  enum clsph_status st = CLSPH_OK;
+  CLSPH_TRY(pset_add(&sim->ps, sim->dev, name, sizeof(real), init, f));
+  pset_describe(&sim->ps, *f, PF_REAL, 1, out);
+done:
+  return st;
+}
+
+static enum clsph_status wcr_create(struct sim *sim, void **state)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct wcr *w = calloc(1, sizeof *w);
+  const struct geom *geo = &sim->geom;
+  const struct scene *sc = sim->scene;
+  struct pset *ps = &sim->ps;
+  real *buf = NULL;
+  cl_uint *ubuf = NULL;
+  CLSPH_CHECK(w != NULL, CLSPH_E_NOMEM, "wcsph-riemann: out of memory");
+  CLSPH_TRY(read_options(sim, w));
+  for (size_t i = 0; i < geo->n; ++i)
+    CLSPH_CHECK(geo->kind[i] == KIND_FLUID || geo->kind[i] == KIND_DUMMY, CLSPH_E_UNSUPPORTED,
+                "%s: wcsph-riemann has no %s yet (particle kind %d)", sc->case_path,
+                geo->kind[i] == KIND_VERTEX ? "semi-analytical walls: walls are dummy particles"
+                                            : "inflow or outflow sections",
+                geo->kind[i]);
+  w->maxn = (cl_uint)list_stride(sim);
+  w->mass = sc->rho0 * sc->dr * sc->dr;
+  w->cap = ps->cap;
+  /* fields: ρ and p from the hydrostatic state under gravity (or fill { pressure/density }),
+   * dρ/dt (carried from one step's last sub-step to the next's first), the wall each dummy
+   * particle belongs to, the distance to the wall, the ARD indicator */
+  buf = calloc(2 * geo->n + 1, sizeof *buf);
+  ubuf = calloc(geo->n + 1, sizeof *ubuf);
+  CLSPH_CHECK(buf != NULL && ubuf != NULL, CLSPH_E_NOMEM, "out of memory");
+  double gn = hypot(sc->gravity[0], sc->gravity[1]), up[2] = {0.0, 0.0}, ztop = -HUGE_VAL;
+  if (gn > 0.0) {
+    up[0] = -sc->gravity[0] / gn;
+    up[1] = -sc->gravity[1] / gn;
+  }
+  for (size_t i = 0; i < geo->nfluid; ++i)
+    ztop = fmax(ztop, up[0] * geo->x[2 * i] + up[1] * geo->x[2 * i + 1] + 0.5 * sc->dr);
+  for (size_t i = 0; i < geo->n; ++i) {
+    const double z = up[0] * geo->x[2 * i] + up[1] * geo->x[2 * i + 1];
+    double ph = geo->kind[i] == KIND_FLUID && gn > 0.0 ? sc->rho0 * gn * (ztop - z) : 0.0;
+    if (i < geo->nfluid && isfinite(geo->rho0[i]))
+      ph = w->c0 * w->c0 * (geo->rho0[i] - sc->rho0);
+    else if (i < geo->nfluid && isfinite(geo->p0[i]))
+      ph = geo->p0[i];
+    buf[i] = (real)(sc->rho0 + ph / (w->c0 * w->c0));
+    buf[geo->n + i] = (real)(w->p_bg + ph);
+  }
+  CLSPH_TRY(add_field(sim, "rho", buf, 1, &w->f_rho));
+  CLSPH_TRY(add_field(sim, "p", buf + geo->n, 1, &w->f_p));
+  CLSPH_TRY(add_field(sim, "drho", NULL, 0, &w->f_drho));
+  CLSPH_TRY(add_field(sim, "wall_dist", NULL, 1, &w->f_wdist));
+  w->f_ard = -1;
+  if (w->ard) CLSPH_TRY(add_field(sim, "ard", NULL, 1, &w->f_ard));
+  for (size_t i = 0; i < geo->n; ++i)
+    ubuf[i] = geo->kind[i] == KIND_DUMMY && geo->group[i] >= 0 ? (cl_uint)geo->group[i]
+                                                               : 0xffffffffu;
+  CLSPH_TRY(pset_add(ps, sim->dev, "wall", sizeof(cl_uint), ubuf, &w->f_wall));
+  pset_describe(ps, w->f_wall, PF_UINT, 1, 0);
+  /* volumes: m/ρ for the fluid, dr² for the dummy particles */
+  for (size_t i = 0; i < geo->n; ++i)
+    buf[i] = geo->kind[i] == KIND_FLUID ? (real)(w->mass / (double)buf[i]) : (real)(sc->dr * sc->dr);
+  CLSPH_TRY(kern_write(sim->dev, pset_mem(ps, sim->f_vol), geo->n * sizeof(real), buf));
+  /* the advection step's buffers (the particles' current order; remade every step) */
+  const size_t cap = ps->cap, rv = 2 * sizeof(real), groups = sim_reduce_groups(cap);
+  CLSPH_TRY(kern_buffer(sim->dev, cap * w->maxn * sizeof(cl_uint), NULL, &w->d_nlist,
+                        "neighbour list"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(cl_uint), NULL, &w->d_ncount, "neighbour counts"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * 4 * sizeof(real), NULL, &w->d_bmat, "correction B"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(real), NULL, &w->d_sigma, "kernel sums"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * rv, NULL, &w->d_prior, "prior acceleration"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * rv, NULL, &w->d_shift, "transport correction"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * rv, NULL, &w->d_acc, "acceleration"));
+  CLSPH_TRY(kern_buffer(sim->dev, (groups + 1) * sizeof(real), NULL, &w->d_partial, "partials"));
+  CLSPH_TRY(kern_buffer(sim->dev, sizeof(real), NULL, &w->d_none, "placeholder"));
+  w->h_partial = calloc(groups + 1, sizeof *w->h_partial);
+  CLSPH_CHECK(w->h_partial != NULL, CLSPH_E_NOMEM, "out of memory");
+  const char *names[] = {"wcr_config",   "wcr_count_pairs", "wcr_advection",  "wcr_drift",
+                         "wcr_momentum", "wcr_continuity",  "wcr_wall_force", "wcr_lattice_sum"};
+  cl_kernel *ks[] = {&w->k_config, &w->k_count, &w->k_adv,   &w->k_drift,
+                     &w->k_mom,    &w->k_cont,  &w->k_force, &w->k_lattice};
+  for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
+    CLSPH_TRY(prog_kernel(sim->prog, names[k], ks[k]));
+  /* sigma0: the kernel sum of a full support on the lattice */
+  const real dr = (real)sc->dr;
+  CLSPH_TRY(KERN_SET(w->k_lattice, KARG(dr), KARG(w->d_partial)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_lattice, 1, NULL));
+  CLSPH_TRY(kern_read(sim->dev, w->d_partial, sizeof(real), w->h_partial));
+  w->sigma0 = (double)w->h_partial[0];
+  CLSPH_CHECK(w->sigma0 > 0.5 && w->sigma0 < 1.5, CLSPH_E_INPUT,
+              "%s: wcsph-riemann: the kernel sum of the lattice is %g, not about 1: the smoothing "
+              "length (h_over_dr) is too small for the particle spacing",
+              sc->case_path, w->sigma0);
+  *state = w;
+  w = NULL;
+done:
+  free(buf);
+  free(ubuf);
+  if (w != NULL) {
+    free(w->h_partial);
+    free(w);
+  }
+  return st;
+}
+
+#define ARG(k, i, x) CLSPH_TRY(kern_set_at((k), (i)++, KARG(x)))
+
+/* 1. the configuration (config.cl): list, B, kernel sums, and the density re-set with `reinit` */
+static enum clsph_status configure(struct sim *sim, struct wcr *w, cl_uint reinit)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  const real dr = (real)sim->scene->dr, s0 = (real)w->sigma0, rho0 = (real)sim->scene->rho0;
+  cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
+  cl_mem kind = pset_mem(ps, sim->f_kind), rho = pset_mem(ps, w->f_rho);
+  cl_mem wd = pset_mem(ps, w->f_wdist);
+  CLSPH_TRY(KERN_SET(w->k_config, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
+                     KARG(pos), KARG(vol), KARG(kind), KARG(dr), KARG(s0), KARG(rho0),
+                     KARG(reinit), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
+                     KARG(w->d_sigma), KARG(rho), KARG(wd), KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_config, ps->n, NULL));
+  w->configured = 1;
+done:
+  return st;
+}
+
+/* 2. a_prior, the transport-velocity correction, the ARD indicator (advection.cl) */
+static enum clsph_status advection(struct sim *sim, struct wcr *w)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const struct scene *sc = sim->scene;
+  const cl_uint n = (cl_uint)ps->n;
+  const double h = sim->sm.h;
+  const real mu = (real)(sc->rho0 * sc->nu), rho0 = (real)sc->rho0, c0 = (real)w->c0;
+  const real rh = (real)h;
+  const real2 accel =
+      dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
+  /* eq 25: α h², α = 0.2; eq 33: m h², m = 1000 (0: the full correction) */
+  const real tvf_a = w->tvf == WCR_TVF_OFF ? 0 : (real)(0.2 * h * h);
+  const real tvf_m = w->tvf == WCR_TVF_LIMITED ? (real)(1000.0 * h * h) : 0;
+  /* in free-surface flows, only where the kernel sum is within 5% of a full support's */
+  const real bulk = w->reinit == WCR_REINIT_FREE ? (real)0.95 : 0;
+  cl_mem ard = w->f_ard >= 0 ? pset_mem(ps, w->f_ard) : w->d_none;
+  cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
+  cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
+  cl_mem rho = pset_mem(ps, w->f_rho);
+  CLSPH_TRY(KERN_SET(w->k_adv, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
+                     KARG(kind), KARG(rho), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
+                     KARG(w->d_sigma), KARG(mu), KARG(accel), KARG(tvf_a), KARG(tvf_m),
+                     KARG(bulk), KARG(rho0), KARG(c0), KARG(rh), KARG(w->d_prior),
+                     KARG(w->d_shift), KARG(ard)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_adv, ps->n, NULL));
+done:
+  return st;
+}
+
+/* the drift: v += dt_v acc, r += dt_x v (+ the TVF correction), ρ += dt_rho dρ/dt, V, p */
+static enum clsph_status drift(struct sim *sim, struct wcr *w, double dt_v, double dt_x,
+                               double dt_rho, cl_uint use_shift)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  const real a = (real)dt_v, b = (real)dt_x, c = (real)dt_rho, mass = (real)w->mass;
+  const real rho0 = (real)sim->scene->rho0, c0 = (real)w->c0, pbg = (real)w->p_bg;
+  cl_mem kind = pset_mem(ps, sim->f_kind), pos = pset_mem(ps, sim->f_pos);
+  cl_mem vel = pset_mem(ps, sim->f_vel), rho = pset_mem(ps, w->f_rho);
+  cl_mem drho = pset_mem(ps, w->f_drho), vol = pset_mem(ps, sim->f_vol);
+  cl_mem p = pset_mem(ps, w->f_p);
+  CLSPH_TRY(KERN_SET(w->k_drift, KARG(n), KARG(sim->grid.geom), KARG(kind), KARG(a), KARG(b),
+                     KARG(c), KARG(w->d_acc), KARG(use_shift), KARG(w->d_shift), KARG(mass),
+                     KARG(rho0), KARG(c0), KARG(pbg), KARG(pos), KARG(vel), KARG(rho), KARG(drho),
+                     KARG(vol), KARG(p), KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_drift, ps->n, NULL));
+done:
+  return st;
+}
+
+/* dv/dt (eq 19), then dρ/dt (eq 15) from v + dt dv/dt */
+static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const struct scene *sc = sim->scene;
+  const cl_uint n = (cl_uint)ps->n;
+  const real rho0 = (real)sc->rho0, c0 = (real)w->c0, mu = (real)(sc->rho0 * sc->nu);
+  const real h = (real)sim->sm.h, rdt = (real)dt;
+  cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
+  cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
+  cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
+  cl_mem drho = pset_mem(ps, w->f_drho);
+  CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
+                     KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
+                     KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(mu), KARG(h),
+                     KARG(w->d_acc)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
+  CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel),
+                     KARG(w->d_acc), KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p),
+                     KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_prior), KARG(rho0), KARG(c0),
+                     KARG(drho)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_cont, ps->n, NULL));
+done:
+  return st;
+}
+
+/* pairs in the fluid's lists (the pairs of one sum over the fluid) */
+static enum clsph_status count_pairs(struct sim *sim, struct wcr *w, double *pairs)
+{
+  enum clsph_status st = CLSPH_OK;
+  const cl_uint n = (cl_uint)sim->ps.n;
+  const size_t groups = sim_reduce_groups(sim->ps.n);
+  cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
+  CLSPH_TRY(KERN_SET(w->k_count, KARG(n), KARG(kind), KARG(w->d_ncount), KARG(w->d_partial)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, w->k_count, groups * 64, 64, NULL));
+  CLSPH_TRY(kern_read(sim->dev, w->d_partial, groups * sizeof(real), w->h_partial));
+  double c = 0.0;
+  for (size_t g = 0; g < groups; ++g) c += (double)w->h_partial[g];
+  *pairs = c;
+done:
+  return st;
+}
+
+static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct wcr *w = state;
+  const double h = sim->sm.h;
+  CLSPH_TRY(configure(sim, w, w->reinit));
+  CLSPH_TRY(advection(sim, w));
+  /* the acoustic sub-steps: equal, at most CFL_ac h/(c0 + |v|max) each */
+  const double dt_ac = w->cfl_ac * h / (w->c0 + w->vmax);
+  const long nac = (long)fmax(1.0, ceil(dt / dt_ac * (1.0 - 1e-12)));
+  const double d = dt / (double)nac;
+  CLSPH_TRY(drift(sim, w, 0.0, 0.5 * d, 0.5 * d, 1u));
+  for (long k = 0; k < nac; ++k) {
+    CLSPH_TRY(relax(sim, w, d));
+    const double tail = k + 1 < nac ? d : 0.5 * d; /* the next sub-step's first half too */
+    CLSPH_TRY(drift(sim, w, d, tail, tail, 0u));
+  }
+  double pairs = 0.0;
+  CLSPH_TRY(count_pairs(sim, w, &pairs));
+  sim->substeps = nac;
+  sim->pairs = pairs * (double)(2 + 2 * nac); /* config, advection, 2 per sub-step */
+done:
+  return st;
+}
+
+static enum clsph_status wcr_max_dt(struct sim *sim, void *state, double *dt)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct wcr *w = state;
+  const struct scene *s = sim->scene;
+  const double h = sim->sm.h;
+  double vmax = 0.0;
+  CLSPH_TRY(sim_max_speed(sim, KIND_FLUID, &vmax));
+  w->vmax = vmax;
+  const double v = fmax(vmax, w->u_scale);
+  double d = v > 0.0 ? h / v : HUGE_VAL;     /* eq 27 */
+  if (s->nu > 0.0) d = fmin(d, h * h / s->nu); /* eq 27 */
+  if (!isfinite(d)) d = h / w->c0;             /* nothing moves: one acoustic CFL */
+  *dt = w->cfl_ad * d;
+done:
+  return st;
+}
+
+/* Force of the fluid on the dummy particles of a wall group (force.cl), summed in double. */
+static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char *group,
+                                        struct wall_force *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct wcr *w = state;
+  struct pset *ps = &sim->ps;
+  const struct scene *sc = sim->scene;
+  cl_uint *mask = NULL;
+  const cl_uint n = (cl_uint)ps->n, nmask = (cl_uint)(sc->nwalls > 0 ? sc->nwalls : 1);
+  mask = calloc(nmask, sizeof *mask);
+  CLSPH_CHECK(mask != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (int k = 0; k < sc->nwalls; ++k) mask[k] = strcmp(sc->walls[k].group, group) == 0;
+  if (w->d_mask == NULL)
+    CLSPH_TRY(kern_buffer(sim->dev, nmask * sizeof *mask, NULL, &w->d_mask, "wall mask"));
+  if (w->d_force == NULL) {
+    CLSPH_TRY(kern_buffer(sim->dev, w->cap * 4 * sizeof(real), NULL, &w->d_force, "wall force"));
+    w->h_force = malloc(w->cap * 4 * sizeof *w->h_force);
+    CLSPH_CHECK(w->h_force != NULL, CLSPH_E_NOMEM, "out of memory");
+  }
+  CLSPH_TRY(kern_write(sim->dev, w->d_mask, nmask * sizeof *mask, mask));
+  /* before the first step (the initial output) the list and B are made without touching ρ */
+  if (!w->configured) {
+    CLSPH_TRY(configure(sim, w, WCR_REINIT_OFF));
+    CLSPH_TRY(advection(sim, w));
+  }
+  const real rho0 = (real)sc->rho0, c0 = (real)w->c0, mu = (real)(sc->rho0 * sc->nu);
+  const real h = (real)sim->sm.h;
+  cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
+  cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
+  cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
+  cl_mem wall = pset_mem(ps, w->f_wall);
+  CLSPH_TRY(KERN_SET(w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
+                     KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
+                     KARG(w->d_bmat), KARG(w->d_prior), KARG(wall), KARG(w->d_mask), KARG(nmask),
+                     KARG(rho0), KARG(c0), KARG(mu), KARG(h), KARG(w->d_force)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
+  CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
+  memset(out, 0, sizeof *out);
+  for (size_t i = 0; i < ps->n; ++i) {
+    out->pressure[0] += (double)w->h_force[4 * i];
+    out->pressure[1] += (double)w->h_force[4 * i + 1];
+    out->viscous[0] += (double)w->h_force[4 * i + 2];
+    out->viscous[1] += (double)w->h_force[4 * i + 3];
+  }
+done:
+  free(mask);
+  return st;
+}
+
+static void wcr_destroy(void *state)
+{
+  struct wcr *w = state;
+  if (w == NULL) return;
+  cl_kernel *ks[] = {&w->k_config, &w->k_count, &w->k_adv,   &w->k_drift,
+                     &w->k_mom,    &w->k_cont,  &w->k_force, &w->k_lattice};
+  for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
+    if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
+  cl_mem *ms[] = {&w->d_nlist, &w->d_ncount,  &w->d_bmat,  &w->d_sigma, &w->d_prior, &w->d_shift,
+                  &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,  &w->d_none};
+  for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
+  free(w->h_partial);
+  free(w->h_force);
+  free(w);
+}
+
+const struct scheme_ops scheme_wcsph_riemann = {
+    .name = "wcsph-riemann",
+    .summary = "Riemann WCSPH, transport-velocity correction, dual-criteria time stepping (Wang, "
+               "Sun & Hu)",
+    .sources = sources,
+    .wall_model = "dummy",
+    .smoothing = "wendland",
+    .h_over_dr = 1.3,
+    .fill_fields = SCHEME_FILL_PRESSURE | SCHEME_FILL_DENSITY,
+    .options = options,
+    .define = wcr_define,
+    .create = wcr_create,
+    .step = wcr_step,
+    .max_dt = wcr_max_dt,
+    .wall_force = wcr_wall_force,
+    .destroy = wcr_destroy,
+};
