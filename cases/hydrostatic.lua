@@ -8,12 +8,15 @@
 -- less the hydrostatic part (pressure_form = "dynamic", the form that holds a fluid at rest);
 -- --set dynamic=0 gives it the paper's G+ of the total pressure (6% off and 3e-2 √(gH) currents
 -- at δr = 0.05 m).
-param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0.5, wcsph = 0, dynamic = 1 }
+param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0.5, wcsph = 0, dynamic = 1,
+        riemann = 0, tvf = 2 }
 
 local g = 9.81
 domain { 0, 0, width, 1.5 * depth }
 particles { dr = dr }
-if wcsph == 1 then -- the baseline: c0 = 10 √(g H)
+if riemann == 1 then -- Riemann WCSPH, c0 = 10 √(2 g H) (the default from the depth)
+  scheme { "wcsph-riemann", transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
+elseif wcsph == 1 then -- the baseline: c0 = 10 √(g H)
   scheme { "wcsph-usaw", sound_speed = 10 * math.sqrt(g * depth),
            pressure_form = dynamic == 1 and "dynamic" or "total" }
 else

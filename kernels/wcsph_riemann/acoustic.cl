@@ -22,7 +22,13 @@
  * Momentum with the reverse kernel gradient correction on the mean pressure (eq 19):
  *   a^p_i = −(1/ρ_i) Σ_j V_j [(p_i B_j + p_j B_i) + ρ0 β_ij U_ij I] ∇W_ij,
  * continuity (eq 15, with v* above):
- *   dρ_i/dt = 2 ρ_i Σ_j V_j (v_i − v*)·∇W_ij = ρ_i Σ_j V_j F [v_ij·r_ij + r (p_i − p_j)/(ρ0 c0)].
+ *   dρ_i/dt = 2 ρ_i Σ_j V_j (v_i − v*)·∇W_ij = ρ_i Σ_j V_j F [v_ij·r_ij + r Δp_ij/(ρ0 c0)],
+ * with the jump Δp_ij = p_i − p_j − ρ0 g·r_ij less its hydrostatic part (our departure: the
+ * paper's flows have no gravity). In a fluid at rest under gravity p_i − p_j = ρ0 g·r_ij; the
+ * sum of the jumps cancels in a full support but not on a free surface, whose particles see
+ * only the higher pressures below them: dρ/dt ~ ρ g/c0 there, which held the surface of a tank
+ * at rest at +150 Pa and lifted it by 2 dr in 2 s (cases/hydrostatic.lua, dr = H/20). Without
+ * the Riemann term at all (continuity = "plain") the same tank clustered at 0.15 s.
  * With ARD on (-D WCR_ARD=1; sec 3.1, eqs 31-32) the Riemann dissipation leaves eq 19 and acts as
  * a viscosity µ_R = ½ ρ0 β_ij h between the pair, the larger of it and the physical one, µ_c =
  * max(µ_R, µ̃) (eq 32): the physical part is in the advection step's a_prior, so the sub-step
@@ -31,21 +37,16 @@
  * Walls (the one-sided Riemann problem of Zhang et al. 2017 on dummy particles, Adami et al.
  * 2012): a dummy particle w shows i the state
  *   v_w = 2 u_w − v_i  (no penetration, no slip; u_w the wall's velocity),
- *   p_w = p_i + ρ_i max(0, −a_i·r_iw)  (the pressure a column of fluid under i's acceleration
- *         a_i = a_prior (gravity, body force, viscous) would add towards the wall),
+ *   p_w = p_i − ρ_i a_i·r_iw  (the pressure a column of fluid under i's acceleration
+ *         a_i = a_prior (gravity, body force, viscous) adds from i to w: Adami et al.'s
+ *         hydrostatic extrapolation, pair by pair). SPHinXsys keeps only the increase,
+ *         max(0, −a_i·r_iw); then the dummies of a side wall above i show p_i and those
+ *         below it p_i + ρ g dz, a net lift along the wall that set a tank at rest turning
+ *         (0.2 m/s up the walls, down the middle, cases/hydrostatic.lua, dr = H/20),
  *   B_w = B_i, V_w = dr²,
  * and the pair is then treated as a fluid pair. With wall_dissipation = "full"
  * (-D WCR_WALL_FULL=1) the wall pair takes β = c0 whatever U (the paper's choice for the
  * wall-bounded RANS flows, sec 4.3: "the low-dissipation limiter ... is not employed"). */
-#ifndef WCR_ETA
-#define WCR_ETA R(3.0)
-#endif
-#ifndef WCR_ARD
-#define WCR_ARD 0
-#endif
-#ifndef WCR_WALL_FULL
-#define WCR_WALL_FULL 0
-#endif
 
 real wcr_beta(real u, real c0, uint wall)
 {
@@ -122,7 +123,7 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
     real4 bj;
     if (wall) {
       vj = R(2.0) * vel[j] - vi;
-      pj = pi + ri * fmax(R(0.0), -dot(ai, r));
+      pj = pi - ri * dot(ai, r);
       bj = bi;
     } else {
       vj = vel[j];
@@ -153,7 +154,7 @@ __kernel void wcr_continuity(const uint n, const struct grid g, __global const r
                              __global const real *rho, __global const real *p,
                              __global const uint *nlist, __global const uint *ncount,
                              __global const realv *acc_prior, const real rho0, const real c0,
-                             __global real *drho)
+                             const realv gravity, __global real *drho)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
@@ -172,12 +173,19 @@ __kernel void wcr_continuity(const uint n, const struct grid g, __global const r
     real pj;
     if (kj == WCR_DUMMY) {
       vj = R(2.0) * vel[j] - vi;
-      pj = pi + ri * fmax(R(0.0), -dot(ai, r));
+      pj = pi - ri * dot(ai, r);
     } else {
       vj = kj == WCR_FLUID ? vel[j] + dt * acc[j] : vel[j];
       pj = p[j];
     }
-    s += f * (dot(vi - vj, r) + rr * (pi - pj) * inv_z);
+#if WCR_CONT_RIEMANN
+    s += f * (dot(vi - vj, r) + rr * (pi - pj - rho0 * dot(gravity, r)) * inv_z);
+#else
+    s += f * dot(vi - vj, r);
+    (void)pj;
+    (void)inv_z;
+    (void)gravity;
+#endif
   }
   drho[i] = ri * s;
 }

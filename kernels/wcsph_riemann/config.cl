@@ -34,6 +34,18 @@
 #define WCR_MAXN 64
 #endif
 #define WCR_B_DET R(0.3)
+#ifndef WCR_ETA
+#define WCR_ETA R(3.0) /* η of the dissipation limiter (eq 18) */
+#endif
+#ifndef WCR_CONT_RIEMANN
+#define WCR_CONT_RIEMANN 1
+#endif
+#ifndef WCR_ARD
+#define WCR_ARD 0
+#endif
+#ifndef WCR_WALL_FULL
+#define WCR_WALL_FULL 0
+#endif
 
 /* r_ij between the nearest images on the periodic axes (the support is shorter than half a
  * period: the grid needs 2 GRID_SUB + 1 cells on a periodic axis) */

@@ -2,12 +2,15 @@
  * the reactions of the pair forces the walls exert on the fluid in the sub-steps (acoustic.cl,
  * advection.cl), so that what the fluid loses the walls gain:
  *   pressure: Σ_i V_i Σ_w V_w [(p_i B_w + p_w B_i) + ρ0 β U I] ∇W_iw   (eq 19 with the wall state)
- *   viscous:  −Σ_i V_i Σ_w 2 µ_c V_w F (v_i − v_w)                      (eq 21; µ_c with ARD, eq 32)
+ *   viscous:  −Σ_i V_i Σ_w 2 µ V_w F (v_i − v_w)  (eq 21 with Morris's wall velocity,
+ *             advection.cl; with ARD the Riemann viscosity's excess max(µ_R − µ, 0) with the
+ *             mirror velocity, eqs 31-32)
  * over the fluid particles i and the dummy particles w of the group (mask[wall[w]] != 0). Each
  * fluid particle writes its share (pressure x, y, viscous x, y); the host sums them in double. */
 __kernel void wcr_wall_force(const uint n, const struct grid g, __global const realv *pos,
                              __global const realv *vel, __global const real *vol,
                              __global const uint *kind, __global const real *rho,
+                             __global const real *wall_dist, __global const realv *wall_normal,
                              __global const real *p, __global const uint *nlist,
                              __global const uint *ncount, __global const real4 *bmat,
                              __global const realv *acc_prior, __global const uint *wall,
@@ -29,22 +32,22 @@ __kernel void wcr_wall_force(const uint n, const struct grid g, __global const r
   __global const uint *row = nlist + (size_t)i * WCR_MAXN;
   for (uint k = 0; k < c; ++k) {
     const uint j = row[k];
-    if (kind[j] != WCR_DUMMY || wall[j] >= nmask || mask[wall[j]] == 0u) continue;
+    const uint kj = kind[j];
+    if (kj != WCR_DUMMY || wall[j] >= nmask || mask[wall[j]] == 0u) continue;
     const realv r = wcr_sep(x, pos[j], &g);
     const real rr = sqrt(dot(r, r));
     const real f = smoothing_f(rr) * vol[j];
     const realv vij = R(2.0) * (vi - vel[j]);
-    const real pj = pi + ri * fmax(R(0.0), -dot(ai, r));
+    const real pj = pi - ri * dot(ai, r);
     const real u = rr > R(0.0) ? -dot(vij, r) / rr : R(0.0);
     const real beta = wcr_beta(u, c0, 1u);
     fp += f * (pi + pj) * wcr_apply(bi, r);
-    real mu_c = mu;
 #if WCR_ARD
-    mu_c = fmax(R(0.5) * rho0 * beta * h, mu);
+    fv -= R(2.0) * fmax(R(0.5) * rho0 * beta * h - mu, R(0.0)) * f * vij;
 #else
     fp += f * (rho0 * beta * u) * r;
 #endif
-    fv -= R(2.0) * mu_c * f * vij;
+    fv -= R(2.0) * mu * f * wcr_visc_jump(kj, x, x - r, vi, vel[j], wall_dist[j], wall_normal[j]);
   }
   o = (real4)(vol_i * fp.x, vol_i * fp.y, vol_i * fv.x, vol_i * fv.y);
   out[i] = o;

@@ -40,7 +40,7 @@ enum { WCR_TVF_OFF = 0, WCR_TVF_FULL = 1, WCR_TVF_LIMITED = 2 };
 enum { WCR_REINIT_OFF = 0, WCR_REINIT_SUM = 1, WCR_REINIT_FREE = 2 };
 
 struct wcr {
-  int f_rho, f_p, f_drho, f_ard, f_wall, f_wdist;
+  int f_rho, f_p, f_drho, f_ard, f_wall, f_wdist, f_wnormal;
   cl_uint maxn;                   /* neighbour list stride */
   cl_mem d_nlist, d_ncount;       /* neighbour list of the advection step */
   cl_mem d_bmat, d_sigma;         /* B (4 reals) and the normalised kernel sum */
@@ -51,7 +51,7 @@ struct wcr {
   cl_kernel k_config, k_count, k_adv, k_drift, k_mom, k_cont, k_force, k_lattice;
   double c0, p_bg, mass, sigma0, u_scale;
   double cfl_ad, cfl_ac;
-  int tvf, ard, wall_full;
+  int tvf, ard, wall_full, cont_riemann;
   cl_uint reinit;
   double vmax;    /* the fluid's largest speed at the last max_dt, m/s */
   int configured; /* the list and B belong to the particles' current order */
@@ -65,6 +65,7 @@ static const char *const options[] = {"sound_speed",
                                       "ard",
                                       "density",
                                       "wall_dissipation",
+                                      "continuity",
                                       "advection_cfl",
                                       "acoustic_cfl",
                                       "walls",
@@ -131,6 +132,8 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w)
                           &reinit));
   w->reinit = (cl_uint)reinit;
   CLSPH_TRY(option_choice(sc, "wall_dissipation", wall_names, 0, &w->wall_full));
+  static const char *const cont_names[] = {"plain", "riemann", NULL};
+  CLSPH_TRY(option_choice(sc, "continuity", cont_names, 1, &w->cont_riemann));
   double ard = 0.0;
   CLSPH_TRY(option_number(sc, "ard", 0.0, 1.0, "1 (on) or 0 (off)", &ard));
   CLSPH_CHECK(ard == 0.0 || ard == 1.0, CLSPH_E_INPUT,
@@ -208,6 +211,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_MAXN", list_stride(sim)));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_ARD", w.ard));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_FULL", w.wall_full));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_CONT_RIEMANN", w.cont_riemann));
 done:
   return st;
 }
@@ -268,8 +272,18 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   }
   CLSPH_TRY(add_field(sim, "rho", buf, 1, &w->f_rho));
   CLSPH_TRY(add_field(sim, "p", buf + geo->n, 1, &w->f_p));
+  /* volumes: m/ρ for the fluid, dr² for the dummy particles */
+  for (size_t i = 0; i < geo->n; ++i)
+    buf[i] = geo->kind[i] == KIND_FLUID ? (real)(w->mass / (double)buf[i]) : (real)(sc->dr * sc->dr);
+  CLSPH_TRY(kern_write(sim->dev, pset_mem(ps, sim->f_vol), geo->n * sizeof(real), buf));
   CLSPH_TRY(add_field(sim, "drho", NULL, 0, &w->f_drho));
-  CLSPH_TRY(add_field(sim, "wall_dist", NULL, 1, &w->f_wdist));
+  /* wall_dist: the depth of a dummy particle behind its wall; a fluid particle's distance from
+   * the nearest wall (config.cl); wall_normal: a dummy particle's normal into the fluid */
+  for (size_t i = 0; i < geo->n; ++i) buf[i] = (real)geo->dist[i];
+  CLSPH_TRY(add_field(sim, "wall_dist", buf, 1, &w->f_wdist));
+  for (size_t i = 0; i < 2 * geo->n; ++i) buf[i] = (real)geo->normal[i];
+  CLSPH_TRY(pset_add(ps, sim->dev, "wall_normal", 2 * sizeof(real), buf, &w->f_wnormal));
+  pset_describe(ps, w->f_wnormal, PF_REAL, 2, 0);
   w->f_ard = -1;
   if (w->ard) CLSPH_TRY(add_field(sim, "ard", NULL, 1, &w->f_ard));
   for (size_t i = 0; i < geo->n; ++i)
@@ -277,10 +291,6 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
                                                                : 0xffffffffu;
   CLSPH_TRY(pset_add(ps, sim->dev, "wall", sizeof(cl_uint), ubuf, &w->f_wall));
   pset_describe(ps, w->f_wall, PF_UINT, 1, 0);
-  /* volumes: m/ρ for the fluid, dr² for the dummy particles */
-  for (size_t i = 0; i < geo->n; ++i)
-    buf[i] = geo->kind[i] == KIND_FLUID ? (real)(w->mass / (double)buf[i]) : (real)(sc->dr * sc->dr);
-  CLSPH_TRY(kern_write(sim->dev, pset_mem(ps, sim->f_vol), geo->n * sizeof(real), buf));
   /* the advection step's buffers (the particles' current order; remade every step) */
   const size_t cap = ps->cap, rv = 2 * sizeof(real), groups = sim_reduce_groups(cap);
   CLSPH_TRY(kern_buffer(sim->dev, cap * w->maxn * sizeof(cl_uint), NULL, &w->d_nlist,
@@ -360,14 +370,15 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   /* eq 25: α h², α = 0.2; eq 33: m h², m = 1000 (0: the full correction) */
   const real tvf_a = w->tvf == WCR_TVF_OFF ? 0 : (real)(0.2 * h * h);
   const real tvf_m = w->tvf == WCR_TVF_LIMITED ? (real)(1000.0 * h * h) : 0;
-  /* in free-surface flows, only where the kernel sum is within 5% of a full support's */
-  const real bulk = w->reinit == WCR_REINIT_FREE ? (real)0.95 : 0;
+  /* in free-surface flows, only away from the surface (advection.cl) */
+  const real bulk = w->reinit == WCR_REINIT_FREE ? (real)0.8 : 0;
   cl_mem ard = w->f_ard >= 0 ? pset_mem(ps, w->f_ard) : w->d_none;
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
-  cl_mem rho = pset_mem(ps, w->f_rho);
+  cl_mem rho = pset_mem(ps, w->f_rho), wd = pset_mem(ps, w->f_wdist);
+  cl_mem wn = pset_mem(ps, w->f_wnormal);
   CLSPH_TRY(KERN_SET(w->k_adv, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
-                     KARG(kind), KARG(rho), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
+                     KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
                      KARG(w->d_sigma), KARG(mu), KARG(accel), KARG(tvf_a), KARG(tvf_m),
                      KARG(bulk), KARG(rho0), KARG(c0), KARG(rh), KARG(w->d_prior),
                      KARG(w->d_shift), KARG(ard)));
@@ -407,6 +418,7 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   const cl_uint n = (cl_uint)ps->n;
   const real rho0 = (real)sc->rho0, c0 = (real)w->c0, mu = (real)(sc->rho0 * sc->nu);
   const real h = (real)sim->sm.h, rdt = (real)dt;
+  const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
@@ -419,7 +431,7 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel),
                      KARG(w->d_acc), KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p),
                      KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_prior), KARG(rho0), KARG(c0),
-                     KARG(drho)));
+                     KARG(grav), KARG(drho)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_cont, ps->n, NULL));
 done:
   return st;
@@ -516,9 +528,10 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
-  cl_mem wall = pset_mem(ps, w->f_wall);
+  cl_mem wall = pset_mem(ps, w->f_wall), wd = pset_mem(ps, w->f_wdist);
+  cl_mem wn = pset_mem(ps, w->f_wnormal);
   CLSPH_TRY(KERN_SET(w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
-                     KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
+                     KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(wall), KARG(w->d_mask), KARG(nmask),
                      KARG(rho0), KARG(c0), KARG(mu), KARG(h), KARG(w->d_force)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
