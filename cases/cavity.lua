@@ -6,14 +6,14 @@
 -- wcsph-usaw at Re 400: tests/validation/cavity_pressure.py). cfl multiplies the schemes'
 -- time-step bounds; shift is isph-usaw's shifting coefficient (0 turns shifting off);
 -- checkpoint > 0 writes a checkpoint every that many seconds of flow (long runs: --restart).
-param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, riemann = 0, ard = 0, tvf = 2, dens = 0,
+param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, riemann = 0, ard = 0, tvf = 2, dens = 0, c0 = 10, alpha = 0.2,
         shift = 0.7, checkpoint = 0 }
 
 local U = 1
 domain { 0, 0, 1, 1 }
 particles { dr = 1 / n }
 if riemann == 1 then -- Riemann WCSPH with the limited transport velocity (c0 = 10 U)
-  scheme { "wcsph-riemann", sound_speed = 10 * U, ard = ard,
+  scheme { "wcsph-riemann", sound_speed = c0 * U, ard = ard, transport_coefficient = alpha,
            transport_velocity = ({"off", "full", "limited"})[tvf + 1],
            density = dens == 1 and "continuity" or nil }
 elseif wcsph == 1 then -- the paper's baseline: c0 = 10 U and a background pressure

@@ -50,7 +50,7 @@ struct wcr {
   size_t cap;
   cl_kernel k_config, k_count, k_adv, k_drift, k_mom, k_cont, k_force, k_lattice;
   double c0, p_bg, mass, sigma0, u_scale;
-  double cfl_ad, cfl_ac;
+  double cfl_ad, cfl_ac, tvf_alpha;
   int tvf, ard, wall_full, cont_riemann;
   cl_uint reinit;
   double vmax;    /* the fluid's largest speed at the last max_dt, m/s */
@@ -66,6 +66,7 @@ static const char *const options[] = {"sound_speed",
                                       "density",
                                       "wall_dissipation",
                                       "continuity",
+                                      "transport_coefficient",
                                       "advection_cfl",
                                       "acoustic_cfl",
                                       "walls",
@@ -139,6 +140,9 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w)
   CLSPH_CHECK(ard == 0.0 || ard == 1.0, CLSPH_E_INPUT,
               "%s: wcsph-riemann option ard must be 1 (on) or 0 (off)", sc->case_path);
   w->ard = ard == 1.0;
+  w->tvf_alpha = 0.2; /* eq 25 */
+  /* 0.5 blew the 30² cavity up at its ninth step: the correction overshoots */
+  CLSPH_TRY(option_number(sc, "transport_coefficient", 0.0, 0.3, "α of eq 25", &w->tvf_alpha));
   w->cfl_ad = 0.25;
   w->cfl_ac = 0.6;
   CLSPH_TRY(option_number(sc, "advection_cfl", 1e-3, 1.0, "a CFL number", &w->cfl_ad));
@@ -368,7 +372,7 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   const real2 accel =
       dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
   /* eq 25: α h², α = 0.2; eq 33: m h², m = 1000 (0: the full correction) */
-  const real tvf_a = w->tvf == WCR_TVF_OFF ? 0 : (real)(0.2 * h * h);
+  const real tvf_a = w->tvf == WCR_TVF_OFF ? 0 : (real)(w->tvf_alpha * h * h);
   const real tvf_m = w->tvf == WCR_TVF_LIMITED ? (real)(1000.0 * h * h) : 0;
   /* in free-surface flows, only away from the surface (advection.cl) */
   const real bulk = w->reinit == WCR_REINIT_FREE ? (real)0.8 : 0;
