@@ -36,6 +36,8 @@ int main(int argc, char **argv)
     st = bench_psolve(&cli);
   else if (strcmp(cli.command, "bench") == 0 && strcmp(cli.target, "render") == 0)
     st = bench_render(&cli);
+  else if (strcmp(cli.command, "bench") == 0 && strcmp(cli.target, "dambreak") == 0)
+    st = bench_dambreak(&cli);
   else if (strcmp(cli.command, "bench") == 0)
     st = bench_run(&cli);
   if (st == CLSPH_E_INPUT) return 2;

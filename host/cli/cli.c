@@ -30,6 +30,10 @@ void cli_usage(FILE *f)
         "                        recomputed operator, two preconditioners) and UMFPACK; writes\n"
         "                        --out/psolve.csv and psolve.png\n"
         "  bench render          frame times (median) for 1e4, 1e5, 1e6 particles at 1280 x 720\n"
+        "  bench dambreak        DualSPHysics's CaseDambreakVal2D dam break through the time loop\n"
+        "                        (cases/dam_break_dsph.lua, or --case FILE; --set applies): wall\n"
+        "                        time, steps, particle-steps/s, pair interactions/s and device\n"
+        "                        time per kernel, beside DualSPHysics 5.4's figures\n"
         "  help                  this text\n"
         "\n"
         "options:\n"
@@ -39,8 +43,8 @@ void cli_usage(FILE *f)
         "                        the frames and the movie go (default OUTDIR)\n"
         "  --restart FILE        continue a run from one of its checkpoints (in its folder, the\n"
         "                        outputs after the checkpoint are removed)\n"
-        "  --overwrite           run: clear the outputs of an earlier run in --out (without it\n"
-        "                        such a folder is refused)\n"
+        "  --overwrite           run, bench dambreak: clear the outputs of an earlier run in\n"
+        "                        --out (without it such a folder is refused)\n"
         "  --case-instructions N the case script's budget of Lua instructions for each call\n"
         "                        into it (top level, a fill's velocity, metrics(); default 1e9)\n"
         "  --case-memory MIB     the most memory the case script may hold (default 512)\n",
@@ -70,7 +74,11 @@ void cli_usage(FILE *f)
         "  --prog-cache-dir DIR  cache of built programs (default ~/.cache/clsph; '' disables)\n"
         "  --fast-math           allow -cl-fast-relaxed-math (off by default)\n"
         "  --bench-sizes LIST    particle counts for `bench`, e.g. 1e4,1e5 (default 1e4,1e5,1e6)\n"
-        "  --bench-reps N        repetitions per figure; the median is printed (default 7)\n"
+        "  --bench-reps N        repetitions per figure; the median is printed (default 7; 1\n"
+        "                        for bench dambreak, a run of minutes)\n"
+        "  --case FILE           bench dambreak: the case script to time (default\n"
+        "                        cases/dam_break_dsph.lua); outputs go to a temporary folder,\n"
+        "                        removed afterwards, unless --out DIR\n"
         "  --bench-direct-max N  largest UMFPACK solve of `bench psolve` (default 2e5)\n"
         "  --demo-dr DR          lattice spacing of the demo on the unit square (default 0.01)\n"
         "  --verbose             debug messages (build options, cache hits)\n"
@@ -88,7 +96,8 @@ void cli_usage(FILE *f)
         "  clsph bench render --bench-reps 5\n"
         "  clsph devices\n"
         "  clsph demo --device 0\n"
-        "  clsph bench neighbours --bench-sizes 1e4,1e5 --bench-reps 5\n",
+        "  clsph bench neighbours --bench-sizes 1e4,1e5 --bench-reps 5\n"
+        "  clsph bench dambreak --set dp=0.02 --set riemann=0\n",
         f);
 }
 
@@ -169,7 +178,7 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
   struct cli c;
   memset(&c, 0, sizeof c);
   c.device = -1;
-  c.bench_reps = 7;
+  c.bench_reps = 0; /* not given: 7, or 1 for bench dambreak (below) */
   c.bench_sizes = NULL;
   c.bench_direct_max = 2e5;
   c.demo_dr = 0.01;
@@ -222,6 +231,8 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
         c.kernel_dir = val;
       } else if (strcmp(a, "--prog-cache-dir") == 0) {
         c.cache_dir = val;
+      } else if (strcmp(a, "--case") == 0) {
+        c.bench_case = val;
       } else if (strcmp(a, "--bench-sizes") == 0) {
         c.bench_sizes = val;
       } else if (strcmp(a, "--bench-direct-max") == 0) {
@@ -264,15 +275,23 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
     } else if (strcmp(c.command, "render") == 0 && c.snap_dir == NULL) {
       c.snap_dir = a;
     } else if (strcmp(c.command, "bench") == 0 && c.target == NULL) {
-      CLSPH_CHECK(
-          strcmp(a, "neighbours") == 0 || strcmp(a, "psolve") == 0 || strcmp(a, "render") == 0,
-          CLSPH_E_INPUT, "unknown benchmark '%s'; benchmarks: neighbours, psolve, render", a);
+      CLSPH_CHECK(strcmp(a, "neighbours") == 0 || strcmp(a, "psolve") == 0 ||
+                      strcmp(a, "render") == 0 || strcmp(a, "dambreak") == 0,
+                  CLSPH_E_INPUT,
+                  "unknown benchmark '%s'; benchmarks: neighbours, psolve, render, dambreak", a);
       c.target = a;
     } else {
       CLSPH_CHECK(0, CLSPH_E_INPUT, "unexpected argument '%s' (see clsph --help)", a);
     }
   }
   if (c.command == NULL) c.command = "help";
+  const int dambreak =
+      strcmp(c.command, "bench") == 0 && c.target != NULL && strcmp(c.target, "dambreak") == 0;
+  if (c.bench_reps == 0) c.bench_reps = dambreak ? 1 : 7;
+  CLSPH_CHECK(
+      c.bench_case == NULL || dambreak, CLSPH_E_INPUT,
+      "--case belongs to `clsph bench dambreak`; `clsph run` and `clsph info` take the case "
+      "script as their argument");
   if (c.bench_sizes == NULL)
     c.bench_sizes =
         c.target != NULL && strcmp(c.target, "psolve") == 0 ? "1e3,1e4,1e5,1e6" : "1e4,1e5,1e6";
@@ -301,8 +320,10 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
                 "%s is an option of frames: use it with `clsph run CASE --frames` or `clsph "
                 "render OUTDIR`",
                 given);
-    CLSPH_CHECK((c.restart == NULL && !c.overwrite) || strcmp(c.command, "run") == 0, CLSPH_E_INPUT,
-                "%s belongs to `clsph run CASE`", c.restart != NULL ? "--restart" : "--overwrite");
+    CLSPH_CHECK(c.restart == NULL || strcmp(c.command, "run") == 0, CLSPH_E_INPUT,
+                "--restart belongs to `clsph run CASE`");
+    CLSPH_CHECK(!c.overwrite || strcmp(c.command, "run") == 0 || dambreak, CLSPH_E_INPUT,
+                "--overwrite belongs to `clsph run CASE` and `clsph bench dambreak`");
     CLSPH_CHECK(!c.frames || strcmp(c.command, "run") == 0, CLSPH_E_INPUT,
                 "--frames belongs to `clsph run CASE`; `clsph render OUTDIR` draws frames of a "
                 "finished run");

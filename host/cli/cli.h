@@ -20,7 +20,8 @@ struct cli {
   double case_memory;       /* --case-memory MIB: its memory ceiling, bytes (0: default) */
   int quiet;                /* --quiet: no progress line */
   int profile;              /* --profile: device time per kernel of a run */
-  const char *target;       /* bench: "neighbours", "psolve", "render" */
+  const char *target;       /* bench: "neighbours", "psolve", "render", "dambreak" */
+  const char *bench_case;   /* --case FILE: the case `bench dambreak` times (NULL: its own) */
   int device;               /* --device N, -1: $CLSPH_DEVICE or the default */
   double device_memory;     /* --device-memory MIB: the most device memory a run may use, bytes
                              * (0: the device's) */
@@ -29,7 +30,7 @@ struct cli {
   int fast_math;            /* --fast-math */
   int verbose;              /* --verbose */
   const char *bench_sizes;  /* --bench-sizes 1e4,1e5,1e6 */
-  int bench_reps;           /* --bench-reps N */
+  int bench_reps;           /* --bench-reps N (default 7; 1 for bench dambreak) */
   double bench_direct_max;  /* --bench-direct-max N: largest UMFPACK solve of `bench psolve` */
   double demo_dr;           /* --demo-dr spacing of the demo lattice */
   /* frames: run --frames, render, bench render */
@@ -61,6 +62,9 @@ enum clsph_status demo_run(const struct cli *cli);
 enum clsph_status bench_run(const struct cli *cli);
 /** @brief `clsph bench psolve`. */
 enum clsph_status bench_psolve(const struct cli *cli);
+/** @brief `clsph bench dambreak`: a case run through the time loop, timed and profiled (see
+ *  bench_dambreak.c). */
+enum clsph_status bench_dambreak(const struct cli *cli);
 /** @brief `clsph render OUTDIR`: frames and a movie from a run's snapshots (see commands.c). */
 enum clsph_status render_command(const struct cli *cli);
 /** @brief `clsph bench render`: frame times (see bench_render.c). */

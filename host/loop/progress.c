@@ -24,10 +24,12 @@ void progress_show(const struct sim *sim, struct progress *pr, int final)
   double frac = sim->scene->t_end > 0.0 ? sim->time / sim->scene->t_end : 1.0;
   double el = t - pr->start, rate = el > 0.0 ? (double)sim->step / el : 0.0;
   double eta = frac > 0.0 ? el * (1.0 - frac) / frac : 0.0;
-  char solver[96] = "";
+  char solver[128] = "";
+  if (sim->substeps > 0) /* dual-criteria time stepping: the acoustic sub-steps of the last step */
+    snprintf(solver, sizeof solver, "  %ld acoustic sub-steps", sim->substeps);
   if (sim->solver_steps > 0)
-    snprintf(solver, sizeof solver, "  solver %ld its (res %.1e)", sim->solver_its,
-             sim->solver_res);
+    snprintf(solver + strlen(solver), sizeof solver - strlen(solver), "  solver %ld its (res %.1e)",
+             sim->solver_its, sim->solver_res);
   if (sim->aux_its_sum > 0)
     snprintf(solver + strlen(solver), sizeof solver - strlen(solver), ", viscous %ld its",
              sim->aux_its);

@@ -3,6 +3,7 @@
 #include "checkpoint.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -60,10 +61,11 @@ done:
   return st;
 }
 
-/* The figures of the whole run that summary.json reports (solver iterations, wall crossings,
- * the health checks' worst values, the wall-clock time so far): a checkpoint carries them, so
- * that the summary of a restarted run describes the whole run. */
-enum { NSTATS = 15 };
+/* The figures of the whole run that summary.json reports (solver iterations, acoustic
+ * sub-steps and pair interactions, wall crossings, the health checks' worst values, the
+ * wall-clock time so far): a checkpoint carries them, so that the summary of a restarted run
+ * describes the whole run. The wall-clock time stays last (checkpoint_write sets it). */
+enum { NSTATS = 17 };
 struct run_stats {
   const char *names[NSTATS];
   double values[NSTATS];
@@ -81,6 +83,8 @@ static void stats_of(struct sim *sim, struct run_stats *r)
   STAT_L(solver_its_max);
   STAT_L(solver_steps);
   STAT_L(aux_its_sum);
+  STAT_L(substeps_sum);
+  STAT_D(pairs_sum);
   STAT_L(open_waiting_max);
   STAT_L(wall_steps);
   STAT_L(wall_most);
@@ -140,17 +144,30 @@ enum clsph_status checkpoint_restore(struct sim *sim, const char *path, struct r
   expect.nstats = NSTATS;
   expect.stat_names = rs.names;
   expect.stats = rs.values;
+  for (int k = 0; k < NSTATS; ++k) rs.values[k] = NAN; /* NaN: not in the checkpoint */
   CLSPH_TRY(io_checkpoint_read(path, sim->dev, &sim->ps, &expect, &got, &blob, &blob_bytes));
   CLSPH_TRY(restore_blob(sim, path, blob, blob_bytes));
-  if (got.stats_read == NSTATS) {
+  if (got.stats_read == 0) {
+    log_warn("%s carries none of the %d figures of the run before it (written by an older "
+             "clsph): summary.json's solver, wall-crossing and health figures start from the "
+             "checkpoint",
+             path, NSTATS);
+  } else {
+    /* each figure the checkpoint has; one an older clsph did not write starts from here */
+    char missing[512] = ""; /* room for every name: NSTATS names of under 24 characters */
     for (int k = 0; k < NSTATS; ++k) {
+      if (isnan(rs.values[k])) {
+        const size_t len = strlen(missing);
+        snprintf(missing + len, sizeof missing - len, "%s%s", len > 0 ? ", " : "", rs.names[k]);
+        continue;
+      }
       if (rs.l[k] != NULL) *rs.l[k] = (long)rs.values[k];
       if (rs.d[k] != NULL) *rs.d[k] = rs.values[k];
     }
-  } else {
-    log_warn("%s carries %d of the %d figures of the run before it (written by an older clsph): "
-             "summary.json's solver, wall-crossing and health figures start from the checkpoint",
-             path, got.stats_read, NSTATS);
+    if (got.stats_read < NSTATS)
+      log_warn("%s carries %d of the %d figures of the run before it (written by an older clsph): "
+               "summary.json counts %s from the checkpoint",
+               path, got.stats_read, NSTATS, missing);
   }
   sim->body_force[0] = s->flow.on ? sim->flow.force : s->body_force[0];
   sim->time = got.time;

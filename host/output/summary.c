@@ -66,6 +66,10 @@ enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double
   cJSON_AddNumberToObject(root, "particle_steps_per_second",
                           wall > 0.0 ? (double)sim->ps.n * (double)(sim->step - sim->step0) / wall
                                      : 0.0);
+  /* what a scheme with acoustic sub-steps or counted pair interactions reports, over the whole
+   * run (a restart's checkpoint carries the sums before it) */
+  if (sim->substeps_sum > 0) cJSON_AddNumberToObject(root, "substeps", (double)sim->substeps_sum);
+  if (sim->pairs_sum > 0.0) cJSON_AddNumberToObject(root, "pair_interactions", sim->pairs_sum);
   cJSON_AddStringToObject(root, "status", sim->status);
   cJSON_AddStringToObject(root, "failure", sim->failure);
   cJSON_AddNumberToObject(root, "snapshots", o->nsnap);

@@ -56,10 +56,11 @@ foreach(dir resumed inplace)
     endif()
   endforeach()
   # the summary describes the whole run: the metrics, and the worst values and totals of the
-  # health checks, wall crossings and solver (the checkpoint carries them)
+  # health checks, wall crossings and solver, and the acoustic sub-steps and pair interactions
+  # of the schemes that report them (the checkpoint carries them; absent from both otherwise)
   file(READ ${OUT}/whole/summary.json whole_json)
   file(READ ${OUT}/${dir}/summary.json json)
-  foreach(key metrics health wall_crossings solver)
+  foreach(key metrics health wall_crossings solver substeps pair_interactions)
     string(JSON a ERROR_VARIABLE err_a GET "${whole_json}" ${key})
     string(JSON b ERROR_VARIABLE err_b GET "${json}" ${key})
     if(NOT err_a STREQUAL err_b OR NOT a STREQUAL b)
