@@ -15,13 +15,21 @@
 -- pressure force (zero on a flat wall) relative to it.
 -- implicit = 1 solves the prediction's viscous term implicitly (option viscous = "implicit"; the
 -- paper's is explicit), which lifts the viscous bound on the step.
-param { dr = 0.1, t_end = 1, homogeneous = 0, shift = 0.04, implicit = 0 }
+-- riemann = 1 runs wcsph-riemann (Wendland C2, h = 1.3 dr, c0 = 10 U0, the limited transport
+-- velocity): the exact rows then go through the Wendland interpolation (rows weighted by the
+-- sum of W over a row's particles, which are dr apart).
+param { dr = 0.1, t_end = 1, homogeneous = 0, shift = 0.04, implicit = 0, riemann = 0,
+        tvf = 2 }
 
 local H, nu, g = 1, 1, 8
 domain { 0, 0, 2 * H, H, periodic = "x" }
 particles { dr = dr }
-scheme { "isph-rotational", projection = homogeneous == 1 and "homogeneous" or "rotational",
-         shifting = shift, viscous = implicit == 1 and "implicit" or "explicit" }
+if riemann == 1 then
+  scheme { "wcsph-riemann", sound_speed = 10, transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
+else
+  scheme { "isph-rotational", projection = homogeneous == 1 and "homogeneous" or "rotational",
+           shifting = shift, viscous = implicit == 1 and "implicit" or "explicit" }
+end
 fluid { density = 1, viscosity = nu, body_force = {g, 0} }
 wall { {2 * H, 0}, {0, 0}, fluid = "right", group = "floor" }
 wall { {0, H}, {2 * H, H}, fluid = "right", group = "ceiling" }
@@ -43,7 +51,16 @@ local function exact(y, t)
 end
 
 function metrics(sim)
-  local h, U0 = 1.2 * dr, g * H * H / (8 * nu)
+  local h, U0 = (riemann == 1 and 1.3 or 1.2) * dr, g * H * H / (8 * nu)
+  local function row_weight(dy) -- the interpolation's weight of a row at dy from the point
+    if riemann ~= 1 then return math.exp(-(dy / h) ^ 2) - math.exp(-9) end
+    local w = 0
+    for k = -3, 3 do -- Wendland C2 (1 − q/2)^4 (1 + 2q), q <= 2, over the row's particles
+      local q = math.sqrt((k * dr) ^ 2 + dy * dy) / h
+      if q < 2 then w = w + (1 - q / 2) ^ 4 * (1 + 2 * q) end
+    end
+    return w
+  end
   local out = {}
   for _, t in ipairs { 0.02, 0.05, 0.1, 1 } do
     if t <= t_end + 1e-9 then
@@ -54,7 +71,7 @@ function metrics(sim)
         for m = 0, rows - 1 do
           local yr = (m + 0.5) * dr
           if math.abs(yr - y) < 3 * h then
-            local w = math.exp(-((yr - y) / h) ^ 2) - math.exp(-9)
+            local w = row_weight(yr - y)
             ws, us = ws + w, us + w * exact(yr, p.time)
           end
         end

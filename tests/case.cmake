@@ -2,9 +2,6 @@
 # kind of bad input is refused with its message and a non-zero exit; small runs end to end.
 set(CASE_DIR ${CMAKE_CURRENT_SOURCE_DIR}/case)
 file(GLOB shipped_cases CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/cases/*.lua)
-# dam_break_dsph.lua runs wcsph-riemann by default, which is being written (solvers/
-# wcsph_riemann/); until it is registered its info runs the wcsph-usaw comparison (riemann=0).
-set(case_info_sets_dam_break_dsph --set riemann=0)
 foreach(c IN LISTS shipped_cases)
   get_filename_component(n ${c} NAME_WE)
   clsph_cli_test(case_info_${n} ARGS info ${c} ${case_info_sets_${n}} RC 0

@@ -4,12 +4,20 @@
  *
  * Viscous acceleration (eq 21, the pairwise form of Hu & Adams 2006), written with V_j = m_j/ρ_j:
  *   a_i^ν = (2/ρ_i) Σ_j µ̃_ij V_j F(r_ij) (v_i − v_j),   F = W'/r,
- * µ̃_ij the harmonic mean of the two viscosities (one viscosity here: µ). No slip on a dummy wall
+ * µ̃_ij the harmonic mean of the two viscosities (one viscosity here: µ), divided by lambda, the
+ * sum's value for ∇²(x²/2) = 1 on the particles' lattice (config.cl): 0.974 at h = 1.3 dr with
+ * the Wendland C2, and 1 only as h/dr → ∞, so that the steady body-force Poiseuille flow ran
+ * 2.5% fast on its centreline at every resolution (cases/poiseuille_periodic.lua, dr = H/20 and
+ * H/40; 0.2% with the division). No slip on a dummy wall
  * particle w (Morris, Fox & Zhu 1997): its velocity extrapolates the fluid's linearly through the
  * wall's velocity u_w (which moves a sliding or rotating wall) at the wall,
- *   v_i − v_w = β (v_i − u_w),  β = min(1 + d_w/d_i, β_max = 1.5),
+ *   v_i − v_w = β (v_i − u_w),  β = 1 + d_w / max(d_i, dr/2),
  * d_w the dummy's depth behind the wall and d_i = (x_i − x_w)·n_w − d_w the fluid particle's
- * distance from the wall along the dummy's normal n_w. The mirror 2 u_w − v_i of the Riemann
+ * distance from the wall along the dummy's normal n_w. Morris et al. bound β by 1.5 instead, for
+ * particles that come close to the wall; on dummies in layers (depths dr/2, 3dr/2, 5dr/2) that
+ * cuts the first row's β of 2, 4, 6 to 1.5 and the wall drags too little: the body-force
+ * Poiseuille flow (cases/poiseuille_periodic.lua) ran 8.6% fast on its centreline at dr = H/10,
+ * 4.3% at H/40. The mirror 2 u_w − v_i of the Riemann
  * sums (acoustic.cl), β = 2, puts the wall half-way between i and w, which is right only for the
  * first row: it dragged the lid-driven cavity's centreline by 2.5% of U at 30² (u RMS against
  * Ghia 0.025 U; 0.0XX with Morris's extrapolation).
@@ -36,12 +44,11 @@
 
 /* v_i − v_j for the viscous sum: j's velocity, or a dummy's by Morris's extrapolation (depth d_w,
  * normal n_w, wall velocity u_w = vel[j]) */
-realv wcr_visc_jump(uint kj, realv xi, realv xj, realv vi, realv vj, real dw, realv nw)
+realv wcr_visc_jump(uint kj, realv xi, realv xj, realv vi, realv vj, real dw, realv nw, real dr)
 {
   if (kj != WCR_DUMMY) return vi - vj;
-  const real di = fmax(dot(xi - xj, nw) - dw, R(0.0));
-  const real beta = di > R(0.0) ? fmin(R(1.0) + dw / di, R(1.5)) : R(1.5);
-  return beta * (vi - vj);
+  const real di = fmax(dot(xi - xj, nw) - dw, R(0.5) * dr);
+  return (R(1.0) + dw / di) * (vi - vj);
 }
 
 __kernel void wcr_advection(const uint n, const struct grid g, __global const realv *pos,
@@ -49,8 +56,8 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
                             __global const uint *kind, __global const real *rho,
                             __global const real *wall_dist, __global const realv *wall_normal,
                             __global const uint *nlist, __global const uint *ncount,
-                            __global const real4 *bmat, __global const real *sigma, const real mu,
-                            const realv accel, const real tvf_a, const real tvf_m, const real bulk,
+                            __global const real4 *bmat, __global const real *sigma, const real dr,
+                            const real mu, const real inv_lambda, const realv accel, const real tvf_a, const real tvf_m, const real bulk,
                             const real rho0, const real c0, const real h,
                             __global realv *acc_prior, __global realv *shift, __global real *ard)
 {
@@ -69,7 +76,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
     const real f = smoothing_f(sqrt(r2)) * vol[j];
     const uint kj = kind[j];
     if (kj != WCR_DUMMY) smin = fmin(smin, sigma[j]);
-    visc += f * wcr_visc_jump(kj, x, x - r, vi, vel[j], wall_dist[j], wall_normal[j]);
+    visc += f * wcr_visc_jump(kj, x, x - r, vi, vel[j], wall_dist[j], wall_normal[j], dr);
     const real4 bj = kj == WCR_DUMMY ? bi : bmat[j];
     res += f * wcr_apply(bi + bj, r); /* (B_i + B_j) ∇W V */
 #if WCR_ARD
@@ -79,7 +86,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
     if (R(0.5) * rho0 * beta * h > mu) count += R(1.0);
 #endif
   }
-  acc_prior[i] = accel + R(2.0) * mu / rho[i] * visc;
+  acc_prior[i] = accel + R(2.0) * mu * inv_lambda / rho[i] * visc;
   realv d = (realv)(R(0.0));
   if (tvf_a > R(0.0) && smin >= bulk) {
     const real lim = tvf_m > R(0.0) ? fmin(tvf_m * dot(res, res), R(1.0)) : R(1.0);

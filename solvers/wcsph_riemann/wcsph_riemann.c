@@ -49,7 +49,7 @@ struct wcr {
   real *h_partial, *h_force;
   size_t cap;
   cl_kernel k_config, k_count, k_adv, k_drift, k_mom, k_cont, k_force, k_lattice;
-  double c0, p_bg, mass, sigma0, u_scale;
+  double c0, p_bg, mass, sigma0, lambda, u_scale;
   double cfl_ad, cfl_ac, tvf_alpha;
   int tvf, ard, wall_full, cont_riemann;
   cl_uint reinit;
@@ -319,12 +319,14 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   const real dr = (real)sc->dr;
   CLSPH_TRY(KERN_SET(w->k_lattice, KARG(dr), KARG(w->d_partial)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_lattice, 1, NULL));
-  CLSPH_TRY(kern_read(sim->dev, w->d_partial, sizeof(real), w->h_partial));
+  CLSPH_TRY(kern_read(sim->dev, w->d_partial, 2 * sizeof(real), w->h_partial));
   w->sigma0 = (double)w->h_partial[0];
-  CLSPH_CHECK(w->sigma0 > 0.5 && w->sigma0 < 1.5, CLSPH_E_INPUT,
-              "%s: wcsph-riemann: the kernel sum of the lattice is %g, not about 1: the smoothing "
-              "length (h_over_dr) is too small for the particle spacing",
-              sc->case_path, w->sigma0);
+  w->lambda = (double)w->h_partial[1];
+  CLSPH_CHECK(w->sigma0 > 0.5 && w->sigma0 < 1.5 && w->lambda > 0.5 && w->lambda < 1.5,
+              CLSPH_E_INPUT,
+              "%s: wcsph-riemann: the kernel sum of the lattice is %g and its Laplacian's %g, not "
+              "about 1: the smoothing length (h_over_dr) is too small for the particle spacing",
+              sc->case_path, w->sigma0, w->lambda);
   *state = w;
   w = NULL;
 done:
@@ -368,7 +370,7 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   const cl_uint n = (cl_uint)ps->n;
   const double h = sim->sm.h;
   const real mu = (real)(sc->rho0 * sc->nu), rho0 = (real)sc->rho0, c0 = (real)w->c0;
-  const real rh = (real)h;
+  const real rh = (real)h, rdr = (real)sc->dr, ilam = (real)(1.0 / w->lambda);
   const real2 accel =
       dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
   /* eq 25: α h², α = 0.2; eq 33: m h², m = 1000 (0: the full correction) */
@@ -383,7 +385,7 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   cl_mem wn = pset_mem(ps, w->f_wnormal);
   CLSPH_TRY(KERN_SET(w->k_adv, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
-                     KARG(w->d_sigma), KARG(mu), KARG(accel), KARG(tvf_a), KARG(tvf_m),
+                     KARG(w->d_sigma), KARG(rdr), KARG(mu), KARG(ilam), KARG(accel), KARG(tvf_a), KARG(tvf_m),
                      KARG(bulk), KARG(rho0), KARG(c0), KARG(rh), KARG(w->d_prior),
                      KARG(w->d_shift), KARG(ard)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_adv, ps->n, NULL));
@@ -528,7 +530,7 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
     CLSPH_TRY(advection(sim, w));
   }
   const real rho0 = (real)sc->rho0, c0 = (real)w->c0, mu = (real)(sc->rho0 * sc->nu);
-  const real h = (real)sim->sm.h;
+  const real h = (real)sim->sm.h, rdr = (real)sc->dr, ilam = (real)(1.0 / w->lambda);
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
@@ -537,7 +539,8 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   CLSPH_TRY(KERN_SET(w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(wall), KARG(w->d_mask), KARG(nmask),
-                     KARG(rho0), KARG(c0), KARG(mu), KARG(h), KARG(w->d_force)));
+                     KARG(rdr), KARG(rho0), KARG(c0), KARG(mu), KARG(ilam), KARG(h),
+                     KARG(w->d_force)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
   memset(out, 0, sizeof *out);
