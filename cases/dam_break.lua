@@ -19,8 +19,10 @@
 -- and the metrics at the end: those of the last sample, floor_speed_max and lead_ahead_max (the
 -- largest over the samples), max_speed_over_sqrt_gH (the largest fluid speed over √(gH) now),
 -- volume_ratio (the fluid's volume against the column's), time_star = t √(g/H).
--- --set wcsph=1 runs the weakly-compressible baseline (c0 = 10 · 2 √(gH)).
-param { n = 20, t_end = 0.4, wcsph = 0, every = 0.01 }
+-- --set wcsph=1 runs the weakly-compressible baseline (c0 = 10 · 2 √(gH)); --set riemann=1 runs
+-- wcsph-riemann with the same sound speed.
+param { n = 20, t_end = 0.4, wcsph = 0, riemann = 0, every = 0.01, cfl = 1,
+        tvf = 2, ard = 0 }
 
 local g, H, L, tank, top = 9.81, 0.3, 0.6, 1.61, 1.0
 local dr = H / n
@@ -28,7 +30,10 @@ local U = 2 * math.sqrt(g * H) -- Ritter's front speed
 
 domain { 0, 0, tank, top }
 particles { dr = dr }
-if wcsph == 1 then
+if riemann == 1 then
+  scheme { "wcsph-riemann", sound_speed = 10 * U, ard = ard,
+           transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
+elseif wcsph == 1 then
   scheme { "wcsph-usaw", sound_speed = 10 * U }
 else
   scheme "isph-usaw"
@@ -37,7 +42,7 @@ fluid { density = 997, viscosity = 8.9e-7, gravity = {0, -g} }
 wall { {0, top}, {0, 0}, {tank, 0}, {tank, top}, fluid = "left", group = "tank" }
 fill { 0, 0, L, H, name = "water" }
 probe { "sensor_1", {tank - dr, 0.003} }
-run { t_end = t_end, output_every = 0.05, sample_every = every }
+run { t_end = t_end, output_every = 0.05, sample_every = every, cfl = cfl }
 
 function sample(sim)
   local x, y = sim.field("pos", 1), sim.field("pos", 2)

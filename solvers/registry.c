@@ -12,9 +12,9 @@ extern const struct scheme_ops scheme_wcsph_usaw;
 extern const struct scheme_ops scheme_isph_rotational;
 extern const struct scheme_ops scheme_wcsph_riemann;
 
-static const struct scheme_ops *const schemes[] = {&scheme_none, &scheme_ballistic,
-                                                   &scheme_isph_usaw, &scheme_wcsph_usaw,
-                                                   &scheme_isph_rotational, &scheme_wcsph_riemann};
+static const struct scheme_ops *const schemes[] = {
+    &scheme_none,       &scheme_ballistic,       &scheme_isph_usaw,
+    &scheme_wcsph_usaw, &scheme_isph_rotational, &scheme_wcsph_riemann};
 
 enum clsph_status scheme_find(const char *name, const char *where, const struct scheme_ops **out)
 {

@@ -25,6 +25,9 @@ struct scheme_ops {
   const char *wall_model;     /* what the geometry makes: "usaw", "dummy" or "none" */
   const char *smoothing;      /* default smoothing function name */
   double h_over_dr;           /* default smoothing length / spacing */
+  double support_skin;        /* neighbour lists with a skin: the cells of the neighbour grid
+                               * cover support (1 + support_skin max(cfl, 1)), cfl the scene's
+                               * time-step factor (0: the support) */
   const char *const *options; /* option names the scheme accepts, NULL-terminated */
   unsigned fill_fields;       /* the initial fields fill { } may give it (SCHEME_FILL_*): the
                                * scheme's create takes them from geom.p0 and geom.rho0 */

@@ -59,14 +59,20 @@ real wcr_beta(real u, real c0, uint wall)
 }
 
 /* r += dt_x v + shift (shift: once, at the start of an advection step), v += dt_v acc,
- * ρ += dt_rho dρ/dt, then V = m/ρ and p = c0² (ρ − ρ0) + p_bg; fluid only */
+ * ρ += dt_rho dρ/dt, then V = m/ρ and p = c0² (ρ − ρ0) + p_bg; fluid only. In free-surface
+ * flows (surface > 0) a particle whose kernel sum is short of a full support's (sigma < surface,
+ * config.cl: the rows at the surface) takes no tension, p >= 0: pairs of surface particles under
+ * a slightly negative pressure (−200 Pa in a tank at rest, dr = H/20) drew together until the
+ * clustering check stopped the run (cases/hydrostatic.lua at t = 1.4 s; the Lobovsky dam break,
+ * n = 20, at 0.35 s, under the surface of the collapsing column). */
 __kernel void wcr_drift(const uint n, const struct grid g, __global const uint *kind,
                         const real dt_v, const real dt_x, const real dt_rho,
                         __global const realv *acc, const uint use_shift,
-                        __global const realv *shift, const real mass, const real rho0,
-                        const real c0, const real p_bg, __global realv *pos, __global realv *vel,
-                        __global real *rho, __global const real *drho, __global real *vol,
-                        __global real *p, __global uint *flags)
+                        __global const realv *shift, __global const real *sigma, const real surface,
+                        const real mass, const real rho0, const real c0, const real p_bg,
+                        __global realv *pos, __global realv *vel, __global real *rho,
+                        __global const real *drho, __global real *vol, __global real *p,
+                        __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
@@ -89,7 +95,9 @@ __kernel void wcr_drift(const uint n, const struct grid g, __global const uint *
   pos[i] = x;
   rho[i] = r;
   vol[i] = mass / r;
-  p[i] = c0 * c0 * (r - rho0) + p_bg;
+  real pr = c0 * c0 * (r - rho0) + p_bg;
+  if (surface > R(0.0) && sigma[i] < surface) pr = fmax(pr, R(0.0));
+  p[i] = pr;
 }
 
 /* dv/dt = a_prior + a^p (eq 19), and with ARD the Riemann viscosity (eq 31-32); fluid only */

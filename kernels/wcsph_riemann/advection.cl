@@ -57,9 +57,10 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
                             __global const real *wall_dist, __global const realv *wall_normal,
                             __global const uint *nlist, __global const uint *ncount,
                             __global const real4 *bmat, __global const real *sigma, const real dr,
-                            const real mu, const real inv_lambda, const realv accel, const real tvf_a, const real tvf_m, const real bulk,
-                            const real rho0, const real c0, const real h,
-                            __global realv *acc_prior, __global realv *shift, __global real *ard)
+                            const real mu, const real inv_lambda, const realv accel,
+                            const real tvf_a, const real tvf_m, const real bulk, const real rho0,
+                            const real c0, const real h, __global realv *acc_prior,
+                            __global realv *shift, __global real *ard)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;

@@ -8,11 +8,14 @@
  * whose state each fluid particle extrapolates for itself (acoustic.cl); WCR_INFLOW and
  * WCR_OUTFLOW are the entry and exit layers, whose state the open-boundary module sets.
  *
- * The list: the neighbours j != i within the support at the start of the advection step, at
- * most WCR_MAXN each (CLSPH_FLAG_NEIGH_OVERFLOW beyond), row i at nlist[i WCR_MAXN ...]. As in
- * the dual-criteria scheme the pairs are fixed for the advection step; unlike it, each sum
- * recomputes r_ij from the current positions (a pair that enters the support during the step is
- * missed, at W' ≈ 0; one that leaves it gets F = 0).
+ * The list: the neighbours j != i within r_list = support + skin at the start of the advection
+ * step, at most WCR_MAXN each (CLSPH_FLAG_NEIGH_OVERFLOW beyond), row i at nlist[i WCR_MAXN ...].
+ * The pairs are fixed for the advection step, as in the dual-criteria scheme, but each sum
+ * recomputes r_ij from the current positions (F = 0 beyond the support), and the skin (twice
+ * the farthest a particle moves in the step, the host's) holds every pair that comes within the
+ * support during the step. Without it the pairs that closed in during a step went unseen until
+ * its end: the coarse Lobovsky dam break (cases/dam_break.lua, n = 20) clustered where its surge
+ * hit the far wall (t = 0.385 s; pairs 0.075 dr apart).
  *
  * B_i = (−Σ_j r_ij ⊗ ∇W_ij V_j)^−1 (eq 20) over every neighbour. Where the support is truncated
  * (a free surface, a lone particle) the matrix A = −Σ r_ij ⊗ ∇W_ij V_j becomes singular; the
@@ -83,10 +86,11 @@ realv wcr_apply(real4 b, realv v)
  * the wall-adjacent layers of a wall model; −1: no dummy particle within the support). */
 __kernel void wcr_config(const uint n, const struct grid g, __global const uint *cell_start,
                          __global const realv *pos, __global const real *vol,
-                         __global const uint *kind, const real dr, const real sigma0,
-                         const real rho0, const uint reinit, __global uint *nlist,
-                         __global uint *ncount, __global real4 *bmat, __global real *sigma,
-                         __global real *rho, __global real *wall_dist, __global uint *flags)
+                         __global const uint *kind, const real rlist2, const real dr,
+                         const real sigma0, const real rho0, const uint reinit,
+                         __global uint *nlist, __global uint *ncount, __global real4 *bmat,
+                         __global real *sigma, __global real *rho, __global real *wall_dist,
+                         __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -104,15 +108,16 @@ __kernel void wcr_config(const uint n, const struct grid g, __global const uint 
   while (neigh_next(&it, &g, cell_start, &j)) {
     const realv r = x - (pos[j] + it.shift);
     const real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    if (r2 >= rlist2 || j == i) continue;
+    if (c < WCR_MAXN) row[c] = j;
+    ++c;
+    if (r2 >= SMOOTH_SUPPORT2) continue;
     const real rr = sqrt(r2), vj = vol[j], f = smoothing_f(rr) * vj;
     axx -= f * r.x * r.x; /* −Σ r ⊗ ∇W V (eq 20) */
     axy -= f * r.x * r.y;
     ayy -= f * r.y * r.y;
     s += smoothing_w(rr);
     if (kind[j] == WCR_DUMMY) dmin = fmin(dmin, rr);
-    if (c < WCR_MAXN) row[c] = j;
-    ++c;
   }
   if (c > WCR_MAXN) {
     flags_raise(flags, CLSPH_FLAG_NEIGH_OVERFLOW);
@@ -138,7 +143,8 @@ __kernel void wcr_count_pairs(const uint n, __global const uint *kind, __global 
   __local real s[REDUCE_WG];
   const uint l = get_local_id(0);
   real c = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) c += kind[i] == WCR_FLUID ? (real)ncount[i] : R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0))
+    c += kind[i] == WCR_FLUID ? (real)ncount[i] : R(0.0);
   s[l] = c;
   reduce_local_sum(s);
   if (l == 0) partial[get_group_id(0)] = s[0];

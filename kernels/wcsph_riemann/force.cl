@@ -15,9 +15,8 @@ __kernel void wcr_wall_force(const uint n, const struct grid g, __global const r
                              __global const uint *ncount, __global const real4 *bmat,
                              __global const realv *acc_prior, __global const uint *wall,
                              __global const uint *mask, const uint nmask, const real dr,
-                             const real rho0,
-                             const real c0, const real mu, const real inv_lambda, const real h,
-                             __global real4 *out)
+                             const real rho0, const real c0, const real mu, const real inv_lambda,
+                             const real h, __global real4 *out)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -49,7 +48,8 @@ __kernel void wcr_wall_force(const uint n, const struct grid g, __global const r
 #else
     fp += f * (rho0 * beta * u) * r;
 #endif
-    fv -= R(2.0) * mu * inv_lambda * f * wcr_visc_jump(kj, x, x - r, vi, vel[j], wall_dist[j], wall_normal[j], dr);
+    fv -= R(2.0) * mu * inv_lambda * f *
+          wcr_visc_jump(kj, x, x - r, vi, vel[j], wall_dist[j], wall_normal[j], dr);
   }
   o = (real4)(vol_i * fp.x, vol_i * fp.y, vol_i * fv.x, vol_i * fv.y);
   out[i] = o;

@@ -95,17 +95,17 @@ static enum clsph_status option_choice(const struct scene *s, const char *key,
       *out = k;
       goto done;
     }
-    used += (size_t)snprintf(list + used, used < sizeof list ? sizeof list - used : 0,
-                             "%s\"%s\"", k ? ", " : "", names[k]);
+    used += (size_t)snprintf(list + used, used < sizeof list ? sizeof list - used : 0, "%s\"%s\"",
+                             k ? ", " : "", names[k]);
   }
-  CLSPH_CHECK(0, CLSPH_E_INPUT, "%s: wcsph-riemann option %s must be one of %s", s->case_path,
-              key, list);
+  CLSPH_CHECK(0, CLSPH_E_INPUT, "%s: wcsph-riemann option %s must be one of %s", s->case_path, key,
+              list);
 done:
   return st;
 }
 
-static enum clsph_status option_number(const struct scene *s, const char *key, double lo,
-                                       double hi, const char *what, double *v)
+static enum clsph_status option_number(const struct scene *s, const char *key, double lo, double hi,
+                                       const char *what, double *v)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene_option *o = option(s, key);
@@ -145,11 +145,11 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w)
   CLSPH_TRY(option_number(sc, "transport_coefficient", 0.0, 0.3, "α of eq 25", &w->tvf_alpha));
   w->cfl_ad = 0.25;
   w->cfl_ac = 0.6;
-  CLSPH_TRY(option_number(sc, "advection_cfl", 1e-3, 1.0, "a CFL number", &w->cfl_ad));
+  /* at most the paper's 0.25: the neighbour lists' skin covers the moves of such a step */
+  CLSPH_TRY(option_number(sc, "advection_cfl", 1e-3, 0.25, "a CFL number", &w->cfl_ad));
   /* beyond c0 Δt = h the Riemann sub-step outruns the support */
   CLSPH_TRY(option_number(sc, "acoustic_cfl", 1e-3, 1.0, "a CFL number", &w->cfl_ac));
-  CLSPH_TRY(option_number(sc, "background_pressure", 0.0, HUGE_VAL, "a pressure in Pa",
-                          &w->p_bg));
+  CLSPH_TRY(option_number(sc, "background_pressure", 0.0, HUGE_VAL, "a pressure in Pa", &w->p_bg));
   /* the sound speed: 10 U by default, and the Mach number it implies */
   struct sound_scale vs;
   sound_velocity_scale(sc, &sim->geom, &vs);
@@ -197,11 +197,22 @@ done:
   return st;
 }
 
-/* the stride of the neighbour list: twice the neighbours of a full support on the lattice (π q²,
- * q = support/dr: 21 at h = 1.3 dr), and 8, to a multiple of 4 */
+/* the skin of the neighbour list for an advection step dt at speed v: twice the farthest a
+ * particle goes, with 10% for the speeds gained during the step, at most what the grid's cells
+ * cover (2.2 CFL_ad h max(cfl, 1) at CFL_ad = 0.25: WCR_SKIN of the support, scheme_ops) */
+#define WCR_SKIN 0.275
+static double list_skin(const struct sim *sim, double v, double dt)
+{
+  const double most = WCR_SKIN * fmax(sim->scene->cfl, 1.0) * sim->sm.support;
+  return fmin(2.2 * v * dt, most);
+}
+
+/* the stride of the neighbour list: twice the neighbours of a full list radius (support and the
+ * largest skin) on the lattice (π q², q = radius/dr: 40 at h = 1.3 dr), and 8, to a multiple of
+ * 4 */
 static long list_stride(const struct sim *sim)
 {
-  const double q = sim->sm.support / sim->scene->dr;
+  const double q = (sim->sm.support + list_skin(sim, HUGE_VAL, 1.0)) / sim->scene->dr;
   return 4 * (((long)ceil(2.0 * 3.141592653589793 * q * q) + 8 + 3) / 4);
 }
 
@@ -278,7 +289,8 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   CLSPH_TRY(add_field(sim, "p", buf + geo->n, 1, &w->f_p));
   /* volumes: m/ρ for the fluid, dr² for the dummy particles */
   for (size_t i = 0; i < geo->n; ++i)
-    buf[i] = geo->kind[i] == KIND_FLUID ? (real)(w->mass / (double)buf[i]) : (real)(sc->dr * sc->dr);
+    buf[i] =
+        geo->kind[i] == KIND_FLUID ? (real)(w->mass / (double)buf[i]) : (real)(sc->dr * sc->dr);
   CLSPH_TRY(kern_write(sim->dev, pset_mem(ps, sim->f_vol), geo->n * sizeof(real), buf));
   CLSPH_TRY(add_field(sim, "drho", NULL, 0, &w->f_drho));
   /* wall_dist: the depth of a dummy particle behind its wall; a fluid particle's distance from
@@ -291,14 +303,14 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   w->f_ard = -1;
   if (w->ard) CLSPH_TRY(add_field(sim, "ard", NULL, 1, &w->f_ard));
   for (size_t i = 0; i < geo->n; ++i)
-    ubuf[i] = geo->kind[i] == KIND_DUMMY && geo->group[i] >= 0 ? (cl_uint)geo->group[i]
-                                                               : 0xffffffffu;
+    ubuf[i] =
+        geo->kind[i] == KIND_DUMMY && geo->group[i] >= 0 ? (cl_uint)geo->group[i] : 0xffffffffu;
   CLSPH_TRY(pset_add(ps, sim->dev, "wall", sizeof(cl_uint), ubuf, &w->f_wall));
   pset_describe(ps, w->f_wall, PF_UINT, 1, 0);
   /* the advection step's buffers (the particles' current order; remade every step) */
   const size_t cap = ps->cap, rv = 2 * sizeof(real), groups = sim_reduce_groups(cap);
-  CLSPH_TRY(kern_buffer(sim->dev, cap * w->maxn * sizeof(cl_uint), NULL, &w->d_nlist,
-                        "neighbour list"));
+  CLSPH_TRY(
+      kern_buffer(sim->dev, cap * w->maxn * sizeof(cl_uint), NULL, &w->d_nlist, "neighbour list"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(cl_uint), NULL, &w->d_ncount, "neighbour counts"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * 4 * sizeof(real), NULL, &w->d_bmat, "correction B"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(real), NULL, &w->d_sigma, "kernel sums"));
@@ -342,17 +354,18 @@ done:
 #define ARG(k, i, x) CLSPH_TRY(kern_set_at((k), (i)++, KARG(x)))
 
 /* 1. the configuration (config.cl): list, B, kernel sums, and the density re-set with `reinit` */
-static enum clsph_status configure(struct sim *sim, struct wcr *w, cl_uint reinit)
+static enum clsph_status configure(struct sim *sim, struct wcr *w, cl_uint reinit, double skin)
 {
   enum clsph_status st = CLSPH_OK;
+  const real rlist2 = (real)((sim->sm.support + skin) * (sim->sm.support + skin));
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n;
   const real dr = (real)sim->scene->dr, s0 = (real)w->sigma0, rho0 = (real)sim->scene->rho0;
   cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
   cl_mem kind = pset_mem(ps, sim->f_kind), rho = pset_mem(ps, w->f_rho);
   cl_mem wd = pset_mem(ps, w->f_wdist);
-  CLSPH_TRY(KERN_SET(w->k_config, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
-                     KARG(pos), KARG(vol), KARG(kind), KARG(dr), KARG(s0), KARG(rho0),
+  CLSPH_TRY(KERN_SET(w->k_config, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
+                     KARG(vol), KARG(kind), KARG(rlist2), KARG(dr), KARG(s0), KARG(rho0),
                      KARG(reinit), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
                      KARG(w->d_sigma), KARG(rho), KARG(wd), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_config, ps->n, NULL));
@@ -384,10 +397,10 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   cl_mem rho = pset_mem(ps, w->f_rho), wd = pset_mem(ps, w->f_wdist);
   cl_mem wn = pset_mem(ps, w->f_wnormal);
   CLSPH_TRY(KERN_SET(w->k_adv, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
-                     KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
-                     KARG(w->d_sigma), KARG(rdr), KARG(mu), KARG(ilam), KARG(accel), KARG(tvf_a), KARG(tvf_m),
-                     KARG(bulk), KARG(rho0), KARG(c0), KARG(rh), KARG(w->d_prior),
-                     KARG(w->d_shift), KARG(ard)));
+                     KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount),
+                     KARG(w->d_bmat), KARG(w->d_sigma), KARG(rdr), KARG(mu), KARG(ilam),
+                     KARG(accel), KARG(tvf_a), KARG(tvf_m), KARG(bulk), KARG(rho0), KARG(c0),
+                     KARG(rh), KARG(w->d_prior), KARG(w->d_shift), KARG(ard)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_adv, ps->n, NULL));
 done:
   return st;
@@ -402,14 +415,15 @@ static enum clsph_status drift(struct sim *sim, struct wcr *w, double dt_v, doub
   const cl_uint n = (cl_uint)ps->n;
   const real a = (real)dt_v, b = (real)dt_x, c = (real)dt_rho, mass = (real)w->mass;
   const real rho0 = (real)sim->scene->rho0, c0 = (real)w->c0, pbg = (real)w->p_bg;
+  const real surface = w->reinit == WCR_REINIT_FREE ? (real)0.95 : 0;
   cl_mem kind = pset_mem(ps, sim->f_kind), pos = pset_mem(ps, sim->f_pos);
   cl_mem vel = pset_mem(ps, sim->f_vel), rho = pset_mem(ps, w->f_rho);
   cl_mem drho = pset_mem(ps, w->f_drho), vol = pset_mem(ps, sim->f_vol);
   cl_mem p = pset_mem(ps, w->f_p);
   CLSPH_TRY(KERN_SET(w->k_drift, KARG(n), KARG(sim->grid.geom), KARG(kind), KARG(a), KARG(b),
-                     KARG(c), KARG(w->d_acc), KARG(use_shift), KARG(w->d_shift), KARG(mass),
-                     KARG(rho0), KARG(c0), KARG(pbg), KARG(pos), KARG(vel), KARG(rho), KARG(drho),
-                     KARG(vol), KARG(p), KARG(sim->d_flags)));
+                     KARG(c), KARG(w->d_acc), KARG(use_shift), KARG(w->d_shift), KARG(w->d_sigma),
+                     KARG(surface), KARG(mass), KARG(rho0), KARG(c0), KARG(pbg), KARG(pos),
+                     KARG(vel), KARG(rho), KARG(drho), KARG(vol), KARG(p), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_drift, ps->n, NULL));
 done:
   return st;
@@ -434,10 +448,10 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(mu), KARG(h),
                      KARG(w->d_acc)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
-  CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel),
-                     KARG(w->d_acc), KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p),
-                     KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_prior), KARG(rho0), KARG(c0),
-                     KARG(grav), KARG(drho)));
+  CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(w->d_acc),
+                     KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist),
+                     KARG(w->d_ncount), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(grav),
+                     KARG(drho)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_cont, ps->n, NULL));
 done:
   return st;
@@ -465,7 +479,7 @@ static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
   enum clsph_status st = CLSPH_OK;
   struct wcr *w = state;
   const double h = sim->sm.h;
-  CLSPH_TRY(configure(sim, w, w->reinit));
+  CLSPH_TRY(configure(sim, w, w->reinit, list_skin(sim, fmax(w->vmax, w->u_scale), dt)));
   CLSPH_TRY(advection(sim, w));
   /* the acoustic sub-steps: equal, at most CFL_ac h/(c0 + |v|max) each */
   const double dt_ac = w->cfl_ac * h / (w->c0 + w->vmax);
@@ -495,7 +509,7 @@ static enum clsph_status wcr_max_dt(struct sim *sim, void *state, double *dt)
   CLSPH_TRY(sim_max_speed(sim, KIND_FLUID, &vmax));
   w->vmax = vmax;
   const double v = fmax(vmax, w->u_scale);
-  double d = v > 0.0 ? h / v : HUGE_VAL;     /* eq 27 */
+  double d = v > 0.0 ? h / v : HUGE_VAL;       /* eq 27 */
   if (s->nu > 0.0) d = fmin(d, h * h / s->nu); /* eq 27 */
   if (!isfinite(d)) d = h / w->c0;             /* nothing moves: one acoustic CFL */
   *dt = w->cfl_ad * d;
@@ -526,7 +540,7 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   CLSPH_TRY(kern_write(sim->dev, w->d_mask, nmask * sizeof *mask, mask));
   /* before the first step (the initial output) the list and B are made without touching ρ */
   if (!w->configured) {
-    CLSPH_TRY(configure(sim, w, WCR_REINIT_OFF));
+    CLSPH_TRY(configure(sim, w, WCR_REINIT_OFF, 0.0));
     CLSPH_TRY(advection(sim, w));
   }
   const real rho0 = (real)sc->rho0, c0 = (real)w->c0, mu = (real)(sc->rho0 * sc->nu);
@@ -537,10 +551,10 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   cl_mem wall = pset_mem(ps, w->f_wall), wd = pset_mem(ps, w->f_wdist);
   cl_mem wn = pset_mem(ps, w->f_wnormal);
   CLSPH_TRY(KERN_SET(w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
-                     KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
-                     KARG(w->d_bmat), KARG(w->d_prior), KARG(wall), KARG(w->d_mask), KARG(nmask),
-                     KARG(rdr), KARG(rho0), KARG(c0), KARG(mu), KARG(ilam), KARG(h),
-                     KARG(w->d_force)));
+                     KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist),
+                     KARG(w->d_ncount), KARG(w->d_bmat), KARG(w->d_prior), KARG(wall),
+                     KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0), KARG(mu),
+                     KARG(ilam), KARG(h), KARG(w->d_force)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
   memset(out, 0, sizeof *out);
@@ -579,6 +593,7 @@ const struct scheme_ops scheme_wcsph_riemann = {
     .wall_model = "dummy",
     .smoothing = "wendland",
     .h_over_dr = 1.3,
+    .support_skin = WCR_SKIN,
     .fill_fields = SCHEME_FILL_PRESSURE | SCHEME_FILL_DENSITY,
     .options = options,
     .define = wcr_define,
