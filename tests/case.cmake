@@ -674,3 +674,5 @@ clsph_run_test(run_dam_break_riemann ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
                SETS riemann=1
                BOUNDS "front_over_ritter>0.5" "front_over_ritter<1" "floor_speed_max<1"
                       "volume_ratio>0.999")
+clsph_cli_test(riemann_bad_pressure ARGS info ${CASE_DIR}/bad_riemann_pressure.lua RC 2
+               REGEX "background_pressure must be a pressure in Pa, from 0 to 1e\\+12")

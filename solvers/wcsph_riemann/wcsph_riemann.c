@@ -118,8 +118,9 @@ done:
   return st;
 }
 
-/* the options, with the checks on the sound speed and the two time steps */
-static enum clsph_status read_options(const struct sim *sim, struct wcr *w)
+/* the options, with the checks on the sound speed and the two time steps; `verbose`: log what
+ * was chosen (once, from create; define reads them first to choose the switches) */
+static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int verbose)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *sc = sim->scene;
@@ -149,7 +150,7 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w)
   CLSPH_TRY(option_number(sc, "advection_cfl", 1e-3, 0.25, "a CFL number", &w->cfl_ad));
   /* beyond c0 Δt = h the Riemann sub-step outruns the support */
   CLSPH_TRY(option_number(sc, "acoustic_cfl", 1e-3, 1.0, "a CFL number", &w->cfl_ac));
-  CLSPH_TRY(option_number(sc, "background_pressure", 0.0, HUGE_VAL, "a pressure in Pa", &w->p_bg));
+  CLSPH_TRY(option_number(sc, "background_pressure", 0.0, 1e12, "a pressure in Pa", &w->p_bg));
   /* the sound speed: 10 U by default, and the Mach number it implies */
   struct sound_scale vs;
   sound_velocity_scale(sc, &sim->geom, &vs);
@@ -174,7 +175,7 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w)
               "scale U = %g m/s (%s): Mach U/c0 = %.3g lets the density vary by about %.0f%%; a "
               "weakly-compressible flow needs Mach 0.1 or less (c0 >= %g m/s)",
               sc->case_path, w->c0, vs.u, vs.what, mach, 100.0 * mach * mach, 10.0 * vs.u);
-  if (mach > 0.1)
+  if (verbose && mach > 0.1)
     log_warn("%s: wcsph-riemann: Mach U/c0 = %.3g (U = %g m/s from %s, c0 = %g m/s): density "
              "varies by about %.1f%%",
              sc->case_path, mach, vs.u, vs.what, w->c0, 100.0 * mach * mach);
@@ -189,10 +190,12 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w)
                 "advection_cfl or lower acoustic_cfl)",
                 sc->case_path, w->cfl_ad, w->cfl_ac, ratio, vs.u, w->c0);
   }
-  log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), transport "
-           "velocity %s, ARD %s, density %s, walls' dissipation %s",
-           w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach, tvf_names[w->tvf],
-           w->ard ? "on" : "off", dens_names[reinit], wall_names[w->wall_full]);
+  if (verbose)
+    log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), transport "
+             "velocity %s, ARD %s, density %s, walls' dissipation %s",
+             w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach,
+             tvf_names[w->tvf], w->ard ? "on" : "off", dens_names[reinit],
+             wall_names[w->wall_full]);
 done:
   return st;
 }
@@ -222,7 +225,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   struct wcr w;
   memset(&w, 0, sizeof w);
   /* the options decide the switches; read_options reports a bad one here, before the build */
-  CLSPH_TRY(read_options(sim, &w));
+  CLSPH_TRY(read_options(sim, &w, 0));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_MAXN", list_stride(sim)));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_ARD", w.ard));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_FULL", w.wall_full));
@@ -252,7 +255,7 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   real *buf = NULL;
   cl_uint *ubuf = NULL;
   CLSPH_CHECK(w != NULL, CLSPH_E_NOMEM, "wcsph-riemann: out of memory");
-  CLSPH_TRY(read_options(sim, w));
+  CLSPH_TRY(read_options(sim, w, 1));
   for (size_t i = 0; i < geo->n; ++i)
     CLSPH_CHECK(geo->kind[i] == KIND_FLUID || geo->kind[i] == KIND_DUMMY, CLSPH_E_UNSUPPORTED,
                 "%s: wcsph-riemann has no %s yet (particle kind %d)", sc->case_path,
