@@ -1,54 +1,58 @@
-/* open.h: entry and exit sections (inflow { } and outflow { } of a case) shared by the schemes
- * that have them: a velocity inlet and an outlet with n·∇u = 0 or a prescribed profile, whose
- * layer particles are recycled so that the count of particles never changes and nothing leaves
- * the device (Hosseini & Feng 2011 sec 3.3.2-3.3.3; device code kernels/common/open.cl, which
- * has the formulas). Used by isph-rotational (solvers/isph_rotational: its own φ and p rows of
- * the layers are kernels/isph_rotational/open.cl).
+/* open.h: entry and exit sections (inflow { } and outflow { } of a case), shared by the schemes
+ * that have them: a velocity inlet, and an outlet with n·∇u = 0 or a prescribed profile, made of
+ * layers of particles outside the fluid that are recycled, so that the count of particles never
+ * changes and nothing leaves the device (Hosseini & Feng 2011 sec 3.3.2-3.3.3; the formulas are
+ * in kernels/common/open.cl). isph-rotational uses it (solvers/isph_rotational; the φ and p rows
+ * of its layers are kernels/isph_rotational/open.cl).
  *
- * What it owns: the section table (d_sec), and per particle the section of a layer particle
- * ("section"), its velocity progenitor ("vel_src": the fluid particle it copies at a natural exit,
- * itself elsewhere) and its row's first fluid particle ("p_near": the fluid particle nearest to
- * the point δr/2 inside the section level with it; −: itself when there is none). The layers'
- * velocity lives in a realv field of the scheme's that holds the geometry's velocities (a dummy
- * scheme's wall velocity), or in one open_create adds. Kinds: KIND_INFLOW and KIND_OUTFLOW of
- * host/scene/geometry.h (3 and 4).
+ * What it owns: the section table (d_sec) and three particle fields: "section" (the section of a
+ * layer particle), "vel_src" (its velocity progenitor: the fluid particle it copies at a natural
+ * exit, itself elsewhere) and "p_near" (its row's first fluid particle: the fluid particle nearest
+ * to the point level with it δr/2 inside the section; itself when there is none). The layers'
+ * velocity is kept in a realv field that holds the geometry's velocities (geom.v): the scheme's
+ * own (a dummy scheme's wall velocity) or one open_create adds. Layer particles are of kinds
+ * KIND_INFLOW (3) and KIND_OUTFLOW (4) of host/scene/geometry.h; they keep their volume and id.
  *
- * How a scheme uses it (the order is what makes it right):
- *   define:  open_define(sim, o), and OPEN_SOURCES in its sources (before its own kernels that
- *            use open_section_load or open_nearest_fluid);
- *   create:  open_create(sim, f_u, &sections) once its own fields exist (nothing is made for a
- *            scene without sections, and then every call below does nothing);
- *   max_dt:  the CFL speed includes open_speed(scene) (a fluid at rest behind an entry would
+ * How a scheme uses it:
+ *   define:  open_define(sim, o); OPEN_SOURCES in its sources, before its own kernels (which may
+ *            call open_section_load and open_nearest_fluid under #if OPEN_SECTIONS);
+ *   create:  open_create(sim, f_u, &o) after its own fields (for a scene without sections it
+ *            makes nothing, and every call below then does nothing); the scheme accepts particles
+ *            of kinds KIND_INFLOW and KIND_OUTFLOW;
+ *   max_dt:  the CFL speed is at least open_speed(scene) (a fluid at rest behind an entry would
  *            otherwise get only the viscous bound);
- *   step:    with the particles sorted and the grid current:
- *     1. open_layer_velocity  before any kernel that reads the layers' velocity (the dummies'
- *                             extrapolation, the viscous term, the continuity equation): the
- *                             entry layers get the prescribed u_in, the exit layers their
- *                             progenitor's velocity (n·∇u = 0) or the prescribed exit profile;
- *     2. the scheme's own state of the layers, from "p_near" and "vel_src";
- *     3. the scheme's kernels: the layer particles are neighbours of the fluid like fluid
- *        particles, but the scheme never integrates them;
- *     4. the layers' motion x += δt u (open_move, or the scheme's own move kernel);
- *     5. open_recycle after the last motion of the step, then open_recycle_copy for each of the
- *        scheme's fields that a recycled particle must take over from the entry particle it
- *        replaces (positions change: the next step's sort bins them).
- *   A weakly-compressible scheme (density ρ and pressure p per particle, dummy walls) calls, each
- *   step:
- *       open_layer_velocity(&o, sim);                       velocity of every layer particle
- *       open_layer_scalar(&o, sim, d_rho, &rho0);          ρ: entry from the row's first fluid
- *       open_layer_scalar(&o, sim, d_p, &zero);            p: particle, exit ρ0 and p = 0
- *       ... the dummies' state (their image may fall among layer particles: treat the layers as
- *           fluid there), dρ/dt and du/dt of the fluid over all neighbours, layers included;
- *           its update kernels skip KIND_INFLOW and KIND_OUTFLOW (ρ, p and u stay as set) ...
- *       open_move(&o, sim, dt);                            the layers: x += δt u
- *       open_recycle(&o, sim);
- *       open_recycle_copy(&o, sim, f_rho); ... the same for p and any state carried between
- *                                               steps (a half step's ρ or u)
- *   With several stages or acoustic sub-steps within one sort, open_layer_velocity runs once
- *   after the sort (it searches the grid), open_layer_scalar before each stage that reads the
- *   layers (its rows' fluid particles are those of the step's start), open_move with each
- *   sub-step's δt, open_recycle once at the end. A scheme whose p follows from ρ by its equation
- *   of state sets ρ only (ρ0 gives p = 0 at the exit only without a background pressure). */
+ *   step, with the particles sorted and the grid current, in this order:
+ *     1. open_layer_velocity, before any kernel that reads the layers' velocity (the dummies'
+ *        extrapolation, the viscous term, the continuity equation): the entry layers get their
+ *        prescribed u_in, the exit layers their progenitor's velocity (n·∇u = 0) or the
+ *        prescribed exit profile, and "p_near" and "vel_src" are set;
+ *     2. the scheme's own state of the layers (its pressure, density, ...), from "p_near";
+ *     3. the scheme's kernels: the layer particles are the fluid's neighbours like fluid
+ *        particles (and count as fluid in a dummy's extrapolation), but nothing integrates them;
+ *     4. the layers' motion x += δt u: open_move, or the scheme's own move kernel;
+ *     5. open_recycle after the step's last motion, then open_recycle_copy for each field of the
+ *        scheme's that a recycled particle must take over from the entry particle it replaces
+ *        (positions change: the next step's sort bins them).
+ *
+ * A weakly-compressible scheme (ρ and p per particle, dummy walls, a zero-pressure outlet): the
+ * entry layers carry the prescribed velocity and ρ and p from the nearest fluid (a copy of the
+ * row's first fluid particle: n·∇ρ = n·∇p = 0), the exit layers their progenitor's velocity and
+ * ρ = ρ0, p = 0. Each step:
+ *     open_layer_velocity(&o, sim);                the velocity of every layer particle
+ *     open_layer_scalar(&o, sim, d_rho, &rho0);    ρ: entry from the row's first fluid particle,
+ *     open_layer_scalar(&o, sim, d_p, &zero);      p: exit ρ0 and 0
+ *     ... the dummies' state (their image may lie among layer particles), dρ/dt and du/dt of the
+ *         fluid over all its neighbours, layers included; the update kernels change only the
+ *         fluid's ρ, p and u ...
+ *     open_move(&o, sim, dt);                      the layers: x += δt u
+ *     open_recycle(&o, sim);
+ *     open_recycle_copy(&o, sim, f_rho);           and f_p, and any state carried from one step
+ *                                                  to the next (an earlier stage's ρ or u)
+ * With several stages or acoustic sub-steps within one sort: open_layer_velocity once after the
+ * sort (it searches the grid), open_layer_scalar before each stage that reads the layers (their
+ * rows' fluid particles stay those found after the sort), open_move with each sub-step's δt,
+ * open_recycle once at the end. A scheme whose p follows from ρ by its equation of state may set
+ * ρ alone (then ρ0 gives p = 0 at the exit only without a background pressure). */
 #ifndef CLSPH_OPEN_H
 #define CLSPH_OPEN_H
 
