@@ -457,7 +457,9 @@ done:
 }
 
 /* After the motion: the recycling (solvers/open moves position, kind, section, velocity and
- * wall_vel), then the rest of a recycled particle's state from the entry particle it replaces. */
+ * wall_vel), then the rest of a recycled particle's state from the entry particle it replaces:
+ * u^{k−1} (an entry particle's is its wall_vel, rot_open_mirrors), the wall normal (the
+ * section's n), p and φ. */
 static enum clsph_status rot_open_recycle(struct sim *sim, struct rot *r)
 {
   enum clsph_status st = CLSPH_OK;
