@@ -71,8 +71,8 @@ struct sim {
    * sum over this run: a pair loop over n particles with on average k neighbours inside the
    * support counts n k */
   double pairs, pairs_sum;
-  /* entry layer particles left waiting for a recycled exit particle (isph-rotational's open
-   * boundaries) at the last step, and the most at one step over this run; −1: no entry */
+  /* entry layer particles left waiting for a recycled exit particle (the entry and exit sections
+   * of solvers/open) at the last step, and the most at one step over this run; −1: no entry */
   long open_waiting, open_waiting_max;
   const char *failed_solve; /* the solve whose failure stops a run (schemes set it when it is
                              * not the pressure's; NULL: "pressure") */

@@ -3,7 +3,7 @@
  *   fluid row i:  Σ_j 2 V_j (x_i − x_ĵ) r_ij·L_i∇_iW_ij / (r_ij² + η²)
  *                 ĵ = j for a fluid neighbour, ĵ = mirror[j] for a dummy: the dummy takes the
  *                 value of the fluid particle at its image (Neumann by propagation, sec 3.3.1);
- *                 with sections (-D ROT_OPEN=1) the term is (x_i − c_j x_ĵ): an entry layer
+ *                 with sections (-D OPEN_SECTIONS=1) the term is (x_i − c_j x_ĵ): an entry layer
  *                 copies (c_j = 1, Neumann), an exit layer reflects oddly (c_j = h_j/h_ĵ < 0:
  *                 Dirichlet x = 0 at the exit, eq 19; open.cl)
  *   dummy row d:  x_d (identity; its right-hand side is 0 and its value is set afterwards by
@@ -12,7 +12,7 @@
  * dummy neighbour's column is its mirror, so a row may name a column twice (the product sums).
  * A neighbour whose mirror is i itself adds (1 − c_j) to the diagonal.
  * The pair term is common/poisson.cl's poisson_pair (the Morris Laplacian, with L_i). */
-#if ROT_OPEN
+#if OPEN_SECTIONS
 #define ROT_COEF(j) coef[j]
 #else
 #define ROT_COEF(j) R(1.0)
@@ -98,7 +98,7 @@ __kernel void rot_ppe_diag(OP_ARGS, __global const uint *kind, __global const ui
     real r2 = dot(r, r);
     if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
     if (mirror[j] == i) {
-#if ROT_OPEN
+#if OPEN_SECTIONS
       s += poisson_pair(L_i, vol[j], r, r2) * (R(1.0) - coef[j]);
 #endif
       continue;

@@ -5,7 +5,8 @@
  *   homogeneous: p^{k+1} = φ (the equation was solved for p, eq 7)
  * u^{k−1} ← u^k for the next BDF2 step. The fluid then moves with r += δt (u + ε_x ΔU),
  * ΔU_i = Σ_j V_j (u_j − u_i) W_ij over the fluid (XSPH, ε_x = 0 unless the case asks for it);
- * entry and exit layer particles move with their own (prescribed or copied) velocity, open.cl. */
+ * entry and exit layer particles move with their own (prescribed or copied) velocity
+ * (common/open.cl). */
 __kernel void rot_project(OP_ARGS, __global const uint *kind, __global const real *phi,
                           __global const realv *ustar, __global const real *div, const real coef,
                           const real mu, __global realv *vel, __global realv *vel_prev,

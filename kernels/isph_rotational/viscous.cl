@@ -13,15 +13,15 @@
  *                   (or the value of the particle nearest to it, -D ROT_WALL_IMAGE=1), so the
  *                   dummies extrapolate the new velocity, not the old one
  *   entry layer:    x = u_in (prescribed)
- *   exit layer:     x_e − x_src(e) = 0 (n·∇u = 0 from its progenitor, open.cl), or
+ *   exit layer:     x_e − x_src(e) = 0 (n·∇u = 0 from its progenitor, common/open.cl), or
  *                   x = the prescribed profile (src(e) = e)
  * The right-hand side is rot_predict's ũ with ν = 0 (u_wall on the dummies and layers, set there
  * and by open.cl), except 0 on the exit rows that copy. The operator is the same for both
  * components: stored once per step in the layout of csr.cl and solved by solvers/pressure.
  * After the solve the fluid takes x; the dummies keep ũ = u_wall for ∇·ũ (sec 3.3.3) and the
  * exit layers their progenitor's ũ (rot_open_ustar). */
-#ifndef ROT_OPEN
-#define ROT_OPEN 0
+#ifndef OPEN_SECTIONS
+#define OPEN_SECTIONS 0
 #endif
 
 /* Row counts in the layout of csr.cl (the diagonal first): a fluid row names its neighbours, a
@@ -47,7 +47,7 @@ __kernel void rot_visc_count(const uint n, const struct grid g, __global const u
       if (dot(r, r) < SMOOTH_SUPPORT2) ++c;
     }
   }
-#if ROT_OPEN
+#if OPEN_SECTIONS
   else if (ki == ROT_OUTFLOW && src[i] != i) {
     c = 2;
   }
@@ -118,7 +118,7 @@ __kernel void rot_visc_coeffs(OP_ARGS, __global const uint *kind, __global const
     return;
   }
   val[r0] = R(1.0);
-#if ROT_OPEN
+#if OPEN_SECTIONS
   if (ki == ROT_OUTFLOW && src[i] != i) { /* x_e − x_src */
     col[k] = src[i];
     val[k] = R(-1.0);
@@ -136,7 +136,7 @@ __kernel void rot_visc_split(const uint n, __global const uint *kind, __global c
   const uint i = get_global_id(0);
   if (i >= n) return;
   realv b = ustar[i];
-#if ROT_OPEN
+#if OPEN_SECTIONS
   if (kind[i] == ROT_OUTFLOW && src[i] != i) b = (realv)(R(0.0));
 #endif
   bx[i] = b.x;

@@ -1,7 +1,7 @@
 /* walls.cl (isph-rotational): dummy wall particles (Hosseini & Feng 2011 sec 3.3.1).
  *
  * Kinds: ROT_FLUID (moves), ROT_DUMMY (fixed, inside the solid), ROT_INFLOW and ROT_OUTFLOW
- * (entry and exit layers, open.cl). A dummy d at distance dist_d
+ * (entry and exit layers, kernels/common/open.cl). A dummy d at distance dist_d
  * from the wall with unit normal n_d into the fluid has its image x_d + 2 dist_d n_d in the fluid.
  *   velocity (Morris et al. 1997 extrapolation; "the negative of the interpolated velocity of
  *   its image", sec 3.3.1): u_d = 2 u_wall − Σ_f V_f u_f W / Σ_f V_f W at the image, fluid only
@@ -22,8 +22,8 @@
 #endif
 #define ROT_FLUID   0u
 #define ROT_DUMMY   2u
-#define ROT_INFLOW  3u /* entry layer particle (open.cl) */
-#define ROT_OUTFLOW 4u /* exit layer particle (open.cl) */
+#define ROT_INFLOW  3u /* entry layer particle (common/open.cl: OPEN_INFLOW) */
+#define ROT_OUTFLOW 4u /* exit layer particle (common/open.cl: OPEN_OUTFLOW) */
 
 real rot_wrap(real x, real lo, real len)
 {

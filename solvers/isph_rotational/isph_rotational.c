@@ -3,7 +3,7 @@
  * (option projection = "homogeneous"), on dummy-particle walls. One time step (sec 3.2):
  *   1. L_i, the Oger correction over all neighbours (eq 25, common/operators.cl)
  *   2. dummy velocities extrapolated from the fluid, mirrors for Neumann (sec 3.3.1, walls.cl);
- *      the entry and exit layers' velocities, mirrors and coefficients (open.cl)
+ *      the entry and exit layers' velocities (solvers/open), mirrors and coefficients (open.cl)
  *   3. ũ explicitly: a0 ũ = a1 u^k − a2 u^{k−1} + δt (ν∇²u^k − ∇p^k/ρ + g)  (eq 9; 5 without
  *      ∇p^k), BDF2 coefficients for variable steps (predict.cl); or, with viscous = "implicit",
  *      with ν∇²ũ: one linear solve per component (viscous.cl), no viscous bound on δt
@@ -13,13 +13,14 @@
  *      φ = 0 (eq 19) makes it regular
  *   5. u^{k+1} = ũ − δt/(a0 ρ) ∇φ; p^{k+1} = p^k + φ − µ∇·ũ (eqs 10-11); homogeneous: p = φ
  *   6. r += δt u^{k+1} (+ XSPH), then Xu shifting (sec 3.4, shift.cl); then the recycling at
- *      the entry and exit sections (open.cl)
- * Entry and exit sections (sec 3.3.2-3.3.3, eqs 16-20; kernels/isph_rotational/open.cl, built
- * with -D ROT_OPEN=1 only for scenes that have them, which need an inflow and an outflow
- * together): entry layers carry the prescribed profile and move with it, ũ = u_in, φ Neumann,
- * the rotational p by eq 15; exit layers copy the velocity and ũ of the exit layer (n·∇u = 0)
- * or take a prescribed profile (outflow { profile = "parabolic" }, the paper's choice above
- * Re = 10), φ = 0 (and p = 0) at the exit by odd reflection. At the end of each step
+ *      the entry and exit sections (solvers/open)
+ * Entry and exit sections (sec 3.3.2-3.3.3, eqs 16-20): the sections, the layers' velocity and
+ * the recycling are solvers/open (kernels/common/open.cl, built with -D OPEN_SECTIONS=1 only for
+ * scenes that have them, which need an inflow and an outflow together); what is this scheme's is
+ * kernels/isph_rotational/open.cl. Entry layers carry the prescribed profile and move with it,
+ * ũ = u_in, φ Neumann, the rotational p by eq 15; exit layers copy the velocity and ũ of the exit
+ * layer (n·∇u = 0) or take a prescribed profile (outflow { profile = "parabolic" }, the paper's
+ * choice above Re = 10), φ = 0 (and p = 0) at the exit by odd reflection. At the end of each step
  * fluid that left through an exit becomes an exit layer particle, and an entry particle that
  * reached the fluid becomes fluid while an exit particle beyond the last layer takes its place at
  * the back of its row: the particle count never changes, and nothing leaves the device. */
@@ -31,6 +32,7 @@
 #include "clsph_config.h"
 #include "force.h"
 #include "geometry.h"
+#include "open.h"
 #include "ops.h"
 #include "psolve.h"
 #include "sim.h"
@@ -57,20 +59,13 @@ struct rot {
       f_shift, f_vnew, f_posn;
   cl_kernel k_dummy, k_prop, k_predict, k_source, k_apply, k_coeffs, k_diag, k_count, k_project,
       k_move, k_shift, k_apply_shift;
-  /* entry and exit sections (open.cl; none: nsec = 0 and nothing below exists) */
-  cl_uint nsec;
-  int has_outflow;       /* an exit: Dirichlet φ = 0 there, a regular pressure system */
-  int f_section, f_src;  /* section of a layer particle, its velocity progenitor */
-  int f_near;            /* the fluid particle its p^k is extrapolated from (entry) */
-  cl_mem d_sec;          /* the section table (ROT_SEC reals per section, open.cl) */
-  cl_mem d_role, d_list; /* recycling: role per particle, exit particles to recycle */
-  cl_mem d_count;        /* recycled so far, entry and exit particles left waiting */
-  cl_kernel k_images, k_dummies, k_dummy_p, k_ustar, k_open_p, k_classify, k_recycle;
+  /* entry and exit sections (solvers/open and open.cl; none: open.nsec = 0) */
+  struct open_sections open;
+  cl_kernel k_mirrors, k_dummies, k_dummy_p, k_ustar, k_open_p; /* open.cl */
 };
 
-enum { ROT_SEC = 10 }; /* reals per section in the table (open.cl) */
-
-static const char *const sources[] = {"common/blas1.cl",
+static const char *const sources[] = {OPEN_SOURCES,
+                                      "common/blas1.cl",
                                       "common/csr.cl",
                                       "common/mg.cl",
                                       "common/poisson.cl",
@@ -125,7 +120,7 @@ static enum clsph_status rot_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(ops_define(1, o)); /* Oger correction in every operator (eqs 25-29) */
   CLSPH_TRY(prog_opts_define_int(o, "ROT_WALL_IMAGE", image));
   CLSPH_TRY(prog_opts_define_int(o, "ROT_ROTATIONAL", rotational));
-  CLSPH_TRY(prog_opts_define_int(o, "ROT_OPEN", sim->scene->nsections > 0));
+  CLSPH_TRY(open_define(sim, o)); /* the sections (solvers/open) */
 done:
   return st;
 }
@@ -209,7 +204,7 @@ done:
 /* the velocity progenitors of the exit layers, or any buffer where there are none (unread) */
 static cl_mem visc_src(struct rot *r)
 {
-  return pset_mem(&r->sim->ps, r->nsec > 0 ? r->f_src : r->sim->f_kind);
+  return pset_mem(&r->sim->ps, r->open.nsec > 0 ? r->open.f_src : r->sim->f_kind);
 }
 
 static enum clsph_status visc_counts(void *ctx, cl_mem count)
@@ -289,77 +284,23 @@ static void rot_destroy(void *state);
 
 /* ---- create ---- */
 
-/* The entry and exit sections: checks, the section table, the fields and kernels of open.cl. */
-static enum clsph_status open_create(struct sim *sim, struct rot *r)
+/* The entry and exit sections: the shared part (solvers/open: the section table, their fields,
+ * the layers' velocity in wall_vel) and the kernels of open.cl. */
+static enum clsph_status rot_open_create(struct sim *sim, struct rot *r)
 {
   enum clsph_status st = CLSPH_OK;
-  const struct scene *sc = sim->scene;
-  const struct geom *geo = &sim->geom;
-  struct pset *ps = &sim->ps;
-  real *tab = NULL;
-  cl_uint *u = NULL;
-  int nin = 0, nout = 0;
-  r->nsec = (cl_uint)sc->nsections;
-  tab = calloc((size_t)sc->nsections * ROT_SEC, sizeof *tab);
-  u = calloc(geo->n, sizeof *u);
-  CLSPH_CHECK(tab != NULL && u != NULL, CLSPH_E_NOMEM, "isph-rotational: out of memory");
-  for (int k = 0; k < sc->nsections; ++k) {
-    const struct scene_section *c = &sc->sections[k];
-    const double len = hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
-    const int in = c->kind == SCENE_INFLOW;
-    nin += in;
-    nout += !in;
-    /* the layers must cover the support of the fluid next to the section (3 h, h = 1.2 dr) */
-    CLSPH_CHECK(c->layers * sc->dr >= sim->sm.support - 0.75 * sc->dr, CLSPH_E_INPUT,
-                "%s:%d: %s '%s': %d layers do not cover the smoothing support of the fluid next "
-                "to it (%.3g dr); give layers = %d or more (the paper's 3, sec 3.3.2)",
-                sc->case_path, c->line, in ? "inflow" : "outflow", c->name, c->layers,
-                sim->sm.support / sc->dr, (int)ceil(sim->sm.support / sc->dr - 0.75));
-    real *t = tab + (size_t)k * ROT_SEC;
-    t[0] = (real)c->a[0];
-    t[1] = (real)c->a[1];
-    t[2] = (real)((c->b[0] - c->a[0]) / len);
-    t[3] = (real)((c->b[1] - c->a[1]) / len);
-    t[4] = (real)len;
-    t[5] = (real)(c->layers * sc->dr);
-    t[6] = (real)c->velocity;
-    t[7] = (real)(in ? 1 : 2);
-    t[8] = (real)(c->profile == SCENE_UNIFORM ? 1 : c->profile == SCENE_PARABOLIC ? 2 : 0);
-  }
-  /* an entry feeds on what the exits give back (recycling), and the other way round */
-  CLSPH_CHECK(nin > 0 && nout > 0, CLSPH_E_INPUT,
-              "%s: isph-rotational needs an inflow and an outflow section together (the scene "
-              "has %d inflow and %d outflow): the particles leaving through an exit are those "
-              "entering through an entry",
-              sc->case_path, nin, nout);
-  r->has_outflow = nout > 0;
-  CLSPH_TRY(kern_buffer(sim->dev, (size_t)sc->nsections * ROT_SEC * sizeof *tab, tab, &r->d_sec,
-                        "sections"));
-  for (size_t i = 0; i < geo->n; ++i)
-    u[i] = geo->kind[i] == KIND_INFLOW || geo->kind[i] == KIND_OUTFLOW ? (cl_uint)geo->group[i]
-                                                                       : 0xffffffffu;
-  CLSPH_TRY(pset_add(ps, sim->dev, "section", sizeof(cl_uint), u, &r->f_section));
-  pset_describe(ps, r->f_section, PF_UINT, 0, 0);
-  CLSPH_TRY(pset_add(ps, sim->dev, "vel_src", sizeof(cl_uint), NULL, &r->f_src));
-  pset_describe(ps, r->f_src, PF_UINT, 0, 0);
-  CLSPH_TRY(pset_add(ps, sim->dev, "p_near", sizeof(cl_uint), NULL, &r->f_near));
-  pset_describe(ps, r->f_near, PF_UINT, 0, 0);
-  CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(cl_uint), NULL, &r->d_role, "recycle roles"));
-  CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(cl_uint), NULL, &r->d_list, "recycle list"));
-  const cl_uint zeros[3] = {0, 0, 0};
-  CLSPH_TRY(kern_buffer(sim->dev, sizeof zeros, zeros, &r->d_count, "recycle count"));
+  CLSPH_TRY(open_create(sim, r->f_uwall, &r->open));
   const struct {
     cl_kernel *k;
     const char *name;
-  } ks[] = {{&r->k_images, "rot_open_images"},   {&r->k_dummies, "rot_open_dummies"},
-            {&r->k_dummy_p, "rot_open_dummy_p"}, {&r->k_ustar, "rot_open_ustar"},
-            {&r->k_open_p, "rot_open_pressure"}, {&r->k_classify, "rot_open_classify"},
-            {&r->k_recycle, "rot_open_recycle"}};
+  } ks[] = {{&r->k_mirrors, "rot_open_mirrors"},
+            {&r->k_dummies, "rot_open_dummies"},
+            {&r->k_dummy_p, "rot_open_dummy_p"},
+            {&r->k_ustar, "rot_open_ustar"},
+            {&r->k_open_p, "rot_open_pressure"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
 done:
-  free(u);
-  free(tab);
   return st;
 }
 
@@ -426,7 +367,7 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
   pset_describe(ps, r->f_mirror, PF_UINT, 0, 0);
   CLSPH_TRY(pset_add(ps, sim->dev, "mirror_coef", sizeof(real), NULL, &r->f_coef));
   pset_describe(ps, r->f_coef, PF_REAL, 0, 0);
-  if (sc->nsections > 0) CLSPH_TRY(open_create(sim, r));
+  if (sc->nsections > 0) CLSPH_TRY(rot_open_create(sim, r));
   if (r->implicit) { /* the implicit prediction: fields, kernels, its solver */
     int *vf[] = {&r->f_vx, &r->f_vy, &r->f_bx, &r->f_by};
     const char *vn[] = {"visc_x", "visc_y", "visc_bx", "visc_by"};
@@ -492,53 +433,40 @@ done:
   return st;
 }
 
-/* The entry and exit layers before the prediction (open.cl): velocities, mirrors, coefficients. */
-static enum clsph_status open_images(struct sim *sim, struct rot *r)
+/* The entry and exit layers before the prediction: their velocity (solvers/open), then their
+ * history, mirrors and coefficients (open.cl). */
+static enum clsph_status rot_open_layers(struct sim *sim, struct rot *r)
 {
   enum clsph_status st = CLSPH_OK;
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n;
   const real dr = (real)sim->scene->dr;
+  CLSPH_TRY(open_layer_velocity(&r->open, sim));
   cl_mem pos = pset_mem(ps, sim->f_pos), kind = pset_mem(ps, sim->f_kind);
-  cl_mem section = pset_mem(ps, r->f_section), vel = pset_mem(ps, sim->f_vel);
-  cl_mem uprev = pset_mem(ps, r->f_uprev), uwall = pset_mem(ps, r->f_uwall);
+  cl_mem section = pset_mem(ps, r->open.f_section), vel = pset_mem(ps, sim->f_vel);
+  cl_mem uprev = pset_mem(ps, r->f_uprev), pnear = pset_mem(ps, r->open.f_near);
   cl_mem mirror = pset_mem(ps, r->f_mirror), coef = pset_mem(ps, r->f_coef);
-  cl_mem src = pset_mem(ps, r->f_src), pnear = pset_mem(ps, r->f_near);
-  CLSPH_TRY(KERN_SET(r->k_images, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
-                     KARG(kind), KARG(section), KARG(r->d_sec), KARG(dr), KARG(vel), KARG(uprev),
-                     KARG(uwall), KARG(mirror), KARG(coef), KARG(src), KARG(pnear),
-                     KARG(sim->d_flags)));
-  CLSPH_TRY(kern_launch(sim->dev, r->k_images, n, NULL));
+  CLSPH_TRY(KERN_SET(r->k_mirrors, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
+                     KARG(pos), KARG(kind), KARG(section), KARG(r->open.d_sec), KARG(dr),
+                     KARG(pnear), KARG(vel), KARG(uprev), KARG(mirror), KARG(coef)));
+  CLSPH_TRY(kern_launch(sim->dev, r->k_mirrors, n, NULL));
   CLSPH_TRY(KERN_SET(r->k_dummies, KARG(n), KARG(kind), KARG(mirror), KARG(coef), KARG(pnear)));
   CLSPH_TRY(kern_launch(sim->dev, r->k_dummies, n, NULL));
 done:
   return st;
 }
 
-/* After the motion: exits take the fluid that crossed them, entries give fluid and take back
- * exit particles (open.cl). Positions change: the next step's sort puts them in their cells. */
-static enum clsph_status open_recycle(struct sim *sim, struct rot *r)
+/* After the motion: the recycling (solvers/open moves position, kind, section, velocity and
+ * wall_vel), then the rest of a recycled particle's state from the entry particle it replaces:
+ * u^{k−1} (an entry particle's is its wall_vel, rot_open_mirrors), the wall normal (the
+ * section's n), p and φ. */
+static enum clsph_status rot_open_recycle(struct sim *sim, struct rot *r)
 {
   enum clsph_status st = CLSPH_OK;
-  struct pset *ps = &sim->ps;
-  const cl_uint n = (cl_uint)ps->n;
-  const real tol = (real)(1e-6 * sim->scene->dr);
-  cl_mem pos = pset_mem(ps, sim->f_pos), kind = pset_mem(ps, sim->f_kind);
-  cl_mem section = pset_mem(ps, r->f_section), vel = pset_mem(ps, sim->f_vel);
-  cl_mem uprev = pset_mem(ps, r->f_uprev), uwall = pset_mem(ps, r->f_uwall);
-  cl_mem normal = pset_mem(ps, r->f_normal), p = pset_mem(ps, r->f_p);
-  cl_mem phi = pset_mem(ps, r->f_phi);
-  CLSPH_TRY(KERN_SET(r->k_classify, KARG(n), KARG(pos), KARG(kind), KARG(section), KARG(r->d_sec),
-                     KARG(r->nsec), KARG(tol), KARG(r->d_role)));
-  CLSPH_TRY(kern_launch(sim->dev, r->k_classify, n, NULL));
-  CLSPH_TRY(KERN_SET(r->k_recycle, KARG(n), KARG(r->d_role), KARG(r->d_list), KARG(r->d_sec),
-                     KARG(pos), KARG(kind), KARG(section), KARG(vel), KARG(uprev), KARG(uwall),
-                     KARG(normal), KARG(p), KARG(phi), KARG(r->d_count)));
-  CLSPH_TRY(kern_launch(sim->dev, r->k_recycle, 1, NULL));
-  cl_uint count[3];
-  CLSPH_TRY(kern_read(sim->dev, r->d_count, sizeof count, count));
-  sim->open_waiting = (long)count[1];
-  if (sim->open_waiting > sim->open_waiting_max) sim->open_waiting_max = sim->open_waiting;
+  CLSPH_TRY(open_recycle(&r->open, sim));
+  const int fields[] = {r->f_uprev, r->f_normal, r->f_p, r->f_phi};
+  for (size_t k = 0; k < sizeof fields / sizeof *fields; ++k)
+    CLSPH_TRY(open_recycle_copy(&r->open, sim, fields[k]));
 done:
   return st;
 }
@@ -586,7 +514,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
                      KARG(mirror), KARG(mcoef), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, r->k_dummy, n, NULL));
   /* 2'. entry and exit layers (sec 3.3.2-3.3.3) */
-  if (r->nsec > 0) CLSPH_TRY(open_images(sim, r));
+  if (r->open.nsec > 0) CLSPH_TRY(rot_open_layers(sim, r));
   /* 3. prediction (eq 9 or 5) */
   CLSPH_TRY(op_prefix(sim, r, r->k_predict, &np));
   {
@@ -599,8 +527,8 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   }
   CLSPH_TRY(kern_launch(sim->dev, r->k_predict, n, NULL));
   if (r->implicit) CLSPH_TRY(visc_solve(sim, r, dt, b0));
-  if (r->nsec > 0) { /* ũ of the exit layers: that of their progenitor */
-    cl_mem src = pset_mem(ps, r->f_src);
+  if (r->open.nsec > 0) { /* ũ of the exit layers: that of their progenitor */
+    cl_mem src = pset_mem(ps, r->open.f_src);
     CLSPH_TRY(KERN_SET(r->k_ustar, KARG(n), KARG(kind), KARG(src), KARG(ustar)));
     CLSPH_TRY(kern_launch(sim->dev, r->k_ustar, n, NULL));
   }
@@ -615,7 +543,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   r->op.n = ps->n;
   r->op.grid = &sim->grid;
   /* Neumann everywhere: no Dirichlet row, reinforce; an exit's φ = 0 makes it regular */
-  r->ps.opt.singular = r->has_outflow ? PSOLVE_REGULAR : PSOLVE_REINFORCE;
+  r->ps.opt.singular = r->open.noutflow > 0 ? PSOLVE_REGULAR : PSOLVE_REINFORCE;
   struct psolve_result res;
   cl_mem x = r->rotational ? phi : p; /* the previous solution is the initial guess */
   CLSPH_TRY(psolve_solve(&r->ps, &r->op, rhs, x, &res));
@@ -635,12 +563,12 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   }
   CLSPH_TRY(kern_launch(sim->dev, r->k_project, n, NULL));
   CLSPH_TRY(propagate(sim, r, r->f_p));
-  if (r->nsec > 0 && r->rotational) { /* p on the entry layers: eq 15 */
-    cl_mem section = pset_mem(ps, r->f_section), pnear = pset_mem(ps, r->f_near);
+  if (r->open.nsec > 0 && r->rotational) { /* p on the entry layers: eq 15 */
+    cl_mem section = pset_mem(ps, r->open.f_section), pnear = pset_mem(ps, r->open.f_near);
     CLSPH_TRY(op_prefix(sim, r, r->k_open_p, &np));
     cl_uint k = 7;
-    const struct karg a[] = {KARG(section), KARG(r->d_sec), KARG(pnear), KARG(vel),
-                             KARG(rho),     KARG(mu),       KARG(accel), KARG(p)};
+    const struct karg a[] = {KARG(section), KARG(r->open.d_sec), KARG(pnear), KARG(vel), KARG(rho),
+                             KARG(mu),      KARG(accel),         KARG(p)};
     for (size_t q = 0; q < sizeof a / sizeof *a; ++q)
       CLSPH_TRY(kern_set_at(r->k_open_p, k++, a[q]));
     CLSPH_TRY(kern_launch(sim->dev, r->k_open_p, n, NULL));
@@ -672,7 +600,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
                        KARG(shift), KARG(vel), KARG(vnew), KARG(sim->d_flags)));
     CLSPH_TRY(kern_launch(sim->dev, r->k_apply_shift, n, NULL));
   }
-  if (r->nsec > 0) CLSPH_TRY(open_recycle(sim, r));
+  if (r->open.nsec > 0) CLSPH_TRY(rot_open_recycle(sim, r));
 done:
   return st;
 }
@@ -689,8 +617,7 @@ static enum clsph_status rot_max_dt(struct sim *sim, void *state, double *dt)
   /* the CFL speed: the fluid's, and an entry's or exit's prescribed speed (a fluid at rest
    * behind an entry would otherwise get only the viscous bound: at Re = 100 that is 0.8 h/U0 and
    * the run failed at its third step) */
-  double u = r->umax;
-  for (int k = 0; k < s->nsections; ++k) u = fmax(u, fabs(s->sections[k].velocity));
+  double u = fmax(r->umax, open_speed(s));
   double a = hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]);
   double d = HUGE_VAL;
   if (u > 0.0) d = fmin(d, 0.25 * h / u);
@@ -728,12 +655,10 @@ static void rot_destroy(void *state)
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   rot_force_destroy(&r->force);
-  cl_kernel open[] = {r->k_images, r->k_dummies,  r->k_dummy_p, r->k_ustar,
-                      r->k_open_p, r->k_classify, r->k_recycle};
+  cl_kernel open[] = {r->k_mirrors, r->k_dummies, r->k_dummy_p, r->k_ustar, r->k_open_p};
   for (size_t k = 0; k < sizeof open / sizeof *open; ++k)
     if (open[k] != NULL) clReleaseKernel(open[k]);
-  cl_mem *bufs[] = {&r->d_sec, &r->d_role, &r->d_list, &r->d_count};
-  for (size_t k = 0; k < sizeof bufs / sizeof *bufs; ++k) kern_release(bufs[k]);
+  open_destroy(&r->open);
   cl_kernel visc[] = {r->k_visc_count, r->k_visc_coeffs, r->k_visc_split, r->k_visc_gather};
   for (size_t k = 0; k < sizeof visc / sizeof *visc; ++k)
     if (visc[k] != NULL) clReleaseKernel(visc[k]);

@@ -1,0 +1,231 @@
+/* open.c: entry and exit sections on the device (see open.h; kernels/common/open.cl). */
+#include "open.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../scheme.h"
+#include "clsph_config.h"
+#include "geometry.h"
+#include "kern.h"
+#include "sim.h"
+
+enum { OPEN_SEC = 10 }; /* reals per section in the table (open.cl) */
+
+enum clsph_status open_define(const struct sim *sim, struct prog_opts *o)
+{
+  return prog_opts_define_int(o, "OPEN_SECTIONS", sim->scene->nsections > 0);
+}
+
+double open_speed(const struct scene *sc)
+{
+  double u = 0.0;
+  for (int k = 0; k < sc->nsections; ++k) u = fmax(u, fabs(sc->sections[k].velocity));
+  return u;
+}
+
+/* The section table (open.cl's layout) and its checks. */
+static enum clsph_status upload_table(struct sim *sim, struct open_sections *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *sc = sim->scene;
+  real *tab = calloc((size_t)sc->nsections * OPEN_SEC, sizeof *tab);
+  CLSPH_CHECK(tab != NULL, CLSPH_E_NOMEM, "%s: out of memory", sim->scheme->name);
+  for (int k = 0; k < sc->nsections; ++k) {
+    const struct scene_section *c = &sc->sections[k];
+    const double len = hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
+    const int in = c->kind == SCENE_INFLOW;
+    o->ninflow += in;
+    o->noutflow += !in;
+    /* the layers must cover the support of the fluid next to the section (3 h, h = 1.2 dr) */
+    CLSPH_CHECK(c->layers * sc->dr >= sim->sm.support - 0.75 * sc->dr, CLSPH_E_INPUT,
+                "%s:%d: %s '%s': %d layers do not cover the smoothing support of the fluid next "
+                "to it (%.3g dr); give layers = %d or more (the paper's 3, sec 3.3.2)",
+                sc->case_path, c->line, in ? "inflow" : "outflow", c->name, c->layers,
+                sim->sm.support / sc->dr, (int)ceil(sim->sm.support / sc->dr - 0.75));
+    real *t = tab + (size_t)k * OPEN_SEC;
+    t[0] = (real)c->a[0];
+    t[1] = (real)c->a[1];
+    t[2] = (real)((c->b[0] - c->a[0]) / len);
+    t[3] = (real)((c->b[1] - c->a[1]) / len);
+    t[4] = (real)len;
+    t[5] = (real)(c->layers * sc->dr);
+    t[6] = (real)c->velocity;
+    t[7] = (real)(in ? 1 : 2);
+    t[8] = (real)(c->profile == SCENE_UNIFORM ? 1 : c->profile == SCENE_PARABOLIC ? 2 : 0);
+  }
+  /* an entry feeds on what the exits give back (recycling), and the other way round */
+  CLSPH_CHECK(o->ninflow > 0 && o->noutflow > 0, CLSPH_E_INPUT,
+              "%s: %s needs an inflow and an outflow section together (the scene "
+              "has %d inflow and %d outflow): the particles leaving through an exit are those "
+              "entering through an entry",
+              sc->case_path, sim->scheme->name, o->ninflow, o->noutflow);
+  CLSPH_TRY(kern_buffer(sim->dev, (size_t)sc->nsections * OPEN_SEC * sizeof *tab, tab, &o->d_sec,
+                        "sections"));
+done:
+  free(tab);
+  return st;
+}
+
+enum clsph_status open_create(struct sim *sim, int f_u, struct open_sections *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct open_sections o = {0};
+  const struct geom *geo = &sim->geom;
+  struct pset *ps = &sim->ps;
+  cl_uint *u = NULL;
+  real *v = NULL;
+  *out = o;
+  if (sim->scene->nsections == 0) goto done;
+  o.nsec = (cl_uint)sim->scene->nsections;
+  CLSPH_TRY(upload_table(sim, &o));
+  /* fields: the section of each layer particle, its progenitor and its row's first fluid */
+  u = calloc(geo->n, sizeof *u);
+  CLSPH_CHECK(u != NULL, CLSPH_E_NOMEM, "%s: out of memory", sim->scheme->name);
+  for (size_t i = 0; i < geo->n; ++i)
+    u[i] = geo->kind[i] == KIND_INFLOW || geo->kind[i] == KIND_OUTFLOW ? (cl_uint)geo->group[i]
+                                                                       : 0xffffffffu;
+  CLSPH_TRY(pset_add(ps, sim->dev, "section", sizeof(cl_uint), u, &o.f_section));
+  pset_describe(ps, o.f_section, PF_UINT, 0, 0);
+  CLSPH_TRY(pset_add(ps, sim->dev, "vel_src", sizeof(cl_uint), NULL, &o.f_src));
+  pset_describe(ps, o.f_src, PF_UINT, 0, 0);
+  CLSPH_TRY(pset_add(ps, sim->dev, "p_near", sizeof(cl_uint), NULL, &o.f_near));
+  pset_describe(ps, o.f_near, PF_UINT, 0, 0);
+  o.f_u = f_u;
+  if (f_u < 0) { /* the layers' velocity: the geometry's (u_in, a prescribed exit profile) */
+    v = calloc(2 * geo->n, sizeof *v);
+    CLSPH_CHECK(v != NULL, CLSPH_E_NOMEM, "%s: out of memory", sim->scheme->name);
+    for (size_t i = 0; i < 2 * geo->n; ++i) v[i] = (real)geo->v[i];
+    CLSPH_TRY(pset_add(ps, sim->dev, "open_u", 2 * sizeof(real), v, &o.f_u));
+    pset_describe(ps, o.f_u, PF_REAL, 0, 0);
+  }
+  /* recycling: a role per particle, the pairs, the counts */
+  CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(cl_uint), NULL, &o.d_role, "recycle roles"));
+  CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(cl_uint), NULL, &o.d_list, "recycle list"));
+  const cl_uint zeros[5] = {0, 0, 0, 0, 0};
+  CLSPH_TRY(kern_buffer(sim->dev, sizeof zeros, zeros, &o.d_count, "recycle count"));
+  const struct {
+    cl_kernel *k;
+    const char *name;
+  } ks[] = {{&o.k_velocity, "open_layer_velocity"},
+            {&o.k_scalar, "open_layer_scalar"},
+            {&o.k_move, "open_move"},
+            {&o.k_classify, "open_classify"},
+            {&o.k_recycle, "open_recycle"},
+            {&o.k_copy_real, "open_copy_real"},
+            {&o.k_copy_realv, "open_copy_realv"}};
+  for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
+    CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
+  *out = o;
+  memset(&o, 0, sizeof o); /* the caller owns it now */
+done:
+  open_destroy(&o);
+  free(v);
+  free(u);
+  return st;
+}
+
+enum clsph_status open_layer_velocity(struct open_sections *o, struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  const real dr = (real)sim->scene->dr;
+  if (o->nsec == 0) goto done;
+  cl_mem pos = pset_mem(ps, sim->f_pos), kind = pset_mem(ps, sim->f_kind);
+  cl_mem section = pset_mem(ps, o->f_section), vel = pset_mem(ps, sim->f_vel);
+  cl_mem ul = pset_mem(ps, o->f_u), src = pset_mem(ps, o->f_src), near = pset_mem(ps, o->f_near);
+  CLSPH_TRY(KERN_SET(o->k_velocity, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
+                     KARG(pos), KARG(kind), KARG(section), KARG(o->d_sec), KARG(dr), KARG(vel),
+                     KARG(ul), KARG(src), KARG(near), KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch(sim->dev, o->k_velocity, n, NULL));
+done:
+  return st;
+}
+
+enum clsph_status open_layer_scalar(struct open_sections *o, struct sim *sim, cl_mem a,
+                                    const double *exit_value)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n, copy_exit = exit_value == NULL;
+  const real value = exit_value != NULL ? (real)*exit_value : (real)0;
+  if (o->nsec == 0) goto done;
+  cl_mem kind = pset_mem(ps, sim->f_kind), near = pset_mem(ps, o->f_near);
+  CLSPH_TRY(KERN_SET(o->k_scalar, KARG(n), KARG(kind), KARG(near), KARG(copy_exit), KARG(value),
+                     KARG(a)));
+  CLSPH_TRY(kern_launch(sim->dev, o->k_scalar, n, NULL));
+done:
+  return st;
+}
+
+enum clsph_status open_move(struct open_sections *o, struct sim *sim, double dt)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  const real rdt = (real)dt;
+  if (o->nsec == 0) goto done;
+  cl_mem kind = pset_mem(ps, sim->f_kind), vel = pset_mem(ps, sim->f_vel);
+  cl_mem pos = pset_mem(ps, sim->f_pos);
+  CLSPH_TRY(KERN_SET(o->k_move, KARG(n), KARG(kind), KARG(vel), KARG(rdt), KARG(pos),
+                     KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch(sim->dev, o->k_move, n, NULL));
+done:
+  return st;
+}
+
+enum clsph_status open_recycle(struct open_sections *o, struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  const real tol = (real)(1e-6 * sim->scene->dr);
+  cl_uint count[5];
+  if (o->nsec == 0) goto done;
+  cl_mem pos = pset_mem(ps, sim->f_pos), kind = pset_mem(ps, sim->f_kind);
+  cl_mem section = pset_mem(ps, o->f_section), vel = pset_mem(ps, sim->f_vel);
+  cl_mem ul = pset_mem(ps, o->f_u);
+  CLSPH_TRY(KERN_SET(o->k_classify, KARG(n), KARG(pos), KARG(kind), KARG(section), KARG(o->d_sec),
+                     KARG(o->nsec), KARG(tol), KARG(o->d_role)));
+  CLSPH_TRY(kern_launch(sim->dev, o->k_classify, n, NULL));
+  CLSPH_TRY(KERN_SET(o->k_recycle, KARG(n), KARG(o->d_role), KARG(o->d_list), KARG(o->d_sec),
+                     KARG(pos), KARG(kind), KARG(section), KARG(vel), KARG(ul), KARG(o->d_count)));
+  CLSPH_TRY(kern_launch(sim->dev, o->k_recycle, 1, NULL));
+  CLSPH_TRY(kern_read(sim->dev, o->d_count, sizeof count, count));
+  o->used = count[3];
+  o->off = count[4];
+  sim->open_waiting = (long)count[1];
+  if (sim->open_waiting > sim->open_waiting_max) sim->open_waiting_max = sim->open_waiting;
+done:
+  return st;
+}
+
+enum clsph_status open_recycle_copy(struct open_sections *o, struct sim *sim, int field)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  if (o->nsec == 0 || o->used == 0) goto done;
+  const size_t elem = ps->f[field].elem;
+  CLSPH_CHECK(elem == sizeof(real) || elem == 2 * sizeof(real), CLSPH_E_UNSUPPORTED,
+              "open_recycle_copy: field '%s' is neither reals nor 2-D vectors of reals",
+              ps->f[field].name);
+  cl_kernel k = elem == sizeof(real) ? o->k_copy_real : o->k_copy_realv;
+  cl_mem a = pset_mem(ps, field);
+  CLSPH_TRY(KERN_SET(k, KARG(o->used), KARG(o->off), KARG(o->d_list), KARG(a)));
+  CLSPH_TRY(kern_launch(sim->dev, k, o->used, NULL));
+done:
+  return st;
+}
+
+void open_destroy(struct open_sections *o)
+{
+  cl_kernel ks[] = {o->k_velocity, o->k_scalar,    o->k_move,      o->k_classify,
+                    o->k_recycle,  o->k_copy_real, o->k_copy_realv};
+  for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
+    if (ks[k] != NULL) clReleaseKernel(ks[k]);
+  cl_mem *bufs[] = {&o->d_sec, &o->d_role, &o->d_list, &o->d_count};
+  for (size_t k = 0; k < sizeof bufs / sizeof *bufs; ++k) kern_release(bufs[k]);
+  memset(o, 0, sizeof *o);
+}
