@@ -17,15 +17,22 @@
 -- the walls before the exit; the bulk within 0.4%), u_err_max 0.003 both (tests/case.cmake).
 -- implicit = 1: the prediction's viscous term implicit (viscous = "implicit"; the paper's is
 -- explicit), no viscous bound on the step.
+-- riemann = 1: the weakly-compressible wcsph-riemann on dummy walls (c0 = 10 U0 by default; the
+-- entry and exit layers carry ρ and p from their rows' first fluid particle at the entry and
+-- p = 0 at the exit: the same shared sections, solvers/open).
 param { dr = 0.025, t_end = 1, homogeneous = 0, exit_parabolic = 0, shift = 0.04, wall_image = 1,
-        checkpoint = 0, implicit = 0 }
+        checkpoint = 0, implicit = 0, riemann = 0, c0 = 0 }
 
 local H, L, U0, nu = 1, 1, 1, 1
 domain { 0, 0, L, H }
 particles { dr = dr }
-scheme { "isph-rotational", projection = homogeneous == 1 and "homogeneous" or "rotational",
-         shifting = shift, wall_velocity = wall_image == 1 and "image" or "shepard",
-         viscous = implicit == 1 and "implicit" or "explicit" }
+if riemann == 1 then
+  scheme { "wcsph-riemann", sound_speed = c0 > 0 and c0 or nil }
+else
+  scheme { "isph-rotational", projection = homogeneous == 1 and "homogeneous" or "rotational",
+           shifting = shift, wall_velocity = wall_image == 1 and "image" or "shepard",
+           viscous = implicit == 1 and "implicit" or "explicit" }
+end
 fluid { density = 1, viscosity = nu }
 local e = 3 * dr -- the walls run on through the 3 entry and exit layers (their dummies see them)
 wall { {L + e, 0}, {-e, 0}, fluid = "right", group = "floor" }

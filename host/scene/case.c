@@ -864,8 +864,8 @@ static int l_circle(lua_State *L)
 
 static int section_common(lua_State *L, enum scene_section_kind kind)
 {
-  static const char *const in_keys[] = {"velocity", "profile", "layers", "name", NULL};
-  static const char *const out_keys[] = {"velocity", "profile", "layers", "name", NULL};
+  static const char *const in_keys[] = {"velocity", "profile", "layers", "name", "ramp", NULL};
+  static const char *const out_keys[] = {"velocity", "profile", "layers", "name", "ramp", NULL};
   static const char *const profiles[] = {"", "uniform", "parabolic", NULL};
   static const char *const out_profiles[] = {"natural", "uniform", "parabolic", NULL};
   const char *fn = kind == SCENE_INFLOW ? "inflow" : "outflow";
@@ -890,6 +890,10 @@ static int section_common(lua_State *L, enum scene_section_kind kind)
   if (!(layers >= 1 && layers <= 8 && layers == floor(layers)))
     luaL_error(L, "%s: layers must be a whole number from 1 to 8, not %f", fn, layers);
   c->layers = (int)layers;
+  c->ramp = get_number(L, 1, fn, "ramp", 0.0);
+  if (!(isfinite(c->ramp) && c->ramp >= 0.0))
+    luaL_error(L, "%s: ramp must be a time of 0 s or more (the prescribed velocity rises over it), "
+               "not %f", fn, c->ramp);
   if (kind == SCENE_INFLOW) {
     c->velocity = get_number(L, 1, fn, "velocity", NAN);
     if (!isfinite(c->velocity)) luaL_error(L, "inflow: needs velocity = (m/s)");
@@ -908,6 +912,9 @@ static int section_common(lua_State *L, enum scene_section_kind kind)
                  "\"uniform\"); a natural exit takes the velocity of the fluid",
                  c->velocity);
     if (c->profile == 0) c->velocity = 0.0;
+    if (c->profile == 0 && c->ramp > 0.0)
+      luaL_error(L, "outflow: ramp = %g needs a prescribed profile: a natural exit takes the "
+                 "velocity of the fluid", c->ramp);
   }
   return 0;
 }

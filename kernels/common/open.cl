@@ -6,8 +6,11 @@
  * the fluid, h = (x − a)·n is the signed distance from it. Its layer particles (kind OPEN_INFLOW
  * or OPEN_OUTFLOW, section[i] = k) lie at −depth <= h < 0, depth = layers δr. Table `sec`,
  * OPEN_SEC reals per section: a.x, a.y, t.x, t.y, len, depth, U, kind (1 inflow, 2 outflow),
- * profile (0 natural, 1 uniform, 2 parabolic), unused. Profiles, s along the section:
- * U (uniform) or 4 U s/len (1 − s/len) (parabolic, U the peak; eq 30 with y measured from a wall).
+ * profile (0 natural, 1 uniform, 2 parabolic), ramp T. Profiles, s along the section:
+ * U (uniform) or 4 U s/len (1 − s/len) (parabolic, U the peak; eq 30 with y measured from a wall),
+ * times ½(1 − cos(π t/T)) while t < T (a prescribed velocity that rises smoothly: a weakly-
+ * compressible fluid set going at once takes a pressure pulse ρ c0 U, a density change of U/c0,
+ * that runs up and down the channel; T = 0: at once, the paper's start).
  *
  * Per particle (fields of solvers/open): section[i] (OPEN_NO_SECTION off the layers); near[i],
  * the layer particle's "row's first fluid particle", the fluid particle nearest to (s, h = δr/2);
@@ -47,6 +50,7 @@ struct open_section {
   real speed;      /* U, m/s (prescribed profiles) */
   uint kind;       /* 1 inflow, 2 outflow */
   uint profile;    /* 0 natural (exit), 1 uniform, 2 parabolic */
+  real ramp;       /* T, s: the prescribed speed's rise time (0: none) */
 };
 
 struct open_section open_section_load(__global const real *sec, uint k)
@@ -61,6 +65,7 @@ struct open_section open_section_load(__global const real *sec, uint k)
   r.speed = s[6];
   r.kind = (uint)s[7];
   r.profile = (uint)s[8];
+  r.ramp = s[9];
   return r;
 }
 
@@ -101,7 +106,8 @@ uint open_nearest_fluid(const struct grid *g, __global const uint *cell_start,
 __kernel void open_layer_velocity(const uint n, const struct grid g,
                                   __global const uint *cell_start, __global const realv *pos,
                                   __global const uint *kind, __global const uint *section,
-                                  __global const real *sec, const real dr, __global realv *vel,
+                                  __global const real *sec, const real dr, const real time,
+                                  __global realv *vel,
                                   __global realv *u_layer, __global uint *src, __global uint *near,
                                   __global uint *flags)
 {
@@ -118,8 +124,14 @@ __kernel void open_layer_velocity(const uint n, const struct grid g,
   near[i] = m1;
   realv u;
   uint m = i;
+  /* the ramp's factor, ½(1 − cos(π t/T)) while t < T */
+  const real rise = time < s.ramp ? R(0.5) * (R(1.0) - cospi(time / s.ramp)) : R(1.0);
   if (ki == OPEN_INFLOW) {
     u = u_layer[i]; /* prescribed u_in (sec 3.3.2) */
+    if (s.ramp > R(0.0)) { /* the geometry's u_in, less the ramp's factor while it rises */
+      u = rise * open_profile(&s, along) * s.n;
+      u_layer[i] = u;
+    }
   } else {
     /* the exit (sec 3.3.3): n·∇u = 0 from the progenitor, or the prescribed profile */
     if (h < -s.depth) {
@@ -128,7 +140,7 @@ __kernel void open_layer_velocity(const uint n, const struct grid g,
       m = m1;
       u = vel[m];
     } else {
-      u = -open_profile(&s, along) * s.n;
+      u = -rise * open_profile(&s, along) * s.n;
     }
     u_layer[i] = u;
   }

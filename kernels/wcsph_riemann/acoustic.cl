@@ -155,7 +155,8 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
   acc[i] = a;
 }
 
-/* dρ/dt (eq 15) from v^{n+1} = v + δt dv/dt of both particles; fluid only */
+/* dρ/dt (eq 15) from v^{n+1} = v + δt dv/dt of both particles; fluid only (0 elsewhere). The
+ * entry and exit layers (solvers/open) are neighbours with their own v, ρ and p. */
 __kernel void wcr_continuity(const uint n, const struct grid g, __global const realv *pos,
                              __global const realv *vel, __global const realv *acc, const real dt,
                              __global const real *vol, __global const uint *kind,
@@ -165,7 +166,11 @@ __kernel void wcr_continuity(const uint n, const struct grid g, __global const r
                              const realv gravity, __global real *drho)
 {
   const uint i = get_global_id(0);
-  if (i >= n || kind[i] != WCR_FLUID) return;
+  if (i >= n) return;
+  if (kind[i] != WCR_FLUID) { /* a layer particle that becomes fluid starts from dρ/dt = 0 */
+    drho[i] = R(0.0);
+    return;
+  }
   const realv x = pos[i], vi = vel[i] + dt * acc[i], ai = acc_prior[i];
   const real pi = p[i], ri = rho[i], inv_z = R(1.0) / (rho0 * c0);
   real s = R(0.0);

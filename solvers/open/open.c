@@ -54,6 +54,7 @@ static enum clsph_status upload_table(struct sim *sim, struct open_sections *o)
     t[6] = (real)c->velocity;
     t[7] = (real)(in ? 1 : 2);
     t[8] = (real)(c->profile == SCENE_UNIFORM ? 1 : c->profile == SCENE_PARABOLIC ? 2 : 0);
+    t[9] = (real)c->ramp;
   }
   /* an entry feeds on what the exits give back (recycling), and the other way round */
   CLSPH_CHECK(o->ninflow > 0 && o->noutflow > 0, CLSPH_E_INPUT,
@@ -131,14 +132,14 @@ enum clsph_status open_layer_velocity(struct open_sections *o, struct sim *sim)
   enum clsph_status st = CLSPH_OK;
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n;
-  const real dr = (real)sim->scene->dr;
+  const real dr = (real)sim->scene->dr, time = (real)sim->time;
   if (o->nsec == 0) goto done;
   cl_mem pos = pset_mem(ps, sim->f_pos), kind = pset_mem(ps, sim->f_kind);
   cl_mem section = pset_mem(ps, o->f_section), vel = pset_mem(ps, sim->f_vel);
   cl_mem ul = pset_mem(ps, o->f_u), src = pset_mem(ps, o->f_src), near = pset_mem(ps, o->f_near);
   CLSPH_TRY(KERN_SET(o->k_velocity, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
-                     KARG(pos), KARG(kind), KARG(section), KARG(o->d_sec), KARG(dr), KARG(vel),
-                     KARG(ul), KARG(src), KARG(near), KARG(sim->d_flags)));
+                     KARG(pos), KARG(kind), KARG(section), KARG(o->d_sec), KARG(dr), KARG(time),
+                     KARG(vel), KARG(ul), KARG(src), KARG(near), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, o->k_velocity, n, NULL));
 done:
   return st;

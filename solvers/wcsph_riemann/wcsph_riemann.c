@@ -33,6 +33,7 @@
 
 #include "../scheme.h"
 #include "clsph_config.h"
+#include "open.h"
 #include "sim.h"
 #include "sound.h"
 
@@ -55,10 +56,15 @@ struct wcr {
   cl_uint reinit;
   double vmax;    /* the fluid's largest speed at the last max_dt, m/s */
   int configured; /* the list and B belong to the particles' current order */
+  struct open_sections open; /* inflow and outflow sections (solvers/open), nsec = 0: none */
 };
 
-static const char *const sources[] = {"wcsph_riemann/config.cl", "wcsph_riemann/advection.cl",
-                                      "wcsph_riemann/acoustic.cl", "wcsph_riemann/force.cl", NULL};
+static const char *const sources[] = {OPEN_SOURCES,
+                                      "wcsph_riemann/config.cl",
+                                      "wcsph_riemann/advection.cl",
+                                      "wcsph_riemann/acoustic.cl",
+                                      "wcsph_riemann/force.cl",
+                                      NULL};
 static const char *const options[] = {"sound_speed",
                                       "background_pressure",
                                       "transport_velocity",
@@ -230,6 +236,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_ARD", w.ard));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_FULL", w.wall_full));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_CONT_RIEMANN", w.cont_riemann));
+  CLSPH_TRY(open_define(sim, o)); /* the sections (solvers/open) */
 done:
   return st;
 }
@@ -257,11 +264,10 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   CLSPH_CHECK(w != NULL, CLSPH_E_NOMEM, "wcsph-riemann: out of memory");
   CLSPH_TRY(read_options(sim, w, 1));
   for (size_t i = 0; i < geo->n; ++i)
-    CLSPH_CHECK(geo->kind[i] == KIND_FLUID || geo->kind[i] == KIND_DUMMY, CLSPH_E_UNSUPPORTED,
-                "%s: wcsph-riemann has no %s yet (particle kind %d)", sc->case_path,
-                geo->kind[i] == KIND_VERTEX ? "semi-analytical walls: walls are dummy particles"
-                                            : "inflow or outflow sections",
-                geo->kind[i]);
+    CLSPH_CHECK(geo->kind[i] != KIND_VERTEX, CLSPH_E_UNSUPPORTED,
+                "%s: wcsph-riemann has no semi-analytical walls: its walls are dummy particles "
+                "(particle kind %d)",
+                sc->case_path, geo->kind[i]);
   w->maxn = (cl_uint)list_stride(sim);
   w->mass = sc->rho0 * sc->dr * sc->dr;
   w->cap = ps->cap;
@@ -310,6 +316,9 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
         geo->kind[i] == KIND_DUMMY && geo->group[i] >= 0 ? (cl_uint)geo->group[i] : 0xffffffffu;
   CLSPH_TRY(pset_add(ps, sim->dev, "wall", sizeof(cl_uint), ubuf, &w->f_wall));
   pset_describe(ps, w->f_wall, PF_UINT, 1, 0);
+  /* the entry and exit layers: their velocity in a field of their own (the fluid's vel is the
+   * scheme's state; the layers' geometry velocity u_in or the exit profile goes to "open_u") */
+  CLSPH_TRY(open_create(sim, -1, &w->open));
   /* the advection step's buffers (the particles' current order; remade every step) */
   const size_t cap = ps->cap, rv = 2 * sizeof(real), groups = sim_reduce_groups(cap);
   CLSPH_TRY(
@@ -477,12 +486,39 @@ done:
   return st;
 }
 
+/* The layers' ρ and p before a sub-step's sums (solvers/open): an entry layer particle takes its
+ * row's first fluid particle's (n·∇ρ = n·∇p = 0), an exit one ρ0 and p = p_bg, the zero gauge
+ * pressure of the outlet. */
+static enum clsph_status open_layers(struct sim *sim, struct wcr *w)
+{
+  enum clsph_status st = CLSPH_OK;
+  const double rho0 = sim->scene->rho0;
+  CLSPH_TRY(open_layer_scalar(&w->open, sim, pset_mem(&sim->ps, w->f_rho), &rho0));
+  CLSPH_TRY(open_layer_scalar(&w->open, sim, pset_mem(&sim->ps, w->f_p), &w->p_bg));
+done:
+  return st;
+}
+
+/* After the step's last motion: the recycling, then the state a recycled particle takes over from
+ * the entry particle whose place it takes (ρ, p, V; dρ/dt is zero on every layer particle). */
+static enum clsph_status open_recycle_layers(struct sim *sim, struct wcr *w)
+{
+  enum clsph_status st = CLSPH_OK;
+  CLSPH_TRY(open_recycle(&w->open, sim));
+  const int fields[] = {w->f_rho, w->f_p, w->f_drho, sim->f_vol};
+  for (size_t k = 0; k < sizeof fields / sizeof *fields; ++k)
+    CLSPH_TRY(open_recycle_copy(&w->open, sim, fields[k]));
+done:
+  return st;
+}
+
 static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
 {
   enum clsph_status st = CLSPH_OK;
   struct wcr *w = state;
   const double h = sim->sm.h;
   CLSPH_TRY(configure(sim, w, w->reinit, list_skin(sim, fmax(w->vmax, w->u_scale), dt)));
+  if (w->open.nsec > 0) CLSPH_TRY(open_layer_velocity(&w->open, sim));
   CLSPH_TRY(advection(sim, w));
   /* the acoustic sub-steps: equal, at most CFL_ac h/(c0 + |v|max) each */
   const double dt_ac = w->cfl_ac * h / (w->c0 + w->vmax);
@@ -490,10 +526,13 @@ static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
   const double d = dt / (double)nac;
   CLSPH_TRY(drift(sim, w, 0.0, 0.5 * d, 0.5 * d, 1u));
   for (long k = 0; k < nac; ++k) {
+    if (w->open.nsec > 0) CLSPH_TRY(open_layers(sim, w));
     CLSPH_TRY(relax(sim, w, d));
     const double tail = k + 1 < nac ? d : 0.5 * d; /* the next sub-step's first half too */
     CLSPH_TRY(drift(sim, w, d, tail, tail, 0u));
+    if (w->open.nsec > 0) CLSPH_TRY(open_move(&w->open, sim, d));
   }
+  if (w->open.nsec > 0) CLSPH_TRY(open_recycle_layers(sim, w));
   double pairs = 0.0;
   CLSPH_TRY(count_pairs(sim, w, &pairs));
   sim->substeps = nac;
@@ -583,6 +622,7 @@ static void wcr_destroy(void *state)
   cl_mem *ms[] = {&w->d_nlist, &w->d_ncount,  &w->d_bmat,  &w->d_sigma, &w->d_prior, &w->d_shift,
                   &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,  &w->d_none};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
+  open_destroy(&w->open);
   free(w->h_partial);
   free(w->h_force);
   free(w);
