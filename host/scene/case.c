@@ -892,8 +892,10 @@ static int section_common(lua_State *L, enum scene_section_kind kind)
   c->layers = (int)layers;
   c->ramp = get_number(L, 1, fn, "ramp", 0.0);
   if (!(isfinite(c->ramp) && c->ramp >= 0.0))
-    luaL_error(L, "%s: ramp must be a time of 0 s or more (the prescribed velocity rises over it), "
-               "not %f", fn, c->ramp);
+    luaL_error(L,
+               "%s: ramp must be a time of 0 s or more (the prescribed velocity rises over it), "
+               "not %f",
+               fn, c->ramp);
   if (kind == SCENE_INFLOW) {
     c->velocity = get_number(L, 1, fn, "velocity", NAN);
     if (!isfinite(c->velocity)) luaL_error(L, "inflow: needs velocity = (m/s)");
@@ -908,13 +910,15 @@ static int section_common(lua_State *L, enum scene_section_kind kind)
                  out_profiles[p], p == 2 ? "peak" : "mean");
     if (c->profile == 0 && !isnan(c->velocity))
       luaL_error(L,
-                 "outflow: velocity = %g needs a prescribed profile (\"parabolic\" or "
+                 "outflow: velocity = %f needs a prescribed profile (\"parabolic\" or "
                  "\"uniform\"); a natural exit takes the velocity of the fluid",
                  c->velocity);
     if (c->profile == 0) c->velocity = 0.0;
     if (c->profile == 0 && c->ramp > 0.0)
-      luaL_error(L, "outflow: ramp = %g needs a prescribed profile: a natural exit takes the "
-                 "velocity of the fluid", c->ramp);
+      luaL_error(L,
+                 "outflow: ramp = %f needs a prescribed profile: a natural exit takes the "
+                 "velocity of the fluid",
+                 c->ramp);
   }
   return 0;
 }

@@ -81,8 +81,8 @@ struct scene_section {
   enum scene_profile profile; /* outflow: 0 (natural exit, n·∇u = 0) unless prescribed */
   double velocity; /* mean (uniform) or peak (parabolic) normal speed, m/s; 0 for a natural exit */
   int layers;      /* particle layers outside the section (3 unless given) */
-  double ramp;     /* the prescribed velocity rises as ½(1 − cos(π t/ramp)) until t = ramp, s (0:
-                    * at once) */
+  double ramp; /* the prescribed velocity rises as ½(1 − cos(π t/ramp)) until t = ramp, s (0:
+                * at once) */
   int line;
 };
 

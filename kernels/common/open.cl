@@ -107,9 +107,8 @@ __kernel void open_layer_velocity(const uint n, const struct grid g,
                                   __global const uint *cell_start, __global const realv *pos,
                                   __global const uint *kind, __global const uint *section,
                                   __global const real *sec, const real dr, const real time,
-                                  __global realv *vel,
-                                  __global realv *u_layer, __global uint *src, __global uint *near,
-                                  __global uint *flags)
+                                  __global realv *vel, __global realv *u_layer, __global uint *src,
+                                  __global uint *near, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -127,7 +126,7 @@ __kernel void open_layer_velocity(const uint n, const struct grid g,
   /* the ramp's factor, ½(1 − cos(π t/T)) while t < T */
   const real rise = time < s.ramp ? R(0.5) * (R(1.0) - cospi(time / s.ramp)) : R(1.0);
   if (ki == OPEN_INFLOW) {
-    u = u_layer[i]; /* prescribed u_in (sec 3.3.2) */
+    u = u_layer[i];        /* prescribed u_in (sec 3.3.2) */
     if (s.ramp > R(0.0)) { /* the geometry's u_in, less the ramp's factor while it rises */
       u = rise * open_profile(&s, along) * s.n;
       u_layer[i] = u;
@@ -151,21 +150,49 @@ __kernel void open_layer_velocity(const uint n, const struct grid g,
 
 /* A scalar of the layers (a weakly-compressible scheme's density or pressure), after
  * open_layer_velocity: an entry layer particle takes the value of its row's first fluid particle
- * (the zeroth-order extrapolation from the fluid: n·∇a = 0); an exit layer particle takes
- * exit_value (copy_exit = 0: p = 0, ρ = ρ0 at a natural exit) or, copy_exit = 1, its row's first
- * fluid particle's too. A particle without fluid in its row keeps its value. */
+ * (the zeroth-order extrapolation from the fluid: n·∇a = 0); an exit layer particle takes its
+ * section's exit_value (copy_exit = 0: e.g. p = 0, ρ = ρ0 at a natural exit) or, copy_exit = 1,
+ * its row's first fluid particle's too. A particle without fluid in its row keeps its value. */
 __kernel void open_layer_scalar(const uint n, __global const uint *kind, __global const uint *near,
-                                const uint copy_exit, const real exit_value, __global real *a)
+                                __global const uint *section, const uint copy_exit,
+                                __global const real *exit_value, __global real *a)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
   const uint ki = kind[i];
   if (ki == OPEN_OUTFLOW && copy_exit == 0u) {
-    a[i] = exit_value;
+    a[i] = exit_value[section[i]];
   } else if (ki == OPEN_INFLOW || ki == OPEN_OUTFLOW) {
     const uint m = near[i];
     if (m != i) a[i] = a[m];
   }
+}
+
+/* The fluid's flow through section k: over the fluid particles of its first row (0 <= h < δr,
+ * 0 <= s <= len), the sum of the normal speed through it (in at an entry, u·n; out at an exit,
+ * −u·n) and their count, into partial[g] and partial[G + g] for work-group g of G. */
+__kernel void open_exit_sums(const uint n, __global const realv *pos, __global const realv *vel,
+                             __global const uint *kind, __global const real *sec, const uint k,
+                             const real dr, __global real *partial)
+{
+  __local real s[REDUCE_WG];
+  const uint l = get_local_id(0), grp = get_group_id(0), groups = get_num_groups(0);
+  const struct open_section c = open_section_load(sec, k);
+  real u = R(0.0), m = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    if (kind[i] != OPEN_FLUID) continue;
+    const realv d = pos[i] - c.a;
+    const real along = dot(d, c.t), h = dot(d, c.n);
+    if (h < R(0.0) || h >= dr || along < R(0.0) || along > c.len) continue;
+    u += c.kind == 1u ? dot(vel[i], c.n) : -dot(vel[i], c.n);
+    m += R(1.0);
+  }
+  s[l] = u;
+  reduce_local_sum(s);
+  if (l == 0) partial[grp] = s[0];
+  s[l] = m;
+  reduce_local_sum(s);
+  if (l == 0) partial[groups + grp] = s[0];
 }
 
 /* The layers move with their own (prescribed or copied) velocity: x += δt u. */

@@ -106,6 +106,14 @@ enum clsph_status open_create(struct sim *sim, int f_u, struct open_sections *ou
   CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(cl_uint), NULL, &o.d_list, "recycle list"));
   const cl_uint zeros[5] = {0, 0, 0, 0, 0};
   CLSPH_TRY(kern_buffer(sim->dev, sizeof zeros, zeros, &o.d_count, "recycle count"));
+  const size_t groups = sim_reduce_groups(ps->cap);
+  CLSPH_TRY(kern_buffer(sim->dev, o.nsec * sizeof(real), NULL, &o.d_exitval, "exit values"));
+  CLSPH_TRY(
+      kern_buffer(sim->dev, groups * o.nsec * 2 * sizeof(real), NULL, &o.d_partial, "exit sums"));
+  o.h_exitval = calloc(o.nsec, sizeof *o.h_exitval);
+  o.h_partial = calloc(groups * o.nsec * 2, sizeof *o.h_partial);
+  CLSPH_CHECK(o.h_exitval != NULL && o.h_partial != NULL, CLSPH_E_NOMEM, "%s: out of memory",
+              sim->scheme->name);
   const struct {
     cl_kernel *k;
     const char *name;
@@ -115,7 +123,8 @@ enum clsph_status open_create(struct sim *sim, int f_u, struct open_sections *ou
             {&o.k_classify, "open_classify"},
             {&o.k_recycle, "open_recycle"},
             {&o.k_copy_real, "open_copy_real"},
-            {&o.k_copy_realv, "open_copy_realv"}};
+            {&o.k_copy_realv, "open_copy_realv"},
+            {&o.k_exit_sums, "open_exit_sums"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
   *out = o;
@@ -145,20 +154,105 @@ done:
   return st;
 }
 
-enum clsph_status open_layer_scalar(struct open_sections *o, struct sim *sim, cl_mem a,
-                                    const double *exit_value)
+/* the layers' scalar with the exits' values in h_exitval (copy_exit: from the fluid instead) */
+static enum clsph_status layer_scalar(struct open_sections *o, struct sim *sim, cl_mem a,
+                                      cl_uint copy_exit)
 {
   enum clsph_status st = CLSPH_OK;
   struct pset *ps = &sim->ps;
-  const cl_uint n = (cl_uint)ps->n, copy_exit = exit_value == NULL;
-  const real value = exit_value != NULL ? (real)*exit_value : (real)0;
-  if (o->nsec == 0) goto done;
+  const cl_uint n = (cl_uint)ps->n;
+  if (!copy_exit)
+    CLSPH_TRY(kern_write(sim->dev, o->d_exitval, o->nsec * sizeof(real), o->h_exitval));
   cl_mem kind = pset_mem(ps, sim->f_kind), near = pset_mem(ps, o->f_near);
-  CLSPH_TRY(KERN_SET(o->k_scalar, KARG(n), KARG(kind), KARG(near), KARG(copy_exit), KARG(value),
-                     KARG(a)));
+  cl_mem section = pset_mem(ps, o->f_section);
+  CLSPH_TRY(KERN_SET(o->k_scalar, KARG(n), KARG(kind), KARG(near), KARG(section), KARG(copy_exit),
+                     KARG(o->d_exitval), KARG(a)));
   CLSPH_TRY(kern_launch(sim->dev, o->k_scalar, n, NULL));
 done:
   return st;
+}
+
+enum clsph_status open_layer_scalar(struct open_sections *o, struct sim *sim, cl_mem a,
+                                    const double *exit_value)
+{
+  if (o->nsec == 0) return CLSPH_OK;
+  for (cl_uint k = 0; k < o->nsec; ++k)
+    o->h_exitval[k] = exit_value != NULL ? (real)*exit_value : (real)0;
+  return layer_scalar(o, sim, a, exit_value == NULL);
+}
+
+enum clsph_status open_layer_scalar_exits(struct open_sections *o, struct sim *sim, cl_mem a,
+                                          const double *exit_value)
+{
+  if (o->nsec == 0) return CLSPH_OK;
+  for (cl_uint k = 0; k < o->nsec; ++k) o->h_exitval[k] = (real)exit_value[k];
+  return layer_scalar(o, sim, a, 0u);
+}
+
+enum clsph_status open_exit_speed(struct open_sections *o, struct sim *sim, double *speed)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  const real dr = (real)sim->scene->dr;
+  const size_t groups = sim_reduce_groups(ps->n);
+  if (o->nsec == 0) goto done;
+  cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
+  cl_mem kind = pset_mem(ps, sim->f_kind);
+  for (cl_uint k = 0; k < o->nsec; ++k) {
+    speed[k] = 0.0;
+    if (sim->scene->sections[k].kind != SCENE_OUTFLOW) continue;
+    CLSPH_TRY(KERN_SET(o->k_exit_sums, KARG(n), KARG(pos), KARG(vel), KARG(kind), KARG(o->d_sec),
+                       KARG(k), KARG(dr), KARG(o->d_partial)));
+    CLSPH_TRY(kern_launch_wg(sim->dev, o->k_exit_sums, groups * 64, 64, NULL));
+    CLSPH_TRY(kern_read(sim->dev, o->d_partial, groups * 2 * sizeof(real), o->h_partial));
+    double u = 0.0, m = 0.0;
+    for (size_t g = 0; g < groups; ++g) {
+      u += (double)o->h_partial[g];
+      m += (double)o->h_partial[groups + g];
+    }
+    speed[k] = m > 0.0 ? u / m : 0.0;
+  }
+done:
+  return st;
+}
+
+/* the rise of a section's prescribed speed at time t (kernels/common/open.cl) */
+static double ramp_factor(const struct scene_section *c, double t)
+{
+  return t < c->ramp ? 0.5 * (1.0 - cos(acos(-1.0) * t / c->ramp)) : 1.0;
+}
+
+/* the flux of a prescribed profile per unit depth: U len (uniform), ⅔ U len (parabolic) */
+static double section_flux(const struct scene_section *c, double t)
+{
+  const double len = hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
+  const double shape = c->profile == SCENE_PARABOLIC ? 2.0 / 3.0 : 1.0;
+  return ramp_factor(c, t) * c->velocity * shape * len;
+}
+
+double open_natural_flux(const struct scene *sc, double t)
+{
+  double q = 0.0;
+  for (int k = 0; k < sc->nsections; ++k) {
+    const struct scene_section *c = &sc->sections[k];
+    if (c->kind == SCENE_INFLOW)
+      q += section_flux(c, t);
+    else if (c->profile != 0)
+      q -= section_flux(c, t);
+  }
+  return q;
+}
+
+double open_natural_width(const struct scene *sc)
+{
+  double w = 0.0;
+  for (int k = 0; k < sc->nsections; ++k) {
+    const struct scene_section *c = &sc->sections[k];
+    if (c->kind == SCENE_OUTFLOW && c->profile == 0)
+      w += hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
+  }
+  return w;
 }
 
 enum clsph_status open_move(struct open_sections *o, struct sim *sim, double dt)
@@ -222,11 +316,13 @@ done:
 
 void open_destroy(struct open_sections *o)
 {
-  cl_kernel ks[] = {o->k_velocity, o->k_scalar,    o->k_move,      o->k_classify,
-                    o->k_recycle,  o->k_copy_real, o->k_copy_realv};
+  cl_kernel ks[] = {o->k_velocity, o->k_scalar,    o->k_move,       o->k_classify,
+                    o->k_recycle,  o->k_copy_real, o->k_copy_realv, o->k_exit_sums};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (ks[k] != NULL) clReleaseKernel(ks[k]);
-  cl_mem *bufs[] = {&o->d_sec, &o->d_role, &o->d_list, &o->d_count};
+  cl_mem *bufs[] = {&o->d_sec, &o->d_role, &o->d_list, &o->d_count, &o->d_exitval, &o->d_partial};
   for (size_t k = 0; k < sizeof bufs / sizeof *bufs; ++k) kern_release(bufs[k]);
+  free(o->h_exitval);
+  free(o->h_partial);
   memset(o, 0, sizeof *o);
 }

@@ -75,7 +75,11 @@ struct open_sections {
   cl_mem d_count;               /* recycled so far, entry and exit particles left waiting, pairs
                                  * of the last recycling and where their entry particles start */
   cl_uint used, off;            /* pairs of the last recycling, read back: see d_count */
+  cl_mem d_exitval;             /* per section: an exit's value of a layer scalar */
+  cl_mem d_partial;             /* the exits' sums, per work-group and section */
+  real *h_exitval, *h_partial;
   cl_kernel k_velocity, k_scalar, k_move, k_classify, k_recycle, k_copy_real, k_copy_realv;
+  cl_kernel k_exit_sums;
 };
 
 /** @brief The -D switches of kernels/common/open.cl: OPEN_SECTIONS = 1 for a scene with
@@ -108,6 +112,24 @@ enum clsph_status open_layer_velocity(struct open_sections *o, struct sim *sim);
  *  @param a a field of reals (e.g. ρ or p) */
 enum clsph_status open_layer_scalar(struct open_sections *o, struct sim *sim, cl_mem a,
                                     const double *exit_value);
+
+/** @brief open_layer_scalar with a value per section: the exit layers of section k take
+ *  exit_value[k] (entries copy their row's first fluid particle as above).
+ *  @param exit_value nsec values, those of the entries unused */
+enum clsph_status open_layer_scalar_exits(struct open_sections *o, struct sim *sim, cl_mem a,
+                                          const double *exit_value);
+
+/** @brief The mean normal speed through each section of the fluid in its first row (0 <= h < δr),
+ *  in at an entry and out at an exit, m/s, into speed[k] for section k (0 without fluid there). */
+enum clsph_status open_exit_speed(struct open_sections *o, struct sim *sim, double *speed);
+
+/** @brief The volume flux (per unit depth, m²/s) that the entries let in at time t, less what the
+ *  exits with a prescribed profile let out: what the natural exits must let out in a steady
+ *  incompressible flow. With the ramps (inflow { ramp }). */
+double open_natural_flux(const struct scene *sc, double t);
+
+/** @brief The total length of the natural exits (outflow without a profile), m. */
+double open_natural_width(const struct scene *sc);
 
 /** @brief Move the layer particles with their velocity, x += dt u (in place). */
 enum clsph_status open_move(struct open_sections *o, struct sim *sim, double dt);

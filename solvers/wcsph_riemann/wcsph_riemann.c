@@ -22,6 +22,9 @@
  *                        under gravity), "summation" (ρ = ρ_sum; the default otherwise) or
  *                        "continuity" (no re-initialisation)
  *   wall_dissipation     "limited" (the fluid pairs' limiter; default) or "full" (sec 4.3)
+ *   outlet               a natural exit's pressure: "characteristic" (default; see open_layers)
+ *                        or "fixed" (p = 0: the paper's zero-pressure outlet, which reflects
+ *                        sound)
  *   advection_cfl, acoustic_cfl  CFL_ad (0.25) and CFL_ac (0.6)
  *   walls, wall_layers   as for every scheme (dummy walls, 3 layers: the support is 2.6 dr).
  * Room for the k-ε model (its own issue): the viscosity enters the viscous sums as µ̃_ij, and
@@ -52,11 +55,12 @@ struct wcr {
   cl_kernel k_config, k_count, k_adv, k_drift, k_mom, k_cont, k_force, k_lattice;
   double c0, p_bg, mass, sigma0, lambda, u_scale;
   double cfl_ad, cfl_ac, tvf_alpha;
-  int tvf, ard, wall_full, cont_riemann;
+  int tvf, ard, wall_full, cont_riemann, outlet_fixed;
   cl_uint reinit;
-  double vmax;    /* the fluid's largest speed at the last max_dt, m/s */
-  int configured; /* the list and B belong to the particles' current order */
+  double vmax;               /* the fluid's largest speed at the last max_dt, m/s */
+  int configured;            /* the list and B belong to the particles' current order */
   struct open_sections open; /* inflow and outflow sections (solvers/open), nsec = 0: none */
+  double *exit_p, *exit_rho; /* per section: the exits' p and ρ of this advection step */
 };
 
 static const char *const sources[] = {OPEN_SOURCES,
@@ -71,6 +75,7 @@ static const char *const options[] = {"sound_speed",
                                       "ard",
                                       "density",
                                       "wall_dissipation",
+                                      "outlet",
                                       "continuity",
                                       "transport_coefficient",
                                       "advection_cfl",
@@ -142,6 +147,8 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   CLSPH_TRY(option_choice(sc, "wall_dissipation", wall_names, 0, &w->wall_full));
   static const char *const cont_names[] = {"plain", "riemann", NULL};
   CLSPH_TRY(option_choice(sc, "continuity", cont_names, 1, &w->cont_riemann));
+  static const char *const outlet_names[] = {"characteristic", "fixed", NULL};
+  CLSPH_TRY(option_choice(sc, "outlet", outlet_names, 0, &w->outlet_fixed));
   double ard = 0.0;
   CLSPH_TRY(option_number(sc, "ard", 0.0, 1.0, "1 (on) or 0 (off)", &ard));
   CLSPH_CHECK(ard == 0.0 || ard == 1.0, CLSPH_E_INPUT,
@@ -252,6 +259,8 @@ done:
   return st;
 }
 
+static void wcr_destroy(void *state);
+
 static enum clsph_status wcr_create(struct sim *sim, void **state)
 {
   enum clsph_status st = CLSPH_OK;
@@ -319,6 +328,11 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   /* the entry and exit layers: their velocity in a field of their own (the fluid's vel is the
    * scheme's state; the layers' geometry velocity u_in or the exit profile goes to "open_u") */
   CLSPH_TRY(open_create(sim, -1, &w->open));
+  if (w->open.nsec > 0) {
+    w->exit_p = calloc(2 * w->open.nsec, sizeof *w->exit_p);
+    CLSPH_CHECK(w->exit_p != NULL, CLSPH_E_NOMEM, "out of memory");
+    w->exit_rho = w->exit_p + w->open.nsec;
+  }
   /* the advection step's buffers (the particles' current order; remade every step) */
   const size_t cap = ps->cap, rv = 2 * sizeof(real), groups = sim_reduce_groups(cap);
   CLSPH_TRY(
@@ -356,10 +370,7 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
 done:
   free(buf);
   free(ubuf);
-  if (w != NULL) {
-    free(w->h_partial);
-    free(w);
-  }
+  wcr_destroy(w); /* on failure: what was made so far */
   return st;
 }
 
@@ -486,15 +497,48 @@ done:
   return st;
 }
 
-/* The layers' ρ and p before a sub-step's sums (solvers/open): an entry layer particle takes its
- * row's first fluid particle's (n·∇ρ = n·∇p = 0), an exit one ρ0 and p = p_bg, the zero gauge
- * pressure of the outlet. */
+/* The exits' ρ and p for an advection step (solvers/open). A zero-pressure outlet (p = p_bg, the
+ * zero gauge pressure; outlet = "fixed") reflects sound: a channel between a velocity entry and
+ * such an exit rings like a pipe closed at one end (period 4 L/c0), and the Riemann solver damps
+ * it little. Behind the square cylinder (cases/square_cylinder.lua, Re = 100, H/40, 32 D long,
+ * c0 = 10 U0) the channel's mean speed swung by ±40% for 10 D/U0 while the entries and exits
+ * traded particles out of step, until the exit's waiting particles piled up (t = 9). The
+ * default outlet = "characteristic" lets a plane wave leave: the incoming characteristic
+ * p − ρ0 c0 u_n is set to its undisturbed value, so that the exit's pressure is
+ *   p_exit = p_bg + ρ0 c0 (⟨u_n⟩ − ū),  ρ_exit = ρ0 + (p_exit − p_bg)/c0²,
+ * ⟨u_n⟩ the mean speed out of the fluid in the exit's first row and ū the speed that carries
+ * out what the entries' prescribed profiles let in (less what prescribed exits let out) over
+ * the natural exits' width: the outlet holds p = p_bg on average and pushes back when more
+ * leaves than enters (a non-reflecting condition for plane waves, Rudy & Strikwerda 1980, on the
+ * section's mean, so that the profile across the exit is free). A prescribed exit profile keeps
+ * p = p_bg. Measuring ū instead from the entries' first fluid rows (the same sampling of the
+ * profile as the exit's) made the Poiseuille channel's exit worse, not better (p_err_exit_max
+ * 0.32 against 0.12 at dr = 0.1). */
+static enum clsph_status open_exits(struct sim *sim, struct wcr *w)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *sc = sim->scene;
+  const double rho0 = sc->rho0, c0 = w->c0;
+  const double width = open_natural_width(sc);
+  const double ubar = width > 0.0 ? open_natural_flux(sc, sim->time) / width : 0.0;
+  if (!w->outlet_fixed) CLSPH_TRY(open_exit_speed(&w->open, sim, w->exit_p));
+  for (int k = 0; k < sc->nsections; ++k) {
+    const int natural = sc->sections[k].kind == SCENE_OUTFLOW && sc->sections[k].profile == 0;
+    const double dp = natural && !w->outlet_fixed ? rho0 * c0 * (w->exit_p[k] - ubar) : 0.0;
+    w->exit_p[k] = w->p_bg + dp;
+    w->exit_rho[k] = rho0 + dp / (c0 * c0);
+  }
+done:
+  return st;
+}
+
+/* The layers' ρ and p before a sub-step's sums: an entry layer particle takes its row's first
+ * fluid particle's (n·∇ρ = n·∇p = 0), an exit one its section's (open_exits). */
 static enum clsph_status open_layers(struct sim *sim, struct wcr *w)
 {
   enum clsph_status st = CLSPH_OK;
-  const double rho0 = sim->scene->rho0;
-  CLSPH_TRY(open_layer_scalar(&w->open, sim, pset_mem(&sim->ps, w->f_rho), &rho0));
-  CLSPH_TRY(open_layer_scalar(&w->open, sim, pset_mem(&sim->ps, w->f_p), &w->p_bg));
+  CLSPH_TRY(open_layer_scalar_exits(&w->open, sim, pset_mem(&sim->ps, w->f_rho), w->exit_rho));
+  CLSPH_TRY(open_layer_scalar_exits(&w->open, sim, pset_mem(&sim->ps, w->f_p), w->exit_p));
 done:
   return st;
 }
@@ -518,7 +562,10 @@ static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
   struct wcr *w = state;
   const double h = sim->sm.h;
   CLSPH_TRY(configure(sim, w, w->reinit, list_skin(sim, fmax(w->vmax, w->u_scale), dt)));
-  if (w->open.nsec > 0) CLSPH_TRY(open_layer_velocity(&w->open, sim));
+  if (w->open.nsec > 0) {
+    CLSPH_TRY(open_layer_velocity(&w->open, sim));
+    CLSPH_TRY(open_exits(sim, w));
+  }
   CLSPH_TRY(advection(sim, w));
   /* the acoustic sub-steps: equal, at most CFL_ac h/(c0 + |v|max) each */
   const double dt_ac = w->cfl_ac * h / (w->c0 + w->vmax);
@@ -623,6 +670,7 @@ static void wcr_destroy(void *state)
                   &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,  &w->d_none};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
   open_destroy(&w->open);
+  free(w->exit_p);
   free(w->h_partial);
   free(w->h_force);
   free(w);
