@@ -100,8 +100,21 @@ for s in isph_usaw wcsph_usaw; do # the last frame of each wedge run, pressure
 done
 python3 tests/validation/wedge_chart.py tests/validation/wedge_force \
   "isph-usaw=$out/dam_break_wedge_isph_usaw" "wcsph-usaw=$out/dam_break_wedge_wcsph_usaw" || true
+# wcsph-riemann (Wang, Sun & Hu): the cavity at Re = 100 and 1000 at the resolutions PySPH's
+# figures are quoted at, and the square cylinder on isph-rotational's chart (Re = 1, c0 = 30 U0)
+# and at Re = 20 and 100 in Breuer's geometry (32 D, the cylinder 8 D from the entry)
+for n in 30 50 70; do
+  run cavity_re100_n${n}_wcsph_riemann cavity re=100 n=$n t_end=10 riemann=1
+  run cavity_re1000_n${n}_wcsph_riemann cavity re=1000 n=$n t_end=30 riemann=1
+done
+for n in 40 80; do
+  run square_cylinder_n${n}_riemann square_cylinder riemann=1 n=$n re=1 c0=30
+  run square_cylinder_re20_n${n}_riemann square_cylinder riemann=1 n=$n re=20 t_end=30 length=32 xc=8 average_from=15
+done
+run square_cylinder_re100_n40_riemann square_cylinder riemann=1 n=40 re=100 t_end=60 length=32 xc=8 average_from=20 outputs=30
 python3 tests/validation/results.py "$out" tests/validation/RESULTS.md
 # accuracy against cost and stability maps (tests/harness/studies.txt): CSVs and charts
-for study in "accuracy cavity_re100" "accuracy cylinder_array" "stability cavity_re_cfl"; do
+for study in "accuracy cavity_re100" "accuracy cylinder_array" "stability cavity_re_cfl" \
+  "accuracy square_cylinder" "stability ard_cavity_re1000" "stability ard_dam_break"; do
   python3 tests/harness/harness.py $study --build "$build" --results tests/validation || true
 done
