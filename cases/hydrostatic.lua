@@ -4,6 +4,9 @@
 -- pressure_error compares with ρ g (H − z); pressure_error_particles with ρ g (H − dr/2 − z),
 -- the hydrostatic pressure under p̃ = 0 on the top particles themselves, the paper's literal
 -- reading (--set surface_offset=0; isph-usaw imposes p̃ = 0 half a spacing beyond them).
+-- side_wall_error compares the probe "side_wall", a sensor's face on the right wall from 0.4 to
+-- 0.6 of the depth, with ρ g H/2 (the pressure at its centre), side_wall_vs_centre with the
+-- pressure interpolated at the same depths on the tank's centre line (both relative to ρ g H/2).
 -- --set wcsph=1 runs the weakly-compressible baseline, with the pressure gradient of its pressure
 -- less the hydrostatic part (pressure_form = "dynamic", the form that holds a fluid at rest);
 -- --set dynamic=0 gives it the paper's G+ of the total pressure (6% off and 3e-2 √(gH) currents
@@ -27,6 +30,7 @@ wall { {0, 1.5 * depth}, {0, 0}, {width, 0}, {width, 1.5 * depth}, fluid = "left
        group = "tank" }
 fill { 0, 0, width, depth, name = "water" }
 probe { "bottom", {width / 2, 2 * dr} }
+probe { "side_wall", {width, 0.4 * depth}, {width, 0.6 * depth} }
 profile { "column", from = {width / 2, 0}, to = {width / 2, depth}, points = 41 }
 force { "tank" }
 run { t_end = t_end, output_every = t_end / 10 }
@@ -54,7 +58,14 @@ function metrics(sim)
   if sim.min("pos", 1) < 0 or sim.max("pos", 1) > width or sim.min("pos", 2) < 0 then
     crossed = crossed + 1
   end
+  -- the sensor on the wall against the exact pressure and against the pressure interpolated
+  -- along the tank's centre line over the same depths (the interpolation, not the wall)
+  local side, centre = 1000 * g * 0.5 * depth, 0
+  for k = 0, 19 do centre = centre + sim.sample("p", width / 2, depth * (0.405 + 0.01 * k)) / 20 end
+  local sensor = sim.probe("side_wall", "p")
   return { pressure_error = worst, pressure_error_particles = worst_p,
+           side_wall_error = math.abs(sensor - side) / side,
+           side_wall_vs_centre = math.abs(sensor - centre) / side,
            speed_ratio = speed / math.sqrt(g * depth),
            crossed_wall = crossed }
 end

@@ -92,6 +92,23 @@ clsph_cli_test(case_wall_turns_back ARGS info ${CASE_DIR}/bad_wall_cross.lua --s
                REGEX "bad_wall_cross.lua:12: wall: the polyline turns back on itself at its point 2, .0.9, 0.5.")
 clsph_cli_test(case_probe_outside ARGS info ${CASE_DIR}/bad_wall_cross.lua --set which=3 RC 2
                REGEX "bad_wall_cross.lua:15: probe 'outside' at .1.5, 0.5. lies outside the domain")
+# Bad face probes (tests/case/bad_probe.lua), each refused with its line: three points, points =
+# on a point probe, a face whose ends coincide, a fractional count, a face's end outside the
+# domain, a name used twice, from = without to =.
+clsph_cli_test(case_probe_three_points ARGS info ${CASE_DIR}/bad_probe.lua --set which=1 RC 2
+               REGEX "bad_probe.lua:10: probe 'three': 3 points given; a probe is a point")
+clsph_cli_test(case_probe_point_points ARGS info ${CASE_DIR}/bad_probe.lua --set which=2 RC 2
+               REGEX "bad_probe.lua:11: probe 'point': points = 3 belongs to a face")
+clsph_cli_test(case_probe_face_same_ends ARGS info ${CASE_DIR}/bad_probe.lua --set which=3 RC 2
+               REGEX "bad_probe.lua:12: probe 'same': the face's two ends are the same point")
+clsph_cli_test(case_probe_face_points ARGS info ${CASE_DIR}/bad_probe.lua --set which=4 RC 2
+               REGEX "bad_probe.lua:13: probe 'half': points = 2.5 must be a whole number")
+clsph_cli_test(case_probe_face_outside ARGS info ${CASE_DIR}/bad_probe.lua --set which=5 RC 2
+               REGEX "bad_probe.lua:14: probe 'long': the face's end .0.5, 1.5. lies outside")
+clsph_cli_test(case_probe_twice ARGS info ${CASE_DIR}/bad_probe.lua --set which=6 RC 2
+               REGEX "bad_probe.lua:17: probe 'twice' is declared twice .first at line 16.")
+clsph_cli_test(case_probe_face_one_end ARGS info ${CASE_DIR}/bad_probe.lua --set which=7 RC 2
+               REGEX "bad_probe.lua:19: probe 'open': a face needs both ends")
 clsph_cli_test(case_profile_outside ARGS info ${CASE_DIR}/bad_wall_cross.lua --set which=4 RC 2
                REGEX "bad_wall_cross.lua:16: profile 'long' from .0.5, 0. to .0.5, 2. leaves the domain")
 # fill { pressure, density }: refused where the scheme takes no such field, or for a bad value
@@ -123,6 +140,27 @@ function(clsph_run_test name case)
                  -DCASE=${case} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/${name} "-DSETS=${sets}"
                  "-DBOUNDS=${bounds}" -P ${CASE_DIR}/run_case.cmake)
 endfunction()
+# Face probes (tests/case/probe_face.lua, a shear layer u = y that the ballistic scheme carries):
+# a face reads the mean of the interpolation at the midpoints of its equal parts (24 from dr: at
+# dr/4), which for u = y is the exact mean over the face (measured 6e-17 in double, 6e-9 in
+# float); the points with no fluid within the support are left out (a face across the layer's
+# surface), and a face with none reads NaN; a point probe reads sim.sample's value. The face and
+# sim.sample agree to 1.8e-9 in float (launches of 24 points and of 1 round differently).
+clsph_run_test(run_probe_face ${CASE_DIR}/probe_face.lua
+               BOUNDS "face_error<1e-6" "face_exact<1e-5" "points_error<1e-6" "dry>0.5"
+                      "point_error<1e-6")
+# A pressure sensor on a wall's face (cases/hydrostatic.lua, the probe "side_wall" on the right
+# wall from 0.4 to 0.6 of the depth, dr = H/20): on a vertical wall the one-sided interpolation of
+# the fluid reads the pressure at the same depth inside. isph-usaw (vertex particles on the wall):
+# 3.0e-5 of ρ g H/2 from the exact, 1.6e-5 from the centre line at the same depths (7.5e-6 and
+# 4.1e-6 in float); wcsph-riemann (dummy walls, fluid on one side only): 9.6e-4 from the centre
+# line (1.5e-3 in float) and 4.1% from the exact (2.5% in float), the lift of the whole tank by
+# its surface rows (4.0% on the centre line; 2.1% at dr = H/40).
+clsph_run_test(run_probe_wall_usaw ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua SETS dr=0.05 t_end=1
+               BOUNDS "side_wall_error<1e-3" "side_wall_vs_centre<1e-3")
+clsph_run_test(run_probe_wall_riemann ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
+               SETS riemann=1 dr=0.05 t_end=2
+               BOUNDS "side_wall_vs_centre<0.005" "side_wall_error<0.06")
 # sample(sim) writes a row of series.csv with each of the 5 snapshots, which sim.series reads
 # back (as recorded, 9 digits); sim.max over a region that holds particles, and nil for one that
 # holds none yet (written -1 by the case).

@@ -148,6 +148,30 @@ done:
   return st;
 }
 
+static enum clsph_status metric_probe(void *ctx, const char *name, const char *field, int comp,
+                                      double *value)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct sim *sim = ctx;
+  const struct scene *s = sim->scene;
+  const struct scene_probe *pr = NULL;
+  double out[4];
+  for (int k = 0; k < s->nprobes; ++k)
+    if (strcmp(s->probes[k].name, name) == 0) pr = &s->probes[k];
+  CLSPH_CHECK(pr != NULL, CLSPH_E_INPUT, "metrics: the case declares no probe '%s'", name);
+  int idx = pset_find(&sim->ps, field);
+  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  const struct pfield *f = &sim->ps.f[idx];
+  CLSPH_CHECK(f->type == PF_REAL && f->ncomp <= 4, CLSPH_E_INPUT,
+              "metrics: field '%s' cannot be interpolated", field);
+  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
+              field, f->nout);
+  CLSPH_TRY(sim_sample_probes(sim, idx, 1, pr, out));
+  *value = out[comp];
+done:
+  return st;
+}
+
 static enum clsph_status metric_sample_many(void *ctx, const char *field, int comp, int np,
                                             const double *xy, double *values)
 {
@@ -248,6 +272,7 @@ void metrics_api(struct sim *sim, const char *dir, struct case_sim_api *api)
   api->stats = metric_stats;
   api->sample_many = metric_sample_many;
   api->sample = metric_sample;
+  api->probe = metric_probe;
   api->force = metric_force;
   api->force_history = metric_force_history;
   api->dir = dir;

@@ -368,6 +368,30 @@ done:
   return st;
 }
 
+/* Every recorded field at the probes (a point's value, or a face's mean: sim_sample_probes); one
+ * row of values per probe into rows. */
+static enum clsph_status probe_rows(struct sim *sim, double *rows, int ncols)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  const size_t np = (size_t)s->nprobes;
+  double *tmp = malloc(4 * np * sizeof *tmp);
+  int col = 0;
+  CLSPH_CHECK(tmp != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (int k = 0; k < sim->ps.nfields; ++k) {
+    const struct pfield *p = &sim->ps.f[k];
+    if (!sampled(p)) continue;
+    CLSPH_TRY(sim_sample_probes(sim, k, s->nprobes, s->probes, tmp));
+    for (size_t i = 0; i < np; ++i)
+      for (int c = 0; c < p->nout; ++c)
+        rows[i * (size_t)ncols + (size_t)(col + c)] = tmp[i * (size_t)p->ncomp + (size_t)c];
+    col += p->nout;
+  }
+done:
+  free(tmp);
+  return st;
+}
+
 static int sampled_columns(const struct pset *ps)
 {
   int n = 0;
@@ -382,22 +406,19 @@ enum clsph_status series_write(struct sim *sim, struct run_out *o, int what)
   const struct scene *s = sim->scene;
   const int nc = sampled_columns(&sim->ps);
   double *at = NULL, *rows = NULL;
+  /* the probes and the velocity gradient at the walls sum over neighbours: the cell table must be
+   * current (sorting is idempotent, so the next step's sort and a restart see the same order) */
+  if ((s->nprobes > 0 || s->nforces > 0) && (what & SERIES_TIME)) CLSPH_TRY(sim_sort(sim));
   if (s->nprobes > 0 && (what & SERIES_TIME)) {
-    at = malloc(2 * (size_t)s->nprobes * sizeof *at);
     rows = malloc((size_t)s->nprobes * (size_t)(nc + 1) * sizeof *rows);
-    CLSPH_CHECK(at != NULL && rows != NULL, CLSPH_E_NOMEM, "out of memory");
-    for (int p = 0; p < s->nprobes; ++p) {
-      at[2 * p] = s->probes[p].x[0];
-      at[2 * p + 1] = s->probes[p].x[1];
-    }
-    CLSPH_TRY(sample_all(sim, (size_t)s->nprobes, at, rows, nc));
+    CLSPH_CHECK(rows != NULL, CLSPH_E_NOMEM, "out of memory");
+    CLSPH_TRY(probe_rows(sim, rows, nc));
     fprintf(o->probes, "%.17g", sim->time);
     for (int i = 0; i < s->nprobes * nc; ++i) fprintf(o->probes, ",%.9g", rows[i]);
     fprintf(o->probes, "\n");
     fflush(o->probes);
-    free(at);
     free(rows);
-    at = rows = NULL;
+    rows = NULL;
   }
   for (int p = 0; p < s->nprofiles && (what & SERIES_PROFILES); ++p) {
     const struct scene_profile_line *pl = &s->profiles[p];
@@ -425,9 +446,6 @@ enum clsph_status series_write(struct sim *sim, struct run_out *o, int what)
     at = rows = NULL;
   }
   if (s->nforces > 0 && (what & SERIES_TIME)) {
-    /* the velocity gradient at the walls sums over neighbours: the cell table must be current
-     * (sorting is idempotent, so the next step's sort and a restart see the same order) */
-    CLSPH_TRY(sim_sort(sim));
     double *row = o->force_scratch;
     row[0] = sim->time;
     fprintf(o->forces, "%.17g", sim->time);

@@ -933,9 +933,15 @@ static int l_outflow(lua_State *L)
   return section_common(L, SCENE_OUTFLOW);
 }
 
+/* probe { "name", {x, y} } or { name = ..., at = {x, y} }: a point;
+ * probe { "name", {x0, y0}, {x1, y1}, points = N } or { name = ..., from = ..., to = ..., points =
+ * N }: a face, the mean over the midpoints of N equal parts of it (N from dr unless given: at
+ * finish, where dr is known). */
 static int l_probe(lua_State *L)
 {
-  static const char *const keys[] = {"name", "at", NULL};
+  static const char *const keys[] = {"name", "at", "from", "to", "points", NULL};
+  static const char forms[] = "a point, { \"name\", {x, y} }, or a face, { \"name\", {x0, y0}, "
+                              "{x1, y1} [, points = N] }";
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "probe");
@@ -943,18 +949,51 @@ static int l_probe(lua_State *L)
   struct scene_probe *p = grow(L, (void **)&s->probes, &s->nprobes, sizeof *p);
   p->line = current_line(L);
   lua_geti(L, 1, 1);
-  if (lua_type(L, -1) == LUA_TSTRING) {
-    snprintf(p->name, SCENE_NAME, "%s", lua_tostring(L, -1));
+  const int named = lua_type(L, -1) == LUA_TSTRING;
+  if (named) snprintf(p->name, SCENE_NAME, "%s", lua_tostring(L, -1));
+  lua_pop(L, 1);
+  if (!named) get_name(L, 1, "probe", "name", p->name, "");
+  if (p->name[0] == '\0') luaL_error(L, "probe: it needs a name; give %s", forms);
+  /* its points: after the name, or keyed (at = a point; from =, to = a face), not both */
+  const int first = named ? 2 : 1, given = (int)lua_rawlen(L, 1) - first + 1;
+  const int has_at = get_point(L, 1, "probe", "at", p->x);
+  const int has_from = get_point(L, 1, "probe", "from", p->x);
+  const int has_to = get_point(L, 1, "probe", "to", p->b);
+  if (given > 2) luaL_error(L, "probe '%s': %d points given; a probe is %s", p->name, given, forms);
+  if (given > 0 && (has_at || has_from || has_to))
+    luaL_error(L, "probe '%s': give its points after the name or as at = (from =, to =), not both",
+               p->name);
+  if (has_at && (has_from || has_to))
+    luaL_error(L, "probe '%s': at = makes a point probe, from = and to = a face: give one",
+               p->name);
+  if (has_from != has_to)
+    luaL_error(L, "probe '%s': a face needs both ends, from = {x0, y0} and to = {x1, y1}", p->name);
+  if (given <= 0 && !has_at && !has_from)
+    luaL_error(L, "probe '%s': where? give %s", p->name, forms);
+  for (int k = 0; k < given; ++k) {
+    lua_geti(L, 1, first + k);
+    to_point(L, "probe", k == 0 ? "its point (or the face's first end)" : "the face's second end",
+             k == 0 ? p->x : p->b);
     lua_pop(L, 1);
-    lua_geti(L, 1, 2);
-    to_point(L, "probe", "the point", p->x);
-    lua_pop(L, 1);
-  } else {
-    lua_pop(L, 1);
-    get_name(L, 1, "probe", "name", p->name, "");
-    if (p->name[0] == '\0' || !get_point(L, 1, "probe", "at", p->x))
-      luaL_error(L, "probe: give { \"name\", {x, y} } or { name = ..., at = {x, y} }");
   }
+  p->face = given == 2 || has_from;
+  const double np = get_number(L, 1, "probe", "points", 0);
+  char num[64]; /* lua_pushfstring has no %g */
+  snprintf(num, sizeof num, "%g", np);
+  if (!p->face && np != 0)
+    luaL_error(L,
+               "probe '%s': points = %s belongs to a face, { \"%s\", {x0, y0}, {x1, y1}, "
+               "points = N }",
+               p->name, num, p->name);
+  if (p->face && np != 0 && !(np >= 1 && np <= 1e4 && np == floor(np)))
+    luaL_error(L, "probe '%s': points = %s must be a whole number from 1 to 10000", p->name, num);
+  snprintf(num, sizeof num, "(%g, %g)", p->x[0], p->x[1]);
+  if (p->face && p->b[0] == p->x[0] && p->b[1] == p->x[1])
+    luaL_error(L,
+               "probe '%s': the face's two ends are the same point %s; a point probe takes "
+               "one point",
+               p->name, num);
+  p->npts = p->face ? (int)np : 1; /* a face's 0: from dr, at finish */
   return 0;
 }
 
@@ -1243,11 +1282,28 @@ static enum clsph_status finish(const char *path, struct loader *ld)
                 s->periodic[0] ? " (periodic: be narrower than the period)" : "");
   }
   /* probes and profiles sample the fluid: outside the domain there is none (a column of NaN) */
-  for (int k = 0; k < s->nprobes; ++k)
-    CLSPH_CHECK(in_domain(s, s->probes[k].x), CLSPH_E_INPUT,
+  for (int k = 0; k < s->nprobes; ++k) {
+    struct scene_probe *p = &s->probes[k];
+    CLSPH_CHECK(in_domain(s, p->x), CLSPH_E_INPUT,
                 "%s:%d: probe '%s' at (%g, %g) lies outside the domain {%g, %g, %g, %g}", path,
-                s->probes[k].line, s->probes[k].name, s->probes[k].x[0], s->probes[k].x[1],
-                s->lo[0], s->lo[1], s->hi[0], s->hi[1]);
+                p->line, p->name, p->x[0], p->x[1], s->lo[0], s->lo[1], s->hi[0], s->hi[1]);
+    CLSPH_CHECK(!p->face || in_domain(s, p->b), CLSPH_E_INPUT,
+                "%s:%d: probe '%s': the face's end (%g, %g) lies outside the domain {%g, %g, %g, "
+                "%g}",
+                path, p->line, p->name, p->b[0], p->b[1], s->lo[0], s->lo[1], s->hi[0], s->hi[1]);
+    for (int j = 0; j < k; ++j)
+      CLSPH_CHECK(strcmp(s->probes[j].name, p->name) != 0, CLSPH_E_INPUT,
+                  "%s:%d: probe '%s' is declared twice (first at line %d): probes.csv names its "
+                  "columns after the probe",
+                  path, p->line, p->name, s->probes[j].line);
+    /* a face's points dr/4 apart or closer: the interpolated field varies over h >= dr */
+    const double len = hypot(p->b[0] - p->x[0], p->b[1] - p->x[1]) / s->dr;
+    CLSPH_CHECK(!p->face || p->npts > 0 || 4.0 * len <= 1e4, CLSPH_E_INPUT,
+                "%s:%d: probe '%s': the face is %g dr long, more than 10000 points at dr/4; give "
+                "points = N (at most 10000)",
+                path, p->line, p->name, len);
+    if (p->face && p->npts == 0) p->npts = (int)fmax(2.0, ceil(4.0 * len));
+  }
   for (int k = 0; k < s->nprofiles; ++k) {
     const struct scene_profile_line *p = &s->profiles[k];
     CLSPH_CHECK(in_domain(s, p->a) && in_domain(s, p->b), CLSPH_E_INPUT,
@@ -1447,6 +1503,21 @@ static int l_mean(lua_State *L)
   return l_stat(L, 2);
 }
 
+/* sim.probe(name, field [, component]): the probe's value now (its point's, or its face's mean;
+ * NaN where there is no fluid) */
+static int l_probe_now(lua_State *L)
+{
+  const struct case_sim_api *api = api_of(L);
+  const char *name = luaL_checkstring(L, 1), *field = luaL_checkstring(L, 2);
+  int comp = (int)luaL_optinteger(L, 3, 1) - 1;
+  double v = 0.0;
+  if (api->probe == NULL || api->probe(api->ctx, name, field, comp, &v) != CLSPH_OK)
+    return luaL_error(L, "sim.probe: no value of '%s' (component %d) at probe '%s'", field,
+                      comp + 1, name);
+  lua_pushnumber(L, v);
+  return 1;
+}
+
 /* sim.sample(field, x, y [, component]) */
 static int l_sample(lua_State *L)
 {
@@ -1578,57 +1649,109 @@ static int l_spectrum_peak(lua_State *L)
   return 1;
 }
 
-/* Columns `coord` and `value` of a reference CSV ('#' comment lines, then a header row). */
-static int read_reference(lua_State *L, const char *path, const char *coord, const char *value,
-                          double **xs, double **vs)
+/* Columns names[0 .. ncol) of a reference CSV ('#' comment lines, then a header row) into cols
+ * (malloc'd arrays, NaN where a row lacks the column); returns the number of rows. `fn` names the
+ * caller in messages. */
+static int read_columns(lua_State *L, const char *fn, const char *path, int ncol,
+                        const char *const *names, double **cols)
 {
   FILE *f = fopen(path, "r");
   char line[4096];
-  int ci = -1, vi = -1, n = 0, cap = 0;
-  double *a = NULL, *b = NULL;
-  if (f == NULL) return luaL_error(L, "profile_error: cannot read %s", path);
+  int idx[8], n = 0, cap = 0, header = 0;
+  for (int c = 0; c < ncol; ++c) {
+    idx[c] = -1;
+    cols[c] = NULL;
+  }
+  if (ncol > 8) return luaL_error(L, "%s: at most 8 columns", fn);
+  if (f == NULL) return luaL_error(L, "%s: cannot read %s", fn, path);
   while (fgets(line, sizeof line, f) != NULL) {
-    if (line[0] == '#' || line[0] == '\n') continue;
+    if (line[0] == '#' || line[0] == '\n' || line[0] == '\r') continue;
     char *save = NULL;
     int col = 0;
-    if (ci < 0 && vi < 0) { /* header */
+    if (!header) {
+      header = 1;
       for (char *t = strtok_r(line, ",\r\n", &save); t != NULL;
-           t = strtok_r(NULL, ",\r\n", &save), ++col) {
-        if (strcmp(t, coord) == 0) ci = col;
-        if (strcmp(t, value) == 0) vi = col;
-      }
-      if (ci < 0 || vi < 0) {
-        fclose(f);
-        return luaL_error(L, "profile_error: %s has no column '%s' or '%s'", path, coord, value);
-      }
+           t = strtok_r(NULL, ",\r\n", &save), ++col)
+        for (int c = 0; c < ncol; ++c)
+          if (strcmp(t, names[c]) == 0) idx[c] = col;
+      for (int c = 0; c < ncol; ++c)
+        if (idx[c] < 0) {
+          fclose(f);
+          return luaL_error(L, "%s: %s has no column '%s'", fn, path, names[c]);
+        }
       continue;
-    }
-    double c = NAN, v = NAN;
-    for (char *t = strtok_r(line, ",\r\n", &save); t != NULL;
-         t = strtok_r(NULL, ",\r\n", &save), ++col) {
-      if (col == ci) c = strtod(t, NULL);
-      if (col == vi) v = strtod(t, NULL);
     }
     if (n == cap) {
       cap = cap ? 2 * cap : 32;
-      double *na = realloc(a, (size_t)cap * sizeof *a), *nb = realloc(b, (size_t)cap * sizeof *b);
-      if (na == NULL || nb == NULL) {
-        free(na ? na : a);
-        free(nb ? nb : b);
-        fclose(f);
-        return luaL_error(L, "out of memory");
+      for (int c = 0; c < ncol; ++c) {
+        double *a = realloc(cols[c], (size_t)cap * sizeof *a);
+        if (a == NULL) {
+          for (int k = 0; k < ncol; ++k) free(cols[k]);
+          fclose(f);
+          return luaL_error(L, "out of memory");
+        }
+        cols[c] = a;
       }
-      a = na;
-      b = nb;
     }
-    a[n] = c;
-    b[n] = v;
+    for (int c = 0; c < ncol; ++c) cols[c][n] = NAN;
+    for (char *t = strtok_r(line, ",\r\n", &save); t != NULL;
+         t = strtok_r(NULL, ",\r\n", &save), ++col)
+      for (int c = 0; c < ncol; ++c)
+        if (col == idx[c]) cols[c][n] = strtod(t, NULL);
     ++n;
   }
   fclose(f);
-  *xs = a;
-  *vs = b;
   return n;
+}
+
+/* Columns `coord` and `value` of a reference CSV (read_columns). */
+static int read_reference(lua_State *L, const char *path, const char *coord, const char *value,
+                          double **xs, double **vs)
+{
+  const char *names[] = {coord, value};
+  double *cols[2];
+  const int n = read_columns(L, "profile_error", path, 2, names, cols);
+  *xs = cols[0];
+  *vs = cols[1];
+  return n;
+}
+
+/* A reference file's path: as given when it opens from the working folder, else under the source
+ * tree (tests/data/... from anywhere). */
+static void reference_path(const char *file, char *path, size_t size)
+{
+  snprintf(path, size, "%s", file);
+  FILE *probe = fopen(path, "r");
+  if (probe == NULL)
+    snprintf(path, size, "%s/%s", CLSPH_SOURCE_DIR, file);
+  else
+    fclose(probe);
+}
+
+/* t = sim.reference(csv, column, ...): columns of a reference CSV ('#' comment lines, a header
+ * row; the path as for profile_error) as arrays t[column], indexed from 1, one entry per row. */
+static int l_reference(lua_State *L)
+{
+  const char *file = luaL_checkstring(L, 1);
+  const int ncol = lua_gettop(L) - 1;
+  const char *names[8];
+  double *cols[8];
+  char path[2048];
+  if (ncol < 1 || ncol > 8) return luaL_error(L, "sim.reference: name 1 to 8 columns of %s", file);
+  for (int c = 0; c < ncol; ++c) names[c] = luaL_checkstring(L, c + 2);
+  reference_path(file, path, sizeof path);
+  const int n = read_columns(L, "sim.reference", path, ncol, names, cols);
+  lua_createtable(L, 0, ncol);
+  for (int c = 0; c < ncol; ++c) {
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; ++i) {
+      lua_pushnumber(L, cols[c][i]);
+      lua_rawseti(L, -2, i + 1);
+    }
+    lua_setfield(L, -2, names[c]);
+  }
+  for (int c = 0; c < ncol; ++c) free(cols[c]);
+  return 1;
 }
 
 /* rms, max = sim.profile_error{ field =, component =, csv =, coordinate =, value =,
@@ -1660,12 +1783,7 @@ static int l_profile_error(lua_State *L)
   lua_getfield(L, 1, "skip_walls");
   int skip = lua_isnil(L, -1) || lua_toboolean(L, -1);
   char path[2048];
-  snprintf(path, sizeof path, "%s", csv);
-  FILE *probe = fopen(path, "r");
-  if (probe == NULL)
-    snprintf(path, sizeof path, "%s/%s", CLSPH_SOURCE_DIR, csv);
-  else
-    fclose(probe);
+  reference_path(csv, path, sizeof path);
   double *xs = NULL, *vs = NULL;
   int n = read_reference(L, path, coord, value, &xs, &vs);
   double *xy = malloc(2 * (size_t)(n + 1) * sizeof *xy),
@@ -1779,6 +1897,8 @@ static void push_sim(lua_State *L, const struct case_sim_api *api)
                                  {"max", l_max},
                                  {"mean", l_mean},
                                  {"sample", l_sample},
+                                 {"probe", l_probe_now},
+                                 {"reference", l_reference},
                                  {"field", l_field_values},
                                  {"force", l_force_metric},
                                  {"force_history", l_force_history},

@@ -23,6 +23,10 @@ struct case_sim_api {
   /** Interpolated values of component `comp` of a field at np points (x, y pairs). */
   enum clsph_status (*sample_many)(void *ctx, const char *field, int comp, int np, const double *xy,
                                    double *values);
+  /** Component `comp` of a field at the probe `name` now: its point's value or its face's mean
+   *  (sim_sample_probes; NaN where there is no fluid); an input error for an unknown probe. */
+  enum clsph_status (*probe)(void *ctx, const char *name, const char *field, int comp,
+                             double *value);
   /** Interpolated value of component `comp` of a field at a point. */
   enum clsph_status (*sample)(void *ctx, const char *field, int comp, double x, double y,
                               double *value);

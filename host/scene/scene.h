@@ -86,10 +86,17 @@ struct scene_section {
   int line;
 };
 
+/** A probe: the interpolated fields at a point, or their mean over a face (a segment, e.g. the
+ *  face of a pressure sensor): the mean over the midpoints of npts equal parts of the face, the
+ *  points with no fluid within the support left out (series.c, sim_sample_probes). */
 struct scene_probe {
   char name[SCENE_NAME];
-  double x[2];
-  int line; /* line of the case script */
+  double x[2]; /* the point, or the face's first end, m */
+  double b[2]; /* the face's second end, m (a face probe) */
+  int face;    /* 1: a face probe from x to b; 0: a point probe at x */
+  int npts;    /* points sampled: 1 for a point probe; for a face, `points =` or as many as keep
+                * them dr/4 apart or closer (at least 2) */
+  int line;    /* line of the case script */
 };
 
 struct scene_profile_line {

@@ -111,3 +111,47 @@ done:
   free(buf);
   return st;
 }
+
+enum clsph_status sim_sample_probes(struct sim *sim, int field, int np,
+                                    const struct scene_probe *probes, double *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  const size_t ncomp = (size_t)sim->ps.f[field].ncomp;
+  size_t total = 0;
+  double *at = NULL, *v = NULL;
+  for (int p = 0; p < np; ++p) total += (size_t)probes[p].npts;
+  at = calloc(2 * total + 1, sizeof *at);
+  v = malloc(ncomp * total * sizeof *v + 1);
+  CLSPH_CHECK(at != NULL && v != NULL, CLSPH_E_NOMEM, "out of memory");
+  /* every probe's points: a point, or the midpoints of a face's npts equal parts */
+  double *q = at;
+  for (int p = 0; p < np; ++p) {
+    const struct scene_probe *pr = &probes[p];
+    for (int k = 0; k < pr->npts; ++k, q += 2) {
+      const double s = pr->face ? (k + 0.5) / pr->npts : 0.0;
+      q[0] = pr->x[0] + s * (pr->b[0] - pr->x[0]);
+      q[1] = pr->x[1] + s * (pr->b[1] - pr->x[1]);
+    }
+  }
+  CLSPH_TRY(sim_sample(sim, field, total, at, v));
+  /* each probe's mean over its wet points (a dry point interpolates to NaN) */
+  const double *row = v;
+  for (int p = 0; p < np; ++p) {
+    for (size_t c = 0; c < ncomp; ++c) {
+      double sum = 0.0;
+      int wet = 0;
+      for (int k = 0; k < probes[p].npts; ++k) {
+        const double y = row[(size_t)k * ncomp + c];
+        if (isnan(y)) continue;
+        sum += y;
+        ++wet;
+      }
+      out[(size_t)p * ncomp + c] = wet > 0 ? sum / wet : (double)NAN;
+    }
+    row += (size_t)probes[p].npts * ncomp;
+  }
+done:
+  free(v);
+  free(at);
+  return st;
+}

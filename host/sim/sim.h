@@ -145,6 +145,12 @@ enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count);
 /** @brief Interpolate component `comp` of a real field at np points (host array of 2 doubles per
  *  point); `out` gets ncomp values per point. */
 enum clsph_status sim_sample(struct sim *sim, int field, size_t np, const double *at, double *out);
+/** @brief A real field at np probes (struct scene_probe): at a point probe, its interpolated value;
+ *  at a face, the mean over its points (the midpoints of npts equal parts) of the points with
+ *  fluid within the support (NaN, the interpolation's value where there is none, only when the
+ *  whole face is dry). `out` gets ncomp values per probe. */
+enum clsph_status sim_sample_probes(struct sim *sim, int field, int np,
+                                    const struct scene_probe *probes, double *out);
 struct psolve_options;
 /** @brief The pressure-solver options a case sets through its scheme options (`solver =
  *  "direct"`, `solver_rtol = 1e-6`, ...), over the defaults. */

@@ -1,7 +1,15 @@
 /* probe.cl: SPH interpolation of a field at arbitrary points (probes, profiles, metrics),
  * normalised by the kernel sum (Shepard), over fluid and wall-vertex particles:
  *   A(x) = Σ_j V_j A_j W(x − x_j) / Σ_j V_j W(x − x_j).
- * A point with no particle within the support gets NaN. */
+ * A point with no particle within the support gets NaN.
+ * On a wall face (a pressure sensor: a face probe, the mean over points on the face, host
+ * sim_sample_probes) the sum runs over the fluid on one side only (dummy particles carry no state
+ * of their own: kind > 1 is left out; USAW vertex particles on the wall take part). A(x) is then
+ * the kernel-weighted mean of the fluid within the support, whose centre lies about a spacing off
+ * the wall: for the pressure, the wall's pressure to second order in that offset where the normal
+ * pressure gradient vanishes at the wall, as on a fixed vertical wall (∂p/∂n = ρ (g − a)·n with
+ * a·n = 0 there and g·n = 0); on a floor it misses ρ g·n times the offset (hydrostatic). Near a
+ * corner the centre also sits off the point along the face, by up to about h. */
 __kernel void probe_sample(const uint np, __global const realv *at, const struct grid g,
                            __global const uint *cell_start, __global const realv *pos,
                            __global const real *vol, __global const uint *kind,
