@@ -100,6 +100,12 @@ for s in isph_usaw wcsph_usaw; do # the last frame of each wedge run, pressure
 done
 python3 tests/validation/wedge_chart.py tests/validation/wedge_force \
   "isph-usaw=$out/dam_break_wedge_isph_usaw" "wcsph-usaw=$out/dam_break_wedge_wcsph_usaw" || true
+# the dam break of Lobovsky et al. 2014 (H = 300 mm), sensor 1 against the experiment (event 5):
+# wcsph-riemann over resolutions (the impact within 2% from n = 120), isph-usaw at n = 40
+for n in 20 40 80 120 160; do
+  run dam_break_lobovsky_n${n}_wcsph_riemann dam_break riemann=1 n=$n t_end=1.1
+done
+run dam_break_lobovsky_n40_isph_usaw dam_break n=40 t_end=1.1
 python3 tests/validation/results.py "$out" tests/validation/RESULTS.md
 # accuracy against cost and stability maps (tests/harness/studies.txt): CSVs and charts
 for study in "accuracy cavity_re100" "accuracy cylinder_array" "stability cavity_re_cfl"; do
