@@ -4,6 +4,9 @@
 -- across the depth (dr = H/n). The surge front runs along the floor; Ritter's ideal (inviscid,
 -- frictionless) front speed 2 √(gH) = 3.43 m/s bounds it, and the front reaches the downstream
 -- wall at about t √(g/H) = 2.4 (sensor 1's impact in the experiment, t* = 2.44).
+-- Sensor 1 is a pressure sensor on the downstream wall, centred 3 mm above the bed, 4.2 mm across
+-- (the diameter is unverified): the probe "sensor_1" is the mean pressure over its face, x = tank,
+-- 0.9 to 5.1 mm (kernels/common/probe.cl says what a probe on a wall face measures).
 -- sample(sim), every `every` seconds (series.csv), records (the fluid "on the floor" is the fluid
 -- within 2 dr of it):
 --   front                   the largest x of the fluid on the floor
@@ -16,15 +19,40 @@
 --   floor_speed             the largest speed along the floor (x) of the fluid on the floor over
 --                           2 √(gH): nothing on the floor outruns Ritter's front (a particle thrown
 --                           along the floor by a bad pressure does, for 0.002 to 0.17 s)
+--   sensor_1_p_star         sensor 1's pressure, p* = p/(ρ g H) (NaN while no fluid is within the
+--                           support of its face)
 -- and the metrics at the end: those of the last sample, floor_speed_max and lead_ahead_max (the
 -- largest over the samples), max_speed_over_sqrt_gH (the largest fluid speed over √(gH) now),
--- volume_ratio (the fluid's volume against the column's), time_star = t √(g/H).
+-- volume_ratio (the fluid's volume against the column's), time_star = t √(g/H); the front
+-- against time, front_x_star_t1, _t1p5, _t2 ((front − L)/H at t* = 1, 1.5, 2, no experimental
+-- H = 300 mm front being at hand: Ritter's ideal is 2 t*) and front_wall_t_star (the first sample
+-- with the front within dr of the downstream wall); and sensor 1 against the experiment
+-- (tests/data/lobovsky2014_sensor1.csv: one repetition, "event 5", impact at t* = 2.444, peak
+-- p* = 3.044 at t* = 2.455, mean p* 0.80 on t* ∈ [3, 4] and 0.65 on [4, 5]), each once the run
+-- has reached it:
+--   impact_t_star, impact_time_error   the first p* > 0.1 (interpolated between samples) and its
+--                                      ratio to 2.444 less 1
+--   peak_p_star, peak_t_star, peak_ratio   the largest p* over t* ∈ [impact, impact + 0.3], and
+--                                      over 3.044 (the largest sample: in this weakly-compressible
+--                                      run often one particle of the front striking the wall)
+--   impact_mean_p_star, impact_mean_ratio  the mean p* over 0.1 after the impact (the impulse
+--                                      over 0.1), and over the experiment's over 0.1 after its
+--                                      own, 2.26: the impact less sensitive to one sample
+--   plateau_p_star, plateau_ratio      the mean p* over t* ∈ [3, 4], and over 0.80
+--   plateau2_p_star, plateau2_ratio    the same over [4, 5], against 0.65
+--   rms_p_star                         the RMS of p* − p*_exp over t* ∈ [2.6, 5.5] in bins of 0.1
+--                                      (both signals averaged over each bin; see metrics below)
+-- The time series need every <= 0.001 s (t* 0.0057, 0.23% of the impact time) to catch the
+-- impact; a sample falls at the end of the first step at or past each multiple of `every` (the
+-- advection step of wcsph-riemann is 1 ms at n = 40, 0.22 ms at n = 160).
+-- Measured with riemann = 1 to t = 1.1 s (README, Validation): the impact 18% late at n = 20,
+-- 8.5% at 40, 3.2% at 80, 1.8% at 120 and 0.66% at 160.
 -- --set wcsph=1 runs the weakly-compressible baseline (c0 = 10 · 2 √(gH)); --set riemann=1 runs
 -- wcsph-riemann with the same sound speed.
-param { n = 20, t_end = 0.4, wcsph = 0, riemann = 0, every = 0.01, cfl = 1,
+param { n = 20, t_end = 0.4, wcsph = 0, riemann = 0, every = 0.001, cfl = 1,
         tvf = 2, ard = 0 }
 
-local g, H, L, tank, top = 9.81, 0.3, 0.6, 1.61, 1.0
+local g, H, L, tank, top, rho = 9.81, 0.3, 0.6, 1.61, 1.0, 997
 local dr = H / n
 local U = 2 * math.sqrt(g * H) -- Ritter's front speed
 
@@ -38,10 +66,10 @@ elseif wcsph == 1 then
 else
   scheme "isph-usaw"
 end
-fluid { density = 997, viscosity = 8.9e-7, gravity = {0, -g} }
+fluid { density = rho, viscosity = 8.9e-7, gravity = {0, -g} }
 wall { {0, top}, {0, 0}, {tank, 0}, {tank, top}, fluid = "left", group = "tank" }
 fill { 0, 0, L, H, name = "water" }
-probe { "sensor_1", {tank - dr, 0.003} }
+probe { "sensor_1", {tank, 0.0009}, {tank, 0.0051} } -- its face, on the wall
 run { t_end = t_end, output_every = 0.05, sample_every = every, cfl = cfl }
 
 function sample(sim)
@@ -70,11 +98,112 @@ function sample(sim)
     end
   end
   return { front = front, front_over_ritter = sim.time > 0 and (front - L) / (U * sim.time) or 0,
-           bulk_front = bulk, lead_ahead_dr = (front - bulk) / dr, floor_speed = speed / U }
+           bulk_front = bulk, lead_ahead_dr = (front - bulk) / dr, floor_speed = speed / U,
+           sensor_1_p_star = sim.probe("sensor_1", "p") / (rho * g * H) }
+end
+
+-- The time mean of a sampled signal over [a, b] (linear between samples; a missing value, NaN
+-- while the sensor is dry, counts as 0: no pressure on a dry face), nil unless the samples cover
+-- [a, b].
+local function time_mean(t, v, a, b)
+  if #t < 2 or t[1] > a or t[#t] < b then return nil end
+  local function at(k) return v[k] == v[k] and v[k] or 0 end
+  local sum = 0
+  for k = 2, #t do
+    local lo, hi = math.max(a, t[k - 1]), math.min(b, t[k])
+    if hi > lo then
+      local s = (at(k) - at(k - 1)) / (t[k] - t[k - 1])
+      sum = sum + (at(k - 1) + s * (0.5 * (lo + hi) - t[k - 1])) * (hi - lo)
+    end
+  end
+  return sum / (b - a)
+end
+
+-- The first time a signal exceeds `level`, interpolated between the samples (NaN counts as 0).
+local function first_above(t, v, level)
+  for k = 2, #t do
+    if v[k] > level then
+      local before = v[k - 1] == v[k - 1] and v[k - 1] or 0
+      return t[k - 1] + (level - before) / (v[k] - before) * (t[k] - t[k - 1])
+    end
+  end
+  return nil
+end
+
+-- Sensor 1 against the experiment (Lobovsky et al. 2014, event 5; header of the file): what
+-- the run has reached of impact, peak, plateaus and RMS (see the header of this file).
+local function sensor_metrics(sim, m)
+  local ts = math.sqrt(g / H)
+  local s = sim.series("sensor_1_p_star")
+  local t, p = {}, s.value
+  for k, time in ipairs(s.time) do t[k] = time * ts end
+  local ref = sim.reference("tests/data/lobovsky2014_sensor1.csv", "t_star", "p_star")
+  local impact = first_above(t, p, 0.1)
+  if impact == nil then return end
+  m.impact_t_star = impact
+  m.impact_time_error = impact / 2.444 - 1
+  -- the peak: the largest sample within 0.3 of the impact (the experiment's is 0.011 after it)
+  if t[#t] >= impact + 0.3 then
+    local peak, when = 0, impact
+    for k = 1, #t do
+      if t[k] >= impact and t[k] <= impact + 0.3 and p[k] > peak then peak, when = p[k], t[k] end
+    end
+    m.peak_p_star, m.peak_t_star, m.peak_ratio = peak, when, peak / 3.044
+  end
+  -- the impact's mean pressure over 0.1 after it (the impulse over 0.1), each signal from its own
+  -- impact: less sensitive than the peak to a single sample (or, in the run, to one particle
+  -- striking the wall)
+  local run_mean = time_mean(t, p, impact, impact + 0.1)
+  local ref_impact = first_above(ref.t_star, ref.p_star, 0.1)
+  local ref_mean = time_mean(ref.t_star, ref.p_star, ref_impact, ref_impact + 0.1)
+  if run_mean ~= nil then
+    m.impact_mean_p_star, m.impact_mean_ratio = run_mean, run_mean / ref_mean
+  end
+  local plateau = time_mean(t, p, 3, 4)
+  if plateau ~= nil then m.plateau_p_star, m.plateau_ratio = plateau, plateau / 0.80 end
+  local plateau2 = time_mean(t, p, 4, 5)
+  if plateau2 ~= nil then m.plateau2_p_star, m.plateau2_ratio = plateau2, plateau2 / 0.65 end
+  -- RMS over t* ∈ [2.6, 5.5], from after the impact peak (its height and its timing to a few ms
+  -- scatter between repeats) to before the run-up jet falls back (t* ≈ 5.9), in bins of 0.1:
+  -- one acoustic period of the column, 2H/c0 = 0.1 √(H/g) at c0 = 20 √(gH), over which the
+  -- weakly-compressible run's sloshing of pressure waves averages out (the experiment has none).
+  if t[#t] >= 5.5 then
+    local sum, bins = 0, 0
+    for b = 0, 28 do
+      local lo = 2.6 + 0.1 * b
+      local d = time_mean(t, p, lo, lo + 0.1) - time_mean(ref.t_star, ref.p_star, lo, lo + 0.1)
+      sum, bins = sum + d * d, bins + 1
+    end
+    m.rms_p_star = math.sqrt(sum / bins)
+  end
+end
+
+-- The front against time: (front − L)/H at t* = 1, 1.5, 2 (between samples), and the first
+-- sample with the front within dr of the downstream wall.
+local function front_metrics(sim, m)
+  local ts = math.sqrt(g / H)
+  local f = sim.series("front")
+  for _, at in ipairs({1, 1.5, 2}) do
+    for k = 2, #f.time do
+      local a, b = f.time[k - 1] * ts, f.time[k] * ts
+      if a <= at and b >= at then
+        local x = f.value[k - 1] + (f.value[k] - f.value[k - 1]) * (at - a) / (b - a)
+        m[("front_x_star_t%g"):format(at):gsub("%.", "p")] = (x - L) / H
+        break
+      end
+    end
+  end
+  for k = 1, #f.time do
+    if f.value[k] >= tank - dr then
+      m.front_wall_t_star = f.time[k] * ts
+      break
+    end
+  end
 end
 
 function metrics(sim)
   local m = sample(sim)
+  if m.sensor_1_p_star ~= m.sensor_1_p_star then m.sensor_1_p_star = nil end -- dry: NaN
   local function largest(name)
     local v = 0
     for _, s in ipairs(sim.series(name).value) do v = math.max(v, s) end
@@ -89,5 +218,7 @@ function metrics(sim)
   m.max_speed_over_sqrt_gH = top_speed / math.sqrt(g * H)
   m.volume_ratio = #sim.field("pos", 1).value * dr * dr / (L * H)
   m.time_star = sim.time * math.sqrt(g / H)
+  sensor_metrics(sim, m)
+  front_metrics(sim, m)
   return m
 end

@@ -382,6 +382,26 @@ clsph_run_test(validate_wedge_wcsph ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lu
                SETS wcsph=1
                BOUNDS "crossed_wall<0.5" "wedge_force_mean>900" "wedge_force_mean<1400")
 
+# The dam break of Lobovsky et al. 2014 (cases/dam_break.lua), wcsph-riemann at n = 160 (dr =
+# 1.875 mm, 51200 fluid particles) to t = 1.1 s (t* = 6.3), about 8 minutes alone on 2 cores:
+# sensor 1 against one repetition of the experiment (event 5). Measured in double (float):
+# impact at t* = 2.460 (2.466), 0.66% (0.90%) late (the issue's criterion: 2%; 1.8% at n = 120,
+# 3.2% at 80); largest sample 4.05 (3.62), 1.33 (1.19) × 3.044; mean over 0.1 after the impact
+# 1.05 (0.89) × the experiment's; plateaus 0.674 (0.666) on t* ∈ [3, 4], 0.84 (0.83) × 0.80, the
+# same at n = 80 and 120, and 0.644 (0.652) on [4, 5], 0.99 (1.00) × 0.65; RMS 0.120 (0.117) over
+# [2.6, 5.5] in bins of 0.1. The paper's spread of the peak is not in our data (the paper was not
+# at hand; event 5 is one repetition, and the paper's point is that impact peaks scatter widely
+# between repetitions): the band is a factor 2 either way, also as a sample each ms puts two
+# samples on the experiment's 2 ms rise. The mean over 0.1 after the impact is held to a third
+# either way, the plateaus to ±20% (the experiment swings 0.6 to 0.9 along its plateau), the RMS
+# below 0.15 (that swing).
+clsph_run_test(validate_lobovsky_riemann ${CMAKE_SOURCE_DIR}/cases/dam_break.lua LABELS slow
+               SETS riemann=1 n=160 t_end=1.1
+               BOUNDS "impact_time_error>-0.02" "impact_time_error<0.02" "peak_ratio>0.5"
+                      "peak_ratio<2" "impact_mean_ratio>0.75" "impact_mean_ratio<1.33"
+                      "plateau_ratio>0.8" "plateau_ratio<1.2" "plateau2_ratio>0.8"
+                      "plateau2_ratio<1.2" "rms_p_star<0.15" "volume_ratio>0.999")
+
 # The health checks of the time loop (host/sim/checks.c): each failure class stops the run with exit
 # status 1, its reason in the message and in summary.json, and its class in "failure".
 function(clsph_failure_test name case failure regex)
@@ -712,6 +732,30 @@ clsph_run_test(run_dam_break_riemann ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
                SETS riemann=1
                BOUNDS "front_over_ritter>0.5" "front_over_ritter<1" "floor_speed_max<1"
                       "volume_ratio>0.999")
+# Sensor 1 of the Lobovsky dam break (cases/dam_break.lua: the mean pressure over the sensor's face
+# on the downstream wall, 0.9 to 5.1 mm, against one repetition of the experiment, "event 5",
+# tests/data/lobovsky2014_sensor1.csv), wcsph-riemann at n = 40 (dr = 7.5 mm, 3200 fluid
+# particles) to t = 0.72 s (t* = 4.1), about 7 s. Measured in double and float:
+#   impact_time_error  0.085 and 0.086: at this resolution the front arrives late (0.18 at n = 20,
+#                      0.032 at 80, 0.018 at 120, 0.0066 at 160: validate_lobovsky_riemann). The
+#                      band, ±0.025 around it, fails a change in the arrival of more than 2.5% of
+#                      the impact time, a little more than the issue's criterion (2%).
+#   peak_ratio         3.14 and 4.53 (3.2 at n = 20, 4.7 at 80): the largest sample is one particle
+#                      of the front's tongue striking the wall, which varies from run to run. Above
+#                      half the experiment's peak (the lower edge of the validation's band: the
+#                      impact must load the sensor), below the water hammer of the front,
+#                      ρ c0 u = 33 ρ g H at u = 0.83 · 2 √(gH) (11 times 3.044): above it no flow
+#                      loads the sensor, a blow-up does.
+#   impact_mean_ratio  1.02 and 1.06: the mean pressure over 0.1 after the impact against the
+#                      experiment's 2.26 over 0.1 after its own; the validation's band, a third
+#                      either way (0.80 to 1.15 at every resolution from n = 20 to 160).
+#   plateau_ratio      0.98 and 1.05: the mean over t* ∈ [3, 4] against the experiment's 0.80;
+#                      ±20%, the experiment's own swing along its plateau (0.6 to 0.9).
+clsph_run_test(run_dam_break_sensor_riemann ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
+               SETS riemann=1 n=40 t_end=0.72
+               BOUNDS "impact_time_error>0.06" "impact_time_error<0.11" "peak_ratio>0.5"
+                      "peak_ratio<11" "impact_mean_ratio>0.75" "impact_mean_ratio<1.33"
+                      "plateau_ratio>0.8" "plateau_ratio<1.2" "volume_ratio>0.999")
 clsph_cli_test(riemann_bad_pressure ARGS info ${CASE_DIR}/bad_riemann_pressure.lua RC 2
                REGEX "background_pressure must be a pressure in Pa, from 0 to 1e\\+12")
 # The entry and exit sections (solvers/open) with wcsph-riemann: Poiseuille flow between an entry

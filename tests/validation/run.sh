@@ -112,6 +112,12 @@ for n in 40 80; do
   run square_cylinder_re20_n${n}_riemann square_cylinder riemann=1 n=$n re=20 t_end=30 length=32 xc=8 average_from=15
 done
 run square_cylinder_re100_n40_riemann square_cylinder riemann=1 n=40 re=100 t_end=60 length=32 xc=8 average_from=20 outputs=30
+# the dam break of Lobovsky et al. 2014 (H = 300 mm), sensor 1 against the experiment (event 5):
+# wcsph-riemann over resolutions (the impact within 2% from n = 120), isph-usaw at n = 40
+for n in 20 40 80 120 160; do
+  run dam_break_lobovsky_n${n}_wcsph_riemann dam_break riemann=1 n=$n t_end=1.1
+done
+run dam_break_lobovsky_n40_isph_usaw dam_break n=40 t_end=1.1
 python3 tests/validation/results.py "$out" tests/validation/RESULTS.md
 # accuracy against cost and stability maps (tests/harness/studies.txt): CSVs and charts
 for study in "accuracy cavity_re100" "accuracy cylinder_array" "stability cavity_re_cfl" \
