@@ -12,7 +12,7 @@
  *   signed fields.
  * kind: one colour per particle kind from the colour-blind-safe palette of Okabe and Ito, "Color
  *   Universal Design" (2008): fluid blue, wall vertex vermillion, dummy reddish purple, inflow
- *   bluish green, outflow orange.
+ *   bluish green, outflow orange, parked behind an exit sky blue.
  * Table values are fractions in [0, 1]; a colour's byte is round(255 x). */
 #include "render.h"
 
@@ -128,12 +128,13 @@ static const double coolwarm33[33][3] = {
     {0.705673158, 0.01555616, 0.150232812},
 };
 
-static const unsigned char kind_rgb[5][3] = {
+static const unsigned char kind_rgb[6][3] = {
     {0, 114, 178},   /* fluid: blue */
     {213, 94, 0},    /* wall vertex: vermillion */
     {204, 121, 167}, /* dummy: reddish purple */
     {0, 158, 115},   /* inflow: bluish green */
     {230, 159, 0},   /* outflow: orange */
+    {86, 180, 233},  /* parked behind an exit: sky blue */
 };
 
 static const char *const names[] = {"auto", "viridis", "coolwarm", "kind"};
@@ -172,7 +173,7 @@ void colormap_rgb(enum colormap_kind k, double t, unsigned char rgb[3])
   }
   if (k == COLORMAP_KIND) {
     int kind = (int)lround(t);
-    if (kind >= 0 && kind < 5)
+    if (kind >= 0 && kind < 6)
       memcpy(rgb, kind_rgb[kind], 3);
     else
       rgb[0] = rgb[1] = rgb[2] = 0;

@@ -31,6 +31,9 @@ struct scheme_ops {
   const char *const *options; /* option names the scheme accepts, NULL-terminated */
   unsigned fill_fields;       /* the initial fields fill { } may give it (SCHEME_FILL_*): the
                                * scheme's create takes them from geom.p0 and geom.rho0 */
+  double open_reserve;        /* particles parked behind the exits, as a fraction of the fluid's
+                               * (struct geom_park): a weakly-compressible scheme's entries take
+                               * them while the fluid is compressed (0: none) */
   /** -D switches of the scheme's kernels (NULL: none). */
   enum clsph_status (*define)(const struct sim *sim, struct prog_opts *o);
   /** Add the scheme's particle fields and kernels; called after the common fields exist. */

@@ -41,7 +41,9 @@
  * Sections. `layers` lattice layers on the side opposite to the normal (0 < −h ≤ layers·dr, h the
  * signed distance along the normal), spanning a->b. Inflow velocity: U n (uniform) or
  * 4 U s (1 − s) n (parabolic, U the peak, s ∈ [0, 1] along a->b); outflow particles start at rest
- * (a natural exit) or with their prescribed profile, along −n.
+ * (a natural exit) or with their prescribed profile, along −n. With a park (struct geom_park), each
+ * exit gets its share of the parked particles after its layers: at rest, on the line
+ * h = −(layers·dr + behind), evenly along a->b.
  *
  * Order of the particles: fluid (rows of increasing y, increasing x within a row), then wall
  * particles (USAW: walls in scene order, vertices along each polyline; dummy: rows), then the
@@ -122,6 +124,7 @@ struct build {
   struct segment *seg;
   size_t nseg, segcap;
   size_t nfluid;
+  const struct geom_park *park; /* parked particles behind the exits (NULL: none) */
 };
 
 /* ---- small helpers ---------------------------------------------------------------------- */
@@ -1106,6 +1109,24 @@ static enum clsph_status build_section(struct build *b, int k)
       CLSPH_TRY(push_particle(b, &p));
     }
   }
+  if (sc->kind == SCENE_OUTFLOW && b->park != NULL && b->park->fraction > 0.0) {
+    double exits = 0.0; /* the exits' total length: each gets its share */
+    for (int q = 0; q < s->nsections; ++q)
+      if (s->sections[q].kind == SCENE_OUTFLOW)
+        exits += hypot(s->sections[q].b[0] - s->sections[q].a[0],
+                       s->sections[q].b[1] - s->sections[q].a[1]);
+    const long count = (long)ceil(b->park->fraction * (double)b->nfluid * len / exits);
+    const double back = layers * dr + b->park->behind;
+    for (long q = 0; q < count; ++q) {
+      const double along = (q + 0.5) * len / (double)count;
+      struct particle p = {
+          .x = {sc->a[0] + along * t[0] - back * n[0], sc->a[1] + along * t[1] - back * n[1]},
+          .normal = {n[0], n[1]},
+          .kind = KIND_PARKED,
+          .group = k};
+      CLSPH_TRY(push_particle(b, &p));
+    }
+  }
 done:
   return st;
 }
@@ -1173,12 +1194,13 @@ done:
 }
 
 enum clsph_status geometry_build(const struct scene *s, const char *model, int layers,
-                                 struct geom *out)
+                                 const struct geom_park *park, struct geom *out)
 {
   enum clsph_status st = CLSPH_OK;
   struct build b = {0};
   memset(out, 0, sizeof *out);
   b.s = s;
+  b.park = park;
   b.dr = s->dr;
   CLSPH_TRY(check_scene(s, model, layers, &b.model));
   /* closed walls: orientation */

@@ -9,11 +9,13 @@
 
 /** Particle kinds, in the order the particles are stored. */
 enum particle_kind {
-  KIND_FLUID = 0,  /* free fluid particle */
-  KIND_VERTEX = 1, /* USAW vertex particle: a truncated fluid particle on the wall (Leroy 2014) */
-  KIND_DUMMY = 2,  /* dummy wall particle inside the solid */
-  KIND_INFLOW = 3, /* inflow layer particle (outside an inflow section) */
-  KIND_OUTFLOW = 4 /* outflow layer particle (outside an outflow section) */
+  KIND_FLUID = 0,   /* free fluid particle */
+  KIND_VERTEX = 1,  /* USAW vertex particle: a truncated fluid particle on the wall (Leroy 2014) */
+  KIND_DUMMY = 2,   /* dummy wall particle inside the solid */
+  KIND_INFLOW = 3,  /* inflow layer particle (outside an inflow section) */
+  KIND_OUTFLOW = 4, /* outflow layer particle (outside an outflow section) */
+  KIND_PARKED = 5   /* parked behind an exit, out of every sum, until an entry takes it
+                     * (struct geom_park) */
 };
 
 /** Particles (host arrays, double precision) and USAW segments. Fluid particles come first. */
@@ -38,17 +40,28 @@ struct geom {
   int *seg_wall;      /* nseg, index of the wall in scene walls[] */
 };
 
+/** Particles parked behind the exits (outflow { }), for a weakly-compressible scheme whose fluid
+ *  takes in more than it gives out while it is compressed: an entry particle that reaches the fluid
+ *  takes a parked particle when no fluid has left through an exit (solvers/open). */
+struct geom_park {
+  double fraction; /* parked particles, as a fraction of the fluid's (0: none), shared among the
+                    * exits by their lengths */
+  double behind;   /* the park's distance behind the last layer, m: beyond the support of any
+                    * particle that takes part in the fluid's sums */
+};
+
 /** @brief Build the particles of a scene: fluid first (rows of increasing y, then x), then the
  *  wall particles, then the inflow/outflow layers of each section (conventions: geometry.c).
  *  @param s      the scene (dr, regions, walls with the fluid on their left, sections)
  *  @param model  "usaw": vertex particles and segments; "dummy": `layers` layers of dummy
  *                particles; "none": fluid (and inflow/outflow layers) only
  *  @param layers dummy layers, >= 1 for "dummy" (ignored otherwise)
+ *  @param park   particles parked behind the exits, after their layers (NULL: none)
  *  @param out    overwritten (free it first); zeroed on failure
  *  @return CLSPH_E_INPUT with a message naming the case file and line for invalid geometry,
  *          CLSPH_E_NOMEM */
 enum clsph_status geometry_build(const struct scene *s, const char *model, int layers,
-                                 struct geom *out);
+                                 const struct geom_park *park, struct geom *out);
 /** @brief A digest (CRC-32) of what defines a scene besides its parameters' names: the generated
  *  particles (positions, initial velocities, kinds, wall groups) and segments, the domain and its
  *  periodic axes, the fluid's properties, the wall motions, the scheme and its options. Two runs

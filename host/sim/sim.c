@@ -229,7 +229,11 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
               scene->case_path);
   int layers = lo != NULL ? (int)lo->number : 3;
   CLSPH_TRY(check_fluid_count(&sim));
-  CLSPH_TRY(geometry_build(scene, model, layers, &sim.geom));
+  /* a weakly-compressible scheme's park behind the exits: beyond the support of the last layer
+   * and of the dummies of a wall that runs on through it */
+  const struct geom_park park = {.fraction = sim.scheme->open_reserve,
+                                 .behind = sim.sm.support + 0.5 * scene->dr};
+  CLSPH_TRY(geometry_build(scene, model, layers, &park, &sim.geom));
   sim.digest = geometry_digest(scene, &sim.geom);
   CLSPH_CHECK(!sim.geom.has_p0 || (sim.scheme->fill_fields & SCHEME_FILL_PRESSURE), CLSPH_E_INPUT,
               "%s:%d: fill { pressure }: scheme '%s' takes no initial pressure (it has none, or "
@@ -248,6 +252,13 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
     sim.gspec.lo[a] = scene->lo[a] - (scene->periodic[a] ? 0.0 : margin);
     sim.gspec.hi[a] = scene->hi[a] + (scene->periodic[a] ? 0.0 : margin);
   }
+  /* and the particles parked behind the exits, with a cell to spare */
+  for (size_t i = 0; i < sim.geom.n && park.fraction > 0.0; ++i)
+    for (int a = 0; a < 2; ++a)
+      if (!scene->periodic[a] && sim.geom.kind[i] == KIND_PARKED) {
+        sim.gspec.lo[a] = fmin(sim.gspec.lo[a], sim.geom.x[2 * i + a] - sim.gspec.support);
+        sim.gspec.hi[a] = fmax(sim.gspec.hi[a], sim.geom.x[2 * i + a] + sim.gspec.support);
+      }
   for (size_t i = 0; i < sim.geom.n; ++i)
     for (int a = 0; a < 2; ++a)
       CLSPH_CHECK(scene->periodic[a] || (sim.geom.x[2 * i + a] >= sim.gspec.lo[a] &&
@@ -295,6 +306,7 @@ enum clsph_status sim_sort(struct sim *sim)
   CLSPH_TRY(
       grid_sort(&sim->grid, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos), sim->d_flags));
   CLSPH_TRY(pset_reorder(&sim->ps, &sim->grid, sim->dev));
+  ++sim->sorts;
   cl_uint n = (cl_uint)sim->ps.n;
   cl_mem id = pset_mem(&sim->ps, sim->f_id);
   CLSPH_TRY(KERN_SET(sim->k_invert, KARG(n), KARG(id), KARG(sim->d_inv)));

@@ -66,6 +66,8 @@ struct sim {
   long aux_its_sum;
   /* dual-criteria time stepping (wcsph-riemann): the acoustic sub-steps of the last step (0: the
    * scheme has none) and their sum over this run */
+  unsigned long sorts; /* sorts so far (sim_sort): per-particle buffers outside the particle set,
+                        * which a sort does not reorder, belong to the order they were made in */
   long substeps, substeps_sum;
   /* pair interactions the scheme evaluated in the last step (0: it does not count them) and their
    * sum over this run: a pair loop over n particles with on average k neighbours inside the

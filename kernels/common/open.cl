@@ -6,11 +6,12 @@
  * the fluid, h = (x − a)·n is the signed distance from it. Its layer particles (kind OPEN_INFLOW
  * or OPEN_OUTFLOW, section[i] = k) lie at −depth <= h < 0, depth = layers δr. Table `sec`,
  * OPEN_SEC reals per section: a.x, a.y, t.x, t.y, len, depth, U, kind (1 inflow, 2 outflow),
- * profile (0 natural, 1 uniform, 2 parabolic), ramp T. Profiles, s along the section:
- * U (uniform) or 4 U s/len (1 − s/len) (parabolic, U the peak; eq 30 with y measured from a wall),
- * times ½(1 − cos(π t/T)) while t < T (a prescribed velocity that rises smoothly: a weakly-
- * compressible fluid set going at once takes a pressure pulse ρ c0 U, a density change of U/c0,
- * that runs up and down the channel; T = 0: at once, the paper's start).
+ * profile (0 natural, 1 uniform, 2 parabolic), ramp T, park (an exit's: 0, or the distance behind
+ * the section, beyond its last layer, where its particles wait for an entry). Profiles, s along the
+ * section: U (uniform) or 4 U s/len (1 − s/len) (parabolic, U the peak; eq 30 with y measured from
+ * a wall), times ½(1 − cos(π t/T)) while t < T (a prescribed velocity that rises smoothly: a
+ * weakly- compressible fluid set going at once takes a pressure pulse ρ c0 U, a density change of
+ * U/c0, that runs up and down the channel; T = 0: at once, the paper's start).
  *
  * Per particle (fields of solvers/open): section[i] (OPEN_NO_SECTION off the layers); near[i],
  * the layer particle's "row's first fluid particle", the fluid particle nearest to (s, h = δr/2);
@@ -23,7 +24,13 @@
  * h >= 0 it becomes a fluid particle and its row gets a new particle depth behind it: a particle
  * recycled from an exit (below), so that the count of particles never changes. Until an exit has
  * one to give, it stays a layer particle (a few steps at most in a steady flow: what enters
- * leaves; the furthest in are served first).
+ * leaves; the furthest in are served first). A weakly-compressible fluid takes in more than it
+ * gives out while a pressure wave compresses it (at most U/c0 of its mass): the exits then hold a
+ * park of particles (geometry.c, struct geom_park; kind OPEN_PARKED, at rest on a line park
+ * behind the section, out of every sum) that feeds the entries meanwhile and fills again as the
+ * fluid relaxes; without it, entry particles that wait run on into the fluid as
+ * pistons and compress it further (square cylinder, Re = 20, H/80: the entry's density rose to
+ * 1.07 ρ0 with 234 particles waiting, and the run blew up).
  * Exit (sec 3.3.3): a fluid particle that crosses the section (h < 0) becomes an exit layer
  * particle. The natural condition n·∇u = 0 (eq 17 with equilibrated pressures): its velocity is
  * that of its "progenitor in the exit layer", the fluid particle nearest to (s, δr/2); with a
@@ -41,8 +48,9 @@
 #define OPEN_FLUID      0u /* the kinds of host/scene/geometry.h: KIND_FLUID */
 #define OPEN_INFLOW     3u /* KIND_INFLOW, entry layer particle */
 #define OPEN_OUTFLOW    4u /* KIND_OUTFLOW, exit layer particle */
+#define OPEN_PARKED     5u /* KIND_PARKED, waits in an exit's park */
 #define OPEN_NO_SECTION 0xffffffffu
-#define OPEN_SEC        10
+#define OPEN_SEC        11
 
 struct open_section {
   realv a, t, n;   /* origin, unit tangent, unit normal into the fluid */
@@ -51,6 +59,7 @@ struct open_section {
   uint kind;       /* 1 inflow, 2 outflow */
   uint profile;    /* 0 natural (exit), 1 uniform, 2 parabolic */
   real ramp;       /* T, s: the prescribed speed's rise time (0: none) */
+  real park;       /* an exit's park: distance behind the section, m (0: none) */
 };
 
 struct open_section open_section_load(__global const real *sec, uint k)
@@ -66,6 +75,7 @@ struct open_section open_section_load(__global const real *sec, uint k)
   r.kind = (uint)s[7];
   r.profile = (uint)s[8];
   r.ramp = s[9];
+  r.park = s[10];
   return r;
 }
 
@@ -113,13 +123,16 @@ __kernel void open_layer_velocity(const uint n, const struct grid g,
   const uint i = get_global_id(0);
   if (i >= n) return;
   const uint ki = kind[i];
-  if (ki != OPEN_INFLOW && ki != OPEN_OUTFLOW) return;
+  if (ki != OPEN_INFLOW && ki != OPEN_OUTFLOW) return; /* (a parked particle is at rest) */
   const struct open_section s = open_section_load(sec, section[i]);
   const realv x = pos[i];
   const real along = dot(x - s.a, s.t), h = dot(x - s.a, s.n);
   const realv foot = s.a + along * s.t; /* x's projection onto the section */
-  const uint m1 =
-      open_nearest_fluid(&g, cell_start, pos, kind, foot + R(0.5) * dr * s.n, &s, -INFINITY, i);
+  /* (a particle beyond the last exit layer has no row) */
+  const uint m1 = ki == OPEN_OUTFLOW && h < -s.depth
+                      ? i
+                      : open_nearest_fluid(&g, cell_start, pos, kind, foot + R(0.5) * dr * s.n, &s,
+                                           -INFINITY, i);
   near[i] = m1;
   realv u;
   uint m = i;
@@ -209,7 +222,8 @@ __kernel void open_move(const uint n, __global const uint *kind, __global const 
 }
 
 /* After the motion: fluid that crossed an exit becomes an exit layer particle; role 1 for entry
- * layer particles that reached the fluid (h >= 0), 2 for exit particles beyond the last layer. */
+ * layer particles that reached the fluid (h >= 0), 2 for exit particles beyond the last layer and
+ * for parked ones. */
 __kernel void open_classify(const uint n, __global const realv *pos, __global uint *kind,
                             __global uint *section, __global const real *sec, const uint nsec,
                             const real tol, __global uint *role)
@@ -234,13 +248,16 @@ __kernel void open_classify(const uint n, __global const realv *pos, __global ui
     const real h = dot(x - s.a, s.n);
     if (ki == OPEN_INFLOW && h >= R(0.0)) r = 1u;
     if (ki == OPEN_OUTFLOW && h < -s.depth) r = 2u;
+  } else if (ki == OPEN_PARKED) {
+    r = 2u;
   }
   role[i] = r;
 }
 
 /* Recycling, one work item (the same run gives the same particles): each entry particle i of
  * role 1 becomes fluid and an exit particle j of role 2 takes its place at the back of its row,
- * depth behind it, with the row's prescribed velocity (vel[j] = u_layer[j] = u_layer[i]); the
+ * depth behind it, with the row's prescribed velocity (vel[j] = u_layer[j] = u_layer[i]); exit
+ * particles left over wait at rest in their exit's park (if it has one); the
  * scheme's own fields follow with open_copy_real(v) (j takes i's values). When the exits have
  * fewer to give than the entries ask for (the fluid's volume fluctuates by a few particles), the
  * entry particles furthest into the fluid go first. Served in index order (the sort's, by cell),
@@ -290,6 +307,15 @@ __kernel void open_recycle(const uint n, __global const uint *role, __global uin
     u_layer[j] = u_layer[i];
     kind[i] = OPEN_FLUID;
     section[i] = OPEN_NO_SECTION;
+  }
+  for (uint q = used; q < ng; ++q) { /* exit particles left waiting go to their park */
+    const uint j = list[q];
+    const struct open_section s = open_section_load(sec, section[j]);
+    if (s.park <= R(0.0) || kind[j] == OPEN_PARKED) continue;
+    pos[j] = s.a + dot(pos[j] - s.a, s.t) * s.t - s.park * s.n;
+    kind[j] = OPEN_PARKED;
+    vel[j] = (realv)(R(0.0));
+    u_layer[j] = (realv)(R(0.0));
   }
   count[0] += used;
   count[1] = nw - used;

@@ -6,7 +6,8 @@
  * F = W'(r)/r < 0 (common/smoothing.h), V_j = m_j/ρ_j for fluid and open-boundary layer particles
  * and dr² for dummy wall particles. Kinds: WCR_FLUID moves; WCR_DUMMY is a fixed wall particle
  * whose state each fluid particle extrapolates for itself (acoustic.cl); WCR_INFLOW and
- * WCR_OUTFLOW are the entry and exit layers, whose state the open-boundary module sets.
+ * WCR_OUTFLOW are the entry and exit layers, whose state the open-boundary module sets; WCR_PARKED
+ * particles wait behind an exit for an entry (common/open.cl), in no list.
  *
  * The list: the neighbours j != i within r_list = support + skin at the start of the advection
  * step, at most WCR_MAXN each (CLSPH_FLAG_NEIGH_OVERFLOW beyond), row i at nlist[i WCR_MAXN ...].
@@ -33,6 +34,7 @@
 #define WCR_DUMMY   2u
 #define WCR_INFLOW  3u
 #define WCR_OUTFLOW 4u
+#define WCR_PARKED  5u /* KIND_PARKED: waits behind an exit, out of every sum */
 #ifndef WCR_MAXN
 #define WCR_MAXN 64
 #endif
@@ -94,7 +96,7 @@ __kernel void wcr_config(const uint n, const struct grid g, __global const uint 
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
-  if (kind[i] == WCR_DUMMY) {
+  if (kind[i] == WCR_DUMMY || kind[i] == WCR_PARKED) {
     ncount[i] = 0u;
     return;
   }
@@ -108,7 +110,7 @@ __kernel void wcr_config(const uint n, const struct grid g, __global const uint 
   while (neigh_next(&it, &g, cell_start, &j)) {
     const realv r = x - (pos[j] + it.shift);
     const real r2 = dot(r, r);
-    if (r2 >= rlist2 || j == i) continue;
+    if (r2 >= rlist2 || j == i || kind[j] == WCR_PARKED) continue;
     if (c < WCR_MAXN) row[c] = j;
     ++c;
     if (r2 >= SMOOTH_SUPPORT2) continue;

@@ -11,7 +11,7 @@
 #include "kern.h"
 #include "sim.h"
 
-enum { OPEN_SEC = 10 }; /* reals per section in the table (open.cl) */
+enum { OPEN_SEC = 11 }; /* reals per section in the table (open.cl) */
 
 enum clsph_status open_define(const struct sim *sim, struct prog_opts *o)
 {
@@ -55,6 +55,10 @@ static enum clsph_status upload_table(struct sim *sim, struct open_sections *o)
     t[7] = (real)(in ? 1 : 2);
     t[8] = (real)(c->profile == SCENE_UNIFORM ? 1 : c->profile == SCENE_PARABOLIC ? 2 : 0);
     t[9] = (real)c->ramp;
+    /* where an exit's particles wait for an entry: the park of geometry.c (struct geom_park), or
+     * 0: where they stop, just behind the last layer */
+    if (!in && sim->scheme->open_reserve > 0.0)
+      t[10] = (real)(c->layers * sc->dr + sim->sm.support + 0.5 * sc->dr);
   }
   /* an entry feeds on what the exits give back (recycling), and the other way round */
   CLSPH_CHECK(o->ninflow > 0 && o->noutflow > 0, CLSPH_E_INPUT,
@@ -85,8 +89,10 @@ enum clsph_status open_create(struct sim *sim, int f_u, struct open_sections *ou
   u = calloc(geo->n, sizeof *u);
   CLSPH_CHECK(u != NULL, CLSPH_E_NOMEM, "%s: out of memory", sim->scheme->name);
   for (size_t i = 0; i < geo->n; ++i)
-    u[i] = geo->kind[i] == KIND_INFLOW || geo->kind[i] == KIND_OUTFLOW ? (cl_uint)geo->group[i]
-                                                                       : 0xffffffffu;
+    u[i] =
+        geo->kind[i] == KIND_INFLOW || geo->kind[i] == KIND_OUTFLOW || geo->kind[i] == KIND_PARKED
+            ? (cl_uint)geo->group[i]
+            : 0xffffffffu;
   CLSPH_TRY(pset_add(ps, sim->dev, "section", sizeof(cl_uint), u, &o.f_section));
   pset_describe(ps, o.f_section, PF_UINT, 0, 0);
   CLSPH_TRY(pset_add(ps, sim->dev, "vel_src", sizeof(cl_uint), NULL, &o.f_src));

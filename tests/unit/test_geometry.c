@@ -184,7 +184,7 @@ static void test_box(void)
   s.nwalls = 1;
 
   /* fluid only */
-  TC_CHECK(geometry_build(&s, "none", 0, &g) == CLSPH_OK, "box, no wall particles");
+  TC_CHECK(geometry_build(&s, "none", 0, NULL, &g) == CLSPH_OK, "box, no wall particles");
   TC_CHECK(g.n == 100 && g.nfluid == 100 && g.nseg == 0, "box: 10 x 10 fluid, got %zu of %zu",
            g.nfluid, g.n);
   check_fluid_order(&g, "box");
@@ -200,7 +200,7 @@ static void test_box(void)
   struct scene_region two[] = {region("fill 1", left, 4, 3), region("fill 2", right, 4, 4)};
   s.regions = two;
   s.nregions = 2;
-  TC_CHECK(geometry_build(&s, "none", 0, &g) == CLSPH_OK, "overlapping regions");
+  TC_CHECK(geometry_build(&s, "none", 0, NULL, &g) == CLSPH_OK, "overlapping regions");
   TC_CHECK(g.nfluid == 100, "overlapping regions: 60 + 60 − 20 = 100 fluid particles, got %zu",
            g.nfluid);
   check_fluid_order(&g, "overlapping regions");
@@ -209,7 +209,7 @@ static void test_box(void)
   s.nregions = 1;
 
   /* USAW: 4 edges of 1 m cut into 10 segments: 40 vertices, 40 segments */
-  TC_CHECK(geometry_build(&s, "usaw", 0, &g) == CLSPH_OK, "box, usaw");
+  TC_CHECK(geometry_build(&s, "usaw", 0, NULL, &g) == CLSPH_OK, "box, usaw");
   TC_CHECK(g.nfluid == 100 && g.n == 140 && g.nseg == 40, "box usaw: %zu vertices, %zu segments",
            g.n - g.nfluid, g.nseg);
   check_segments(&g, "box usaw", 0, 0.0);
@@ -248,7 +248,7 @@ static void test_box(void)
   geometry_free(&g);
 
   /* dummy, 3 layers: the 16 x 16 lattice points of [−0.3, 1.3]² less the 10 x 10 fluid */
-  TC_CHECK(geometry_build(&s, "dummy", 3, &g) == CLSPH_OK, "box, dummy");
+  TC_CHECK(geometry_build(&s, "dummy", 3, NULL, &g) == CLSPH_OK, "box, dummy");
   TC_CHECK(g.nfluid == 100 && g.n - g.nfluid == 156 && count_kind(&g, KIND_DUMMY) == 156,
            "box dummy: 156 dummies, got %zu", g.n - g.nfluid);
   int ok_dist = 1, ok_dir = 1, ok_lat = 1, beyond = 0;
@@ -294,7 +294,7 @@ static void test_obstacle(void)
 
   /* the fill is cut around the obstacle: its 4 inner lattice points go (the next ones, dr/2
    * from it, stay) */
-  TC_CHECK(geometry_build(&s, "none", 0, &g) == CLSPH_OK, "obstacle, no wall particles");
+  TC_CHECK(geometry_build(&s, "none", 0, NULL, &g) == CLSPH_OK, "obstacle, no wall particles");
   TC_CHECK(g.nfluid == 96, "obstacle: 100 − 4 fluid particles, got %zu", g.nfluid);
   int ok = 1;
   for (size_t i = 0; i < g.nfluid; ++i)
@@ -305,7 +305,7 @@ static void test_obstacle(void)
   geometry_free(&g);
 
   /* USAW: the obstacle's 4 edges of 0.2 m make 8 more vertices */
-  TC_CHECK(geometry_build(&s, "usaw", 0, &g) == CLSPH_OK, "obstacle, usaw");
+  TC_CHECK(geometry_build(&s, "usaw", 0, NULL, &g) == CLSPH_OK, "obstacle, usaw");
   TC_CHECK(g.n - g.nfluid == 48 && g.nseg == 48, "obstacle usaw: 40 + 8 vertices, got %zu",
            g.n - g.nfluid);
   check_segments(&g, "obstacle usaw", 0, 0.0);
@@ -334,7 +334,7 @@ static void test_obstacle(void)
   geometry_free(&g);
 
   /* dummy: 156 around the box and the obstacle's 4 inner lattice points */
-  TC_CHECK(geometry_build(&s, "dummy", 3, &g) == CLSPH_OK, "obstacle, dummy");
+  TC_CHECK(geometry_build(&s, "dummy", 3, NULL, &g) == CLSPH_OK, "obstacle, dummy");
   TC_CHECK(g.n - g.nfluid == 160, "obstacle dummy: 156 + 4, got %zu", g.n - g.nfluid);
   int inner = 0;
   ok = 1;
@@ -363,7 +363,7 @@ static void test_wedge(void)
   s.nregions = 1;
   s.walls = walls;
   s.nwalls = 2;
-  TC_CHECK(geometry_build(&s, "usaw", 0, &g) == CLSPH_OK, "wedge, usaw");
+  TC_CHECK(geometry_build(&s, "usaw", 0, NULL, &g) == CLSPH_OK, "wedge, usaw");
   /* the tip (0.5, 0.3): solid angle 2 atan(0.2/0.4); base corners: atan(0.4/0.2) */
   size_t tip = find(&g, KIND_VERTEX, 0.5, 0.3), left = find(&g, KIND_VERTEX, 0.3, 0.7);
   TC_CHECK(tip < g.n && left < g.n, "wedge: tip and base vertices exist");
@@ -413,7 +413,7 @@ static void test_open_tank_and_lid(void)
   s.gravity[1] = -9.81; /* an open tank holds its water under gravity */
 
   /* an open tank: 3 edges, 30 segments, 31 vertices; free ends at the top */
-  TC_CHECK(geometry_build(&s, "usaw", 0, &g) == CLSPH_OK, "open tank, usaw");
+  TC_CHECK(geometry_build(&s, "usaw", 0, NULL, &g) == CLSPH_OK, "open tank, usaw");
   TC_CHECK(g.nfluid == 50 && g.n - g.nfluid == 31 && g.nseg == 30,
            "open tank: 50 fluid, 31 vertices, 30 segments, got %zu, %zu, %zu", g.nfluid,
            g.n - g.nfluid, g.nseg);
@@ -432,7 +432,7 @@ static void test_open_tank_and_lid(void)
 
   /* dummy: 3 columns of 16 beside each side (3 layers below, a 3 x 3 square cap above each free
    * end), 3 rows of 10 under the floor */
-  TC_CHECK(geometry_build(&s, "dummy", 3, &g) == CLSPH_OK, "open tank, dummy");
+  TC_CHECK(geometry_build(&s, "dummy", 3, NULL, &g) == CLSPH_OK, "open tank, dummy");
   TC_CHECK(g.n - g.nfluid == 2 * 48 + 30, "open tank dummy: 126, got %zu", g.n - g.nfluid);
   geometry_free(&g);
 
@@ -441,7 +441,7 @@ static void test_open_tank_and_lid(void)
   walls[1].velocity[0] = 1.0;
   s.nwalls = 2;
   regs[0].pts = box_pts;
-  TC_CHECK(geometry_build(&s, "usaw", 0, &g) == CLSPH_OK, "cavity, usaw");
+  TC_CHECK(geometry_build(&s, "usaw", 0, NULL, &g) == CLSPH_OK, "cavity, usaw");
   TC_CHECK(g.n - g.nfluid == 40 && g.nseg == 40,
            "cavity: the lid ends merge: 31 + 11 − 2 = 40 "
            "vertices, got %zu",
@@ -463,7 +463,7 @@ static void test_open_tank_and_lid(void)
   TC_CHECK(ok && lid == 9, "cavity: θ = π/2 at the 4 corners, 9 lid vertices slide at (1, 0)");
   geometry_free(&g);
 
-  TC_CHECK(geometry_build(&s, "dummy", 3, &g) == CLSPH_OK, "cavity, dummy");
+  TC_CHECK(geometry_build(&s, "dummy", 3, NULL, &g) == CLSPH_OK, "cavity, dummy");
   TC_CHECK(g.n - g.nfluid == 156, "cavity dummy: 156 as for the closed box, got %zu",
            g.n - g.nfluid);
   ok = 1;
@@ -493,7 +493,7 @@ static void test_periodic_channel(void)
   s.nwalls = 2;
   s.periodic[0] = 1;
   /* each wall's ends are one point modulo the period: 10 vertices, 10 segments, all straight */
-  TC_CHECK(geometry_build(&s, "usaw", 0, &g) == CLSPH_OK, "periodic channel, usaw");
+  TC_CHECK(geometry_build(&s, "usaw", 0, NULL, &g) == CLSPH_OK, "periodic channel, usaw");
   TC_CHECK(g.nfluid == 100 && g.n - g.nfluid == 20 && g.nseg == 20,
            "periodic channel: 20 vertices and segments, got %zu, %zu", g.n - g.nfluid, g.nseg);
   check_segments(&g, "periodic channel", 0, 1.0);
@@ -502,7 +502,7 @@ static void test_periodic_channel(void)
     ok &= fabs(g.theta[i] - pi) < tol && g.x[2 * i] >= 0.0 && g.x[2 * i] < 1.0;
   TC_CHECK(ok, "periodic channel: θ = π everywhere, vertices in [0, 1)");
   geometry_free(&g);
-  TC_CHECK(geometry_build(&s, "dummy", 3, &g) == CLSPH_OK, "periodic channel, dummy");
+  TC_CHECK(geometry_build(&s, "dummy", 3, NULL, &g) == CLSPH_OK, "periodic channel, dummy");
   TC_CHECK(g.n - g.nfluid == 60, "periodic channel: 2 x 3 rows of 10 dummies, got %zu",
            g.n - g.nfluid);
   geometry_free(&g);
@@ -529,7 +529,7 @@ static void test_sections(void)
   secs[0].velocity = 1.5;
   secs[0].layers = 3;
 
-  TC_CHECK(geometry_build(&s, "usaw", 0, &g) == CLSPH_OK, "channel, usaw");
+  TC_CHECK(geometry_build(&s, "usaw", 0, NULL, &g) == CLSPH_OK, "channel, usaw");
   TC_CHECK(g.nfluid == 200 && g.nseg == 40 && count_kind(&g, KIND_VERTEX) == 42,
            "channel: 200 fluid, 2 x 21 vertices, 40 segments");
   TC_CHECK(count_kind(&g, KIND_INFLOW) == 30 && count_kind(&g, KIND_OUTFLOW) == 30,
@@ -570,7 +570,7 @@ static void test_sections(void)
   /* uniform, 2 layers */
   secs[0].profile = SCENE_UNIFORM;
   secs[0].layers = 2;
-  TC_CHECK(geometry_build(&s, "none", 0, &g) == CLSPH_OK, "channel, uniform inflow");
+  TC_CHECK(geometry_build(&s, "none", 0, NULL, &g) == CLSPH_OK, "channel, uniform inflow");
   TC_CHECK(count_kind(&g, KIND_INFLOW) == 20 && g.n == 250, "2 inflow layers of 10, got %zu",
            count_kind(&g, KIND_INFLOW));
   ok = 1;
@@ -582,7 +582,7 @@ static void test_sections(void)
   /* a prescribed (parabolic) exit profile: along −n, peak 2 m/s; s = y along (2, 0)->(2, 1) */
   secs[1].profile = SCENE_PARABOLIC;
   secs[1].velocity = 2.0;
-  TC_CHECK(geometry_build(&s, "none", 0, &g) == CLSPH_OK, "channel, parabolic exit");
+  TC_CHECK(geometry_build(&s, "none", 0, NULL, &g) == CLSPH_OK, "channel, parabolic exit");
   ok = 1;
   for (size_t i = 0; i < g.n; ++i) {
     double y = g.x[2 * i + 1];
@@ -598,7 +598,7 @@ static void test_sections(void)
 static void expect_input_error(struct scene *s, const char *model, int layers, const char *what)
 {
   struct geom g;
-  enum clsph_status st = geometry_build(s, model, layers, &g);
+  enum clsph_status st = geometry_build(s, model, layers, NULL, &g);
   TC_CHECK(st == CLSPH_E_INPUT && g.n == 0 && g.x == NULL, "%s: CLSPH_E_INPUT, got %s", what,
            clsph_status_str(st));
   geometry_free(&g);
@@ -657,7 +657,7 @@ static void test_errors(void)
   expect_input_error(&s, "dummy", 0, "dummy walls with 0 layers");
   {
     struct geom g;
-    TC_CHECK(geometry_build(&s, "usaw", 0, &g) == CLSPH_OK, "the same scene, fixed, builds");
+    TC_CHECK(geometry_build(&s, "usaw", 0, NULL, &g) == CLSPH_OK, "the same scene, fixed, builds");
     geometry_free(&g);
   }
 
