@@ -231,9 +231,9 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(check_fluid_count(&sim));
   /* a weakly-compressible scheme's park behind the exits: beyond the support of the last layer
    * and of the dummies of a wall that runs on through it */
-  const struct geom_park park = {.fraction = sim.scheme->open_reserve,
-                                 .behind = sim.sm.support + 0.5 * scene->dr};
-  CLSPH_TRY(geometry_build(scene, model, layers, &park, &sim.geom));
+  sim.park.fraction = sim.scheme->open_reserve;
+  sim.park.behind = sim.sm.support + 0.5 * scene->dr;
+  CLSPH_TRY(geometry_build(scene, model, layers, &sim.park, &sim.geom));
   sim.digest = geometry_digest(scene, &sim.geom);
   CLSPH_CHECK(!sim.geom.has_p0 || (sim.scheme->fill_fields & SCHEME_FILL_PRESSURE), CLSPH_E_INPUT,
               "%s:%d: fill { pressure }: scheme '%s' takes no initial pressure (it has none, or "
@@ -253,7 +253,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
     sim.gspec.hi[a] = scene->hi[a] + (scene->periodic[a] ? 0.0 : margin);
   }
   /* and the particles parked behind the exits, with a cell to spare */
-  for (size_t i = 0; i < sim.geom.n && park.fraction > 0.0; ++i)
+  for (size_t i = 0; i < sim.geom.n && sim.park.fraction > 0.0; ++i)
     for (int a = 0; a < 2; ++a)
       if (!scene->periodic[a] && sim.geom.kind[i] == KIND_PARKED) {
         sim.gspec.lo[a] = fmin(sim.gspec.lo[a], sim.geom.x[2 * i + a] - sim.gspec.support);

@@ -25,8 +25,9 @@ struct sim {
   const struct dev *dev;
   const struct scene *scene;
   const struct scheme_ops *scheme;
-  void *state;      /* the scheme's */
-  struct geom geom; /* host copy of the generated particles and wall segments */
+  void *state;           /* the scheme's */
+  struct geom_park park; /* the particles parked behind the exits (geometry_build) */
+  struct geom geom;      /* host copy of the generated particles and wall segments */
   struct smoothing sm;
   struct grid_spec gspec;
   struct grid grid;

@@ -10,7 +10,7 @@
  * the section, beyond its last layer, where its particles wait for an entry). Profiles, s along the
  * section: U (uniform) or 4 U s/len (1 − s/len) (parabolic, U the peak; eq 30 with y measured from
  * a wall), times ½(1 − cos(π t/T)) while t < T (a prescribed velocity that rises smoothly: a
- * weakly- compressible fluid set going at once takes a pressure pulse ρ c0 U, a density change of
+ * weakly-compressible fluid set going at once takes a pressure pulse ρ c0 U, a density change of
  * U/c0, that runs up and down the channel; T = 0: at once, the paper's start).
  *
  * Per particle (fields of solvers/open): section[i] (OPEN_NO_SECTION off the layers); near[i],

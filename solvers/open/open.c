@@ -57,8 +57,7 @@ static enum clsph_status upload_table(struct sim *sim, struct open_sections *o)
     t[9] = (real)c->ramp;
     /* where an exit's particles wait for an entry: the park of geometry.c (struct geom_park), or
      * 0: where they stop, just behind the last layer */
-    if (!in && sim->scheme->open_reserve > 0.0)
-      t[10] = (real)(c->layers * sc->dr + sim->sm.support + 0.5 * sc->dr);
+    if (!in && sim->park.fraction > 0.0) t[10] = (real)(c->layers * sc->dr + sim->park.behind);
   }
   /* an entry feeds on what the exits give back (recycling), and the other way round */
   CLSPH_CHECK(o->ninflow > 0 && o->noutflow > 0, CLSPH_E_INPUT,
