@@ -450,7 +450,7 @@ clsph_failure_test(health_wall_crossing ${CMAKE_SOURCE_DIR}/cases/cavity.lua wal
 # A particle leaving the domain is classified too (the message: run_blowup_escape); no setting
 # controls it, so the message says where to look.
 clsph_failure_test(health_escaped ${CMAKE_SOURCE_DIR}/cases/free_fall.lua escaped
-                   "a particle left the domain at step [0-9]+, t = [0-9.]+ s; no setting controls this check: look in the last snapshot"
+                   "a particle left the domain at step [0-9]+, t = [0-9.]+ s; no setting controls this check: look in blowup.h5"
                    SETS t_end=3 dr=0.05)
 # Escape: a fluid particle more than dr beyond the domain's box stops the run (domain.cl), at
 # t = 0.575 s here, long before the cell grid's edge; with no walls and no periodic axis the
@@ -779,17 +779,23 @@ clsph_run_test(run_poiseuille_open_riemann_characteristic ${CMAKE_SOURCE_DIR}/ca
                       "fluid>96.5" "fluid<103.5")
 # The square cylinder at Re = 20 in Breuer's geometry (32 D long, cylinder 8 D from the entry,
 # natural exit) with wcsph-riemann at H/40 (the cylinder 5 particles across), 30 D/U0, C_D
-# averaged from 15: measured C_D = 3.45 double, 3.41 float, against Breuer's 2.40 (+44%;
-# isph-rotational +3.3% at H/80), 8 s on 2 shared cores. This is a regression window, not a
-# validation: the excess is not understood (the pressure part, 2.95, is 30% above what the mean
-# pressures on the front and back faces give; the wall pairs' Riemann dissipation posed along
-# the wall normal instead gave the same C_D). Until the health check's sort was accounted for
-# (wcsph_riemann.c, wcr_wall_force) a third of the samples summed pairs of the wrong particles
-# and this run reported 2.68. The window catches a lost wall force, a start-up transient left in
-# the average, and a change of the wall treatment.
+# averaged from 15, the density from the continuity equation (the case's choice for this
+# scheme): measured C_D = 2.80 double, 2.81 float, against Breuer's 2.40 (+16.8% and +17.2%), 8 s
+# on 2 shared cores; +1.8% at H/80 (validate_square_cylinder_riemann). The band, +8% to +26%, is
+# half the error either side: it fails a lost wall force, a start-up transient left in the
+# average, and the density re-set by summation (+43%, the pressure then c0² times the particles'
+# disorder). Before the exit's target was delayed by the start-up wave's transit (wcsph_riemann.c,
+# open_exits) the exit's corner by the floor could flow back at H/80 and throw a particle out.
 clsph_run_test(run_square_cylinder_riemann ${CMAKE_SOURCE_DIR}/cases/square_cylinder.lua
                SETS riemann=1 n=40 re=20 t_end=30 length=32 xc=8 average_from=15
-               BOUNDS "cd_dev>0.3" "cd_dev<0.6" "upstream<0.5" "pressure_share>0.6")
+               BOUNDS "cd_dev>0.08" "cd_dev<0.26" "upstream<0.5" "pressure_share>0.6")
+# The same at H/80 (the cylinder 10 particles across), 45 s: C_D = 2.443, +1.8% of Breuer's
+# (isph-rotational -3.3% at this resolution in 320 s). Breuer's values are digitised to ±4-6%:
+# the bound is 6%.
+clsph_run_test(validate_square_cylinder_riemann ${CMAKE_SOURCE_DIR}/cases/square_cylinder.lua
+               LABELS slow
+               SETS riemann=1 n=80 re=20 t_end=30 length=32 xc=8 average_from=15 outputs=6
+               BOUNDS "cd_error<0.06" "upstream<0.5" "pressure_share>0.6")
 # Bad ramps: negative; on a natural exit (it takes the fluid's velocity).
 clsph_cli_test(case_ramp_negative ARGS info ${CASE_DIR}/bad_ramp.lua RC 2
                REGEX "bad_ramp.lua:11: inflow: ramp must be a time of 0 s or more")

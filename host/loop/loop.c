@@ -174,16 +174,35 @@ static int on_cadence(double t, double every)
   return every > 0.0 && fabs(remainder(t, every)) < 1e-9 * every;
 }
 
-/* After a step: the blow-up checks, then the outputs that fall due. */
+/* The blow-up checks of a step (checks.c). */
+static enum clsph_status blowup_checks(struct sim *sim, int at_end)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  CLSPH_TRY(sim_domain_check(sim));
+  CLSPH_TRY(sim_check_flags(sim));
+  if (s->checks.every > 0 && (sim->step % s->checks.every == 0 || at_end))
+    CLSPH_TRY(sim_check_health(sim));
+done:
+  return st;
+}
+
+/* After a step: the blow-up checks, then the outputs that fall due. A blow-up leaves the state
+ * that failed the check in blowup.h5 beside the last good snapshot (where the particle left, which
+ * pair clustered): the snapshot before it may be many steps earlier. */
 static enum clsph_status check_and_write(struct sim *sim, struct run_out *o, double dt, int lands)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
   const int at_end = sim->time >= s->t_end;
-  CLSPH_TRY(sim_domain_check(sim));
-  CLSPH_TRY(sim_check_flags(sim));
-  if (s->checks.every > 0 && (sim->step % s->checks.every == 0 || at_end))
-    CLSPH_TRY(sim_check_health(sim));
+  st = blowup_checks(sim, at_end);
+  if (st == CLSPH_E_BLOWUP) {
+    if (snapshot_write_blowup(sim, o) == CLSPH_OK)
+      log_info("the state at the blow-up (step %ld, t = %.9g s): %s/blowup.h5", sim->step,
+               sim->time, o->dir);
+    goto done;
+  }
+  CLSPH_TRY(st);
   /* time series at their own cadence: the first step at or past each multiple of sample_every */
   if (s->sample_every > 0.0 && floor(sim->time / s->sample_every * (1.0 + 1e-12)) >
                                    floor((sim->time - dt) / s->sample_every * (1.0 + 1e-12)))

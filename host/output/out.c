@@ -26,7 +26,8 @@ done:
 static int is_output(const char *name, long *num)
 {
   static const char *const files[] = {"snapshots.xdmf", "summary.json",     "probes.csv",
-                                      "forces.csv",     "flow_control.csv", "series.csv"};
+                                      "forces.csv",     "flow_control.csv", "series.csv",
+                                      "blowup.h5"};
   const size_t len = strlen(name);
   int n = 0;
   *num = -1;
@@ -145,7 +146,8 @@ enum clsph_status out_drop_after(const char *dir, long nsnap, long step)
   for (struct dirent *e; (e = readdir(d)) != NULL;) {
     if (!is_output(e->d_name, &num)) continue;
     const int snap = strncmp(e->d_name, "snap_", 5) == 0;
-    const int later = num >= 0 && (snap ? num >= nsnap : num > step);
+    const int later = num >= 0 ? (snap ? num >= nsnap : num > step)
+                               : strcmp(e->d_name, "blowup.h5") == 0; /* the abandoned run's */
     const size_t len = strlen(e->d_name);
     const int movie = len > 4 && (strcmp(e->d_name + len - 4, ".mp4") == 0 ||
                                   strcmp(e->d_name + len - 4, ".tmp") == 0);

@@ -197,3 +197,16 @@ done:
   free(ckdir);
   return st;
 }
+
+enum clsph_status snapshot_write_blowup(struct sim *sim, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  char *path = NULL;
+  struct io_meta m;
+  snapshot_meta(sim, &m);
+  CLSPH_TRY(out_path(o, "blowup.h5", &path));
+  CLSPH_TRY(io_snapshot_write(path, sim->dev, &sim->ps, &m));
+done:
+  free(path);
+  return st;
+}

@@ -18,6 +18,8 @@ void snapshot_meta(const struct sim *sim, struct io_meta *m);
 /** @brief Write snapshot number o->nsnap, its line in the XDMF index, its frame (--frames) and
  *  the series that go with it. */
 enum clsph_status snapshot_write(struct sim *sim, struct run_out *o);
+/** @brief The state at a blow-up, in blowup.h5 (the fields of a snapshot, in no index). */
+enum clsph_status snapshot_write_blowup(struct sim *sim, struct run_out *o);
 
 /** @brief A run continued from the checkpoint `restart`: the snapshots before it (numbers
  *  0 .. o->nsnap − 1 in the checkpoint's folder) go into the index first, so that

@@ -22,7 +22,8 @@ enum clsph_status sim_fail(struct sim *sim, const char *failure)
 /* What to look at after a non-finite value, which no setting controls. */
 static const char *const nan_hint =
     "no setting controls this check: look at the progress lines before it (pressure solves that "
-    "did not converge) and the last snapshot; a time step at the scheme's bound may be too long "
+    "did not converge) and blowup.h5 (the state that failed); a time step at the scheme's bound "
+    "may be too long "
     "for the scene (run { cfl = 0.5 })";
 
 enum clsph_status sim_check_flags(struct sim *sim)
@@ -55,7 +56,8 @@ enum clsph_status sim_check_flags(struct sim *sim)
     snprintf(
         sim->status, sizeof sim->status,
         "blow-up: a particle left the domain at step %ld, t = %.9g s; no setting controls this "
-        "check: look in the last snapshot for fluid thrown over a wall or out through a gap "
+        "check: look in blowup.h5 (the state that failed) for fluid thrown over a wall or out "
+        "through a gap "
         "(fluid particles must stay within dr of the domain { } box, but on the side gravity "
         "points away from)",
         sim->step, sim->time);
@@ -64,7 +66,8 @@ enum clsph_status sim_check_flags(struct sim *sim)
     snprintf(
         sim->status, sizeof sim->status,
         "blow-up: a particle has more neighbours than its table holds at step %ld, t = %.9g s; "
-        "no setting controls this check: particles have piled up; the last snapshot shows "
+        "no setting controls this check: particles have piled up; blowup.h5 (the state that "
+        "failed) shows "
         "where",
         sim->step, sim->time);
     st = sim_fail(sim, "neighbours");

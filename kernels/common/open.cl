@@ -35,7 +35,13 @@
  * particle. The natural condition n·∇u = 0 (eq 17 with equilibrated pressures): its velocity is
  * that of its "progenitor in the exit layer", the fluid particle nearest to (s, δr/2); with a
  * prescribed exit profile (outflow { profile = "parabolic" }, the paper's choice above Re = 10,
- * sec 4.3.3) it is −u(s) n instead. A particle beyond the last layer (h < −depth) stops and
+ * sec 4.3.3) it is −u(s) n instead. Where the fluid flows back into the exit (u·n > 0 at its
+ * progenitor) the layers take only the tangential part, as a finite-volume inletOutlet condition
+ * turns a zero-gradient exit into a wall for backflow: the layers that copied a backflow ran on
+ * upstream into the fluid, pushed it back, and copied the faster backflow they made (the square
+ * cylinder's exit corner by the floor, cases/square_cylinder.lua with wcsph-riemann, Re = 20,
+ * H/80: layer particles 18 δr into the fluid at −16 U0 by t = 3.3). A particle beyond the last
+ * layer (h < −depth) stops and
  * waits to be recycled into an entry.
  * The pressure (or density) the layers carry is the scheme's: open_layer_scalar gives the usual
  * weakly-compressible choice (a copy of the row's first fluid particle at an entry, a fixed value
@@ -151,6 +157,8 @@ __kernel void open_layer_velocity(const uint n, const struct grid g,
     } else if (s.profile == 0u) {
       m = m1;
       u = vel[m];
+      const real un = dot(u, s.n); /* backflow: the layers do not move into the fluid */
+      if (un > R(0.0)) u -= un * s.n;
     } else {
       u = -rise * open_profile(&s, along) * s.n;
     }

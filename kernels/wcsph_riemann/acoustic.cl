@@ -9,7 +9,16 @@
  *   dρ/dt from v^{n+1} = v + δt dv/dt (eq 15)     (wcr_continuity, into drho)
  *   v += δt dv/dt, r += ½δt v, ρ += ½δt dρ/dt     (wcr_drift)
  * and the drift that ends a sub-step and the one that starts the next are one launch.
- * Equation of state (eq 3): p = c0² (ρ − ρ0) + p_bg (p_bg = 0 unless the case sets one).
+ * Equation of state (eq 3): p = c0² (ρ − ρ0), the gauge pressure every output shows. A background
+ * pressure p_bg (scheme option background_pressure, default 0) enters the pressure force only,
+ * as p + p_bg: in the particle sums a uniform pressure P leaves P R_i (R_i = Σ_j (B_i + B_j)
+ * ∇W_ij V_j, advection.cl), which pushes particles out of crowded spots where P > 0 and draws
+ * them in where P < 0 (the tensile instability). A p_bg that keeps P > 0 stabilises, at the
+ * price of force noise where p_bg is large against the flow's pressures: the characteristic
+ * exit's start-up pull (solvers/wcsph_riemann, open_exits) let a square cylinder's exit corner
+ * flow back until it threw a particle out, and p_bg = ρ0 c0 U cured it, but doubled the
+ * Poiseuille channel's exit pressure error (c0 = 30 U0: 0.19 against 0.07 of the drop); the
+ * delayed exit target cures it without.
  *
  * Riemann problem between i (left) and j (right) along e = (x_j − x_i)/r_ij: the jump
  * U_ij = (v_i − v_j)·e = −v_ij·r_ij/r_ij (> 0 when the pair closes up),
@@ -59,7 +68,7 @@ real wcr_beta(real u, real c0, uint wall)
 }
 
 /* r += dt_x v + shift (shift: once, at the start of an advection step), v += dt_v acc,
- * ρ += dt_rho dρ/dt, then V = m/ρ and p = c0² (ρ − ρ0) + p_bg; fluid only. In free-surface
+ * ρ += dt_rho dρ/dt, then V = m/ρ and p = c0² (ρ − ρ0); fluid only. In free-surface
  * flows (surface > 0) a particle whose kernel sum is short of a full support's (sigma < surface,
  * config.cl: the rows at the surface) takes no tension, p >= 0: pairs of surface particles under
  * a slightly negative pressure (−200 Pa in a tank at rest, dr = H/20) drew together until the
@@ -69,10 +78,9 @@ __kernel void wcr_drift(const uint n, const struct grid g, __global const uint *
                         const real dt_v, const real dt_x, const real dt_rho,
                         __global const realv *acc, const uint use_shift,
                         __global const realv *shift, __global const real *sigma, const real surface,
-                        const real mass, const real rho0, const real c0, const real p_bg,
-                        __global realv *pos, __global realv *vel, __global real *rho,
-                        __global const real *drho, __global real *vol, __global real *p,
-                        __global uint *flags)
+                        const real mass, const real rho0, const real c0, __global realv *pos,
+                        __global realv *vel, __global real *rho, __global const real *drho,
+                        __global real *vol, __global real *p, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
@@ -95,7 +103,7 @@ __kernel void wcr_drift(const uint n, const struct grid g, __global const uint *
   pos[i] = x;
   rho[i] = r;
   vol[i] = mass / r;
-  real pr = c0 * c0 * (r - rho0) + p_bg;
+  real pr = c0 * c0 * (r - rho0);
   if (surface > R(0.0) && sigma[i] < surface) pr = fmax(pr, R(0.0));
   p[i] = pr;
 }
@@ -107,14 +115,14 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
                            __global const real *p, __global const uint *nlist,
                            __global const uint *ncount, __global const real4 *bmat,
                            __global const realv *acc_prior, const real rho0, const real c0,
-                           const real mu, const real h, __global realv *acc)
+                           const real p_bg, const real mu, const real h, __global realv *acc)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
   const realv x = pos[i], vi = vel[i], ai = acc_prior[i];
-  const real pi = p[i], ri = rho[i];
+  const real pi = p[i] + p_bg, ri = rho[i];
   const real4 bi = bmat[i];
-  realv sum = (realv)(R(0.0)); /* Σ V_j [(p_i B_j + p_j B_i) ∇W + ρ0 β U ∇W] */
+  realv sum = (realv)(R(0.0)); /* Σ V_j [(p_i B_j + p_j B_i) ∇W + ρ0 β U ∇W], p with p_bg */
 #if WCR_ARD
   realv visc = (realv)(R(0.0));
 #endif
@@ -135,7 +143,7 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
       bj = bi;
     } else {
       vj = vel[j];
-      pj = p[j];
+      pj = p[j] + p_bg;
       bj = bmat[j];
     }
     const realv vij = vi - vj;
@@ -156,14 +164,26 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
 }
 
 /* dρ/dt (eq 15) from v^{n+1} = v + δt dv/dt of both particles; fluid only (0 elsewhere). The
- * entry and exit layers (solvers/open) are neighbours with their own v, ρ and p. */
+ * entry and exit layers (solvers/open) are neighbours with their own v, ρ and p.
+ * A dummy particle's velocity is the no-slip mirror 2 u_w − v_i, whose tangential jump cancels
+ * along a straight wall but not where walls meet: at the lid's ends of the lid-driven cavity
+ * (cases/cavity.lua) it is a density source of order ρ U/h. With the density re-set by summation
+ * at each advection step (density = "summation") it does not add up; with the continuity
+ * equation alone (density = "continuity", -D WCR_WALL_CONT_NORMAL=1) it did, and the 30² cavity
+ * threw a particle out at its 13th step: there the dummy shows the free-slip mirror
+ * v_i − 2 ((v_i − u_w)·n_w) n_w instead, no penetration through the wall along its normal n_w
+ * and no tangential jump (the viscous sum keeps no slip, advection.cl). The 30² cavity at
+ * Re = 100 then runs (u RMS against Ghia 0.025 U at t = 10, 0.015 with summation). Under
+ * summation the free-slip mirror moved the 50² cavity's u RMS from 0.0048 to 0.0078 U, and it is
+ * not used there. */
 __kernel void wcr_continuity(const uint n, const struct grid g, __global const realv *pos,
                              __global const realv *vel, __global const realv *acc, const real dt,
                              __global const real *vol, __global const uint *kind,
                              __global const real *rho, __global const real *p,
                              __global const uint *nlist, __global const uint *ncount,
-                             __global const realv *acc_prior, const real rho0, const real c0,
-                             const realv gravity, __global real *drho)
+                             __global const realv *acc_prior, __global const realv *wall_normal,
+                             const real rho0, const real c0, const realv gravity,
+                             __global real *drho)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -185,7 +205,13 @@ __kernel void wcr_continuity(const uint n, const struct grid g, __global const r
     realv vj;
     real pj;
     if (kj == WCR_DUMMY) {
+#if WCR_WALL_CONT_NORMAL
+      const realv nw = wall_normal[j];
+      vj = vi - R(2.0) * dot(vi - vel[j], nw) * nw;
+#else
       vj = R(2.0) * vel[j] - vi;
+      (void)wall_normal;
+#endif
       pj = pi - ri * dot(ai, r);
     } else {
       vj = kj == WCR_FLUID ? vel[j] + dt * acc[j] : vel[j];

@@ -48,6 +48,9 @@
 #ifndef WCR_ARD
 #define WCR_ARD 0
 #endif
+#ifndef WCR_WALL_CONT_NORMAL
+#define WCR_WALL_CONT_NORMAL 0
+#endif
 #ifndef WCR_WALL_FULL
 #define WCR_WALL_FULL 0
 #endif

@@ -1,7 +1,8 @@
 /* force.cl (wcsph-riemann): the force of the fluid on a group of dummy-particle walls, the sum of
  * the reactions of the pair forces the walls exert on the fluid in the sub-steps (acoustic.cl,
  * advection.cl), so that what the fluid loses the walls gain:
- *   pressure: Σ_i V_i Σ_w V_w [(p_i B_w + p_w B_i) + ρ0 β U I] ∇W_iw   (eq 19 with the wall state)
+ *   pressure: Σ_i V_i Σ_w V_w [(p_i B_w + p_w B_i) + ρ0 β U I] ∇W_iw   (eq 19 with the wall state;
+ *             p + p_bg as the momentum sum has it, acoustic.cl)
  *   viscous:  −Σ_i V_i Σ_w 2 µ V_w F (v_i − v_w)  (eq 21 with Morris's wall velocity,
  *             advection.cl; with ARD the Riemann viscosity's excess max(µ_R − µ, 0) with the
  *             mirror velocity, eqs 31-32)
@@ -15,8 +16,8 @@ __kernel void wcr_wall_force(const uint n, const struct grid g, __global const r
                              __global const uint *ncount, __global const real4 *bmat,
                              __global const realv *acc_prior, __global const uint *wall,
                              __global const uint *mask, const uint nmask, const real dr,
-                             const real rho0, const real c0, const real mu, const real inv_lambda,
-                             const real h, __global real4 *out)
+                             const real rho0, const real c0, const real p_bg, const real mu,
+                             const real inv_lambda, const real h, __global real4 *out)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -42,7 +43,7 @@ __kernel void wcr_wall_force(const uint n, const struct grid g, __global const r
     const real pj = pi - ri * dot(ai, r);
     const real u = rr > R(0.0) ? -dot(vij, r) / rr : R(0.0);
     const real beta = wcr_beta(u, c0, 1u);
-    fp += f * (pi + pj) * wcr_apply(bi, r);
+    fp += f * (pi + pj + R(2.0) * p_bg) * wcr_apply(bi, r);
 #if WCR_ARD
     fv -= R(2.0) * fmax(R(0.5) * rho0 * beta * h - mu, R(0.0)) * f * vij;
 #else

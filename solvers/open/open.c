@@ -225,6 +225,7 @@ done:
 /* the rise of a section's prescribed speed at time t (kernels/common/open.cl) */
 static double ramp_factor(const struct scene_section *c, double t)
 {
+  if (t < 0.0) return 0.0; /* before the start (open_natural_flux at a delayed time) */
   return t < c->ramp ? 0.5 * (1.0 - cos(acos(-1.0) * t / c->ramp)) : 1.0;
 }
 
@@ -247,6 +248,22 @@ double open_natural_flux(const struct scene *sc, double t)
       q -= section_flux(c, t);
   }
   return q;
+}
+
+double open_transit(const struct scene *sc)
+{
+  double d = HUGE_VAL;
+  for (int k = 0; k < sc->nsections; ++k) {
+    const struct scene_section *in = &sc->sections[k];
+    if (in->kind != SCENE_INFLOW) continue;
+    for (int m = 0; m < sc->nsections; ++m) {
+      const struct scene_section *out = &sc->sections[m];
+      if (out->kind != SCENE_OUTFLOW || out->profile != 0) continue;
+      d = fmin(d, 0.5 * hypot(out->a[0] + out->b[0] - in->a[0] - in->b[0],
+                              out->a[1] + out->b[1] - in->a[1] - in->b[1]));
+    }
+  }
+  return isfinite(d) ? d : 0.0;
 }
 
 double open_natural_width(const struct scene *sc)

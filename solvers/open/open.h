@@ -128,6 +128,10 @@ enum clsph_status open_exit_speed(struct open_sections *o, struct sim *sim, doub
  *  incompressible flow. With the ramps (inflow { ramp }). */
 double open_natural_flux(const struct scene *sc, double t);
 
+/** @brief The shortest distance from an entry's midpoint to a natural exit's, m (0 without
+ *  such a pair): the path of the start-up wave from the entries to the exits. */
+double open_transit(const struct scene *sc);
+
 /** @brief The total length of the natural exits (outflow without a profile), m. */
 double open_natural_width(const struct scene *sc);
 

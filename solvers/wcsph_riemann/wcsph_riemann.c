@@ -15,12 +15,13 @@
  * The loop counts advection steps (sim->step); the acoustic sub-steps go into sim->substeps.
  * Options:
  *   sound_speed          c0, m/s (default 10 U)
- *   background_pressure  p_bg added by the equation of state, Pa (default 0)
+ *   background_pressure  p_bg, Pa, added to the pressure in the pressure force only (the field
+ *                        p is the gauge pressure; acoustic.cl); default 0
  *   transport_velocity   "limited" (LTVF, eqs 33-34; the default), "full" (eq 25) or "off"
  *   ard                  1: adaptive Riemann-eddy dissipation (sec 3.1), 0: off (default)
  *   density              "free_surface" (ρ = max(ρ, ρ_sum) each advection step; the default
  *                        under gravity), "summation" (ρ = ρ_sum; the default otherwise) or
- *                        "continuity" (no re-initialisation)
+ *                        "continuity" (no re-initialisation; see read_options for when)
  *   wall_dissipation     "limited" (the fluid pairs' limiter; default) or "full" (sec 4.3)
  *   outlet               a natural exit's pressure: "characteristic" (default; see open_layers)
  *                        or "fixed" (p = 0: the paper's zero-pressure outlet, which reflects
@@ -142,6 +143,15 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   const int gravity = hypot(sc->gravity[0], sc->gravity[1]) > 0.0;
   int reinit = 0;
   CLSPH_TRY(option_choice(sc, "transport_velocity", tvf_names, WCR_TVF_LIMITED, &w->tvf));
+  /* the density's default: re-set by summation without a free surface, to max(ρ, ρ_sum) under
+   * one. Summation makes the pressure c0² (ρ_sum − ρ0) a function of the particles' positions,
+   * and c0² times their disorder is a pressure error that grows with c0: behind the square
+   * cylinder (cases/square_cylinder.lua, Re = 20, H/40) C_D was 3.44 at c0 = 10 U0 and 4.70 at
+   * 20 U0 with it, 2.79 and 2.84 with the continuity equation alone (Breuer 2.40; at H/80 2.72
+   * and 2.44), which that case therefore chooses. But the summation is the better in the
+   * lid-driven cavity (u RMS against Ghia at 50², Re = 100: 0.0048 U against 0.015 U) and in the
+   * Poiseuille channel between an entry and an exit (cases/poiseuille_open.lua, dr = 0.1,
+   * c0 = 30: u RMS 0.6% against 3.5%, the bulk pressure gradient 1.1% low against 8.8%). */
   CLSPH_TRY(option_choice(sc, "density", dens_names, gravity ? WCR_REINIT_FREE : WCR_REINIT_SUM,
                           &reinit));
   w->reinit = (cl_uint)reinit;
@@ -205,9 +215,9 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
                 sc->case_path, w->cfl_ad, w->cfl_ac, ratio, vs.u, w->c0);
   }
   if (verbose)
-    log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), transport "
-             "velocity %s, ARD %s, density %s, walls' dissipation %s",
-             w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach,
+    log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), background "
+             "pressure %.4g Pa, transport velocity %s, ARD %s, density %s, walls' dissipation %s",
+             w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach, w->p_bg,
              tvf_names[w->tvf], w->ard ? "on" : "off", dens_names[reinit],
              wall_names[w->wall_full]);
 done:
@@ -244,6 +254,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_ARD", w.ard));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_FULL", w.wall_full));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_CONT_RIEMANN", w.cont_riemann));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_CONT_NORMAL", w.reinit == WCR_REINIT_OFF));
   CLSPH_TRY(open_define(sim, o)); /* the sections (solvers/open) */
 done:
   return st;
@@ -302,7 +313,7 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
     else if (i < geo->nfluid && isfinite(geo->p0[i]))
       ph = geo->p0[i];
     buf[i] = (real)(sc->rho0 + ph / (w->c0 * w->c0));
-    buf[geo->n + i] = (real)(w->p_bg + ph);
+    buf[geo->n + i] = (real)ph;
   }
   CLSPH_TRY(add_field(sim, "rho", buf, 1, &w->f_rho));
   CLSPH_TRY(add_field(sim, "p", buf + geo->n, 1, &w->f_p));
@@ -439,7 +450,7 @@ static enum clsph_status drift(struct sim *sim, struct wcr *w, double dt_v, doub
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n;
   const real a = (real)dt_v, b = (real)dt_x, c = (real)dt_rho, mass = (real)w->mass;
-  const real rho0 = (real)sim->scene->rho0, c0 = (real)w->c0, pbg = (real)w->p_bg;
+  const real rho0 = (real)sim->scene->rho0, c0 = (real)w->c0;
   const real surface = w->reinit == WCR_REINIT_FREE ? (real)0.95 : 0;
   cl_mem kind = pset_mem(ps, sim->f_kind), pos = pset_mem(ps, sim->f_pos);
   cl_mem vel = pset_mem(ps, sim->f_vel), rho = pset_mem(ps, w->f_rho);
@@ -447,8 +458,8 @@ static enum clsph_status drift(struct sim *sim, struct wcr *w, double dt_v, doub
   cl_mem p = pset_mem(ps, w->f_p);
   CLSPH_TRY(KERN_SET(w->k_drift, KARG(n), KARG(sim->grid.geom), KARG(kind), KARG(a), KARG(b),
                      KARG(c), KARG(w->d_acc), KARG(use_shift), KARG(w->d_shift), KARG(w->d_sigma),
-                     KARG(surface), KARG(mass), KARG(rho0), KARG(c0), KARG(pbg), KARG(pos),
-                     KARG(vel), KARG(rho), KARG(drho), KARG(vol), KARG(p), KARG(sim->d_flags)));
+                     KARG(surface), KARG(mass), KARG(rho0), KARG(c0), KARG(pos), KARG(vel),
+                     KARG(rho), KARG(drho), KARG(vol), KARG(p), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_drift, ps->n, NULL));
 done:
   return st;
@@ -462,21 +473,21 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   const struct scene *sc = sim->scene;
   const cl_uint n = (cl_uint)ps->n;
   const real rho0 = (real)sc->rho0, c0 = (real)w->c0, mu = (real)(sc->rho0 * sc->nu);
-  const real h = (real)sim->sm.h, rdt = (real)dt;
+  const real h = (real)sim->sm.h, rdt = (real)dt, pbg = (real)w->p_bg;
   const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
-  cl_mem drho = pset_mem(ps, w->f_drho);
+  cl_mem drho = pset_mem(ps, w->f_drho), wn = pset_mem(ps, w->f_wnormal);
   CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
-                     KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(mu), KARG(h),
-                     KARG(w->d_acc)));
+                     KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(pbg), KARG(mu),
+                     KARG(h), KARG(w->d_acc)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
   CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(w->d_acc),
                      KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist),
-                     KARG(w->d_ncount), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(grav),
-                     KARG(drho)));
+                     KARG(w->d_ncount), KARG(w->d_prior), KARG(wn), KARG(rho0), KARG(c0),
+                     KARG(grav), KARG(drho)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_cont, ps->n, NULL));
 done:
   return st;
@@ -499,35 +510,46 @@ done:
   return st;
 }
 
-/* The exits' ρ and p for an advection step (solvers/open). A zero-pressure outlet (p = p_bg, the
- * zero gauge pressure; outlet = "fixed") reflects sound: a channel between a velocity entry and
+/* The exits' ρ and p for an advection step (solvers/open). A zero-pressure outlet (p = 0, the
+ * gauge pressure; outlet = "fixed") reflects sound: a channel between a velocity entry and
  * such an exit rings like a pipe closed at one end (period 4 L/c0), and the Riemann solver damps
  * it little. Behind the square cylinder (cases/square_cylinder.lua, Re = 100, H/40, 32 D long,
  * c0 = 10 U0) the channel's mean speed swung by ±40% for 10 D/U0 while the entries and exits
  * traded particles out of step, until the exit's waiting particles piled up (t = 9). The
  * default outlet = "characteristic" lets a plane wave leave: the incoming characteristic
  * p − ρ0 c0 u_n is set to its undisturbed value, so that the exit's pressure is
- *   p_exit = p_bg + ρ0 c0 (⟨u_n⟩ − ū),  ρ_exit = ρ0 + (p_exit − p_bg)/c0²,
+ *   p_exit = ρ0 c0 (⟨u_n⟩ − ū),  ρ_exit = ρ0 + p_exit/c0²,
  * ⟨u_n⟩ the mean speed out of the fluid in the exit's first row and ū the speed that carries
  * out what the entries' prescribed profiles let in (less what prescribed exits let out) over
- * the natural exits' width: the outlet holds p = p_bg on average and pushes back when more
- * leaves than enters (a non-reflecting condition for plane waves, Rudy & Strikwerda 1980, on the
- * section's mean, so that the profile across the exit is free). A prescribed exit profile keeps
- * p = p_bg. Measuring ū instead from the entries' first fluid rows (the same sampling of the
+ * the natural exits' width, as they let it in a transit time L/c0 earlier (L from an entry's
+ * midpoint to an exit's, open_transit): the outlet holds p = 0 on average and pushes back when
+ * more leaves than enters (a non-reflecting condition for plane waves, Rudy & Strikwerda 1980, on
+ * the section's mean, so that the profile across the exit is free). A prescribed exit profile keeps
+ * p = 0. Measuring ū instead from the entries' first fluid rows (the same sampling of the
  * profile as the exit's) made the Poiseuille channel's exit worse, not better (p_err_exit_max
- * 0.32 against 0.12 at dr = 0.1). */
+ * 0.32 against 0.12 at dr = 0.1).
+ * The delay: at rest the incoming characteristic is 0. With ū taken at once, the exit set it to
+ * −ρ0 c0 ū from the start and pulled the fluid out at p = −½ ρ0 c0 ū until the entries' wave
+ * arrived (−3.3 ρ U0² for 3 D/U0 behind the square cylinder, cases/square_cylinder.lua,
+ * Re = 20, H/80, c0 = 10 U0); negative pressures draw particles together (the tensile
+ * instability), and the fluid in the exit's corner by the floor flowed back along the wall
+ * (−0.3 U0 at t = 3) until a particle was thrown out of the domain at t = 3.3. With the delay the
+ * exit lets the entries' wave out as it arrives, and the pressure stays >= 0 through the
+ * start-up (in the linear acoustics of the channel the overshoot is the same, u = 1.5 ū, and it
+ * settles after 3 L/c0 instead of 2 L/c0). */
 static enum clsph_status open_exits(struct sim *sim, struct wcr *w)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *sc = sim->scene;
   const double rho0 = sc->rho0, c0 = w->c0;
   const double width = open_natural_width(sc);
-  const double ubar = width > 0.0 ? open_natural_flux(sc, sim->time) / width : 0.0;
+  const double delay = open_transit(sc) / c0;
+  const double ubar = width > 0.0 ? open_natural_flux(sc, sim->time - delay) / width : 0.0;
   if (!w->outlet_fixed) CLSPH_TRY(open_exit_speed(&w->open, sim, w->exit_p));
   for (int k = 0; k < sc->nsections; ++k) {
     const int natural = sc->sections[k].kind == SCENE_OUTFLOW && sc->sections[k].profile == 0;
     const double dp = natural && !w->outlet_fixed ? rho0 * c0 * (w->exit_p[k] - ubar) : 0.0;
-    w->exit_p[k] = w->p_bg + dp;
+    w->exit_p[k] = dp;
     w->exit_rho[k] = rho0 + dp / (c0 * c0);
   }
 done:
@@ -641,6 +663,7 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   }
   const real rho0 = (real)sc->rho0, c0 = (real)w->c0, mu = (real)(sc->rho0 * sc->nu);
   const real h = (real)sim->sm.h, rdr = (real)sc->dr, ilam = (real)(1.0 / w->lambda);
+  const real pbg = (real)w->p_bg;
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
@@ -649,8 +672,8 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   CLSPH_TRY(KERN_SET(w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist),
                      KARG(w->d_ncount), KARG(w->d_bmat), KARG(w->d_prior), KARG(wall),
-                     KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0), KARG(mu),
-                     KARG(ilam), KARG(h), KARG(w->d_force)));
+                     KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0), KARG(pbg),
+                     KARG(mu), KARG(ilam), KARG(h), KARG(w->d_force)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
   memset(out, 0, sizeof *out);

@@ -2,7 +2,8 @@
 # written with
 # "failure" = FAILURE and a status matching REGEX (the health checks of host/sim/checks.c), and a
 # message matching MESSAGE (default: REGEX; a failure reported where it happened, such as the
-# pressure solver's, is worded there).
+# pressure solver's, is worded there). The failures of the time loop's checks leave the state
+# that failed them in blowup.h5.
 #   cmake -DCLSPH=exe -DCASE=file -DOUT=dir -DSETS="a=1|b=2" -DFAILURE=energy -DREGEX=...
 #         [-DARGS="--opt|value"] [-DRC=2] -P ...
 string(REPLACE "|" ";" SETS "${SETS}")
@@ -32,6 +33,10 @@ if(err OR NOT failure STREQUAL "${FAILURE}")
 endif()
 if(NOT status MATCHES "${REGEX}")
   message(FATAL_ERROR "summary.json status '${status}' does not match '${REGEX}'")
+endif()
+if(failure MATCHES "^(nan|escaped|neighbours|wall_crossing|clustering|energy)$" AND
+   NOT EXISTS ${OUT}/blowup.h5)
+  message(FATAL_ERROR "the run stopped ('${failure}') without leaving its state in blowup.h5")
 endif()
 if(NOT MESSAGE)
   set(MESSAGE "${REGEX}")

@@ -4,7 +4,8 @@
  * isph-rotational does not (open_create with its own velocity field, open_layer_scalar,
  * open_move), and the recycling both use.
  *   open_layer_velocity: entry layers carry u_in = 4 y (1 − y) (eq 30), exit layers their row's
- *     first fluid particle's velocity (n·∇u = 0), which is their progenitor, 0.5 dr inside;
+ *     first fluid particle's velocity (n·∇u = 0), which is their progenitor, 0.5 dr inside, and
+ *     its tangential part only where it flows back in;
  *   open_layer_scalar: entry layers take their row's first fluid particle's value, exit layers
  *     the exit value (or that copy too);
  *   open_move: layers x += δt u, nothing else moves;
@@ -151,6 +152,32 @@ int main(void)
            bad_in);
   TC_CHECK(!bad_out, "exit layers: the velocity of their row's first fluid particle (%d wrong)",
            bad_out);
+
+  /* backflow: with the fluid flowing back into the exit (u = (−(x + 1), y), u·n > 0 with n = −x
+   * into the fluid) the exit layers take the tangential part only, (0, y), and stay put */
+  for (size_t i = 0; i < n; ++i) {
+    h.vel[2 * i] = (real)(-((double)h.pos[2 * i] + 1.0));
+    h.vel[2 * i + 1] = h.pos[2 * i + 1];
+  }
+  ok = !kern_write(&dev, pset_mem(&sim.ps, sim.f_vel), 2 * n * sizeof(real), h.vel) &&
+       open_layer_velocity(&o, &sim) == CLSPH_OK && !read_all(&sim, &o, f_a, &h);
+  bad_out = !ok;
+  for (size_t i = 0; ok && i < n; ++i) {
+    if (h.kind[i] != KIND_OUTFLOW) continue;
+    const cl_uint m = h.near[i];
+    bad_out += m >= n || h.vel[2 * i] != 0 || h.vel[2 * i + 1] != h.vel[2 * m + 1] ||
+               h.vel[2 * m] >= 0 || h.u[2 * i] != 0;
+  }
+  TC_CHECK(!bad_out, "backflow: exit layers take only the tangential part, u_x = 0 (%d wrong)",
+           bad_out);
+  for (size_t i = 0; i < n; ++i) { /* back to the named velocities, u = (x + 1, y) */
+    h.vel[2 * i] = (real)((double)h.pos[2 * i] + 1.0);
+    h.vel[2 * i + 1] = h.pos[2 * i + 1];
+  }
+  ok = !kern_write(&dev, pset_mem(&sim.ps, sim.f_vel), 2 * n * sizeof(real), h.vel) &&
+       open_layer_velocity(&o, &sim) == CLSPH_OK && !read_all(&sim, &o, f_a, &h);
+  TC_CHECK(ok, "open_layer_velocity again");
+  if (!ok) goto done;
 
   /* a scalar of the layers: a fixed exit value, then copied there too */
   const double exit_value = -7.0;
