@@ -231,8 +231,10 @@ def square_cylinder_section(runs):
     if not rows:
         return []
 
-    def proj(p):
-        return "homogeneous" if p.get("homogeneous", 0) == 1 else "rotational"
+    def proj(s):
+        if s.get("scheme") == "wcsph-riemann":
+            return "wcsph-riemann"
+        return "homogeneous" if s["parameters"].get("homogeneous", 0) == 1 else "rotational"
 
     def exit_(p):
         return "parabolic" if p.get("exit_parabolic", 0) == 1 else "natural"
@@ -257,7 +259,7 @@ def square_cylinder_section(runs):
            "| wall s | particle-steps/s | solver its mean (pressure / viscous) |",
            "|---|---|---|---|---|---|---|---|---|---|---|"]
     conv = sorted((s for s in rows if s["parameters"].get("length") == 24),
-                  key=lambda s: (proj(s["parameters"]), s["parameters"]["n"],
+                  key=lambda s: (proj(s), s["parameters"]["n"],
                                  s["parameters"].get("implicit", 0)))
     for s in conv:
         p, m = s["parameters"], s["metrics"]
@@ -267,24 +269,26 @@ def square_cylinder_section(runs):
             its += f" / {sv['viscous_iterations_mean']:.1f}"
         visc = "implicit" if p.get("implicit", 0) == 1 else "explicit"
         if s["status"] != "ok":
-            out.append(f"| {proj(p)} ({s['precision']}) | H/{p['n']:g} | {visc} "
+            out.append(f"| {proj(s)} ({s['precision']}) | H/{p['n']:g} | {visc} "
                        f"| {'developed' if p.get('developed', 0) == 1 else 'rest'} "
                        f"| {s['status']} | – | – | {s['steps']:g} | {s['wall_seconds']:.0f} "
                        f"| {s['particle_steps_per_second']:.3g} | {its} |")
             continue
-        out.append(f"| {proj(p)} ({s['precision']}) | H/{p['n']:g} | {visc} "
+        out.append(f"| {proj(s)} ({s['precision']}) | H/{p['n']:g} | {visc} "
                    f"| {'developed' if p.get('developed', 0) == 1 else 'rest'} | {m['cd']:.2f} "
                    f"| {m['cd_pressure']:.2f} / {m['cd_viscous']:.2f} | {m['cd'] / m['cd_ref'] - 1:+.1%} "
                    f"| {s['steps']:g} | {s['wall_seconds']:.0f} "
                    f"| {s['particle_steps_per_second']:.3g} | {its} |")
     out += ["", "Re sweep, Breuer et al.'s geometry (H = 8 D, length 32 D, the cylinder 8 D from the "
             "entry): `square_cylinder_cd.png`. St = f D/U0 of the lift where one frequency stands "
-            "out of its spectrum (`sim.spectrum_peak`); the lift's noise is the spectrum's median.", "",
-            "| projection | exit | L0 | Re | cfl | XSPH | reached t | status | C_D | Breuer | deviation "
-            "| St | C_L amplitude / noise | steps | wall s | particle-steps/s |",
-            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+            "out of its spectrum up to 0.5 U0/D (`sim.spectrum_peak`); the lift's noise is the "
+            "spectrum's median up to 2 U0/D; ringing: its strongest line above 0.5 U0/D where one "
+            "stands out (f D/U0, C_L amplitude).", "",
+            "| scheme | exit | L0 | Re | cfl | XSPH | reached t | status | C_D | Breuer | deviation "
+            "| St | C_L amplitude / noise | ringing | steps | wall s | particle-steps/s |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     sweep = sorted((s for s in rows if s["parameters"].get("length") == 32),
-                   key=lambda s: (proj(s["parameters"]), exit_(s["parameters"]),
+                   key=lambda s: (proj(s), exit_(s["parameters"]),
                                   s["parameters"]["n"], s["parameters"]["re"]))
     for s in sweep:
         p, m = s["parameters"], s.get("metrics", {})
@@ -292,10 +296,12 @@ def square_cylinder_section(runs):
         dev = f"{m['cd'] / m['cd_ref'] - 1:+.1%}" if ok and "cd_ref" in m else "–"
         amp = (f"{fmt(m.get('cl_amplitude'))} / {fmt(m.get('cl_spectrum_median'))}"
                if ok else "–")
-        out.append(f"| {proj(p)} | {exit_(p)} | H/{p['n']:g} | {p['re']:g} | {p.get('cfl', 1):g} "
+        ring = (f"{m['cl_ringing_frequency']:.3g} ({m['cl_ringing_amplitude']:.3g})"
+                if ok and "cl_ringing_frequency" in m else "–")
+        out.append(f"| {proj(s)} | {exit_(p)} | H/{p['n']:g} | {p['re']:g} | {p.get('cfl', 1):g} "
                    f"| {p.get('xsph', 0):g} | {s['sim_time']:.3g} | {s['status']} "
                    f"| {fmt(m.get('cd') if ok else None, '.3f')} | {fmt(m.get('cd_ref'), '.3g')} "
-                   f"| {dev} | {fmt(m.get('strouhal') if ok else None, '.4f')} | {amp} "
+                   f"| {dev} | {fmt(m.get('strouhal') if ok else None, '.4f')} | {amp} | {ring} "
                    f"| {s['steps']:g} | {s['wall_seconds']:.0f} "
                    f"| {s['particle_steps_per_second']:.3g} |")
     return out

@@ -18,8 +18,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 BREUER = os.path.join(HERE, "..", "data", "breuer2000_square_cylinder_cd.csv")
 
 
-def series_name(p):
+def series_name(p, scheme):
     proj = "homogeneous" if p.get("homogeneous", 0) == 1 else "rotational"
+    if scheme == "wcsph-riemann":
+        proj = "wcsph-riemann"
     exit_ = "parabolic exit" if p.get("exit_parabolic", 0) == 1 else "natural exit"
     start = " / developed start" if p.get("developed", 0) == 1 else ""
     return f"{proj} / {exit_} / H/{p.get('n', 0):g}{start}"  # no commas: a CSV field for gnuplot
@@ -38,7 +40,7 @@ def main():
         if s.get("case") != "square_cylinder" or p.get("length") != 32:
             continue
         cd = s.get("metrics", {}).get("cd")
-        rows.append((series_name(p), p["re"], cd if s["status"] == "ok" else None, p["n"],
+        rows.append((series_name(p, s.get("scheme")), p["re"], cd if s["status"] == "ok" else None, p["n"],
                      s["status"].replace(",", ";"), s["sim_time"]))
     rows.sort(key=lambda r: (r[0], r[1]))
     with open(prefix + ".csv", "w", newline="") as f:
