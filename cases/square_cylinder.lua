@@ -17,7 +17,9 @@
 -- amplitude of that oscillation of C_L); cl_spectrum_median (the median amplitude of the lift's
 -- spectrum up to 2 U0/D: its noise); cl_ringing_frequency and cl_ringing_amplitude, where the
 -- strongest line of that spectrum lies above the shedding band (the weakly-compressible
--- wcsph-riemann's channel rings at about 1.7 U0/D with c0 = 10 U0).
+-- wcsph-riemann's channel rings at about 1.7 U0/D with c0 = 10 U0). In Breuer's geometry
+-- (length = 32, xc = 8) at an Re that tests/data/openfoam_square_cylinder.csv holds (20, 100):
+-- cd_openfoam and cd_dev_openfoam, strouhal_openfoam and strouhal_dev_openfoam (its finest mesh).
 -- cfl multiplies the scheme's time-step bounds (the stability map); the drag is averaged from
 -- t = average_from (the paper's 1 at Re = 1; the wake of Re = 20 takes about 12 D/U0 to
 -- settle). implicit = 1 solves the prediction's viscous term implicitly (viscous = "implicit", not
@@ -124,6 +126,24 @@ function metrics(sim)
     if all.frequency > 0.5 * U0 / D and all.amplitude > 4 * all.median then
       out.cl_ringing_frequency = all.frequency * D / U0
       out.cl_ringing_amplitude = all.amplitude / q
+    end
+  end
+  -- OpenFOAM in this geometry (32 D, the cylinder 8 D from the entry; the finest mesh run at this
+  -- Re: tests/data/openfoam_square_cylinder.csv, made by tests/validation/openfoam/square_cylinder)
+  if length == 32 and xc == 8 then
+    local of = sim.reference("tests/data/openfoam_square_cylinder.csv", "re", "cells", "cd",
+                             "strouhal")
+    local best
+    for k = 1, #of.re do
+      if of.re[k] == re and (best == nil or of.cells[k] > of.cells[best]) then best = k end
+    end
+    if best then
+      out.cd_openfoam = of.cd[best]
+      out.cd_dev_openfoam = out.cd / of.cd[best] - 1
+      if out.strouhal and of.strouhal[best] == of.strouhal[best] then -- (NaN: steady)
+        out.strouhal_openfoam = of.strouhal[best]
+        out.strouhal_dev_openfoam = out.strouhal / of.strouhal[best] - 1
+      end
     end
   end
   local ref = breuer(re)
