@@ -113,7 +113,7 @@ for n in 40 80; do
 done
 run square_cylinder_re20_n160_riemann square_cylinder riemann=1 n=160 re=20 t_end=30 length=32 xc=8 average_from=15 outputs=6
 run square_cylinder_re100_n40_riemann square_cylinder riemann=1 n=40 re=100 t_end=60 length=32 xc=8 average_from=20 outputs=30
-run square_cylinder_re100_n80_riemann square_cylinder riemann=1 n=80 re=100 t_end=100 length=32 xc=8 average_from=40 outputs=10
+run square_cylinder_re100_n80_riemann square_cylinder riemann=1 n=80 re=100 t_end=200 length=32 xc=8 average_from=120 outputs=5
 run square_cylinder_re100_n160_riemann square_cylinder riemann=1 n=160 re=100 t_end=100 length=32 xc=8 average_from=40 outputs=10
 # the dam break of Lobovsky et al. 2014 (H = 300 mm), sensor 1 against the experiment (event 5):
 # wcsph-riemann over resolutions (the impact within 2% from n = 120), isph-usaw at n = 40
