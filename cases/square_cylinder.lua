@@ -42,6 +42,10 @@ param { n = 80, re = 1, t_end = 10, length = 24, xc = 12, homogeneous = 0, exit_
         xsph = 0, shift = 0.04, outputs = 20, cfl = 1, average_from = 1, developed = 0,
         checkpoint = 0, implicit = 0, riemann = 0, c0 = 0, ramp = -1, summation = 0 }
 
+if summation ~= 0 and summation ~= 1 then
+  error(string.format("summation = %s: 1 (density re-set by summation) or 0 (the continuity " ..
+                      "equation alone)", tostring(summation)))
+end
 local D, U0, H = 1, 1, 8
 local nu, dr = U0 * D / re, H / n
 domain { 0, 0, length, H }

@@ -813,6 +813,11 @@ clsph_run_test(validate_square_cylinder_re100_riemann ${CMAKE_SOURCE_DIR}/cases/
                BOUNDS "strouhal_dev_openfoam>-0.08" "strouhal_dev_openfoam<0.08"
                       "cd_dev_openfoam>-0.08" "cd_dev_openfoam<0.08" "cl_amplitude>0.102"
                       "cl_amplitude<0.255" "upstream<0.5")
+# The square cylinder's density switch takes 0 or 1, not anything else silently.
+clsph_cli_test(case_square_cylinder_bad_summation
+               ARGS info ${CMAKE_SOURCE_DIR}/cases/square_cylinder.lua --set riemann=1
+                    --set summation=2 RC 2
+               REGEX "square_cylinder.lua:[0-9]+: summation = 2.0: 1 \\(density re-set by summation\\) or 0")
 # Bad ramps: negative; on a natural exit (it takes the fluid's velocity).
 clsph_cli_test(case_ramp_negative ARGS info ${CASE_DIR}/bad_ramp.lua RC 2
                REGEX "bad_ramp.lua:11: inflow: ramp must be a time of 0 s or more")
