@@ -1,0 +1,28 @@
+# References the project computes itself (tests/reference/): the 1-D fully developed k-ε channel
+# of Wang, Sun & Hu sec 5.1 (eq 41), a library for the tests, a command for the profiles, and its
+# own test (steady residual, grid convergence, the log law, the two drives, bad input).
+add_library(clsph_channel1d STATIC reference/channel1d.c)
+target_include_directories(clsph_channel1d PUBLIC reference)
+target_compile_options(clsph_channel1d PRIVATE ${CLSPH_WARNINGS})
+target_link_libraries(clsph_channel1d PUBLIC m)
+
+add_executable(channel1d reference/channel1d_main.c)
+target_link_libraries(channel1d PRIVATE clsph_channel1d)
+target_compile_options(channel1d PRIVATE ${CLSPH_WARNINGS})
+
+clsph_test_exe(test_channel1d reference/test_channel1d.c)
+target_link_libraries(test_channel1d PRIVATE clsph_channel1d)
+clsph_add_test(channel1d COMMAND test_channel1d LABELS unit)
+
+# the command: Lee & Moser's Re_τ = 543.5 channel at 400 cells (u_τ 0.05146, test_channel1d)
+function(channel1d_cli_test name)
+  cmake_parse_arguments(T "" "RC;REGEX;REGEX2" "ARGS" ${ARGN})
+  string(REPLACE ";" "|" args "${T_ARGS}")
+  clsph_add_test(${name} LABELS cli COMMAND ${CMAKE_COMMAND} "-DCMD=$<TARGET_FILE:channel1d>|${args}"
+                 -DRC=${T_RC} "-DREGEX=${T_REGEX}" "-DREGEX2=${T_REGEX2}" "-DENV="
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect.cmake)
+endfunction()
+channel1d_cli_test(channel1d_cli ARGS --cells 400 RC 0 REGEX "u_tau = 0\\.05145[0-9]"
+                   REGEX2 "y,y_over_delta,y_plus,u,u_plus,k,k_plus,epsilon,nu_t")
+channel1d_cli_test(channel1d_cli_bad_number ARGS --nu fast RC 2 REGEX "--nu: 'fast' is not a number")
+channel1d_cli_test(channel1d_cli_bad_option ARGS --re 40000 RC 2 REGEX "unknown option --re")

@@ -1,0 +1,50 @@
+/* channel1d.h: the fully developed turbulent channel under the standard k-ε model with the
+ * step-wise wall function, across the half channel (Wang, Sun & Hu, sec 5.1, eq 41): the 1-D
+ * reference that the wcsph-riemann RANS channel is compared with. The wall model sits at the
+ * distance y_p from the wall (eqs 10-14); the centreline is a symmetry plane. */
+#ifndef CLSPH_CHANNEL1D_H
+#define CLSPH_CHANNEL1D_H
+
+/** The model's constants (Launder & Spalding; the wall function of eq 11). */
+struct channel1d_model {
+  double c_mu, c1, c2, sigma_k, sigma_eps;
+  double kappa, e_wall; /* the log law u+ = ln(E y+)/κ (eq 11) */
+  double y_plus_lam;    /* below it u+ = y+ (eq 11: 11.225) */
+  int paper_diffusion; /* 1: (ν + ν_t/σ) d²φ/dy², as eq 41 writes it; 0: d/dy((ν + ν_t/σ) dφ/dy) */
+};
+
+/** The problem: the half channel [0, delta], the wall model at y_p, driven either to the bulk
+ *  velocity u_bulk (u_tau <= 0) or by the friction velocity u_tau (the pressure gradient
+ *  u_tau²/delta). */
+struct channel1d_problem {
+  double delta, nu, y_p;
+  double u_bulk; /* the mean of u over [0, delta], the wall-function profile below y_p included */
+  double u_tau;  /* > 0: given; then u_bulk is a result */
+  int cells;     /* nodes y_p + i (delta − y_p)/cells, i = 0..cells */
+};
+
+/** The solution on the nodes, and the scalars. */
+struct channel1d_solution {
+  int nodes;
+  double *y, *u, *k, *eps, *nu_t;
+  double u_tau, u_bulk, y_plus_p; /* y_plus_p: eq 10 at the first node */
+  int iterations;
+  double residual; /* the largest relative change of u, k, ε over the last iteration */
+};
+
+/** @brief The standard constants: C_μ 0.09, C1 1.44, C2 1.92, σ_k 1, σ_ε 1.3, κ 0.41,
+ *  E 9.793 and the switch at y+ = 11.225 (the pair the paper's eq 11 takes from FLUENT). */
+struct channel1d_model channel1d_standard(void);
+
+/** @brief Solve to a steady state (pseudo-time with the linearised sources of eqs 28-30).
+ *  Returns 0, or −1 with a message on stderr (bad input, no convergence, no memory). */
+int channel1d_solve(const struct channel1d_model *m, const struct channel1d_problem *p,
+                    struct channel1d_solution *s);
+
+/** @brief u from the wall function at distance y from the wall (y <= y_p), the first node's k. */
+double channel1d_wall_u(const struct channel1d_model *m, double nu, double u_tau, double k_p,
+                        double y);
+
+void channel1d_free(struct channel1d_solution *s);
+
+#endif /* CLSPH_CHANNEL1D_H */
