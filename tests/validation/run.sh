@@ -121,6 +121,12 @@ for n in 20 40 80 120 160; do
   run dam_break_lobovsky_n${n}_wcsph_riemann dam_break riemann=1 n=$n t_end=1.1
 done
 run dam_break_lobovsky_n40_isph_usaw dam_break n=40 t_end=1.1
+# wcsph-riemann: Poiseuille from rest against Morris et al.'s series (H/10, H/20, H/40), and
+# DualSPHysics's CaseDambreakVal2D at its dp = 0.01 (the speed anchor: 120 s on 2 cores)
+for dr in 0.1 0.05 0.025; do
+  run poiseuille_dr${dr}_wcsph_riemann poiseuille_periodic riemann=1 dr=$dr
+done
+run dam_break_dsph_dp0.01_wcsph_riemann dam_break_dsph dp=0.01
 python3 tests/validation/results.py "$out" tests/validation/RESULTS.md
 # accuracy against cost and stability maps (tests/harness/studies.txt): CSVs and charts
 for study in "accuracy cavity_re100" "accuracy cylinder_array" "stability cavity_re_cfl" \
