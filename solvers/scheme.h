@@ -19,21 +19,23 @@ struct wall_force {
 enum { SCHEME_FILL_PRESSURE = 1u, SCHEME_FILL_DENSITY = 2u };
 
 struct scheme_ops {
-  const char *name;           /* "isph-usaw" */
-  const char *summary;        /* one line with its reference */
-  const char *const *sources; /* kernels after the common ones, NULL-terminated */
-  const char *wall_model;     /* what the geometry makes: "usaw", "dummy" or "none" */
-  const char *smoothing;      /* default smoothing function name */
-  double h_over_dr;           /* default smoothing length / spacing */
-  double support_skin;        /* neighbour lists with a skin: the cells of the neighbour grid
-                               * cover support (1 + support_skin max(cfl, 1)), cfl the scene's
-                               * time-step factor (0: the support) */
-  const char *const *options; /* option names the scheme accepts, NULL-terminated */
-  unsigned fill_fields;       /* the initial fields fill { } may give it (SCHEME_FILL_*): the
-                               * scheme's create takes them from geom.p0 and geom.rho0 */
-  double open_reserve;        /* particles parked behind the exits, as a fraction of the fluid's
-                               * (struct geom_park): a weakly-compressible scheme's entries take
-                               * them while the fluid is compressed (0: none) */
+  const char *name;              /* "isph-usaw" */
+  const char *summary;           /* one line with its reference */
+  const char *const *sources;    /* kernels after the common ones, NULL-terminated */
+  const char *wall_model;        /* what the geometry makes: "usaw", "dummy" or "none" */
+  const char *smoothing;         /* default smoothing function name */
+  double h_over_dr;              /* default smoothing length / spacing */
+  double support_skin;           /* neighbour lists with a skin: the cells of the neighbour grid
+                                  * cover support (1 + support_skin max(cfl, 1)), cfl the scene's
+                                  * time-step factor (0: the support) */
+  const char *const *options;    /* option names the scheme accepts, NULL-terminated */
+  unsigned fill_fields;          /* the initial fields fill { } may give it (SCHEME_FILL_*): the
+                                  * scheme's create takes them from geom.p0 and geom.rho0 */
+  double open_reserve;           /* particles parked behind the exits, as a fraction of the fluid's
+                                  * (struct geom_park): a weakly-compressible scheme's entries take
+                                  * them while the fluid is compressed (0: none) */
+  const char *const *turbulence; /* the turbulence models (scene turbulence { model }) it has,
+                                  * NULL-terminated; NULL: none */
   /** -D switches of the scheme's kernels (NULL: none). */
   enum clsph_status (*define)(const struct sim *sim, struct prog_opts *o);
   /** Add the scheme's particle fields and kernels; called after the common fields exist. */

@@ -70,6 +70,16 @@ enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double
    * run (a restart's checkpoint carries the sums before it) */
   if (sim->substeps_sum > 0) cJSON_AddNumberToObject(root, "substeps", (double)sim->substeps_sum);
   if (sim->pairs_sum > 0.0) cJSON_AddNumberToObject(root, "pair_interactions", sim->pairs_sum);
+  if (sim->scene->turb.on) { /* a clipped k or ε is counted, never silent */
+    cJSON *tb = cJSON_AddObjectToObject(root, "turbulence");
+    cJSON_AddStringToObject(tb, "model", sim->scene->turb.model);
+    cJSON_AddNumberToObject(tb, "k_clipped", sim->turb_clips[0]);
+    cJSON_AddNumberToObject(tb, "epsilon_clipped", sim->turb_clips[1]);
+    if (sim->turb_clips[0] + sim->turb_clips[1] > 0.0)
+      log_warn("turbulence: %.0f negative k and %.0f negative epsilon values were clipped to a "
+               "millionth of their previous value (summary.json: turbulence)",
+               sim->turb_clips[0], sim->turb_clips[1]);
+  }
   cJSON_AddStringToObject(root, "status", sim->status);
   cJSON_AddStringToObject(root, "failure", sim->failure);
   cJSON_AddNumberToObject(root, "snapshots", o->nsnap);

@@ -507,6 +507,52 @@ static int l_fluid(lua_State *L)
   return 0;
 }
 
+/* turbulence { model = "k-epsilon", k = K, epsilon = E, y_p = Y, delay = T, nu_t = N,
+ * wall_weight = W }: which model, its initial (and entry) k and ε, the wall model's distance; the
+ * values' consistency is checked in finish(), once the fluid and the particles are known */
+static int l_turbulence(lua_State *L)
+{
+  static const char *const keys[] = {"model", "k",    "epsilon",     "y_p",
+                                     "delay", "nu_t", "wall_weight", NULL};
+  static const char *const models[] = {"k-epsilon", NULL};
+  struct loader *ld = loader_of(L);
+  struct scene_turbulence *t = &ld->s->turb;
+  need_table(L, "turbulence");
+  if (t->on) luaL_error(L, "turbulence: declared twice (first on line %d)", t->line);
+  check_keys(L, 1, "turbulence", keys, 0);
+  lua_getfield(L, 1, "model");
+  if (lua_isnil(L, -1)) luaL_error(L, "turbulence: needs model = \"k-epsilon\"");
+  lua_pop(L, 1);
+  int m = get_choice(L, 1, "turbulence", "model", models, 0);
+  snprintf(t->model, SCENE_NAME, "%s", models[m]);
+  t->k = get_number(L, 1, "turbulence", "k", NAN);
+  t->epsilon = get_number(L, 1, "turbulence", "epsilon", NAN);
+  t->y_p = get_number(L, 1, "turbulence", "y_p", 0.0);
+  t->delay = get_number(L, 1, "turbulence", "delay", 0.0);
+  t->nu_t_delay = get_number(L, 1, "turbulence", "nu_t", NAN);
+  t->wall_weight = get_number(L, 1, "turbulence", "wall_weight", NAN);
+  if (isnan(t->k) || isnan(t->epsilon))
+    luaL_error(L,
+               "turbulence: needs both k (m²/s²) and epsilon (m²/s³), the initial and entry "
+               "values: %s is missing",
+               isnan(t->k) ? "k" : "epsilon");
+  if (!(t->k > 0.0)) luaL_error(L, "turbulence: k must be positive, not %f", t->k);
+  if (!(t->epsilon > 0.0))
+    luaL_error(L, "turbulence: epsilon must be positive, not %f", t->epsilon);
+  if (t->y_p < 0.0) luaL_error(L, "turbulence: y_p must be a positive distance, not %f", t->y_p);
+  if (t->delay < 0.0) luaL_error(L, "turbulence: delay must not be negative, not %f", t->delay);
+  if (t->delay > 0.0 && !(t->nu_t_delay > 0.0))
+    luaL_error(L, "turbulence: a delay needs nu_t > 0 (m²/s), the eddy viscosity until then");
+  if (t->delay == 0.0 && !isnan(t->nu_t_delay))
+    luaL_error(L, "turbulence: nu_t is the eddy viscosity of the delay: give delay = (s) too");
+  if (!isnan(t->wall_weight) && !(t->wall_weight >= 0.0 && t->wall_weight <= 1.0))
+    luaL_error(L, "turbulence: wall_weight (w_s of eq 40) must lie in [0, 1], not %f",
+               t->wall_weight);
+  t->on = 1;
+  t->line = current_line(L);
+  return 0;
+}
+
 static int l_fill(lua_State *L)
 {
   static const char *const keys[] = {"polygon", "name", "velocity", "pressure", "density", NULL};
@@ -1219,7 +1265,7 @@ static void register_api(lua_State *L, struct loader *ld)
       {"wall", l_wall},     {"box_wall", l_box_wall}, {"arc", l_arc},
       {"circle", l_circle}, {"inflow", l_inflow},     {"outflow", l_outflow},
       {"probe", l_probe},   {"profile", l_profile},   {"force", l_force},
-      {"run", l_run},       {"render", l_render},
+      {"run", l_run},       {"render", l_render},     {"turbulence", l_turbulence},
   };
   for (size_t i = 0; i < sizeof api / sizeof *api; ++i) {
     lua_pushlightuserdata(L, ld);
@@ -1280,6 +1326,35 @@ static enum clsph_status finish(const char *path, struct loader *ld)
                 "range [%g, %g]%s",
                 path, c->line, c->slice[0], c->slice[1], s->lo[0], s->hi[0],
                 s->periodic[0] ? " (periodic: be narrower than the period)" : "");
+  }
+  if (s->turb.on) { /* the model's values against the scene (Wang, Sun & Hu eqs 6, 10, 11) */
+    const struct scene_turbulence *t = &s->turb;
+    const double cmu = 0.09, y_p = t->y_p > 0.0 ? t->y_p : 0.5 * s->dr;
+    const double size = fmin(s->hi[0] - s->lo[0], s->hi[1] - s->lo[1]);
+    CLSPH_CHECK(s->nu > 0.0, CLSPH_E_INPUT,
+                "%s:%d: turbulence: the wall model needs the molecular viscosity: give fluid { "
+                "viscosity = (m²/s) }",
+                path, t->line);
+    /* the turbulence's length scale C_μ^¾ k^{3/2} / ε: larger than the domain, k and ε do not
+     * belong together (ε far too small for k) */
+    const double ell = pow(cmu, 0.75) * pow(t->k, 1.5) / t->epsilon;
+    CLSPH_CHECK(ell <= size, CLSPH_E_INPUT,
+                "%s:%d: turbulence: k = %g and epsilon = %g imply a turbulence length scale "
+                "C_mu^3/4 k^3/2 / epsilon = %g m, larger than the domain (%g m): epsilon is too "
+                "small for k (or k too large)",
+                path, t->line, t->k, t->epsilon, ell, size);
+    /* y+ at the wall model's distance (eq 10) from the declared k: the step-wise wall function
+     * (eq 11) is a log law only above y+ = 11.225, and the paper keeps y+ in 30-100 */
+    const double yplus = y_p * pow(cmu, 0.25) * sqrt(t->k) / s->nu;
+    CLSPH_CHECK(yplus >= 11.225, CLSPH_E_INPUT,
+                "%s:%d: turbulence: y_p = %g m puts the first particles in the viscous sublayer: "
+                "y+ = y_p C_mu^1/4 k^1/2 / nu = %.3g with k = %g (Wang, Sun & Hu eq 10) is below "
+                "11.225, where the wall function is no log law; raise y_p (the particles' first "
+                "row, dr/2 = %g m unless given) to y+ 30-100",
+                path, t->line, y_p, yplus, t->k, 0.5 * s->dr);
+    CLSPH_CHECK(y_p < 0.5 * size, CLSPH_E_INPUT,
+                "%s:%d: turbulence: y_p = %g m is more than half the domain (%g m)", path, t->line,
+                y_p, size);
   }
   /* probes and profiles sample the fluid: outside the domain there is none (a column of NaN) */
   for (int k = 0; k < s->nprobes; ++k) {

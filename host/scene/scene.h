@@ -116,6 +116,20 @@ struct scene_flow_control {
   int line;        /* line of the case script */
 };
 
+/** A turbulence model (`turbulence { model = "k-epsilon", k = ..., epsilon = ..., y_p = ... }`),
+ *  for the schemes that have one (scheme_ops.turbulence): the k-ε RANS model of Wang, Sun & Hu
+ *  (sec 2-4) with its wall model at the distance y_p from the walls. */
+struct scene_turbulence {
+  int on;
+  char model[SCENE_NAME]; /* "k-epsilon" */
+  double k, epsilon;      /* the initial (and the entries') k, m²/s², and ε, m²/s³ */
+  double y_p;             /* the wall model's distance from the wall, m (eq 10; 0: dr/2) */
+  double delay;           /* s: until then k and ε stay and ν_t = nu_t_delay (sec 5.2) */
+  double nu_t_delay;      /* m²/s, the eddy viscosity of the delay */
+  double wall_weight;     /* w_s of eq 40 (NaN: the scheme's, 0.1 without ARD, 0.5 with) */
+  int line;               /* line of the case script */
+};
+
 /** How frames show this case (`render { field = "p", range = {0, 1e4}, colormap = "viridis" }`):
  *  the defaults of `clsph run --frames` and `clsph render`, which the command line overrides. */
 struct scene_render {
@@ -186,8 +200,9 @@ struct scene {
   int nprofiles;
   struct scene_profile_line *profiles;
   int nforces;
-  char (*forces)[SCENE_NAME]; /* wall groups whose force is recorded */
-  struct scene_render render; /* how frames show it */
+  char (*forces)[SCENE_NAME];   /* wall groups whose force is recorded */
+  struct scene_render render;   /* how frames show it */
+  struct scene_turbulence turb; /* off unless declared */
 };
 
 /** @brief Free everything a scene owns (safe on a zeroed scene). */

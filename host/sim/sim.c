@@ -205,6 +205,15 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   snprintf(where, sizeof where, "%s:%d", scene->case_path, scene->scheme_line);
   CLSPH_TRY(scheme_find(scene->scheme, where, &sim.scheme));
   CLSPH_TRY(check_options(scene, sim.scheme));
+  if (scene->turb.on) { /* a model the scheme has */
+    int has = 0;
+    for (const char *const *m = sim.scheme->turbulence; m != NULL && *m != NULL; ++m)
+      has |= strcmp(*m, scene->turb.model) == 0;
+    CLSPH_CHECK(has, CLSPH_E_INPUT,
+                "%s:%d: turbulence: model = \"%s\": scheme %s has no turbulence model (the k-ε "
+                "RANS model is wcsph-riemann's)",
+                scene->case_path, scene->turb.line, scene->turb.model, sim.scheme->name);
+  }
   /* smoothing function and length */
   enum smoothing_kind kind;
   CLSPH_TRY(smoothing_kind_from_name(scene->smoothing[0] ? scene->smoothing : sim.scheme->smoothing,

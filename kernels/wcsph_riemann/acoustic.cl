@@ -115,12 +115,23 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
                            __global const real *p, __global const uint *nlist,
                            __global const uint *ncount, __global const real4 *bmat,
                            __global const realv *acc_prior, const real rho0, const real c0,
-                           const real p_bg, const real mu, const real h, __global realv *acc)
+                           const real p_bg, const real mu, const real h, __global realv *acc,
+                           __global const real *tk, __global const real *nu_t,
+                           __global const realv *wall_normal)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
   const realv x = pos[i], vi = vel[i], ai = acc_prior[i];
+#if WCR_TURB
+  /* the effective pressure p + ⅔ ρ k and viscosity ν + ν_t (Wang, Sun & Hu eq 5) */
+  const real pi = p[i] + p_bg + R(2.0) / R(3.0) * rho[i] * tk[i], ri = rho[i];
+  const real mui = mu + rho0 * nu_t[i];
+#else
+  (void)tk;
+  (void)nu_t;
+  (void)wall_normal;
   const real pi = p[i] + p_bg, ri = rho[i];
+#endif
   const real4 bi = bmat[i];
   realv sum = (realv)(R(0.0)); /* Σ V_j [(p_i B_j + p_j B_i) ∇W + ρ0 β U ∇W], p with p_bg */
 #if WCR_ARD
@@ -138,12 +149,22 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
     real pj;
     real4 bj;
     if (wall) {
+#if WCR_TURB
+      /* the wall model carries the wall's shear (eq 39): the Riemann problem sees the normal
+       * mirror only, no tangential jump (else its dissipation is a laminar no-slip drag) */
+      const realv nw = wall_normal[j];
+      vj = vi - R(2.0) * dot(vi - vel[j], nw) * nw;
+#else
       vj = R(2.0) * vel[j] - vi;
+#endif
       pj = pi - ri * dot(ai, r);
       bj = bi;
     } else {
       vj = vel[j];
       pj = p[j] + p_bg;
+#if WCR_TURB
+      pj += R(2.0) / R(3.0) * rho[j] * tk[j];
+#endif
       bj = bmat[j];
     }
     const realv vij = vi - vj;
@@ -151,7 +172,13 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
     const real beta = wcr_beta(u, c0, wall);
     sum += f * (pi * wcr_apply(bj, r) + pj * wcr_apply(bi, r));
 #if WCR_ARD
-    visc += fmax(R(0.5) * rho0 * beta * h - mu, R(0.0)) * f * vij;
+#if WCR_TURB
+    const real muj = wall ? mui : mu + rho0 * nu_t[j];
+    const real mij = R(2.0) * mui * muj / (mui + muj); /* eq 32 against µ̃_ij */
+#else
+    const real mij = mu;
+#endif
+    visc += fmax(R(0.5) * rho0 * beta * h - mij, R(0.0)) * f * vij;
 #else
     sum += f * (rho0 * beta * u) * r;
 #endif

@@ -60,7 +60,9 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
                             const real mu, const real inv_lambda, const realv accel,
                             const real tvf_a, const real tvf_m, const real bulk, const real rho0,
                             const real c0, const real h, __global realv *acc_prior,
-                            __global realv *shift, __global real *ard)
+                            __global realv *shift, __global real *ard, __global const real *nu_t,
+                            __global const real4 *frame, __global const real2 *wallv,
+                            const real r_ext, const uint wall_model)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
@@ -70,6 +72,14 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
   real count = R(0.0), smin = sigma[i];
   const uint c = ncount[i];
   __global const uint *row = nlist + (size_t)i * WCR_MAXN;
+#if WCR_TURB
+  /* µ_eff = ρ0 (ν + ν_t) and its pairwise harmonic mean (eq 21); the wall model replaces the
+   * dummies' no-slip drag on a P_ext particle by the wall shear stress (eq 39) */
+  const real nu_l = mu / rho0, mui = mu + rho0 * nu_t[i];
+  const real di = wall_dist[i];
+  const int modelled = wall_model && di >= R(0.0) && di < r_ext;
+  realv swall = (realv)(R(0.0)); /* Σ_b V_b ∇W_ib over the dummies */
+#endif
   for (uint k = 0; k < c; ++k) {
     const uint j = row[k];
     const realv r = wcr_sep(x, pos[j], &g);
@@ -77,17 +87,45 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
     const real f = smoothing_f(sqrt(r2)) * vol[j];
     const uint kj = kind[j];
     if (kj != WCR_DUMMY) smin = fmin(smin, sigma[j]);
+#if WCR_TURB
+    const real muj = kj == WCR_DUMMY ? mui : mu + rho0 * nu_t[j];
+    const real mij = R(2.0) * mui * muj / (mui + muj);
+    if (modelled && kj == WCR_DUMMY)
+      swall += f * r;
+    else
+      visc += mij * f * wcr_visc_jump(kj, x, x - r, vi, vel[j], wall_dist[j], wall_normal[j], dr);
+#else
+    const real mij = mu;
     visc += f * wcr_visc_jump(kj, x, x - r, vi, vel[j], wall_dist[j], wall_normal[j], dr);
+#endif
     const real4 bj = kj == WCR_DUMMY ? bi : bmat[j];
     res += f * wcr_apply(bi + bj, r); /* (B_i + B_j) ∇W V */
 #if WCR_ARD
     const realv vij = vi - (kj == WCR_DUMMY ? R(2.0) * vel[j] - vi : vel[j]);
     const real u = -dot(vij, r) * rsqrt(fmax(r2, REAL_EPS * SMOOTH_SUPPORT2));
     const real beta = fmin(WCR_ETA * fmax(u, R(0.0)), c0);
-    if (R(0.5) * rho0 * beta * h > mu) count += R(1.0);
+    if (R(0.5) * rho0 * beta * h > mij) count += R(1.0);
+#else
+    (void)mij;
 #endif
   }
+#if WCR_TURB
+  realv a = accel + R(2.0) * inv_lambda / rho[i] * visc;
+  if (modelled) { /* eq 39: −(2/ρ) Σ_b τ_w V_b ∇W_ib, τ_w = −ρ (τ_w/ρ)(t⊗n + n⊗t) on the fluid */
+    const real4 fr = frame[i];
+    const realv t = (realv)(fr.x, fr.y), nw = (realv)(fr.z, fr.w);
+    a += R(2.0) * wallv[i].x * (dot(nw, swall) * t + dot(t, swall) * nw);
+  }
+  acc_prior[i] = a;
+  (void)nu_l;
+#else
+  (void)nu_t;
+  (void)frame;
+  (void)wallv;
+  (void)r_ext;
+  (void)wall_model;
   acc_prior[i] = accel + R(2.0) * mu * inv_lambda / rho[i] * visc;
+#endif
   realv d = (realv)(R(0.0));
   if (tvf_a > R(0.0) && smin >= bulk) {
     const real lim = tvf_m > R(0.0) ? fmin(tvf_m * dot(res, res), R(1.0)) : R(1.0);

@@ -51,6 +51,9 @@
 #ifndef WCR_WALL_CONT_NORMAL
 #define WCR_WALL_CONT_NORMAL 0
 #endif
+#ifndef WCR_TURB
+#define WCR_TURB 0 /* the k-ε model (turbulence.cl) */
+#endif
 #ifndef WCR_WALL_FULL
 #define WCR_WALL_FULL 0
 #endif

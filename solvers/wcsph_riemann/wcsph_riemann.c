@@ -63,6 +63,12 @@ struct wcr {
   unsigned long sorted;      /* ... in the particles' order after this many sorts (sim->sorts) */
   struct open_sections open; /* inflow and outflow sections (solvers/open), nsec = 0: none */
   double *exit_p, *exit_rho; /* per section: the exits' p and ρ of this advection step */
+  /* the k-ε model (turbulence.cl), when the scene declares turbulence { } */
+  int turb;
+  int f_k, f_eps, f_nut, f_yplus;
+  cl_mem d_frame, d_wallv, d_knew, d_enew, d_nut2, d_clips;
+  cl_kernel k_twall, k_ttrans, k_tupd;
+  double y_p, w_s, nut_max; /* the wall model's distance and weight; the largest ν_t */
 };
 
 static const char *const sources[] = {OPEN_SOURCES,
@@ -70,7 +76,9 @@ static const char *const sources[] = {OPEN_SOURCES,
                                       "wcsph_riemann/advection.cl",
                                       "wcsph_riemann/acoustic.cl",
                                       "wcsph_riemann/force.cl",
+                                      "wcsph_riemann/turbulence.cl", /* empty unless WCR_TURB */
                                       NULL};
+static const char *const turbulence_models[] = {"k-epsilon", NULL};
 static const char *const options[] = {"sound_speed",
                                       "background_pressure",
                                       "transport_velocity",
@@ -255,6 +263,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_FULL", w.wall_full));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_CONT_RIEMANN", w.cont_riemann));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_CONT_NORMAL", w.reinit == WCR_REINIT_OFF));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_TURB", sim->scene->turb.on));
   CLSPH_TRY(open_define(sim, o)); /* the sections (solvers/open) */
 done:
   return st;
@@ -272,6 +281,43 @@ done:
 }
 
 static void wcr_destroy(void *state);
+
+/* The k-ε model's fields (k, epsilon, nu_t, y_plus: outputs), buffers and kernels; a laminar
+ * scene makes none of them. The initial k and ε are the declared ones everywhere; ν_t starts
+ * from them (eq 6), or from nu_t through a delay. */
+static enum clsph_status turb_create(struct sim *sim, struct wcr *w)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene_turbulence *t = &sim->scene->turb;
+  const size_t n = sim->geom.n, cap = sim->ps.cap;
+  real *buf = calloc(n + 1, sizeof *buf);
+  CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory");
+  w->turb = 1;
+  w->y_p = t->y_p > 0.0 ? t->y_p : 0.5 * sim->scene->dr;
+  w->w_s = isnan(t->wall_weight) ? (w->ard ? 0.5 : 0.1) : t->wall_weight; /* sec 4.3 */
+  for (size_t i = 0; i < n; ++i) buf[i] = (real)t->k;
+  CLSPH_TRY(add_field(sim, "k", buf, 1, &w->f_k));
+  for (size_t i = 0; i < n; ++i) buf[i] = (real)t->epsilon;
+  CLSPH_TRY(add_field(sim, "epsilon", buf, 1, &w->f_eps));
+  const double nut0 = t->delay > 0.0 ? t->nu_t_delay : 0.09 * t->k * t->k / t->epsilon;
+  for (size_t i = 0; i < n; ++i) buf[i] = (real)nut0;
+  CLSPH_TRY(add_field(sim, "nu_t", buf, 1, &w->f_nut));
+  w->nut_max = nut0;
+  CLSPH_TRY(add_field(sim, "y_plus", NULL, 1, &w->f_yplus));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * 4 * sizeof(real), NULL, &w->d_frame, "wall frames"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * 2 * sizeof(real), NULL, &w->d_wallv, "wall stresses"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(real), NULL, &w->d_knew, "new k"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(real), NULL, &w->d_enew, "new epsilon"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * 2 * sizeof(real), NULL, &w->d_nut2, "eddy viscosity"));
+  const cl_uint zero[2] = {0, 0};
+  CLSPH_TRY(kern_buffer(sim->dev, sizeof zero, zero, &w->d_clips, "clip counts"));
+  CLSPH_TRY(prog_kernel(sim->prog, "wcr_turb_wall", &w->k_twall));
+  CLSPH_TRY(prog_kernel(sim->prog, "wcr_turb_transport", &w->k_ttrans));
+  CLSPH_TRY(prog_kernel(sim->prog, "wcr_turb_update", &w->k_tupd));
+done:
+  free(buf);
+  return st;
+}
 
 static enum clsph_status wcr_create(struct sim *sim, void **state)
 {
@@ -332,6 +378,8 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   pset_describe(ps, w->f_wnormal, PF_REAL, 2, 0);
   w->f_ard = -1;
   if (w->ard) CLSPH_TRY(add_field(sim, "ard", NULL, 1, &w->f_ard));
+  w->f_k = w->f_eps = w->f_nut = w->f_yplus = -1;
+  if (sc->turb.on) CLSPH_TRY(turb_create(sim, w));
   for (size_t i = 0; i < geo->n; ++i)
     ubuf[i] =
         geo->kind[i] == KIND_DUMMY && geo->group[i] >= 0 ? (cl_uint)geo->group[i] : 0xffffffffu;
@@ -410,6 +458,47 @@ done:
   return st;
 }
 
+/* 1b. the k-ε model (turbulence.cl): the wall model, k and ε over dt, ν_t. Until the scene's
+ * delay the model waits: k and ε stay, ν_t is the delay's and the walls are the laminar ones. */
+static enum clsph_status turbulence(struct sim *sim, struct wcr *w, double dt)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const struct scene *sc = sim->scene;
+  const cl_uint n = (cl_uint)ps->n;
+  const cl_uint active = sim->time >= sc->turb.delay;
+  const real yp = (real)w->y_p, nu = (real)sc->nu, rdt = (real)dt, ilam = (real)(1.0 / w->lambda);
+  const real r_ext = (real)(2.0 * sim->sm.h - sc->dr), r_p = (real)sc->dr, ws = (real)w->w_s;
+  const real nu_fixed = (real)sc->turb.nu_t_delay;
+  cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
+  cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
+  cl_mem wd = pset_mem(ps, w->f_wdist), wn = pset_mem(ps, w->f_wnormal);
+  cl_mem k = pset_mem(ps, w->f_k), eps = pset_mem(ps, w->f_eps), nut = pset_mem(ps, w->f_nut);
+  cl_mem yplus = pset_mem(ps, w->f_yplus);
+  if (active) {
+    CLSPH_TRY(KERN_SET(w->k_twall, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(kind),
+                       KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount), KARG(k), KARG(yp),
+                       KARG(nu), KARG(r_ext), KARG(w->d_frame), KARG(w->d_wallv), KARG(yplus)));
+    CLSPH_TRY(kern_launch(sim->dev, w->k_twall, ps->n, NULL));
+    CLSPH_TRY(KERN_SET(w->k_ttrans, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
+                       KARG(kind), KARG(wd), KARG(w->d_nlist), KARG(w->d_ncount), KARG(k),
+                       KARG(eps), KARG(nut), KARG(w->d_frame), KARG(w->d_wallv), KARG(rdt),
+                       KARG(nu), KARG(ilam), KARG(yp), KARG(r_ext), KARG(r_p), KARG(ws),
+                       KARG(w->d_knew), KARG(w->d_enew), KARG(w->d_clips)));
+    CLSPH_TRY(kern_launch(sim->dev, w->k_ttrans, ps->n, NULL));
+  }
+  CLSPH_TRY(KERN_SET(w->k_tupd, KARG(n), KARG(kind), KARG(w->d_knew), KARG(w->d_enew), KARG(active),
+                     KARG(nu_fixed), KARG(k), KARG(eps), KARG(nut), KARG(w->d_nut2)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_tupd, ps->n, NULL));
+  CLSPH_TRY(sim_max_norm(sim, w->d_nut2, KIND_FLUID, &w->nut_max));
+  cl_uint clips[2];
+  CLSPH_TRY(kern_read(sim->dev, w->d_clips, sizeof clips, clips));
+  sim->turb_clips[0] = clips[0];
+  sim->turb_clips[1] = clips[1];
+done:
+  return st;
+}
+
 /* 2. a_prior, the transport-velocity correction, the ARD indicator (advection.cl) */
 static enum clsph_status advection(struct sim *sim, struct wcr *w)
 {
@@ -432,11 +521,17 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem rho = pset_mem(ps, w->f_rho), wd = pset_mem(ps, w->f_wdist);
   cl_mem wn = pset_mem(ps, w->f_wnormal);
+  /* the k-ε model's eddy viscosity and wall shear stress (turbulence.cl), once it is active */
+  cl_mem nut = w->turb ? pset_mem(ps, w->f_nut) : w->d_none;
+  cl_mem frame = w->turb ? w->d_frame : w->d_none, wallv = w->turb ? w->d_wallv : w->d_none;
+  const real r_ext = (real)(2.0 * h - sc->dr);
+  const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
   CLSPH_TRY(KERN_SET(w->k_adv, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_sigma), KARG(rdr), KARG(mu), KARG(ilam),
                      KARG(accel), KARG(tvf_a), KARG(tvf_m), KARG(bulk), KARG(rho0), KARG(c0),
-                     KARG(rh), KARG(w->d_prior), KARG(w->d_shift), KARG(ard)));
+                     KARG(rh), KARG(w->d_prior), KARG(w->d_shift), KARG(ard), KARG(nut),
+                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_adv, ps->n, NULL));
 done:
   return st;
@@ -479,10 +574,12 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
   cl_mem drho = pset_mem(ps, w->f_drho), wn = pset_mem(ps, w->f_wnormal);
+  cl_mem tk = w->turb ? pset_mem(ps, w->f_k) : w->d_none;
+  cl_mem nut = w->turb ? pset_mem(ps, w->f_nut) : w->d_none;
   CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(pbg), KARG(mu),
-                     KARG(h), KARG(w->d_acc)));
+                     KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
   CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(w->d_acc),
                      KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist),
@@ -590,6 +687,7 @@ static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
     CLSPH_TRY(open_layer_velocity(&w->open, sim));
     CLSPH_TRY(open_exits(sim, w));
   }
+  if (w->turb) CLSPH_TRY(turbulence(sim, w, dt));
   CLSPH_TRY(advection(sim, w));
   /* the acoustic sub-steps: equal, at most CFL_ac h/(c0 + |v|max) each */
   const double dt_ac = w->cfl_ac * h / (w->c0 + w->vmax);
@@ -622,9 +720,10 @@ static enum clsph_status wcr_max_dt(struct sim *sim, void *state, double *dt)
   CLSPH_TRY(sim_max_speed(sim, KIND_FLUID, &vmax));
   w->vmax = vmax;
   const double v = fmax(vmax, w->u_scale);
-  double d = v > 0.0 ? h / v : HUGE_VAL;       /* eq 27 */
-  if (s->nu > 0.0) d = fmin(d, h * h / s->nu); /* eq 27 */
-  if (!isfinite(d)) d = h / w->c0;             /* nothing moves: one acoustic CFL */
+  double d = v > 0.0 ? h / v : HUGE_VAL;                      /* eq 27 */
+  const double nu_eff = s->nu + (w->turb ? w->nut_max : 0.0); /* eq 27: ν + ν_t */
+  if (nu_eff > 0.0) d = fmin(d, h * h / nu_eff);
+  if (!isfinite(d)) d = h / w->c0; /* nothing moves: one acoustic CFL */
   *dt = w->cfl_ad * d;
 done:
   return st;
@@ -692,12 +791,13 @@ static void wcr_destroy(void *state)
 {
   struct wcr *w = state;
   if (w == NULL) return;
-  cl_kernel *ks[] = {&w->k_config, &w->k_count, &w->k_adv,   &w->k_drift,
-                     &w->k_mom,    &w->k_cont,  &w->k_force, &w->k_lattice};
+  cl_kernel *ks[] = {&w->k_config, &w->k_count,   &w->k_adv,   &w->k_drift,  &w->k_mom, &w->k_cont,
+                     &w->k_force,  &w->k_lattice, &w->k_twall, &w->k_ttrans, &w->k_tupd};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   cl_mem *ms[] = {&w->d_nlist, &w->d_ncount,  &w->d_bmat,  &w->d_sigma, &w->d_prior, &w->d_shift,
-                  &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,  &w->d_none};
+                  &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,  &w->d_none,  &w->d_frame,
+                  &w->d_wallv, &w->d_knew,    &w->d_enew,  &w->d_nut2,  &w->d_clips};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
   open_destroy(&w->open);
   free(w->exit_p);
@@ -720,6 +820,7 @@ const struct scheme_ops scheme_wcsph_riemann = {
      * exits: 0.1 at the default c0 = 10 U (kernels/common/open.cl) */
     .open_reserve = 0.1,
     .options = options,
+    .turbulence = turbulence_models,
     .define = wcr_define,
     .create = wcr_create,
     .step = wcr_step,

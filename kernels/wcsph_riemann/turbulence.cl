@@ -1,0 +1,216 @@
+/* turbulence.cl (wcsph-riemann): the k-ε RANS model and its particle-based wall model (Wang, Sun
+ * & Hu sec 2.1-2.3.2, 2.5 and 4), once per advection step, before the viscous sums
+ * (advection.cl) that take the eddy viscosity. Compiled only for a scene that declares
+ * turbulence { model = "k-epsilon" } (WCR_TURB = 1): a laminar scene has none of these kernels.
+ *
+ * Layers (sec 4.2, fig 4): a fluid particle whose distance to the wall d (wall_dist, config.cl)
+ * is below R = 2h − dr is in P_ext, below dr in P. The wall model puts every P_ext particle at
+ * the model's distance y_p (eq 10; dr/2 unless the case offsets its walls, sec 4.4).
+ *
+ * wcr_turb_wall, for each P_ext particle (eqs 35-37, 10-14):
+ *   n_p = Σ_b W_ib n_b / Σ_b W_ib over the dummy neighbours b (normals into the fluid),
+ *   v_t = (v_i − v_w) − ((v_i − v_w)·n_p) n_p, v_w the dummies' kernel-weighted velocity (a
+ *   sliding wall), U_p = |v_t|, t_p = v_t/(U_p + ε) (eqs 35-36);
+ *   u_s = C_μ^¼ k^½, y+ = y_p u_s/ν (eq 10), u+ = ln(E y+)/κ or y+ below 11.225 (eq 11);
+ *   τ_w/ρ = U_p u_s/u+ (eq 12), and the wall function's ∂U/∂n at y_p: τ_w/(ρ u_s κ y_p) in the
+ *   log layer, τ_w/(ρ ν) in the linear one (eq 13).
+ * Stored: frame = (t_p, n_p) and wall = (τ_w/ρ, ∂U/∂n); zero outside P_ext.
+ * E = 9.793 with the switch at 11.225 (the pair the paper's eq 11 quotes; its "E = 0.9" is a
+ * misprint), κ = 0.41.
+ *
+ * wcr_turb_transport, for each fluid particle (eqs 22-24, 28-30, 40):
+ *   ∇v_i = Σ_j v_ij ⊗ (B_i^in ∇W_ij) V_j over the fluid neighbours (eq 22 with the inner
+ *   correction B^in of eq 40: B of eq 20 over the fluid neighbours only); for i in P_ext and
+ *   j in P, v_ij is w_s ∇v_p,j r_ij + (1 − w_s) v_ij with ∇v_p,j r_ij = (∂U/∂n)_j t_j (n_j·r_ij)
+ *   (eq 40: the wall function's gradient of j; eq 38 writes ∇v_p as (∂U/∂n) t⊗t, which gives
+ *   eq 13's G under τ:∇v but no velocity difference across the layer: the gradient is t ⊗ n);
+ *   G = ν_t (2 S:S − ⅔ (∇·v)²) (eq 9 with the deviatoric Reynolds stress, ≥ 0), and in P the
+ *   wall model's G = τ_w ∂U/∂n (eq 13);
+ *   diffusion of φ = k, ε (eqs 23-24), over the fluid neighbours only (no flux into the wall:
+ *   sec 4.3, third type): 2 Σ_j D̃_ij (φ_i − φ_j) F_ij V_j / λ, D = ν + ν_t/σ, D̃ the harmonic
+ *   mean, F = W'/r, λ the lattice's Laplacian sum (as the viscous term's, advection.cl);
+ *   the linearised update (eq 30 and its ε form, eqs 28-29):
+ *     k' = (k + Δt (G + D_k)) / (1 + Δt ε/k),  ε' = (ε + Δt (C1 ε/k G + D_ε)) / (1 + Δt C2 ε/k),
+ *   and in P, ε' = C_μ^¾ k'^{3/2}/(κ y_p) (eq 14). A numerator that diffusion makes negative is
+ *   clipped to a millionth of the old value and counted (clips[0] for k, clips[1] for ε).
+ * C_μ 0.09, C1 1.44, C2 1.92, σ_k 1, σ_ε 1.3.
+ *
+ * wcr_turb_update: k, ε take the new values and ν_t = C_μ k²/ε (eq 6), or ν_t = nu_fixed while
+ * the model waits (sec 5.2's delayed activation: k and ε then stay as they are). */
+#if WCR_TURB
+#define KE_CMU   R(0.09)
+#define KE_C1    R(1.44)
+#define KE_C2    R(1.92)
+#define KE_SK    R(1.0)
+#define KE_SE    R(1.3)
+#define KE_KAPPA R(0.41)
+#define KE_E     R(9.793)
+#define KE_YLAM  R(11.225)
+
+__kernel void wcr_turb_wall(const uint n, const struct grid g, __global const realv *pos,
+                            __global const realv *vel, __global const uint *kind,
+                            __global const real *wall_dist, __global const realv *wall_normal,
+                            __global const uint *nlist, __global const uint *ncount,
+                            __global const real *k, const real y_p, const real nu, const real r_ext,
+                            __global real4 *frame, __global real2 *wall, __global real *yplus)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  frame[i] = (real4)(R(0.0));
+  wall[i] = (real2)(R(0.0));
+  yplus[i] = R(0.0);
+  const real d = wall_dist[i];
+  if (kind[i] != WCR_FLUID || d < R(0.0) || d >= r_ext) return;
+  const realv x = pos[i];
+  realv nsum = (realv)(R(0.0)), vw = (realv)(R(0.0));
+  real wsum = R(0.0);
+  const uint c = ncount[i];
+  __global const uint *row = nlist + (size_t)i * WCR_MAXN;
+  for (uint m = 0; m < c; ++m) {
+    const uint j = row[m];
+    if (kind[j] != WCR_DUMMY) continue;
+    const realv r = wcr_sep(x, pos[j], &g);
+    const real w = smoothing_w(sqrt(dot(r, r)));
+    nsum += w * wall_normal[j];
+    vw += w * vel[j];
+    wsum += w;
+  }
+  if (!(wsum > R(0.0)) || !(dot(nsum, nsum) > R(0.0))) return;
+  const realv np = nsum * rsqrt(dot(nsum, nsum)); /* eq 35's n_p, made a unit vector */
+  const realv v = vel[i] - vw / wsum;
+  const realv vt = v - dot(v, np) * np;
+  const real up = sqrt(dot(vt, vt));
+  const realv tp = vt / (up + R(1e-12));                         /* eq 36 */
+  const real us = sqrt(sqrt(KE_CMU)) * sqrt(fmax(k[i], R(0.0))); /* C_μ^¼ k^½ */
+  const real yp = y_p * us / nu;                                 /* eq 10 */
+  const int lam = yp < KE_YLAM;
+  const real uplus = lam ? yp : log(KE_E * yp) / KE_KAPPA;    /* eq 11 */
+  const real tau = uplus > R(0.0) ? up * us / uplus : R(0.0); /* eq 12, over ρ */
+  const real dudn = lam ? tau / nu : tau / (us * KE_KAPPA * y_p);
+  frame[i] = (real4)(tp.x, tp.y, np.x, np.y);
+  wall[i] = (real2)(tau, dudn);
+  yplus[i] = yp;
+}
+
+__kernel void wcr_turb_transport(const uint n, const struct grid g, __global const realv *pos,
+                                 __global const realv *vel, __global const real *vol,
+                                 __global const uint *kind, __global const real *wall_dist,
+                                 __global const uint *nlist, __global const uint *ncount,
+                                 __global const real *k, __global const real *eps,
+                                 __global const real *nu_t, __global const real4 *frame,
+                                 __global const real2 *wall, const real dt, const real nu,
+                                 const real inv_lambda, const real y_p, const real r_ext,
+                                 const real r_p, const real w_s, __global real *k_new,
+                                 __global real *eps_new, __global uint *clips)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  const real ki = k[i], ei = eps[i];
+  k_new[i] = ki;
+  eps_new[i] = ei;
+  if (kind[i] != WCR_FLUID) return;
+  const realv x = pos[i], vi = vel[i];
+  const real di = wall_dist[i], nti = nu_t[i];
+  const int in_ext = di >= R(0.0) && di < r_ext;
+  const real4 fi = frame[i];
+  const int in_p = di >= R(0.0) && di < r_p && (fi.z != R(0.0) || fi.w != R(0.0));
+  const uint c = ncount[i];
+  __global const uint *row = nlist + (size_t)i * WCR_MAXN;
+  /* B^in: eq 20 over the fluid (and layer) neighbours */
+  real axx = R(0.0), axy = R(0.0), ayy = R(0.0);
+  for (uint m = 0; m < c; ++m) {
+    const uint j = row[m];
+    if (kind[j] == WCR_DUMMY) continue;
+    const realv r = wcr_sep(x, pos[j], &g);
+    const real f = smoothing_f(sqrt(dot(r, r))) * vol[j];
+    axx -= f * r.x * r.x;
+    axy -= f * r.x * r.y;
+    ayy -= f * r.y * r.y;
+  }
+  const real4 b = wcr_correction(axx, axy, ayy);
+  /* ∇v (eqs 22, 40) and the diffusion sums (eqs 23-24) */
+  real gxx = R(0.0), gxy = R(0.0), gyx = R(0.0), gyy = R(0.0), dk = R(0.0), de = R(0.0);
+  const real dki = nu + nti / KE_SK, dei = nu + nti / KE_SE;
+  for (uint m = 0; m < c; ++m) {
+    const uint j = row[m];
+    const uint kj = kind[j];
+    if (kj == WCR_DUMMY) continue;
+    const realv r = wcr_sep(x, pos[j], &g);
+    const real f = smoothing_f(sqrt(dot(r, r))) * vol[j];
+    realv vij = vi - vel[j];
+    const real dj = wall_dist[j];
+    const real4 fr = frame[j];
+    if (in_ext && kj == WCR_FLUID && dj >= R(0.0) && dj < r_p &&
+        (fr.z != R(0.0) || fr.w != R(0.0))) {
+      const realv tj = (realv)(fr.x, fr.y), nj = (realv)(fr.z, fr.w);
+      vij = w_s * wall[j].y * dot(nj, r) * tj + (R(1.0) - w_s) * vij;
+    }
+    const realv gw = f * wcr_apply(b, r); /* B^in ∇W_ij V_j */
+    gxx += vij.x * gw.x;
+    gxy += vij.x * gw.y;
+    gyx += vij.y * gw.x;
+    gyy += vij.y * gw.y;
+    const real ntj = nu_t[j];
+    const real dkj = nu + ntj / KE_SK, dej = nu + ntj / KE_SE;
+    dk += R(2.0) * dki * dkj / (dki + dkj) * (ki - k[j]) * f;
+    de += R(2.0) * dei * dej / (dei + dej) * (ei - eps[j]) * f;
+  }
+  /* ∇_i W_ij = F r_ij with r_ij = x_i − x_j, so Σ v_ij ⊗ ∇W V is −∇v: flip */
+  gxx = -gxx;
+  gxy = -gxy;
+  gyx = -gyx;
+  gyy = -gyy;
+  dk *= inv_lambda;
+  de *= inv_lambda;
+  real prod;
+  if (in_p) {
+    prod = wall[i].x * wall[i].y; /* eq 13 */
+  } else {
+    const real sxy = R(0.5) * (gxy + gyx), div = gxx + gyy;
+    prod =
+        nti * (R(2.0) * (gxx * gxx + gyy * gyy + R(2.0) * sxy * sxy) - div * div * R(2.0) / R(3.0));
+    prod = fmax(prod, R(0.0));
+  }
+  const real rate = ei / fmax(ki, R(1e-30));
+  real kn = ki + dt * (prod + dk);
+  if (!(kn > R(0.0))) {
+    kn = R(1e-6) * ki;
+    atomic_inc(&clips[0]);
+  }
+  kn /= R(1.0) + dt * rate; /* eq 30 */
+  real en;
+  if (in_p) {
+    en = sqrt(KE_CMU) * sqrt(sqrt(KE_CMU)) * kn * sqrt(kn) / (KE_KAPPA * y_p); /* eq 14 */
+  } else {
+    en = ei + dt * (KE_C1 * rate * prod + de);
+    if (!(en > R(0.0))) {
+      en = R(1e-6) * ei;
+      atomic_inc(&clips[1]);
+    }
+    en /= R(1.0) + dt * KE_C2 * rate; /* eqs 29-30 */
+  }
+  k_new[i] = kn;
+  eps_new[i] = en;
+}
+
+__kernel void wcr_turb_update(const uint n, __global const uint *kind, __global const real *k_new,
+                              __global const real *eps_new, const uint active, const real nu_fixed,
+                              __global real *k, __global real *eps, __global real *nu_t,
+                              __global realv *nu_t2)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  real nt = nu_t[i];
+  if (kind[i] == WCR_FLUID) {
+    if (active) {
+      k[i] = k_new[i];
+      eps[i] = eps_new[i];
+      nt = KE_CMU * k_new[i] * k_new[i] / eps_new[i]; /* eq 6 */
+    } else {
+      nt = nu_fixed;
+    }
+    nu_t[i] = nt;
+  }
+  nu_t2[i] = (realv)(nt, R(0.0)); /* for the host's largest ν_t (the time step, eq 27) */
+}
+#endif

@@ -1,0 +1,26 @@
+-- A channel that declares turbulence in ways the loader must refuse (what = ...):
+--   1 a scheme without a turbulence model, 2 y_p in the viscous sublayer, 3 k without epsilon,
+--   4 k and epsilon whose length scale exceeds the domain, 5 nu_t without a delay, 6 k < 0
+param { what = 1 }
+domain { 0, 0, 1, 2, periodic = "x" }
+particles { dr = 0.1 }
+scheme(what == 1 and "isph-rotational" or "wcsph-riemann")
+fluid { density = 1, viscosity = 1e-4, body_force = {0.003, 0} }
+local k, eps = 0.01, 0.004
+if what == 2 then
+  turbulence { model = "k-epsilon", k = k, epsilon = eps, y_p = 0.01 }
+elseif what == 3 then
+  turbulence { model = "k-epsilon", k = k }
+elseif what == 4 then
+  turbulence { model = "k-epsilon", k = k, epsilon = 1e-7 }
+elseif what == 5 then
+  turbulence { model = "k-epsilon", k = k, epsilon = eps, nu_t = 1e-3 }
+elseif what == 6 then
+  turbulence { model = "k-epsilon", k = -k, epsilon = eps }
+else
+  turbulence { model = "k-epsilon", k = k, epsilon = eps }
+end
+wall { {1, 0}, {0, 0}, fluid = "right" }
+wall { {0, 2}, {1, 2}, fluid = "right" }
+fill { 0, 0, 1, 2 }
+run { t_end = 1 }
