@@ -135,6 +135,10 @@ static enum clsph_status sandbox_call(struct sandbox *sb, int nargs, int nresult
 #define FILL_VELOCITY "clsph.fill_velocity" /* registry: the fills' velocity functions */
 #define FILL_PRESSURE "clsph.fill_pressure" /* and their pressure and density functions */
 #define FILL_DENSITY  "clsph.fill_density"
+#define FILL_K        "clsph.fill_k" /* and the turbulence's k and ε functions */
+#define FILL_EPS      "clsph.fill_epsilon"
+static const char *const fill_scalar_key[4] = {"pressure", "density", "k", "epsilon"};
+static const char *const fill_scalar_reg[4] = {FILL_PRESSURE, FILL_DENSITY, FILL_K, FILL_EPS};
 
 /* scene_velocity_fn.eval: u, v = the velocity function of fill `region` at x. */
 static enum clsph_status fill_velocity(void *ctx, int region, const double x[2], double v[2])
@@ -163,16 +167,16 @@ done:
   return st;
 }
 
-/* scene_velocity_fn.scalar: the pressure (what = 0) or density (1) function of fill `region` at
- * x. */
+/* scene_velocity_fn.scalar: the pressure (what = 0), density (1), k (2) or ε (3) function of
+ * fill `region` at x. */
 static enum clsph_status fill_scalar(void *ctx, int region, int what, const double x[2], double *v)
 {
   enum clsph_status st = CLSPH_OK;
   struct case_script *cs = ctx;
   lua_State *L = cs->L;
   const int top = lua_gettop(L);
-  const char *name = what == 0 ? "pressure" : "density";
-  lua_getfield(L, LUA_REGISTRYINDEX, what == 0 ? FILL_PRESSURE : FILL_DENSITY);
+  const char *name = fill_scalar_key[what];
+  lua_getfield(L, LUA_REGISTRYINDEX, fill_scalar_reg[what]);
   CLSPH_CHECK(lua_istable(L, -1) && lua_rawgeti(L, -1, region + 1) == LUA_TFUNCTION, CLSPH_E_INPUT,
               "fill %d has no %s function", region + 1, name);
   lua_pushnumber(L, x[0]);
@@ -341,6 +345,8 @@ static void need_table(lua_State *L, const char *fn)
   if (lua_gettop(L) != 1 || !lua_istable(L, 1))
     luaL_error(L, "%s: expects one table, e.g. %s { ... }", fn, fn);
 }
+
+static int l_reference(lua_State *L); /* reference(csv, column...): the same at load time */
 
 /* ---- declarations ---- */
 
@@ -555,7 +561,8 @@ static int l_turbulence(lua_State *L)
 
 static int l_fill(lua_State *L)
 {
-  static const char *const keys[] = {"polygon", "name", "velocity", "pressure", "density", NULL};
+  static const char *const keys[] = {"polygon", "name", "velocity", "pressure",
+                                     "density", "k",    "epsilon",  NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "fill");
@@ -587,13 +594,15 @@ static int l_fill(lua_State *L)
     to_point(L, "fill", "velocity", r->u0);
   }
   lua_pop(L, 1);
-  /* the initial pressure and density: a number, or a function (x, y) -> value kept like the
-   * velocity's */
-  static const char *const scalar_key[2] = {"pressure", "density"};
-  static const char *const scalar_reg[2] = {FILL_PRESSURE, FILL_DENSITY};
-  for (int k = 0; k < 2; ++k) {
-    int *mode = k == 0 ? &r->pressure : &r->density;
-    double *value = k == 0 ? &r->p0 : &r->rho0;
+  /* the initial pressure, density, k and ε: a number, or a function (x, y) -> value kept like
+   * the velocity's */
+  static const char *const unit[4] = {"Pa", "kg/m^3", "m²/s²", "m²/s³"};
+  int *modes[4] = {&r->pressure, &r->density, &r->k, &r->epsilon};
+  double *values[4] = {&r->p0, &r->rho0, &r->k0, &r->eps0};
+  for (int k = 0; k < 4; ++k) {
+    int *mode = modes[k];
+    double *value = values[k];
+    const char *const *scalar_key = fill_scalar_key, *const *scalar_reg = fill_scalar_reg;
     lua_getfield(L, 1, scalar_key[k]);
     if (lua_isfunction(L, -1)) {
       *mode = 2;
@@ -609,11 +618,11 @@ static int l_fill(lua_State *L)
     } else if (!lua_isnil(L, -1)) {
       if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
         luaL_error(L, "fill '%s': %s must be a number (%s) or a function (x, y) returning one",
-                   r->name, scalar_key[k], k == 0 ? "Pa" : "kg/m^3");
+                   r->name, scalar_key[k], unit[k]);
       *mode = 1;
       *value = lua_tonumber(L, -1);
-      if (k == 1 && !(*value > 0.0))
-        luaL_error(L, "fill '%s': density must be positive, not %f", r->name, *value);
+      if (k >= 1 && !(*value > 0.0))
+        luaL_error(L, "fill '%s': %s must be positive, not %f", r->name, scalar_key[k], *value);
     }
     lua_pop(L, 1);
   }
@@ -1260,12 +1269,25 @@ static void open_sandbox(lua_State *L)
 static void register_api(lua_State *L, struct loader *ld)
 {
   static const luaL_Reg api[] = {
-      {"param", l_param},   {"domain", l_domain},     {"particles", l_particles},
-      {"scheme", l_scheme}, {"fluid", l_fluid},       {"fill", l_fill},
-      {"wall", l_wall},     {"box_wall", l_box_wall}, {"arc", l_arc},
-      {"circle", l_circle}, {"inflow", l_inflow},     {"outflow", l_outflow},
-      {"probe", l_probe},   {"profile", l_profile},   {"force", l_force},
-      {"run", l_run},       {"render", l_render},     {"turbulence", l_turbulence},
+      {"param", l_param},
+      {"domain", l_domain},
+      {"particles", l_particles},
+      {"scheme", l_scheme},
+      {"fluid", l_fluid},
+      {"fill", l_fill},
+      {"wall", l_wall},
+      {"box_wall", l_box_wall},
+      {"arc", l_arc},
+      {"circle", l_circle},
+      {"inflow", l_inflow},
+      {"outflow", l_outflow},
+      {"probe", l_probe},
+      {"profile", l_profile},
+      {"force", l_force},
+      {"run", l_run},
+      {"render", l_render},
+      {"turbulence", l_turbulence},
+      {"reference", l_reference},
   };
   for (size_t i = 0; i < sizeof api / sizeof *api; ++i) {
     lua_pushlightuserdata(L, ld);

@@ -70,6 +70,7 @@ enum wall_model { MODEL_NONE, MODEL_USAW, MODEL_DUMMY };
 struct particle {
   double x[2], v[2], normal[2]; /* m, m/s, unit */
   double p0, rho0;              /* initial pressure and density (NAN: the scheme's), Pa, kg/m^3 */
+  double k0, eps0;              /* initial k and ε (NAN: turbulence { }'s), m²/s², m²/s³ */
   double theta, dist;           /* rad, m */
   int kind, group;              /* group: the region index while fluid is checked, then −1 */
 };
@@ -604,11 +605,11 @@ static enum clsph_status fill_scalars(const struct scene *s, const struct scene_
                                       const double x[2], struct particle *p)
 {
   enum clsph_status st = CLSPH_OK;
-  const int mode[2] = {g->pressure, g->density};
-  const double value[2] = {g->p0, g->rho0};
-  static const char *const what[2] = {"pressure", "density"};
-  double v[2] = {NAN, NAN};
-  for (int k = 0; k < 2; ++k) {
+  const int mode[4] = {g->pressure, g->density, g->k, g->epsilon};
+  const double value[4] = {g->p0, g->rho0, g->k0, g->eps0};
+  static const char *const what[4] = {"pressure", "density", "k", "epsilon"};
+  double v[4] = {NAN, NAN, NAN, NAN};
+  for (int k = 0; k < 4; ++k) {
     if (mode[k] == 0) continue;
     v[k] = value[k];
     if (mode[k] == 2) {
@@ -626,6 +627,8 @@ static enum clsph_status fill_scalars(const struct scene *s, const struct scene_
   }
   p->p0 = v[0];
   p->rho0 = v[1];
+  p->k0 = v[2];
+  p->eps0 = v[3];
 done:
   return st;
 }
@@ -701,8 +704,13 @@ static enum clsph_status fill_fluid(struct build *b)
                   "%s:%d: fluid region '%s' extends past the wall of line %d: the particle at "
                   "(%g, %g) is outside it (a counter-clockwise closed wall holds its fluid inside)",
                   s->case_path, g->line, g->name, s->walls[container].line, x, y);
-      struct particle p = {
-          .x = {xy[0], xy[1]}, .kind = KIND_FLUID, .group = first, .p0 = NAN, .rho0 = NAN};
+      struct particle p = {.x = {xy[0], xy[1]},
+                           .kind = KIND_FLUID,
+                           .group = first,
+                           .p0 = NAN,
+                           .rho0 = NAN,
+                           .k0 = NAN,
+                           .eps0 = NAN};
       CLSPH_TRY(fill_scalars(s, g, first, xy, &p));
       if (g->velocity == 1) memcpy(p.v, g->u0, sizeof p.v);
       if (g->velocity == 2) {
@@ -1146,13 +1154,16 @@ static enum clsph_status emit(struct build *b, struct geom *g)
     t.v = malloc(2 * n * sizeof *t.v);
     t.p0 = malloc(n * sizeof *t.p0);
     t.rho0 = malloc(n * sizeof *t.rho0);
+    t.k0 = malloc(n * sizeof *t.k0);
+    t.eps0 = malloc(n * sizeof *t.eps0);
     t.normal = malloc(2 * n * sizeof *t.normal);
     t.theta = malloc(n * sizeof *t.theta);
     t.dist = malloc(n * sizeof *t.dist);
     t.kind = malloc(n * sizeof *t.kind);
     t.group = malloc(n * sizeof *t.group);
-    CLSPH_CHECK(t.x != NULL && t.v != NULL && t.p0 != NULL && t.rho0 != NULL && t.normal != NULL &&
-                    t.theta != NULL && t.dist != NULL && t.kind != NULL && t.group != NULL,
+    CLSPH_CHECK(t.x != NULL && t.v != NULL && t.p0 != NULL && t.rho0 != NULL && t.k0 != NULL &&
+                    t.eps0 != NULL && t.normal != NULL && t.theta != NULL && t.dist != NULL &&
+                    t.kind != NULL && t.group != NULL,
                 CLSPH_E_NOMEM, "geometry: out of memory for %zu particles", n);
   }
   if (ns > 0) {
@@ -1172,6 +1183,8 @@ static enum clsph_status emit(struct build *b, struct geom *g)
     }
     t.p0[i] = p->kind == KIND_FLUID ? p->p0 : (double)NAN;
     t.rho0[i] = p->kind == KIND_FLUID ? p->rho0 : (double)NAN;
+    t.k0[i] = p->kind == KIND_FLUID ? p->k0 : (double)NAN;
+    t.eps0[i] = p->kind == KIND_FLUID ? p->eps0 : (double)NAN;
     t.theta[i] = p->theta;
     t.dist[i] = p->dist;
     t.kind[i] = p->kind;
@@ -1228,6 +1241,8 @@ enum clsph_status geometry_build(const struct scene *s, const char *model, int l
   for (int r = 0; r < s->nregions; ++r) { /* the first fill that gives them: for messages */
     if (s->regions[r].pressure && !out->has_p0) out->has_p0 = s->regions[r].line;
     if (s->regions[r].density && !out->has_rho0) out->has_rho0 = s->regions[r].line;
+    if ((s->regions[r].k || s->regions[r].epsilon) && !out->has_k0)
+      out->has_k0 = s->regions[r].line;
   }
   log_debug("geometry: %zu fluid, %zu %s wall particles, %zu segments, %zu inflow/outflow "
             "particles",
@@ -1246,6 +1261,8 @@ void geometry_free(struct geom *g)
   free(g->v);
   free(g->p0);
   free(g->rho0);
+  free(g->k0);
+  free(g->eps0);
   free(g->normal);
   free(g->theta);
   free(g->dist);

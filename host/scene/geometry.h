@@ -20,13 +20,14 @@ enum particle_kind {
 
 /** Particles (host arrays, double precision) and USAW segments. Fluid particles come first. */
 struct geom {
-  size_t n;      /* particles of every kind */
-  size_t nfluid; /* the first nfluid are KIND_FLUID */
-  double *x;     /* n x 2, position, m */
-  double *v;     /* n x 2, initial velocity (the wall velocity for wall particles), m/s */
-  double *p0;    /* n, the initial pressure fill { pressure } gives, Pa; NAN: the scheme's */
-  double *rho0;  /* n, the initial density fill { density } gives, kg/m^3; NAN: the scheme's */
-  int has_p0, has_rho0; /* the line of the first fill that gives them (0: none does) */
+  size_t n;          /* particles of every kind */
+  size_t nfluid;     /* the first nfluid are KIND_FLUID */
+  double *x;         /* n x 2, position, m */
+  double *v;         /* n x 2, initial velocity (the wall velocity for wall particles), m/s */
+  double *p0;        /* n, the initial pressure fill { pressure } gives, Pa; NAN: the scheme's */
+  double *rho0;      /* n, the initial density fill { density } gives, kg/m^3; NAN: the scheme's */
+  double *k0, *eps0; /* n, the initial k and ε fill { k, epsilon } give; NAN: turbulence { }'s */
+  int has_p0, has_rho0, has_k0; /* the line of the first fill that gives them (0: none does) */
   double *normal; /* n x 2, unit normal into the fluid (vertex, dummy, inflow/outflow); 0 else */
   double *theta;  /* n, vertex particles: angle of the fluid sector at the vertex, rad (π on a
                      straight wall, π/2 in a box corner, 3π/2 at a convex solid corner); else 0 */

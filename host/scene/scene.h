@@ -36,13 +36,16 @@ struct scene_region {
   int pressure, density; /* initial pressure and density: 0 the scheme's, 1 the constant below,
                           * 2 scene.velocity_fn's scalar function */
   double p0, rho0;       /* the constant initial pressure (Pa) and density (kg/m^3) */
+  int k, epsilon;        /* the same for the turbulence's k (m²/s²) and ε (m²/s³) */
+  double k0, eps0;
 };
 
 /** The initial velocity of a region's fluid given as a function of position by the case script
  *  (fill { velocity = function(x, y) ... }): eval fills v (m/s) at x for region `region`. */
 struct scene_velocity_fn {
   enum clsph_status (*eval)(void *ctx, int region, const double x[2], double v[2]);
-  /** The initial pressure (what = 0, Pa) or density (1, kg/m^3) function of region `region`. */
+  /** The initial pressure (what = 0, Pa), density (1, kg/m^3), k (2, m²/s²) or ε (3, m²/s³)
+   *  function of region `region`. */
   enum clsph_status (*scalar)(void *ctx, int region, int what, const double x[2], double *v);
   void *ctx; /* the case script's state: valid while it is open */
 };

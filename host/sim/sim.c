@@ -248,6 +248,10 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
               "%s:%d: fill { pressure }: scheme '%s' takes no initial pressure (it has none, or "
               "solves for it from the start)",
               scene->case_path, sim.geom.has_p0, sim.scheme->name);
+  CLSPH_CHECK(!sim.geom.has_k0 || scene->turb.on, CLSPH_E_INPUT,
+              "%s:%d: fill { k, epsilon }: the case declares no turbulence { model = ... } for "
+              "them",
+              scene->case_path, sim.geom.has_k0);
   CLSPH_CHECK(!sim.geom.has_rho0 || (sim.scheme->fill_fields & SCHEME_FILL_DENSITY), CLSPH_E_INPUT,
               "%s:%d: fill { density }: scheme '%s' takes no initial density (an incompressible "
               "scheme holds it at the fluid's density: give the weakly-compressible schemes one)",

@@ -8,16 +8,16 @@
  *             mirror velocity, eqs 31-32)
  * over the fluid particles i and the dummy particles w of the group (mask[wall[w]] != 0). Each
  * fluid particle writes its share (pressure x, y, viscous x, y); the host sums them in double. */
-__kernel void wcr_wall_force(const uint n, const struct grid g, __global const realv *pos,
-                             __global const realv *vel, __global const real *vol,
-                             __global const uint *kind, __global const real *rho,
-                             __global const real *wall_dist, __global const realv *wall_normal,
-                             __global const real *p, __global const uint *nlist,
-                             __global const uint *ncount, __global const real4 *bmat,
-                             __global const realv *acc_prior, __global const uint *wall,
-                             __global const uint *mask, const uint nmask, const real dr,
-                             const real rho0, const real c0, const real p_bg, const real mu,
-                             const real inv_lambda, const real h, __global real4 *out)
+__kernel void wcr_wall_force(
+    const uint n, const struct grid g, __global const realv *pos, __global const realv *vel,
+    __global const real *vol, __global const uint *kind, __global const real *rho,
+    __global const real *wall_dist, __global const realv *wall_normal, __global const real *p,
+    __global const uint *nlist, __global const uint *ncount, __global const real4 *bmat,
+    __global const realv *acc_prior, __global const uint *wall, __global const uint *mask,
+    const uint nmask, const real dr, const real rho0, const real c0, const real p_bg, const real mu,
+    const real inv_lambda, const real h, __global real4 *out, __global const real *tk,
+    __global const real *nu_t, __global const real4 *frame, __global const real2 *wallv,
+    const real r_ext, const uint wall_model)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -27,7 +27,25 @@ __kernel void wcr_wall_force(const uint n, const struct grid g, __global const r
     return;
   }
   const realv x = pos[i], vi = vel[i], ai = acc_prior[i];
+#if WCR_TURB
+  /* the k-ε model: p + ⅔ ρ k, µ + ρ0 ν_t, the normal mirror, and on a P_ext particle the wall
+   * model's shear (eq 39) instead of the no-slip drag, as acoustic.cl and advection.cl have them */
+  const real pi = p[i] + R(2.0) / R(3.0) * rho[i] * tk[i], ri = rho[i], vol_i = vol[i];
+  const real mui = mu + rho0 * nu_t[i], di = wall_dist[i];
+  const int modelled = wall_model && di >= R(0.0) && di < r_ext;
+  const real4 fr = frame[i];
+  const realv tt = (realv)(fr.x, fr.y), nn = (realv)(fr.z, fr.w);
+  const real tau = wallv[i].x;
+#else
+  (void)tk;
+  (void)nu_t;
+  (void)frame;
+  (void)wallv;
+  (void)r_ext;
+  (void)wall_model;
   const real pi = p[i], ri = rho[i], vol_i = vol[i];
+  const real mui = mu;
+#endif
   const real4 bi = bmat[i];
   realv fp = (realv)(R(0.0)), fv = (realv)(R(0.0));
   const uint c = ncount[i];
@@ -39,17 +57,29 @@ __kernel void wcr_wall_force(const uint n, const struct grid g, __global const r
     const realv r = wcr_sep(x, pos[j], &g);
     const real rr = sqrt(dot(r, r));
     const real f = smoothing_f(rr) * vol[j];
+#if WCR_TURB
+    const realv nw = wall_normal[j];
+    const realv vij = R(2.0) * dot(vi - vel[j], nw) * nw;
+#else
     const realv vij = R(2.0) * (vi - vel[j]);
+#endif
     const real pj = pi - ri * dot(ai, r);
     const real u = rr > R(0.0) ? -dot(vij, r) / rr : R(0.0);
     const real beta = wcr_beta(u, c0, 1u);
     fp += f * (pi + pj + R(2.0) * p_bg) * wcr_apply(bi, r);
 #if WCR_ARD
-    fv -= R(2.0) * fmax(R(0.5) * rho0 * beta * h - mu, R(0.0)) * f * vij;
+    fv -= R(2.0) * fmax(R(0.5) * rho0 * beta * h - mui, R(0.0)) * f * vij;
 #else
     fp += f * (rho0 * beta * u) * r;
 #endif
-    fv -= R(2.0) * mu * inv_lambda * f *
+#if WCR_TURB
+    if (modelled) { /* the reaction of eq 39's pair term */
+      const realv s = f * r;
+      fv -= R(2.0) * ri * tau * (dot(nn, s) * tt + dot(tt, s) * nn);
+      continue;
+    }
+#endif
+    fv -= R(2.0) * mui * inv_lambda * f *
           wcr_visc_jump(kj, x, x - r, vi, vel[j], wall_dist[j], wall_normal[j], dr);
   }
   o = (real4)(vol_i * fp.x, vol_i * fp.y, vol_i * fv.x, vol_i * fv.y);

@@ -295,14 +295,22 @@ static enum clsph_status turb_create(struct sim *sim, struct wcr *w)
   w->turb = 1;
   w->y_p = t->y_p > 0.0 ? t->y_p : 0.5 * sim->scene->dr;
   w->w_s = isnan(t->wall_weight) ? (w->ard ? 0.5 : 0.1) : t->wall_weight; /* sec 4.3 */
-  for (size_t i = 0; i < n; ++i) buf[i] = (real)t->k;
+  const struct geom *geo = &sim->geom;
+  /* fill { k, epsilon } where a fill gives them, else turbulence { }'s */
+  for (size_t i = 0; i < n; ++i) buf[i] = (real)(isfinite(geo->k0[i]) ? geo->k0[i] : t->k);
   CLSPH_TRY(add_field(sim, "k", buf, 1, &w->f_k));
-  for (size_t i = 0; i < n; ++i) buf[i] = (real)t->epsilon;
+  for (size_t i = 0; i < n; ++i)
+    buf[i] = (real)(isfinite(geo->eps0[i]) ? geo->eps0[i] : t->epsilon);
   CLSPH_TRY(add_field(sim, "epsilon", buf, 1, &w->f_eps));
-  const double nut0 = t->delay > 0.0 ? t->nu_t_delay : 0.09 * t->k * t->k / t->epsilon;
-  for (size_t i = 0; i < n; ++i) buf[i] = (real)nut0;
+  w->nut_max = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const double k = isfinite(geo->k0[i]) ? geo->k0[i] : t->k;
+    const double e = isfinite(geo->eps0[i]) ? geo->eps0[i] : t->epsilon;
+    const double nut = t->delay > 0.0 ? t->nu_t_delay : 0.09 * k * k / e; /* eq 6 */
+    buf[i] = (real)nut;
+    w->nut_max = fmax(w->nut_max, nut);
+  }
   CLSPH_TRY(add_field(sim, "nu_t", buf, 1, &w->f_nut));
-  w->nut_max = nut0;
   CLSPH_TRY(add_field(sim, "y_plus", NULL, 1, &w->f_yplus));
   CLSPH_TRY(kern_buffer(sim->dev, cap * 4 * sizeof(real), NULL, &w->d_frame, "wall frames"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * 2 * sizeof(real), NULL, &w->d_wallv, "wall stresses"));
@@ -458,6 +466,26 @@ done:
   return st;
 }
 
+/* the wall model of the P_ext particles (turbulence.cl: frames, τ_w, ∂U/∂n, y+) */
+static enum clsph_status turb_wall(struct sim *sim, struct wcr *w)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  const real yp = (real)w->y_p, nu = (real)sim->scene->nu;
+  const real r_ext = (real)(2.0 * sim->sm.h - sim->scene->dr);
+  cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
+  cl_mem kind = pset_mem(ps, sim->f_kind), wd = pset_mem(ps, w->f_wdist);
+  cl_mem wn = pset_mem(ps, w->f_wnormal), k = pset_mem(ps, w->f_k);
+  cl_mem yplus = pset_mem(ps, w->f_yplus);
+  CLSPH_TRY(KERN_SET(w->k_twall, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(kind),
+                     KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount), KARG(k), KARG(yp),
+                     KARG(nu), KARG(r_ext), KARG(w->d_frame), KARG(w->d_wallv), KARG(yplus)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_twall, ps->n, NULL));
+done:
+  return st;
+}
+
 /* 1b. the k-ε model (turbulence.cl): the wall model, k and ε over dt, ν_t. Until the scene's
  * delay the model waits: k and ε stay, ν_t is the delay's and the walls are the laminar ones. */
 static enum clsph_status turbulence(struct sim *sim, struct wcr *w, double dt)
@@ -472,14 +500,10 @@ static enum clsph_status turbulence(struct sim *sim, struct wcr *w, double dt)
   const real nu_fixed = (real)sc->turb.nu_t_delay;
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
-  cl_mem wd = pset_mem(ps, w->f_wdist), wn = pset_mem(ps, w->f_wnormal);
+  cl_mem wd = pset_mem(ps, w->f_wdist);
   cl_mem k = pset_mem(ps, w->f_k), eps = pset_mem(ps, w->f_eps), nut = pset_mem(ps, w->f_nut);
-  cl_mem yplus = pset_mem(ps, w->f_yplus);
   if (active) {
-    CLSPH_TRY(KERN_SET(w->k_twall, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(kind),
-                       KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount), KARG(k), KARG(yp),
-                       KARG(nu), KARG(r_ext), KARG(w->d_frame), KARG(w->d_wallv), KARG(yplus)));
-    CLSPH_TRY(kern_launch(sim->dev, w->k_twall, ps->n, NULL));
+    CLSPH_TRY(turb_wall(sim, w));
     CLSPH_TRY(KERN_SET(w->k_ttrans, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                        KARG(kind), KARG(wd), KARG(w->d_nlist), KARG(w->d_ncount), KARG(k),
                        KARG(eps), KARG(nut), KARG(w->d_frame), KARG(w->d_wallv), KARG(rdt),
@@ -758,6 +782,7 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
    * alternating between the true force and about a tenth of it. */
   if (!w->configured || w->sorted != sim->sorts) {
     CLSPH_TRY(configure(sim, w, WCR_REINIT_OFF, 0.0));
+    if (w->turb && sim->time >= sc->turb.delay) CLSPH_TRY(turb_wall(sim, w));
     CLSPH_TRY(advection(sim, w));
   }
   const real rho0 = (real)sc->rho0, c0 = (real)w->c0, mu = (real)(sc->rho0 * sc->nu);
@@ -768,11 +793,17 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
   cl_mem wall = pset_mem(ps, w->f_wall), wd = pset_mem(ps, w->f_wdist);
   cl_mem wn = pset_mem(ps, w->f_wnormal);
+  cl_mem tk = w->turb ? pset_mem(ps, w->f_k) : w->d_none;
+  cl_mem nut = w->turb ? pset_mem(ps, w->f_nut) : w->d_none;
+  cl_mem frame = w->turb ? w->d_frame : w->d_none, wallv = w->turb ? w->d_wallv : w->d_none;
+  const real r_ext = (real)(2.0 * sim->sm.h - sc->dr);
+  const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
   CLSPH_TRY(KERN_SET(w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist),
                      KARG(w->d_ncount), KARG(w->d_bmat), KARG(w->d_prior), KARG(wall),
                      KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0), KARG(pbg),
-                     KARG(mu), KARG(ilam), KARG(h), KARG(w->d_force)));
+                     KARG(mu), KARG(ilam), KARG(h), KARG(w->d_force), KARG(tk), KARG(nut),
+                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
   memset(out, 0, sizeof *out);

@@ -1,6 +1,7 @@
 -- A channel that declares turbulence in ways the loader must refuse (what = ...):
 --   1 a scheme without a turbulence model, 2 y_p in the viscous sublayer, 3 k without epsilon,
---   4 k and epsilon whose length scale exceeds the domain, 5 nu_t without a delay, 6 k < 0
+--   4 k and epsilon whose length scale exceeds the domain, 5 nu_t without a delay, 6 k < 0,
+--   7 fill { k, epsilon } without turbulence { }, 8 fill { epsilon } < 0
 param { what = 1 }
 domain { 0, 0, 1, 2, periodic = "x" }
 particles { dr = 0.1 }
@@ -17,10 +18,13 @@ elseif what == 5 then
   turbulence { model = "k-epsilon", k = k, epsilon = eps, nu_t = 1e-3 }
 elseif what == 6 then
   turbulence { model = "k-epsilon", k = -k, epsilon = eps }
+elseif what == 7 then
+  -- no turbulence { }
 else
   turbulence { model = "k-epsilon", k = k, epsilon = eps }
 end
 wall { {1, 0}, {0, 0}, fluid = "right" }
 wall { {0, 2}, {1, 2}, fluid = "right" }
-fill { 0, 0, 1, 2 }
+fill { 0, 0, 1, 2, k = what >= 7 and function(x, y) return 0.01 end or nil,
+       epsilon = what == 8 and -1 or nil }
 run { t_end = 1 }
