@@ -117,7 +117,7 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
                            __global const realv *acc_prior, const real rho0, const real c0,
                            const real p_bg, const real mu, const real h, __global realv *acc,
                            __global const real *tk, __global const real *nu_t,
-                           __global const realv *wall_normal)
+                           __global const realv *wall_normal, const realv gravity)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
@@ -129,7 +129,6 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
 #else
   (void)tk;
   (void)nu_t;
-  (void)wall_normal;
   const real pi = p[i] + p_bg, ri = rho[i];
 #endif
   const real4 bi = bmat[i];
@@ -157,7 +156,7 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
 #else
       vj = R(2.0) * vel[j] - vi;
 #endif
-      pj = pi - ri * dot(ai, r);
+      pj = wcr_wall_pressure(pi, ri, ai, r, wall_normal[j], gravity);
       bj = bi;
     } else {
       vj = vel[j];
@@ -239,7 +238,7 @@ __kernel void wcr_continuity(const uint n, const struct grid g, __global const r
       vj = R(2.0) * vel[j] - vi;
       (void)wall_normal;
 #endif
-      pj = pi - ri * dot(ai, r);
+      pj = wcr_wall_pressure(pi, ri, ai, r, wall_normal[j], gravity);
     } else {
       vj = kj == WCR_FLUID ? vel[j] + dt * acc[j] : vel[j];
       pj = p[j];

@@ -17,7 +17,7 @@ __kernel void wcr_wall_force(
     const uint nmask, const real dr, const real rho0, const real c0, const real p_bg, const real mu,
     const real inv_lambda, const real h, __global real4 *out, __global const real *tk,
     __global const real *nu_t, __global const real4 *frame, __global const real2 *wallv,
-    const real r_ext, const uint wall_model)
+    const real r_ext, const uint wall_model, const realv gravity)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -63,7 +63,7 @@ __kernel void wcr_wall_force(
 #else
     const realv vij = R(2.0) * (vi - vel[j]);
 #endif
-    const real pj = pi - ri * dot(ai, r);
+    const real pj = wcr_wall_pressure(pi, ri, ai, r, wall_normal[j], gravity);
     const real u = rr > R(0.0) ? -dot(vij, r) / rr : R(0.0);
     const real beta = wcr_beta(u, c0, 1u);
     fp += f * (pi + pj + R(2.0) * p_bg) * wcr_apply(bi, r);

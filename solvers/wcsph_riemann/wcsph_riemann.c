@@ -603,7 +603,7 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(pbg), KARG(mu),
-                     KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn)));
+                     KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn), KARG(grav)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
   CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(w->d_acc),
                      KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist),
@@ -798,12 +798,13 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   cl_mem frame = w->turb ? w->d_frame : w->d_none, wallv = w->turb ? w->d_wallv : w->d_none;
   const real r_ext = (real)(2.0 * sim->sm.h - sc->dr);
   const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
+  const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
   CLSPH_TRY(KERN_SET(w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist),
                      KARG(w->d_ncount), KARG(w->d_bmat), KARG(w->d_prior), KARG(wall),
                      KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0), KARG(pbg),
                      KARG(mu), KARG(ilam), KARG(h), KARG(w->d_force), KARG(tk), KARG(nut),
-                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel)));
+                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(grav)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
   memset(out, 0, sizeof *out);
