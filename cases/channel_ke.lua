@@ -16,8 +16,9 @@
 -- wall_pressure_x, the pressure part along x in the same unit (0 on a flat wall).
 -- The run is the last instant's (no time average yet).
 -- tvf: the transport-velocity correction (0 off, 1 full, 2 limited: the scheme's default);
--- turb = 0 runs the same scene laminar (for the model's cost: `--profile`).
-param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1 }
+-- turb = 0 runs the same scene laminar (for the model's cost: `--profile`); ws ≥ 0 sets w_s of
+-- eq 40 (the scheme's 0.1 otherwise).
+param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1 }
 
 local delta, nu, u_tau, kappa, cmu = 1.0, 1e-4, 0.0543496, 0.41, 0.09
 local H = 2 * delta
@@ -29,8 +30,10 @@ domain { 0, off, L, H - off, periodic = "x" }
 particles { dr = dr }
 scheme { "wcsph-riemann", ard = ard, transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
 fluid { density = 1, viscosity = nu, body_force = {u_tau * u_tau / delta, 0} }
-if turb == 1 then turbulence { model = "k-epsilon", y_p = y_p, k = u_tau * u_tau / math.sqrt(cmu),
-             epsilon = u_tau ^ 3 / (kappa * 0.1 * delta) } end
+if turb == 1 then
+  turbulence { model = "k-epsilon", y_p = y_p, k = u_tau * u_tau / math.sqrt(cmu),
+               epsilon = u_tau ^ 3 / (kappa * 0.1 * delta), wall_weight = ws >= 0 and ws or nil }
+end
 wall { {L, off}, {0, off}, fluid = "right", group = "floor" }
 wall { {0, H - off}, {L, H - off}, fluid = "right", group = "ceiling" }
 local ub = 1.0653

@@ -173,7 +173,7 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
 #if WCR_ARD
 #if WCR_TURB
     const real muj = wall ? mui : mu + rho0 * nu_t[j];
-    const real mij = R(2.0) * mui * muj / (mui + muj); /* eq 32 against µ̃_ij */
+    const real mij = wcr_pair_mean(mui, muj); /* eq 32 against µ̃_ij */
 #else
     const real mij = mu;
 #endif

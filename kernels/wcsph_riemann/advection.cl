@@ -4,7 +4,8 @@
  *
  * Viscous acceleration (eq 21, the pairwise form of Hu & Adams 2006), written with V_j = m_j/ρ_j:
  *   a_i^ν = (2/ρ_i) Σ_j µ̃_ij V_j F(r_ij) (v_i − v_j),   F = W'/r,
- * µ̃_ij the harmonic mean of the two viscosities (one viscosity here: µ), divided by lambda, the
+ * µ̃_ij the pair's mean of the two viscosities (one viscosity here, µ, unless the k-ε model adds
+ * ν_t: wcr_pair_mean, config.cl), divided by lambda, the
  * sum's value for ∇²(x²/2) = 1 on the particles' lattice (config.cl): 0.974 at h = 1.3 dr with
  * the Wendland C2, and 1 only as h/dr → ∞, so that the steady body-force Poiseuille flow ran
  * 2.5% fast on its centreline at every resolution (cases/poiseuille_periodic.lua, dr = H/20 and
@@ -73,7 +74,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
   const uint c = ncount[i];
   __global const uint *row = nlist + (size_t)i * WCR_MAXN;
 #if WCR_TURB
-  /* µ_eff = ρ0 (ν + ν_t) and its pairwise harmonic mean (eq 21); the wall model replaces the
+  /* µ_eff = ρ0 (ν + ν_t) and its pair mean (eq 21); the wall model replaces the
    * dummies' no-slip drag on a P_ext particle by the wall shear stress (eq 39) */
   const real nu_l = mu / rho0, mui = mu + rho0 * nu_t[i];
   const real di = wall_dist[i];
@@ -89,7 +90,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
     if (kj != WCR_DUMMY) smin = fmin(smin, sigma[j]);
 #if WCR_TURB
     const real muj = kj == WCR_DUMMY ? mui : mu + rho0 * nu_t[j];
-    const real mij = R(2.0) * mui * muj / (mui + muj);
+    const real mij = wcr_pair_mean(mui, muj); /* µ̃_ij of eq 21 */
     if (modelled && kj == WCR_DUMMY)
       swall += f * r;
     else

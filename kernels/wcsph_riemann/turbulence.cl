@@ -27,11 +27,11 @@
  *   G = ν_t (2 S:S − ⅔ (∇·v)²) (eq 9 with the deviatoric Reynolds stress, ≥ 0), and in P the
  *   wall model's G = τ_w ∂U/∂n (eq 13);
  *   diffusion of φ = k, ε (eqs 23-24), over the fluid neighbours only (no flux into the wall:
- *   sec 4.3, third type): 2 Σ_j D̃_ij (φ_i − φ_j) F_ij V_j / λ, D = ν + ν_t/σ, D̃ the harmonic
- *   mean, F = W'/r, λ the lattice's Laplacian sum (as the viscous term's, advection.cl);
- *   the linearised update (eq 30 and its ε form, eqs 28-29):
- *     k' = (k + Δt (G + D_k)) / (1 + Δt ε/k),  ε' = (ε + Δt (C1 ε/k G + D_ε)) / (1 + Δt C2 ε/k),
- *   and in P, ε' = C_μ^¾ k'^{3/2}/(κ y_p) (eq 14). A numerator that diffusion makes negative is
+ *   sec 4.3, third type): 2 Σ_j D̃_ij (φ_i − φ_j) F_ij V_j / λ, D = ν + ν_t/σ, D̃ the pair's
+ *   mean (wcr_pair_mean, config.cl: harmonic), F = W'/r, λ the lattice's
+ * Laplacian sum (as the viscous term's, advection.cl); the linearised update (eq 30 and its ε form,
+ * eqs 28-29): k' = (k + Δt (G + D_k)) / (1 + Δt ε/k),  ε' = (ε + Δt (C1 ε/k G + D_ε)) / (1 + Δt C2
+ * ε/k), and in P, ε' = C_μ^¾ k'^{3/2}/(κ y_p) (eq 14). A numerator that diffusion makes negative is
  *   clipped to a millionth of the old value and counted (clips[0] for k, clips[1] for ε).
  * C_μ 0.09, C1 1.44, C2 1.92, σ_k 1, σ_ε 1.3.
  *
@@ -152,8 +152,8 @@ __kernel void wcr_turb_transport(const uint n, const struct grid g, __global con
     gyy += vij.y * gw.y;
     const real ntj = nu_t[j];
     const real dkj = nu + ntj / KE_SK, dej = nu + ntj / KE_SE;
-    dk += R(2.0) * dki * dkj / (dki + dkj) * (ki - k[j]) * f;
-    de += R(2.0) * dei * dej / (dei + dej) * (ei - eps[j]) * f;
+    dk += R(2.0) * wcr_pair_mean(dki, dkj) * (ki - k[j]) * f;
+    de += R(2.0) * wcr_pair_mean(dei, dej) * (ei - eps[j]) * f;
   }
   /* ∇_i W_ij = F r_ij with r_ij = x_i − x_j, so Σ v_ij ⊗ ∇W V is −∇v: flip */
   gxx = -gxx;
