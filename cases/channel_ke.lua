@@ -37,18 +37,20 @@ end
 wall { {L, off}, {0, off}, fluid = "right", group = "floor" }
 wall { {0, H - off}, {L, H - off}, fluid = "right", group = "ceiling" }
 local ub = 1.0653
-if init == 1 then -- the 1-D reference's u, k and ε at the particle's distance from the wall
-  local ref = reference("tests/data/channel1d_re_tau543.csv", "y", "u", "k", "epsilon")
-  local function at(col, y)
-    local d = math.max(math.min(y, H - y), y_p)
-    local ys, vs = ref.y, ref[col]
-    for j = 2, #ys do
-      if ys[j] >= d then
-        return vs[j - 1] + (vs[j] - vs[j - 1]) * (d - ys[j - 1]) / (ys[j] - ys[j - 1])
-      end
+-- the 1-D reference (distance from the wall y, from y_p to δ) and its linear interpolation
+local ref = reference("tests/data/channel1d_re_tau543.csv", "y", "u", "u_plus", "k", "epsilon")
+local function ref_at(col, d)
+  local ys, vs = ref.y, ref[col]
+  d = math.max(d, ys[1])
+  for j = 2, #ys do
+    if ys[j] >= d then
+      return vs[j - 1] + (vs[j] - vs[j - 1]) * (d - ys[j - 1]) / (ys[j] - ys[j - 1])
     end
-    return vs[#vs]
   end
+  return vs[#vs]
+end
+if init == 1 then -- the reference's u, k and ε at the particle's distance from the wall
+  local function at(col, y) return ref_at(col, math.min(y, H - y)) end
   fill { off, off, L, H - off, velocity = function(x, y) return at("u", y), 0 end,
          k = function(x, y) return at("k", y) end,
          epsilon = function(x, y) return at("epsilon", y) end }
@@ -76,21 +78,11 @@ function metrics(sim)
   local bulk, count = 0, 0
   for i = 1, #u do bulk, count = bulk + u[i], count + 1 end
   m.bulk = bulk / count
-  local refd = sim.reference("tests/data/channel1d_re_tau543.csv", "y", "u_plus")
-  local function interp(yy)
-    local ys, us = refd.y, refd.u_plus
-    for k = 2, #ys do
-      if ys[k] >= yy then
-        return us[k - 1] + (us[k] - us[k - 1]) * (yy - ys[k - 1]) / (ys[k] - ys[k - 1])
-      end
-    end
-    return us[#us]
-  end
   local worst, sq = 0, 0
   for r = 1, half do
     local yy = y_p + (r - 1) * dr
     local up = rows[r].sum / math.max(rows[r].n, 1) / u_tau
-    local want = interp(yy)
+    local want = ref_at("u_plus", yy)
     local dev = math.abs(up - want) / want
     worst = math.max(worst, dev)
     sq = sq + dev * dev

@@ -25,13 +25,7 @@ scratch=${OF_SCRATCH:-/tmp/of_channel_ke}
 out=${OF_OUT:-$root/tests/data}
 export PYTHONDONTWRITEBYTECODE=1 # post.py imports setup.py: no __pycache__ in the source tree
 
-# OpenFOAM: Debian's package, its environment from etc/bashrc (noisy, and not -u clean)
-if ! command -v blockMesh > /dev/null; then
-  if [ "$(id -u)" = 0 ]; then apt-get install -y openfoam; else sudo apt-get install -y openfoam; fi
-fi
-rc=/usr/share/openfoam/etc/bashrc
-[ -f "$rc" ] || rc=$(dpkg -L openfoam | grep 'etc/bashrc$' | head -n 1)
-source "$rc" > /dev/null 2>&1 || true
+source "$here/../env.sh" # OpenFOAM v1912 and its environment
 set -u
 
 run() { # one run: copy the template, mesh it, write its entry profile, solve

@@ -19,13 +19,7 @@ root=$(cd "$here/../../../.." && pwd)
 scratch=${OF_SCRATCH:-/tmp/of_sc}
 all=(re20_d40 re20_d50 re20_d60 re100_d40 re100_d50)
 
-# OpenFOAM: Debian's package, its environment from etc/bashrc (noisy, and not -u clean)
-if ! command -v blockMesh > /dev/null; then
-  if [ "$(id -u)" = 0 ]; then apt-get install -y openfoam; else sudo apt-get install -y openfoam; fi
-fi
-rc=/usr/share/openfoam/etc/bashrc
-[ -f "$rc" ] || rc=$(dpkg -L openfoam | grep 'etc/bashrc$' | head -n 1)
-source "$rc" > /dev/null 2>&1 || true
+source "$here/../env.sh" # OpenFOAM v1912 and its environment
 set -u
 
 run() { # re<Re>_d<n>: copy the case, mesh it, solve
