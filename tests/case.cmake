@@ -857,6 +857,12 @@ clsph_run_test(run_channel_ke ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SETS nf=2
 # fill { k, epsilon } needs a turbulence model; k and ε of a fill must be positive
 clsph_cli_test(turbulence_fill_without_model ARGS info ${bad_turb} --set what=7 RC 2
                REGEX "fill \\{ k, epsilon \\}: the case declares no turbulence")
+clsph_cli_test(turbulence_unknown_model ARGS info ${bad_turb} --set what=9 RC 2
+               REGEX "turbulence: 'k-omega' is not a valid model; known: k-epsilon")
+clsph_cli_test(turbulence_k_not_number ARGS info ${bad_turb} --set what=10 RC 2
+               REGEX "turbulence: 'k' must be a number")
+clsph_cli_test(case_reference_missing ARGS info ${bad_turb} --set what=11 RC 2
+               REGEX "reference: cannot read .*tests/data/no_such_table.csv")
 clsph_cli_test(turbulence_fill_negative ARGS info ${bad_turb} --set what=8 RC 2
                REGEX "fill 'fill 1': epsilon must be positive, not -1")
 # The k-ε model's diffusion alone (tests/case/ke_diffusion.lua): a cosine mode of k in a fluid at

@@ -1834,10 +1834,10 @@ static int l_reference(lua_State *L)
   const char *names[8];
   double *cols[8];
   char path[2048];
-  if (ncol < 1 || ncol > 8) return luaL_error(L, "sim.reference: name 1 to 8 columns of %s", file);
+  if (ncol < 1 || ncol > 8) return luaL_error(L, "reference: name 1 to 8 columns of %s", file);
   for (int c = 0; c < ncol; ++c) names[c] = luaL_checkstring(L, c + 2);
   reference_path(file, path, sizeof path);
-  const int n = read_columns(L, "sim.reference", path, ncol, names, cols);
+  const int n = read_columns(L, "reference", path, ncol, names, cols);
   lua_createtable(L, 0, ncol);
   for (int c = 0; c < ncol; ++c) {
     lua_createtable(L, n, 0);

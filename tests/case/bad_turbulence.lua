@@ -1,7 +1,8 @@
 -- A channel that declares turbulence in ways the loader must refuse (what = ...):
 --   1 a scheme without a turbulence model, 2 y_p in the viscous sublayer, 3 k without epsilon,
 --   4 k and epsilon whose length scale exceeds the domain, 5 nu_t without a delay, 6 k < 0,
---   7 fill { k, epsilon } without turbulence { }, 8 fill { epsilon } < 0
+--   7 fill { k, epsilon } without turbulence { }, 8 fill { epsilon } < 0, 9 an unknown model,
+--   10 k not a number, 11 a reference table that does not exist
 param { what = 1 }
 domain { 0, 0, 1, 2, periodic = "x" }
 particles { dr = 0.1 }
@@ -20,6 +21,12 @@ elseif what == 6 then
   turbulence { model = "k-epsilon", k = -k, epsilon = eps }
 elseif what == 7 then
   -- no turbulence { }
+elseif what == 9 then
+  turbulence { model = "k-omega", k = k, epsilon = eps }
+elseif what == 10 then
+  turbulence { model = "k-epsilon", k = "big", epsilon = eps }
+elseif what == 11 then
+  local r = reference("tests/data/no_such_table.csv", "y")
 else
   turbulence { model = "k-epsilon", k = k, epsilon = eps }
 end
