@@ -14,11 +14,19 @@
 -- tau_w_dev, the walls' viscous force (the wall model's shear, eq 39) over the second half of
 -- the run per unit length, over ρ u_τ², less 1 (0 once the walls carry the body force), and
 -- wall_pressure_x, the pressure part along x in the same unit (0 on a flat wall).
+-- ub > 0 holds the bulk velocity at ub instead (flow-rate control of the body force, Leroy et
+-- al. eqs 67-68; Lee & Moser's U_b = 1 at ub = 1, Re = 2 δ U_b/ν = 20000): u_tau, the walls'
+-- friction velocity over the second half of the run, against the 1-D solver's at U_b = 1
+-- (0.051372: tests/reference/channel1d --bulk 1) and OpenFOAM's (0.052403, 20 cells across,
+-- tests/data/openfoam_channel_straight.csv), as u_tau_dev_1d and u_tau_dev_fv; the u+ metrics
+-- then take the measured u_tau against the 1-D profile of the fixed-u_τ run (u+ of a log law
+-- shifts by (1/κ) ln(Re_τ ratio) at most: 0.03 here).
 -- The run is the last instant's (no time average yet).
 -- tvf: the transport-velocity correction (0 off, 1 full, 2 limited: the scheme's default);
 -- turb = 0 runs the same scene laminar (for the model's cost: `--profile`); ws ≥ 0 sets w_s of
--- eq 40 (the scheme's 0.1 otherwise).
-param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1 }
+-- eq 40 (the scheme's 0.1 otherwise); md ≥ 0 sets the scheme's momentum_dissipation (0 off,
+-- 1 riemann, 2 reconstructed: the default under the model).
+param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1, md = -1, ub = 0 }
 
 local delta, nu, u_tau, kappa, cmu = 1.0, 1e-4, 0.0543496, 0.41, 0.09
 local H = 2 * delta
@@ -28,15 +36,20 @@ local nx = math.max(math.floor(1.0 / dr + 0.5), 8)
 local L = nx * dr
 domain { 0, off, L, H - off, periodic = "x" }
 particles { dr = dr }
-scheme { "wcsph-riemann", ard = ard, transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
-fluid { density = 1, viscosity = nu, body_force = {u_tau * u_tau / delta, 0} }
+scheme { "wcsph-riemann", ard = ard, momentum_dissipation = ({"off", "riemann", "reconstructed"})[md + 1], transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
+if ub > 0 then
+  fluid { density = 1, viscosity = nu,
+          flow_rate_control = { velocity = ub, slice = { 0, L * (1 - 1e-9) } } }
+else
+  fluid { density = 1, viscosity = nu, body_force = {u_tau * u_tau / delta, 0} }
+end
 if turb == 1 then
   turbulence { model = "k-epsilon", y_p = y_p, k = u_tau * u_tau / math.sqrt(cmu),
                epsilon = u_tau ^ 3 / (kappa * 0.1 * delta), wall_weight = ws >= 0 and ws or nil }
 end
 wall { {L, off}, {0, off}, fluid = "right", group = "floor" }
 wall { {0, H - off}, {L, H - off}, fluid = "right", group = "ceiling" }
-local ub = 1.0653
+local ub_ref = 1.0653 -- the 1-D reference's bulk velocity at u_τ = 0.0543496
 -- the 1-D reference (distance from the wall y, from y_p to δ) and its linear interpolation
 local ref = reference("tests/data/channel1d_re_tau543.csv", "y", "u", "u_plus", "k", "epsilon")
 local function ref_at(col, d)
@@ -50,22 +63,45 @@ local function ref_at(col, d)
   return vs[#vs]
 end
 if init == 1 then -- the reference's u, k and ε at the particle's distance from the wall
-  local function at(col, y) return ref_at(col, math.min(y, H - y)) end
-  fill { off, off, L, H - off, velocity = function(x, y) return at("u", y), 0 end,
+  -- under flow-rate control the profile scaled to ub (k as its square, ε as its cube)
+  local sc = ub > 0 and ub / ub_ref or 1
+  local scale = {u = sc, k = sc * sc, epsilon = sc ^ 3}
+  local function at(col, y) return ref_at(col, math.min(y, H - y)) * scale[col] end
+  fill { 0, off, L, H - off, velocity = function(x, y) return at("u", y), 0 end,
          k = function(x, y) return at("k", y) end,
          epsilon = function(x, y) return at("epsilon", y) end }
 else -- the 1/7 power law of the same mean, k and ε of turbulence { }
-  fill { off, off, L, H - off, velocity = function(x, y)
+  fill { 0, off, L, H - off, velocity = function(x, y)
     local d = math.min(y, H - y) / delta
-    return 8 / 7 * ub * math.max(d, 1e-3) ^ (1 / 7), 0
+    return 8 / 7 * ub_ref * math.max(d, 1e-3) ^ (1 / 7), 0
   end }
 end
 force { "floor" }
 force { "ceiling" }
 run { t_end = t_end, output_every = every }
 
+-- a column of a table against y, linear (flat beyond the ends)
+local function interp(ys, vs, y)
+  if y <= ys[1] then return vs[1] end
+  for j = 2, #ys do
+    if ys[j] >= y then return vs[j - 1] + (vs[j] - vs[j - 1]) * (y - ys[j - 1]) / (ys[j] - ys[j - 1]) end
+  end
+  return vs[#ys]
+end
+-- Lee & Moser's u+ and OpenFOAM's straight channel at the same U_b, ν and y_p (setting a, the
+-- 20-cell mesh whose cell centres are the nf = 20 rows)
+local dns = reference("tests/data/channel_dns_LM550.csv", "y_over_delta", "U_plus")
+local foam = reference("tests/data/openfoam_channel_straight.csv", "setting", "y_p", "mesh", "y",
+                       "U", "u_tau")
+local fv_y, fv_up = {}, {}
+for j = 1, #foam.y do
+  if foam.setting[j] == "a" and foam.y_p[j] == 0.05 and foam.mesh[j] == "uniform_20" then
+    fv_y[#fv_y + 1], fv_up[#fv_up + 1] = foam.y[j], foam.U[j] / foam.u_tau[j]
+  end
+end
+
 function metrics(sim)
-  local x, y = sim.field("pos", 1).value, sim.field("pos", 2).value
+  local y = sim.field("pos", 2).value
   local u = sim.field("vel", 1).value
   local rows, half = {}, math.floor(nf / 2)
   for r = 1, half do rows[r] = {sum = 0, n = 0} end
@@ -75,26 +111,48 @@ function metrics(sim)
     if r >= 1 and r <= half then rows[r].sum, rows[r].n = rows[r].sum + u[i], rows[r].n + 1 end
   end
   local m = {}
+  -- the walls' friction over the second half of the run: u_τ,wall² = F_x/(2 L ρ) against the
+  -- body force's u_τ² (a steady periodic channel's walls carry it all)
+  local f, c = sim.force("floor", t_end / 2), sim.force("ceiling", t_end / 2)
+  local tau = (f.viscous_x + c.viscous_x) / (2 * L)
+  local ut = u_tau
+  if ub > 0 then
+    ut = math.sqrt(math.max(tau, 0))
+    m.u_tau = ut
+    m.u_tau_dev_1d = ut / 0.051372 - 1
+    m.u_tau_dev_fv = ut / 0.052403 - 1
+  else
+    m.tau_w_dev = tau / (u_tau * u_tau) - 1
+    m.wall_pressure_x = (f.pressure_x + c.pressure_x) / (2 * L) / (u_tau * u_tau)
+  end
   local bulk, count = 0, 0
   for i = 1, #u do bulk, count = bulk + u[i], count + 1 end
   m.bulk = bulk / count
-  local worst, sq = 0, 0
+  -- per row: against the 1-D reference, Lee & Moser (rows 2 on: the first row is the wall
+  -- function's, whose log law stands above the DNS's buffer layer at y+ = 27 by 4%, OpenFOAM's
+  -- too) and, under flow-rate control, OpenFOAM's u+ at the same U_b
+  local worst, sq, dworst, fworst, fsq = 0, 0, 0, 0, 0
   for r = 1, half do
     local yy = y_p + (r - 1) * dr
-    local up = rows[r].sum / math.max(rows[r].n, 1) / u_tau
+    local up = rows[r].sum / math.max(rows[r].n, 1) / ut
     local want = ref_at("u_plus", yy)
     local dev = math.abs(up - want) / want
     worst = math.max(worst, dev)
     sq = sq + dev * dev
+    if r > 1 then dworst = math.max(dworst, math.abs(up / interp(dns.y_over_delta, dns.U_plus, yy) - 1)) end
+    local fdev = up / interp(fv_y, fv_up, yy) - 1
+    fworst, fsq = math.max(fworst, math.abs(fdev)), fsq + fdev * fdev
     m[("u_plus_row%d"):format(r)] = up
   end
   m.u_plus_dev_max = worst
   m.u_plus_rms = math.sqrt(sq / half)
-  m.bulk_dev = m.bulk / ub - 1
-  -- the walls' friction over the second half of the run: u_τ,wall² = F_x/(2 L ρ) against the
-  -- body force's u_τ² (a steady periodic channel's walls carry it all)
-  local f, c = sim.force("floor", t_end / 2), sim.force("ceiling", t_end / 2)
-  m.tau_w_dev = (f.viscous_x + c.viscous_x) / (2 * L) / (u_tau * u_tau) - 1
-  m.wall_pressure_x = (f.pressure_x + c.pressure_x) / (2 * L) / (u_tau * u_tau)
+  m.u_plus_dns_dev_max = dworst
+  m.u_plus_dns_dev_row1 = m.u_plus_row1 / interp(dns.y_over_delta, dns.U_plus, y_p) - 1
+  if ub > 0 then
+    m.u_plus_fv_dev_max = fworst
+    m.u_plus_fv_rms = math.sqrt(fsq / half)
+  else
+    m.bulk_dev = m.bulk / ub_ref - 1
+  end
   return m
 end

@@ -16,6 +16,10 @@ clsph_add_test(render_run_and_snapshots LABELS render case COMMAND ${CMAKE_COMMA
                -DCHOICE=${RENDER_DIR}/render_choice.lua -DOUT=${RENDER_OUT}/runs
                -P ${RENDER_DIR}/run_and_render.cmake)
 
+clsph_add_test(render_turbulence_fields LABELS render case COMMAND ${CMAKE_COMMAND}
+               -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_CURRENT_SOURCE_DIR}/case/inflow_ke.lua
+               -DOUT=${RENDER_OUT}/turbulence -P ${RENDER_DIR}/turbulence_fields.cmake)
+
 # Bad input: exit status 2 and a message that says what is wrong.
 function(clsph_render_cli_test name)
   clsph_cli_test(${name} ${ARGN})

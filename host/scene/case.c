@@ -919,7 +919,8 @@ static int l_circle(lua_State *L)
 
 static int section_common(lua_State *L, enum scene_section_kind kind)
 {
-  static const char *const in_keys[] = {"velocity", "profile", "layers", "name", "ramp", NULL};
+  static const char *const in_keys[] = {"velocity", "profile", "layers",  "name",
+                                        "ramp",     "k",       "epsilon", NULL};
   static const char *const out_keys[] = {"velocity", "profile", "layers", "name", "ramp", NULL};
   static const char *const profiles[] = {"", "uniform", "parabolic", NULL};
   static const char *const out_profiles[] = {"natural", "uniform", "parabolic", NULL};
@@ -956,7 +957,22 @@ static int section_common(lua_State *L, enum scene_section_kind kind)
     if (!isfinite(c->velocity)) luaL_error(L, "inflow: needs velocity = (m/s)");
     int p = get_choice(L, 1, fn, "profile", profiles, 1);
     c->profile = p == 2 ? SCENE_PARABOLIC : SCENE_UNIFORM;
-  } else { /* natural exit (n·∇u = 0) unless a profile is prescribed */
+    /* the k-ε model's entry values (checked against turbulence { } at finish) */
+    c->k = get_number(L, 1, fn, "k", NAN);
+    c->epsilon = get_number(L, 1, fn, "epsilon", NAN);
+    if (!isnan(c->k) && !(isfinite(c->k) && c->k > 0.0))
+      luaL_error(L, "inflow '%s': k = %f must be a positive turbulent kinetic energy (m²/s²)",
+                 c->name, c->k);
+    if (!isnan(c->epsilon) && !(isfinite(c->epsilon) && c->epsilon > 0.0))
+      luaL_error(L, "inflow '%s': epsilon = %f must be a positive dissipation rate (m²/s³)",
+                 c->name, c->epsilon);
+    if (isnan(c->k) != isnan(c->epsilon))
+      luaL_error(L,
+                 "inflow '%s': give k and epsilon together (%s alone: the other would come from "
+                 "turbulence { }, and the pair need not belong together)",
+                 c->name, isnan(c->k) ? "epsilon" : "k");
+  } else {
+    c->k = c->epsilon = NAN; /* natural exit (n·∇u = 0) unless a profile is prescribed */
     int p = get_choice(L, 1, fn, "profile", out_profiles, 0);
     c->profile = p == 2 ? SCENE_PARABOLIC : p == 1 ? SCENE_UNIFORM : 0;
     c->velocity = get_number(L, 1, fn, "velocity", NAN);
@@ -1378,6 +1394,25 @@ static enum clsph_status finish(const char *path, struct loader *ld)
                 "%s:%d: turbulence: y_p = %g m is more than half the domain (%g m)", path, t->line,
                 y_p, size);
   }
+  /* an entry's k and ε: only under the model, and a length scale that fits the entry */
+  for (int q = 0; q < s->nsections; ++q) {
+    const struct scene_section *c = &s->sections[q];
+    if (c->kind != SCENE_INFLOW || isnan(c->k)) continue;
+    CLSPH_CHECK(s->turb.on, CLSPH_E_INPUT,
+                "%s:%d: inflow '%s': k and epsilon belong to the k-epsilon model: declare "
+                "turbulence { model = \"k-epsilon\", ... } or drop them",
+                path, c->line, c->name);
+    const double width = hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
+    const double ell = pow(0.09, 0.75) * pow(c->k, 1.5) / c->epsilon,
+                 nut = 0.09 * c->k * c->k / c->epsilon;
+    CLSPH_CHECK(ell <= width, CLSPH_E_INPUT,
+                "%s:%d: inflow '%s': k = %g and epsilon = %g are inconsistent: their length scale "
+                "C_mu^3/4 k^3/2 / epsilon = %g m is larger than the entry (%g m wide), an eddy "
+                "viscosity C_mu k^2/epsilon = %g m²/s (%.3g times nu); raise epsilon or lower k "
+                "(a length scale of about 0.07 of the entry's width is usual)",
+                path, c->line, c->name, c->k, c->epsilon, ell, width, nut,
+                s->nu > 0.0 ? nut / s->nu : HUGE_VAL);
+  }
   /* probes and profiles sample the fluid: outside the domain there is none (a column of NaN) */
   for (int k = 0; k < s->nprobes; ++k) {
     struct scene_probe *p = &s->probes[k];
@@ -1746,18 +1781,33 @@ static int l_spectrum_peak(lua_State *L)
   return 1;
 }
 
+/* Free what read_columns_text made for n rows (text may be NULL). */
+static void reference_free(int ncol, int n, double **cols, char ***text)
+{
+  for (int c = 0; c < ncol; ++c) {
+    free(cols[c]);
+    cols[c] = NULL;
+    if (text == NULL || text[c] == NULL) continue;
+    for (int i = 0; i < n; ++i) free(text[c][i]);
+    free(text[c]);
+    text[c] = NULL;
+  }
+}
+
 /* Columns names[0 .. ncol) of a reference CSV ('#' comment lines, then a header row) into cols
- * (malloc'd arrays, NaN where a row lacks the column); returns the number of rows. `fn` names the
- * caller in messages. */
-static int read_columns(lua_State *L, const char *fn, const char *path, int ncol,
-                        const char *const *names, double **cols)
+ * (malloc'd arrays, NaN where a row lacks the column or its cell is no number); returns the number
+ * of rows. With `text` not NULL, text[c] is a malloc'd array of the cells that are no number
+ * (malloc'd copies; NULL where the cell is one). `fn` names the caller in messages. */
+static int read_columns_text(lua_State *L, const char *fn, const char *path, int ncol,
+                             const char *const *names, double **cols, char ***text)
 {
   FILE *f = fopen(path, "r");
   char line[4096];
   int idx[8], n = 0, cap = 0, header = 0;
-  for (int c = 0; c < ncol; ++c) {
+  for (int c = 0; c < ncol && c < 8; ++c) {
     idx[c] = -1;
     cols[c] = NULL;
+    if (text != NULL) text[c] = NULL;
   }
   if (ncol > 8) return luaL_error(L, "%s: at most 8 columns", fn);
   if (f == NULL) return luaL_error(L, "%s: cannot read %s", fn, path);
@@ -1782,23 +1832,48 @@ static int read_columns(lua_State *L, const char *fn, const char *path, int ncol
       cap = cap ? 2 * cap : 32;
       for (int c = 0; c < ncol; ++c) {
         double *a = realloc(cols[c], (size_t)cap * sizeof *a);
-        if (a == NULL) {
-          for (int k = 0; k < ncol; ++k) free(cols[k]);
+        char **b = text != NULL ? realloc(text[c], (size_t)cap * sizeof *b) : NULL;
+        if (a != NULL) cols[c] = a;
+        if (b != NULL) text[c] = b;
+        if (a == NULL || (text != NULL && b == NULL)) {
+          reference_free(ncol, n, cols, text);
           fclose(f);
           return luaL_error(L, "out of memory");
         }
-        cols[c] = a;
       }
     }
-    for (int c = 0; c < ncol; ++c) cols[c][n] = NAN;
+    for (int c = 0; c < ncol; ++c) {
+      cols[c][n] = NAN;
+      if (text != NULL) text[c][n] = NULL;
+    }
     for (char *t = strtok_r(line, ",\r\n", &save); t != NULL;
          t = strtok_r(NULL, ",\r\n", &save), ++col)
-      for (int c = 0; c < ncol; ++c)
-        if (col == idx[c]) cols[c][n] = strtod(t, NULL);
+      for (int c = 0; c < ncol; ++c) {
+        if (col != idx[c]) continue;
+        char *end = NULL;
+        const double v = strtod(t, &end);
+        while (end != NULL && (*end == ' ' || *end == '\t')) ++end;
+        if (end != t && *end == '\0') {
+          cols[c][n] = v;
+        } else if (text != NULL) {
+          text[c][n] = strdup(t);
+          if (text[c][n] == NULL) {
+            reference_free(ncol, n + 1, cols, text);
+            fclose(f);
+            return luaL_error(L, "out of memory");
+          }
+        }
+      }
     ++n;
   }
   fclose(f);
   return n;
+}
+
+static int read_columns(lua_State *L, const char *fn, const char *path, int ncol,
+                        const char *const *names, double **cols)
+{
+  return read_columns_text(L, fn, path, ncol, names, cols, NULL);
 }
 
 /* Columns `coord` and `value` of a reference CSV (read_columns). */
@@ -1826,7 +1901,8 @@ static void reference_path(const char *file, char *path, size_t size)
 }
 
 /* t = sim.reference(csv, column, ...): columns of a reference CSV ('#' comment lines, a header
- * row; the path as for profile_error) as arrays t[column], indexed from 1, one entry per row. */
+ * row; the path as for profile_error) as arrays t[column], indexed from 1, one entry per row: a
+ * number, or the cell's text where it is no number. */
 static int l_reference(lua_State *L)
 {
   const char *file = luaL_checkstring(L, 1);
@@ -1837,17 +1913,21 @@ static int l_reference(lua_State *L)
   if (ncol < 1 || ncol > 8) return luaL_error(L, "reference: name 1 to 8 columns of %s", file);
   for (int c = 0; c < ncol; ++c) names[c] = luaL_checkstring(L, c + 2);
   reference_path(file, path, sizeof path);
-  const int n = read_columns(L, "reference", path, ncol, names, cols);
+  char **text[8];
+  const int n = read_columns_text(L, "reference", path, ncol, names, cols, text);
   lua_createtable(L, 0, ncol);
   for (int c = 0; c < ncol; ++c) {
     lua_createtable(L, n, 0);
     for (int i = 0; i < n; ++i) {
-      lua_pushnumber(L, cols[c][i]);
+      if (text[c][i] != NULL)
+        lua_pushstring(L, text[c][i]); /* a cell that is no number: its text */
+      else
+        lua_pushnumber(L, cols[c][i]);
       lua_rawseti(L, -2, i + 1);
     }
     lua_setfield(L, -2, names[c]);
   }
-  for (int c = 0; c < ncol; ++c) free(cols[c]);
+  reference_free(ncol, n, cols, text);
   return 1;
 }
 

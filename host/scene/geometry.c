@@ -1102,7 +1102,9 @@ static enum clsph_status build_section(struct build *b, int k)
       struct particle p = {.x = {lat(s, 0, i), lat(s, 1, j)},
                            .normal = {n[0], n[1]},
                            .kind = sc->kind == SCENE_INFLOW ? KIND_INFLOW : KIND_OUTFLOW,
-                           .group = k};
+                           .group = k,
+                           .k0 = sc->k, /* an entry's k and ε (NAN: turbulence { }'s) */
+                           .eps0 = sc->epsilon};
       const double ap[2] = {p.x[0] - sc->a[0], p.x[1] - sc->a[1]};
       const double along = dot2(ap, t), h = dot2(ap, n);
       if (along < -tol || along > len + tol || h >= -tol || h < -thick) continue;
@@ -1183,8 +1185,9 @@ static enum clsph_status emit(struct build *b, struct geom *g)
     }
     t.p0[i] = p->kind == KIND_FLUID ? p->p0 : (double)NAN;
     t.rho0[i] = p->kind == KIND_FLUID ? p->rho0 : (double)NAN;
-    t.k0[i] = p->kind == KIND_FLUID ? p->k0 : (double)NAN;
-    t.eps0[i] = p->kind == KIND_FLUID ? p->eps0 : (double)NAN;
+    const int carries = p->kind == KIND_FLUID || p->kind == KIND_INFLOW;
+    t.k0[i] = carries ? p->k0 : (double)NAN;
+    t.eps0[i] = carries ? p->eps0 : (double)NAN;
     t.theta[i] = p->theta;
     t.dist[i] = p->dist;
     t.kind[i] = p->kind;

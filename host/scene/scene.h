@@ -86,6 +86,8 @@ struct scene_section {
   int layers;      /* particle layers outside the section (3 unless given) */
   double ramp; /* the prescribed velocity rises as ½(1 − cos(π t/ramp)) until t = ramp, s (0:
                 * at once) */
+  /* an entry's k and ε under the k-ε model, m²/s², m²/s³ (NAN: turbulence { }'s) */
+  double k, epsilon;
   int line;
 };
 

@@ -173,7 +173,9 @@ __kernel void open_layer_velocity(const uint n, const struct grid g,
  * open_layer_velocity: an entry layer particle takes the value of its row's first fluid particle
  * (the zeroth-order extrapolation from the fluid: n·∇a = 0); an exit layer particle takes its
  * section's exit_value (copy_exit = 0: e.g. p = 0, ρ = ρ0 at a natural exit) or, copy_exit = 1,
- * its row's first fluid particle's too. A particle without fluid in its row keeps its value. */
+ * its row's first fluid particle's too; copy_exit = 2: the exit copies, the entry keeps its own
+ * (a prescribed entry value: k and ε of the k-ε model). A particle without fluid in its row keeps
+ * its value. */
 __kernel void open_layer_scalar(const uint n, __global const uint *kind, __global const uint *near,
                                 __global const uint *section, const uint copy_exit,
                                 __global const real *exit_value, __global real *a)
@@ -183,7 +185,7 @@ __kernel void open_layer_scalar(const uint n, __global const uint *kind, __globa
   const uint ki = kind[i];
   if (ki == OPEN_OUTFLOW && copy_exit == 0u) {
     a[i] = exit_value[section[i]];
-  } else if (ki == OPEN_INFLOW || ki == OPEN_OUTFLOW) {
+  } else if ((ki == OPEN_INFLOW && copy_exit != 2u) || ki == OPEN_OUTFLOW) {
     const uint m = near[i];
     if (m != i) a[i] = a[m];
   }

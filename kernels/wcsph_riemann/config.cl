@@ -57,6 +57,9 @@
 #ifndef WCR_WALL_FULL
 #define WCR_WALL_FULL 0
 #endif
+#ifndef WCR_MOM_DISS
+#define WCR_MOM_DISS 1 /* eq 19's dissipative term between fluid pairs (acoustic.cl) */
+#endif
 
 /* r_ij between the nearest images on the periodic axes (the support is shorter than half a
  * period: the grid needs 2 GRID_SUB + 1 cells on a periodic axis) */

@@ -33,7 +33,8 @@
  * eqs 28-29): k' = (k + Δt (G + D_k)) / (1 + Δt ε/k),  ε' = (ε + Δt (C1 ε/k G + D_ε)) / (1 + Δt C2
  * ε/k), and in P, ε' = C_μ^¾ k'^{3/2}/(κ y_p) (eq 14). A numerator that diffusion makes negative is
  *   clipped to a millionth of the old value and counted (clips[0] for k, clips[1] for ε).
- * C_μ 0.09, C1 1.44, C2 1.92, σ_k 1, σ_ε 1.3.
+ * C_μ 0.09, C1 1.44, C2 1.92, σ_k 1, σ_ε 1.3. It stores ∇v (grad: ∂u/∂x, ∂u/∂y, ∂v/∂x, ∂v/∂y),
+ * which the acoustic sub-steps' reconstructed dissipation reads (acoustic.cl, WCR_MOM_DISS = 2).
  *
  * wcr_turb_update: k, ε take the new values and ν_t = C_μ k²/ε (eq 6), or ν_t = nu_fixed while
  * the model waits (sec 5.2's delayed activation: k and ε then stay as they are). */
@@ -101,13 +102,14 @@ __kernel void wcr_turb_transport(const uint n, const struct grid g, __global con
                                  __global const real2 *wall, const real dt, const real nu,
                                  const real inv_lambda, const real y_p, const real r_ext,
                                  const real r_p, const real w_s, __global real *k_new,
-                                 __global real *eps_new, __global uint *clips)
+                                 __global real *eps_new, __global uint *clips, __global real4 *grad)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
   const real ki = k[i], ei = eps[i];
   k_new[i] = ki;
   eps_new[i] = ei;
+  grad[i] = (real4)(R(0.0));
   if (kind[i] != WCR_FLUID) return;
   const realv x = pos[i], vi = vel[i];
   const real di = wall_dist[i], nti = nu_t[i];
@@ -160,6 +162,7 @@ __kernel void wcr_turb_transport(const uint n, const struct grid g, __global con
   gxy = -gxy;
   gyx = -gyx;
   gyy = -gyy;
+  grad[i] = (real4)(gxx, gxy, gyx, gyy); /* for the momentum dissipation (acoustic.cl) */
   dk *= inv_lambda;
   de *= inv_lambda;
   real prod;

@@ -194,6 +194,12 @@ enum clsph_status open_layer_scalar_exits(struct open_sections *o, struct sim *s
   return layer_scalar(o, sim, a, 0u);
 }
 
+enum clsph_status open_layer_scalar_prescribed(struct open_sections *o, struct sim *sim, cl_mem a)
+{
+  if (o->nsec == 0) return CLSPH_OK;
+  return layer_scalar(o, sim, a, 2u);
+}
+
 enum clsph_status open_exit_speed(struct open_sections *o, struct sim *sim, double *speed)
 {
   enum clsph_status st = CLSPH_OK;

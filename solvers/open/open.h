@@ -119,6 +119,11 @@ enum clsph_status open_layer_scalar(struct open_sections *o, struct sim *sim, cl
 enum clsph_status open_layer_scalar_exits(struct open_sections *o, struct sim *sim, cl_mem a,
                                           const double *exit_value);
 
+/** @brief A scalar with prescribed entry values (after open_layer_velocity): the exit layers take
+ *  their row's first fluid particle's value (n·∇a = 0), the entry layers keep theirs (set at the
+ *  start and handed on by open_recycle_copy). */
+enum clsph_status open_layer_scalar_prescribed(struct open_sections *o, struct sim *sim, cl_mem a);
+
 /** @brief The mean normal speed through each section of the fluid in its first row (0 <= h < δr),
  *  in at an entry and out at an exit, m/s, into speed[k] for section k (0 without fluid there). */
 enum clsph_status open_exit_speed(struct open_sections *o, struct sim *sim, double *speed);

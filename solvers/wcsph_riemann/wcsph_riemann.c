@@ -23,6 +23,9 @@
  *                        under gravity), "summation" (ρ = ρ_sum; the default otherwise) or
  *                        "continuity" (no re-initialisation; see read_options for when)
  *   wall_dissipation     "limited" (the fluid pairs' limiter; default) or "full" (sec 4.3)
+ *   momentum_dissipation "riemann" (eq 19's dissipative term between fluid pairs; the default of
+ *                        a laminar scene or one with ARD) or "off" (the default under the k-ε
+ *                        model without ARD; acoustic.cl says why)
  *   outlet               a natural exit's pressure: "characteristic" (default; see open_layers)
  *                        or "fixed" (p = 0: the paper's zero-pressure outlet, which reflects
  *                        sound)
@@ -56,7 +59,7 @@ struct wcr {
   cl_kernel k_config, k_count, k_adv, k_drift, k_mom, k_cont, k_force, k_lattice;
   double c0, p_bg, mass, sigma0, lambda, u_scale;
   double cfl_ad, cfl_ac, tvf_alpha;
-  int tvf, ard, wall_full, cont_riemann, outlet_fixed;
+  int tvf, ard, wall_full, cont_riemann, outlet_fixed, mom_diss;
   cl_uint reinit;
   double vmax;               /* the fluid's largest speed at the last max_dt, m/s */
   int configured;            /* the list and B have been made ... */
@@ -66,7 +69,7 @@ struct wcr {
   /* the k-ε model (turbulence.cl), when the scene declares turbulence { } */
   int turb;
   int f_k, f_eps, f_nut, f_yplus;
-  cl_mem d_frame, d_wallv, d_knew, d_enew, d_nut2, d_clips;
+  cl_mem d_frame, d_wallv, d_knew, d_enew, d_nut2, d_clips, d_grad;
   cl_kernel k_twall, k_ttrans, k_tupd;
   double y_p, w_s, nut_max; /* the wall model's distance and weight; the largest ν_t */
 };
@@ -85,6 +88,7 @@ static const char *const options[] = {"sound_speed",
                                       "ard",
                                       "density",
                                       "wall_dissipation",
+                                      "momentum_dissipation",
                                       "outlet",
                                       "continuity",
                                       "transport_coefficient",
@@ -173,6 +177,18 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   CLSPH_CHECK(ard == 0.0 || ard == 1.0, CLSPH_E_INPUT,
               "%s: wcsph-riemann option ard must be 1 (on) or 0 (off)", sc->case_path);
   w->ard = ard == 1.0;
+  static const char *const mom_names[] = {"off", "riemann", "reconstructed", NULL};
+  CLSPH_TRY(option_choice(sc, "momentum_dissipation", mom_names, sc->turb.on && !w->ard ? 2 : 1,
+                          &w->mom_diss));
+  CLSPH_CHECK(!(w->ard && w->mom_diss != 1), CLSPH_E_INPUT,
+              "%s: wcsph-riemann option momentum_dissipation = \"%s\" contradicts ard = 1, which "
+              "turns the same dissipation into a viscosity (eq 32): drop one of them",
+              sc->case_path, mom_names[w->mom_diss]);
+  CLSPH_CHECK(w->mom_diss != 2 || sc->turb.on, CLSPH_E_INPUT,
+              "%s: wcsph-riemann option momentum_dissipation = \"reconstructed\" needs the "
+              "velocity gradient of the k-ε model (turbulence { model = \"k-epsilon\" }); a "
+              "laminar scene takes \"riemann\" or \"off\"",
+              sc->case_path);
   w->tvf_alpha = 0.2; /* eq 25 */
   /* 0.5 blew the 30² cavity up at its ninth step: the correction overshoots */
   CLSPH_TRY(option_number(sc, "transport_coefficient", 0.0, 0.3, "α of eq 25", &w->tvf_alpha));
@@ -224,10 +240,11 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   }
   if (verbose)
     log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), background "
-             "pressure %.4g Pa, transport velocity %s, ARD %s, density %s, walls' dissipation %s",
+             "pressure %.4g Pa, transport velocity %s, ARD %s, density %s, walls' dissipation %s, "
+             "fluid pairs' momentum dissipation %s",
              w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach, w->p_bg,
-             tvf_names[w->tvf], w->ard ? "on" : "off", dens_names[reinit],
-             wall_names[w->wall_full]);
+             tvf_names[w->tvf], w->ard ? "on" : "off", dens_names[reinit], wall_names[w->wall_full],
+             mom_names[w->mom_diss]);
 done:
   return st;
 }
@@ -261,6 +278,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_MAXN", list_stride(sim)));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_ARD", w.ard));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_FULL", w.wall_full));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_MOM_DISS", w.mom_diss));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_CONT_RIEMANN", w.cont_riemann));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_CONT_NORMAL", w.reinit == WCR_REINIT_OFF));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TURB", sim->scene->turb.on));
@@ -313,6 +331,12 @@ static enum clsph_status turb_create(struct sim *sim, struct wcr *w)
   CLSPH_TRY(add_field(sim, "nu_t", buf, 1, &w->f_nut));
   CLSPH_TRY(add_field(sim, "y_plus", NULL, 1, &w->f_yplus));
   CLSPH_TRY(kern_buffer(sim->dev, cap * 4 * sizeof(real), NULL, &w->d_frame, "wall frames"));
+  /* zero until the model starts (after its delay): the dissipation then takes the plain jump */
+  real *zeros = calloc(cap * 4, sizeof *zeros);
+  CLSPH_CHECK(zeros != NULL, CLSPH_E_NOMEM, "out of memory");
+  st = kern_buffer(sim->dev, cap * 4 * sizeof(real), zeros, &w->d_grad, "velocity gradients");
+  free(zeros);
+  if (st != CLSPH_OK) goto done;
   CLSPH_TRY(kern_buffer(sim->dev, cap * 2 * sizeof(real), NULL, &w->d_wallv, "wall stresses"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(real), NULL, &w->d_knew, "new k"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(real), NULL, &w->d_enew, "new epsilon"));
@@ -508,7 +532,7 @@ static enum clsph_status turbulence(struct sim *sim, struct wcr *w, double dt)
                        KARG(kind), KARG(wd), KARG(w->d_nlist), KARG(w->d_ncount), KARG(k),
                        KARG(eps), KARG(nut), KARG(w->d_frame), KARG(w->d_wallv), KARG(rdt),
                        KARG(nu), KARG(ilam), KARG(yp), KARG(r_ext), KARG(r_p), KARG(ws),
-                       KARG(w->d_knew), KARG(w->d_enew), KARG(w->d_clips)));
+                       KARG(w->d_knew), KARG(w->d_enew), KARG(w->d_clips), KARG(w->d_grad)));
     CLSPH_TRY(kern_launch(sim->dev, w->k_ttrans, ps->n, NULL));
   }
   CLSPH_TRY(KERN_SET(w->k_tupd, KARG(n), KARG(kind), KARG(w->d_knew), KARG(w->d_enew), KARG(active),
@@ -600,10 +624,12 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   cl_mem drho = pset_mem(ps, w->f_drho), wn = pset_mem(ps, w->f_wnormal);
   cl_mem tk = w->turb ? pset_mem(ps, w->f_k) : w->d_none;
   cl_mem nut = w->turb ? pset_mem(ps, w->f_nut) : w->d_none;
+  cl_mem grad = w->turb ? w->d_grad : w->d_none;
   CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(pbg), KARG(mu),
-                     KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn), KARG(grav)));
+                     KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn), KARG(grav),
+                     KARG(grad)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
   CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(w->d_acc),
                      KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist),
@@ -689,7 +715,8 @@ done:
 }
 
 /* After the step's last motion: the recycling, then the state a recycled particle takes over from
- * the entry particle whose place it takes (ρ, p, V; dρ/dt is zero on every layer particle). */
+ * the entry particle whose place it takes (ρ, p, V, and k, ε, ν_t under the k-ε model; dρ/dt is
+ * zero on every layer particle). */
 static enum clsph_status open_recycle_layers(struct sim *sim, struct wcr *w)
 {
   enum clsph_status st = CLSPH_OK;
@@ -697,6 +724,11 @@ static enum clsph_status open_recycle_layers(struct sim *sim, struct wcr *w)
   const int fields[] = {w->f_rho, w->f_p, w->f_drho, sim->f_vol};
   for (size_t k = 0; k < sizeof fields / sizeof *fields; ++k)
     CLSPH_TRY(open_recycle_copy(&w->open, sim, fields[k]));
+  if (w->turb) { /* an entry's k, ε and ν_t */
+    const int turb[] = {w->f_k, w->f_eps, w->f_nut};
+    for (size_t k = 0; k < sizeof turb / sizeof *turb; ++k)
+      CLSPH_TRY(open_recycle_copy(&w->open, sim, turb[k]));
+  }
 done:
   return st;
 }
@@ -711,7 +743,14 @@ static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
     CLSPH_TRY(open_layer_velocity(&w->open, sim));
     CLSPH_TRY(open_exits(sim, w));
   }
-  if (w->turb) CLSPH_TRY(turbulence(sim, w, dt));
+  if (w->turb) {
+    if (w->open.nsec > 0) { /* exits: n·∇k = n·∇ε = 0; entries: their prescribed values */
+      const int fields[] = {w->f_k, w->f_eps, w->f_nut};
+      for (size_t k = 0; k < sizeof fields / sizeof *fields; ++k)
+        CLSPH_TRY(open_layer_scalar_prescribed(&w->open, sim, pset_mem(&sim->ps, fields[k])));
+    }
+    CLSPH_TRY(turbulence(sim, w, dt));
+  }
   CLSPH_TRY(advection(sim, w));
   /* the acoustic sub-steps: equal, at most CFL_ac h/(c0 + |v|max) each */
   const double dt_ac = w->cfl_ac * h / (w->c0 + w->vmax);
@@ -829,7 +868,7 @@ static void wcr_destroy(void *state)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   cl_mem *ms[] = {&w->d_nlist, &w->d_ncount,  &w->d_bmat,  &w->d_sigma, &w->d_prior, &w->d_shift,
                   &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,  &w->d_none,  &w->d_frame,
-                  &w->d_wallv, &w->d_knew,    &w->d_enew,  &w->d_nut2,  &w->d_clips};
+                  &w->d_wallv, &w->d_knew,    &w->d_enew,  &w->d_nut2,  &w->d_clips, &w->d_grad};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
   open_destroy(&w->open);
   free(w->exit_p);

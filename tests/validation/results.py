@@ -144,6 +144,81 @@ def lobovsky_section(runs):
     return out
 
 
+def rans_section(runs):
+    """The k-ε RANS model of wcsph-riemann (Wang, Sun & Hu sec 5.1, 5.3): the fully developed
+    channel (cases/channel_ke.lua) against the 1-D solver, OpenFOAM and Lee & Moser's DNS, and
+    the half converging-diverging channel (cases/channel_hcd.lua) against OpenFOAM, ARD on and
+    off over resolutions."""
+    chan = sorted((s for s in runs if s["case"] == "channel_ke"),
+                  key=lambda s: (s["parameters"].get("ub", 0), s["parameters"].get("nf", 0),
+                                 s["parameters"].get("md", -1)))
+    hcd = sorted((s for s in runs if s["case"] == "channel_hcd"),
+                 key=lambda s: (s["parameters"].get("ard", 1), s["parameters"].get("nf", 0)))
+    if not chan and not hcd:
+        return []
+
+    def pct(m, k):
+        return f"{100 * m[k]:+.2f}%" if k in m else "–"
+
+    def mag(m, k):
+        return f"{100 * m[k]:.2f}%" if k in m else "–"
+    out = []
+    md_names = {-1: "default", 0: "off", 1: "riemann", 2: "reconstructed"}
+    if chan:
+        out += ["", "## k-ε channel, fully developed (Wang, Sun & Hu sec 5.1)", "",
+                "Lee & Moser's channel (δ = 1, ν = 1e-4, U_b = 1 under flow-rate control, `ub = 1`; "
+                "or u_τ = 0.05435 fixed), y_p = 0.05, N_f rows across with the boundary offset. u_τ "
+                "from the walls' friction over the second half of the run, against the 1-D solver "
+                "(0.051372) and OpenFOAM's 20-cell run (0.052403); u+ per row against the DNS "
+                "(rows 2 on; row 1 apart: the wall function's log law at y+ = 27 stands above the "
+                "DNS's buffer layer), OpenFOAM and the 1-D solver. The paper: u+ within 3.1% (N_f = "
+                "20) and 0.75% (N_f = 40) of the DNS, u_τ 0.94% over its FVM's. "
+                "Chart: [channel_ke_uplus.png](channel_ke_uplus.png).", "",
+                "| N_f | U_b | momentum dissipation | t_end | u_τ | vs 1-D | vs OpenFOAM | u+ vs DNS "
+                "(rows 2+) | u+ vs DNS row 1 | u+ vs OpenFOAM | u+ vs 1-D | bulk | wall s "
+                "| particle-steps/s |",
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        for s in chan:
+            p, m = s["parameters"], s.get("metrics", {})
+            ub = f"{p['ub']:g}" if p.get("ub", 0) > 0 else "(u_τ fixed)"
+            ut = f"{m['u_tau']:.5f}" if "u_tau" in m else "0.05435 (fixed)"
+            out.append(f"| {p.get('nf', 0):g} | {ub} | {md_names.get(int(p.get('md', -1)), '?')} "
+                       f"| {p.get('t_end', 0):g} | {ut} | {pct(m, 'u_tau_dev_1d')} "
+                       f"| {pct(m, 'u_tau_dev_fv')} | {mag(m, 'u_plus_dns_dev_max')} "
+                       f"| {pct(m, 'u_plus_dns_dev_row1')} | {mag(m, 'u_plus_fv_dev_max')} "
+                       f"| {mag(m, 'u_plus_dev_max')} | {m.get('bulk', float('nan')):.4f} "
+                       f"| {wall(s)} | {s['particle_steps_per_second']:.3g} |")
+    if hcd:
+        out += ["", "## k-ε half converging-diverging channel (Wang, Sun & Hu sec 5.3)", "",
+                "Re = 40000, y_p = 0.025, SPHinXsys's uniform entry; the profiles along x = 5 "
+                "(over the platform) and x = 9.5, averaged over the last `avg` s, against OpenFOAM "
+                "v1912 (the same entry, model and wall functions): RMS of (u − u_FV)/U_b and of "
+                "(k − k_FV) over the line's largest k_FV; the share of the x = 9.5 points with "
+                "backflow (OpenFOAM's: 0.125); the disturbance, the RMS along the line of u's "
+                "spread in time over U_b (a steady RANS flow holds still). The paper: without ARD "
+                "the disturbance grows with resolution (figs 24-26). "
+                "Chart: [channel_hcd_profiles.png](channel_hcd_profiles.png).", "",
+                "| ARD | N_f | status | t_end (avg) | u RMS x=5 / 9.5 | k RMS x=5 / 9.5 "
+                "| backflow x=9.5 | u unsteady x=5 / 9.5 | k unsteady x=5 / 9.5 | ARD indicator "
+                "| particles | wall s | particle-steps/s |",
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        for s in hcd:
+            p, m = s["parameters"], s.get("metrics", {})
+
+            def two(a, b, fmt=".3f"):
+                return " / ".join(format(m[k], fmt) if k in m else "–" for k in (a, b))
+            out.append(f"| {'on' if p.get('ard', 1) else 'off'} | {p.get('nf', 0):g} "
+                       f"| {s['status']} | {p.get('t_end', 0):g} ({p.get('avg', 0):g}) "
+                       f"| {two('u_rms_platform', 'u_rms_exit')} "
+                       f"| {two('k_rms_platform', 'k_rms_exit')} "
+                       f"| {m.get('backflow_exit', float('nan')):.3f} "
+                       f"| {two('u_unsteady_platform', 'u_unsteady_exit', '.4f')} "
+                       f"| {two('k_unsteady_platform', 'k_unsteady_exit')} "
+                       f"| {m.get('ard_mean', float('nan')):.2f} | {s['particles']:g} "
+                       f"| {wall(s)} | {s['particle_steps_per_second']:.3g} |")
+    return out
+
+
 def steps_run(s):
     """Steps this run's wall time covers: a restarted run's count from its checkpoint."""
     return s["steps"] - s.get("restarted_at_step", 0)
@@ -450,6 +525,7 @@ def main():
     lines += square_cylinder_section(runs)
     lines += wedge_section(runs)
     lines += lobovsky_section(runs)
+    lines += rans_section(runs)
     lines += profile_section(runs)
     devices = sorted({s["device"] for s in runs})
     lines += ["", f"Device: {', '.join(devices)}.", ""]

@@ -128,6 +128,8 @@ for dr in 0.1 0.05 0.025; do
 done
 run dam_break_dsph_dp0.01_wcsph_riemann dam_break_dsph dp=0.01
 python3 tests/validation/results.py "$out" tests/validation/RESULTS.md
+# the k-ε RANS runs (their own folder and RESULTS_rans.md)
+tests/validation/run_rans.sh "$build"
 # accuracy against cost and stability maps (tests/harness/studies.txt): CSVs and charts
 for study in "accuracy cavity_re100" "accuracy cylinder_array" "stability cavity_re_cfl" \
   "accuracy square_cylinder" "stability ard_cavity_re1000" "stability ard_dam_break"; do

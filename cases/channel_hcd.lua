@@ -1,0 +1,174 @@
+-- Half converging-diverging (HCD) channel under the k-ε RANS model of wcsph-riemann (Wang, Sun &
+-- Hu sec 5.3; the geometry and monitoring lines of SPHinXsys's 2d_turbulent_HCD_channel): H = 2,
+-- a flat upper wall at y = H, the lower wall y = 0 with a platform: a 30° ramp from x = 3 to 4.5,
+-- the top y = 1.5 tan 30° = 0.866 from 4.5 to 5.5, a ramp down to x = 7; entry at x = 0, exit at
+-- x = 12. U_b = 1, ν = U_b H / Re with Re = 40000, ρ = 1; y_p = 0.025 (the paper's, eq 10).
+-- Entry: SPHinXsys's, uniform u = 1 (rising over `ramp` s), k = 3/2 (0.05 U_b)² = 3.75e-3 and
+-- ε = C_μ^¾ k^{3/2} / (0.07 H) = 2.695e-4, which are also the initial field (the fluid starts at
+-- rest); exit: natural (n·∇u = 0, n·∇k = n·∇ε = 0) at the scheme's characteristic pressure.
+-- nf particle rows fill the entry's height; with the boundary offset (sec 4.4, fig 7) every wall
+-- moves into the fluid by y_p − dr/2, dr = (H − 2 y_p)/(nf − 1), the lower wall's corners by
+-- the miter of its offset segments, so that the first row stays at y_p at every resolution
+-- (nf = 40: dr = 0.05 = 2 y_p, no offset; nf < 40 would need a negative one and is refused).
+-- ard = 1: adaptive Riemann-eddy dissipation (sec 3.1), the paper's choice for this channel;
+-- ard = 0 shows what it prevents (figs 24-26).
+-- Metrics, against OpenFOAM v1912 with the same entry, model and wall functions
+-- (tests/data/openfoam_channel_hcd.csv, inlet "uniform"; tests/validation/openfoam/channel_ke):
+-- the profiles along x = 5 (mid-platform, platform to upper wall) and x = 9.5 (the exit section,
+-- wall to wall), averaged over the outputs of the last `avg` s (the paper averages in time), at
+-- OpenFOAM's cell centres: u_rms_platform, u_max_platform, u_rms_exit, u_max_exit, the RMS and
+-- largest |u − u_FV| / U_b; k_rms_platform, k_rms_exit, |k − k_FV| over the line's largest k_FV;
+-- backflow_exit and backflow_exit_fv, the share of the exit line's points whose time-mean u is
+-- negative in the run and in OpenFOAM's (the platform's wake: 0.125, up to y = 0.25 over the
+-- wall); u_unsteady_platform, u_unsteady_exit, k_unsteady_platform, k_unsteady_exit, the RMS
+-- along the line of u's spread in time over the same outputs (over U_b) and of k's (over its mean
+-- along the line): the disturbance that ARD is to prevent (a steady RANS flow has none);
+-- ard_mean, the mean ARD indicator (neighbours whose Riemann viscosity exceeds the eddy one,
+-- eq 42) with ard = 1.
+param { nf = 40, t_end = 60, y_p = 0.025, ard = 1, every = 1, avg = 20, ramp = 2, c0 = 20,
+        points = 121 }
+
+local H, U, Re = 2.0, 1.0, 40000
+local nu = U * H / Re
+local dr = (H - 2 * y_p) / (nf - 1)
+local off = y_p - dr / 2
+if off < -1e-12 then
+  error(("channel_hcd: nf = %d gives dr/2 = %g above y_p = %g: the boundary offset y_p − dr/2 "
+         .. "would be negative; take nf >= %d"):format(nf, dr / 2, y_p,
+        math.ceil((H - 2 * y_p) / (2 * y_p) + 1)))
+end
+off = math.max(off, 0)
+local rise = 1.5 * math.tan(math.rad(30))
+local L, e = 12.0, 3 * dr -- the walls run on through the entry's and the exit's layers
+
+-- the lower wall (left to right, fluid above) moved up by d: each vertex by the miter of its two
+-- segments' unit normals n1, n2, d (n1 + n2) / (1 + n1·n2)
+local function offset_up(pts, d)
+  local normals = {}
+  for i = 1, #pts - 1 do
+    local tx, ty = pts[i + 1][1] - pts[i][1], pts[i + 1][2] - pts[i][2]
+    local len = math.sqrt(tx * tx + ty * ty)
+    normals[i] = {-ty / len, tx / len}
+  end
+  local out = {}
+  for i = 1, #pts do
+    local n1, n2 = normals[math.max(i - 1, 1)], normals[math.min(i, #pts - 1)]
+    local c = 1 + n1[1] * n2[1] + n1[2] * n2[2]
+    out[i] = {pts[i][1] + d * (n1[1] + n2[1]) / c, pts[i][2] + d * (n1[2] + n2[2]) / c}
+  end
+  return out
+end
+local floor_line = offset_up({{-e, 0}, {3, 0}, {4.5, rise}, {5.5, rise}, {7, 0}, {L + e, 0}}, off)
+local top = H - off
+
+domain { 0, 0, L, H }
+particles { dr = dr }
+scheme { "wcsph-riemann", ard = ard, sound_speed = c0 * U }
+fluid { density = 1, viscosity = nu }
+local k_in = 1.5 * (0.05 * U) ^ 2
+local eps_in = 0.09 ^ 0.75 * k_in ^ 1.5 / (0.07 * H)
+turbulence { model = "k-epsilon", y_p = y_p, k = k_in, epsilon = eps_in }
+local back = {}
+for i = #floor_line, 1, -1 do back[#back + 1] = floor_line[i] end
+back.fluid, back.group = "right", "floor"
+wall(back)
+wall { {-e, top}, {L + e, top}, fluid = "right", group = "ceiling" }
+-- the fluid: between the offset walls from x = 0 to L, dr/4 clear of the lower one (the lattice
+-- is Cartesian: along the ramps its points come at any distance from the wall)
+local clear = offset_up({{-e, 0}, {3, 0}, {4.5, rise}, {5.5, rise}, {7, 0}, {L + e, 0}},
+                        off + dr / 4)
+local poly = {{0, off}}
+for i = 2, #clear - 1 do poly[#poly + 1] = clear[i] end
+poly[#poly + 1] = {L, off}
+poly[#poly + 1] = {L, top}
+poly[#poly + 1] = {0, top}
+fill { polygon = poly }
+inflow { {0, top}, {0, off}, velocity = U, ramp = ramp, k = k_in, epsilon = eps_in, name = "entry" }
+outflow { {L, off}, {L, top}, name = "exit" }
+-- the monitoring lines, from the first row (y_p off the wall) to the last
+local plat = rise + y_p -- the platform is flat at x = 5
+profile { name = "platform", from = {5, plat}, to = {5, H - y_p}, points = points }
+profile { name = "exit", from = {9.5, y_p}, to = {9.5, H - y_p}, points = points }
+force { "floor" }
+force { "ceiling" }
+run { t_end = t_end, output_every = every }
+
+local fv = reference("tests/data/openfoam_channel_hcd.csv", "inlet", "line", "y", "U", "k")
+
+function metrics(sim)
+  local m = {}
+  local outputs = {}
+  local t0 = t_end - avg
+  local t = t_end
+  while t >= t0 - 1e-9 do
+    outputs[#outputs + 1] = t
+    t = t - every
+  end
+  for _, line in ipairs({"platform", "exit"}) do
+    -- the time mean of u and k along the line, and u's and k's spread in time
+    local mu, mk, su2, sk2, ys, seen = {}, {}, {}, {}, nil, {}
+    local count = 0
+    for _, time in ipairs(outputs) do
+      local p = sim.profile(line, time)
+      local key = ("%.9g"):format(p.time)
+      if not seen[key] then
+        seen[key] = true
+        count = count + 1
+        ys = p.y
+        for i = 1, #p.y do
+          mu[i] = (mu[i] or 0) + p.vel_x[i]
+          mk[i] = (mk[i] or 0) + p.k[i]
+          su2[i] = (su2[i] or 0) + p.vel_x[i] ^ 2
+          sk2[i] = (sk2[i] or 0) + p.k[i] ^ 2
+        end
+      end
+    end
+    local fu, fk, kbar = 0, 0, 0
+    for i = 1, #ys do
+      mu[i], mk[i] = mu[i] / count, mk[i] / count
+      fu = fu + math.max(su2[i] / count - mu[i] ^ 2, 0)
+      fk = fk + math.max(sk2[i] / count - mk[i] ^ 2, 0)
+      kbar = kbar + mk[i]
+    end
+    -- a steady RANS flow holds still: the RMS over the line of the spread in time
+    m["u_unsteady_" .. line] = math.sqrt(fu / #ys) / U
+    m["k_unsteady_" .. line] = math.sqrt(fk / #ys) / (kbar / #ys)
+    local function at(vals, y) -- linear along the line
+      if y <= ys[1] then return vals[1] end
+      for i = 2, #ys do
+        if ys[i] >= y then
+          return vals[i - 1] + (vals[i] - vals[i - 1]) * (y - ys[i - 1]) / (ys[i] - ys[i - 1])
+        end
+      end
+      return vals[#ys]
+    end
+    local su, umax, sk, n, kmax = 0, 0, 0, 0, 0
+    for i = 1, #fv.y do
+      if fv.inlet[i] == "uniform" and fv.line[i] == line then kmax = math.max(kmax, fv.k[i]) end
+    end
+    for i = 1, #fv.y do
+      if fv.inlet[i] == "uniform" and fv.line[i] == line then
+        local du = (at(mu, fv.y[i]) - fv.U[i]) / U
+        local dk = (at(mk, fv.y[i]) - fv.k[i]) / kmax
+        su, sk, n = su + du * du, sk + dk * dk, n + 1
+        umax = math.max(umax, math.abs(du))
+      end
+    end
+    m["u_rms_" .. line] = math.sqrt(su / n)
+    m["u_max_" .. line] = umax
+    m["k_rms_" .. line] = math.sqrt(sk / n)
+    if line == "exit" then -- at OpenFOAM's points, in both
+      local neg, negfv = 0, 0
+      for i = 1, #fv.y do
+        if fv.inlet[i] == "uniform" and fv.line[i] == line then
+          if at(mu, fv.y[i]) < 0 then neg = neg + 1 end
+          if fv.U[i] < 0 then negfv = negfv + 1 end
+        end
+      end
+      m.backflow_exit, m.backflow_exit_fv = neg / n, negfv / n
+    end
+    m["samples_" .. line] = count
+  end
+  if ard == 1 then m.ard_mean = sim.mean("ard") end
+  return m
+end

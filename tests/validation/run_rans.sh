@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The k-ε RANS validation runs of wcsph-riemann (Wang, Sun & Hu sec 5.1 and 5.3; about 1.5 h on
+# 2 cores, two runs side by side), then RESULTS_rans.md and its charts.
+#   tests/validation/run_rans.sh [BUILD_DIR]     (default build)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${1:-build}
+out=out/validation_rans
+mkdir -p "$out"
+run() { # name case sets...
+  local name=$1 case=$2
+  shift 2
+  local args=()
+  for s in "$@"; do args+=(--set "$s"); done
+  "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet --overwrite || true
+}
+# the fully developed channel at Lee & Moser's U_b (flow-rate control), N_f = 20 and 40, the
+# scheme's default momentum dissipation; at N_f = 20 also eq 19's and none; and at the DNS's u_τ
+# (fixed body force) against the 1-D solver. The HCD channel: the comparison with OpenFOAM
+# (N_f = 40, 60 s averaged over the last 20), and the stability map, ARD on and off at N_f = 40,
+# 60, 80 (N_f = 60 and 80: 30 s, averaged over the last 10)
+(
+  run channel_ke_nf20_ub1 channel_ke nf=20 ub=1 t_end=1000 every=100
+  run channel_ke_nf20_ub1_riemann channel_ke nf=20 ub=1 t_end=1000 every=100 md=1
+  run channel_ke_nf20_ub1_off channel_ke nf=20 ub=1 t_end=1000 every=100 md=0
+  run channel_ke_nf20_fixed channel_ke nf=20 t_end=1000 every=100
+  run channel_ke_nf40_ub1 channel_ke nf=40 ub=1 t_end=600 every=100
+  run channel_ke_nf40_ub1_off channel_ke nf=40 ub=1 t_end=600 every=100 md=0
+  run channel_hcd_nf40_ard1 channel_hcd nf=40 ard=1 t_end=60 avg=20
+  run channel_hcd_nf40_ard0 channel_hcd nf=40 ard=0 t_end=60 avg=20
+  run channel_hcd_nf60_ard1 channel_hcd nf=60 ard=1 t_end=30 avg=10
+  run channel_hcd_nf60_ard0 channel_hcd nf=60 ard=0 t_end=30 avg=10
+) &
+(
+  run channel_hcd_nf80_ard1 channel_hcd nf=80 ard=1 t_end=30 avg=10
+  run channel_hcd_nf80_ard0 channel_hcd nf=80 ard=0 t_end=30 avg=10
+) &
+wait
+python3 tests/validation/results.py "$out" tests/validation/RESULTS_rans.md
+python3 tests/validation/channel_ke_chart.py tests/validation 40 \
+  "channel:SPH N_f = 20=$out/channel_ke_nf20_ub1" "channel:SPH N_f = 40=$out/channel_ke_nf40_ub1" \
+  "hcd:SPH N_f = 40 ARD=$out/channel_hcd_nf40_ard1" "hcd:SPH N_f = 40 no ARD=$out/channel_hcd_nf40_ard0"
