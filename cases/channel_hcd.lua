@@ -61,7 +61,8 @@ end
 local floor_line = offset_up({{-e, 0}, {3, 0}, {4.5, rise}, {5.5, rise}, {7, 0}, {L + e, 0}}, off)
 local top = H - off
 
-domain { 0, 0, L, H }
+-- the domain between the offset walls: the lattice's rows then sit y_p off the real walls
+domain { 0, off, L, top }
 particles { dr = dr }
 scheme { "wcsph-riemann", ard = ard, sound_speed = c0 * U }
 fluid { density = 1, viscosity = nu }

@@ -883,6 +883,20 @@ clsph_cli_test(riemann_reconstructed_laminar ARGS info ${bad_inflow_turb} --set 
                REGEX "momentum_dissipation = \"reconstructed\" needs the velocity gradient")
 clsph_cli_test(riemann_dissipation_off_with_ard ARGS info ${bad_inflow_turb} --set what=6 RC 2
                REGEX "momentum_dissipation = \"off\" contradicts ard = 1")
+clsph_cli_test(inflow_function_not_number ARGS info ${bad_inflow_turb} --set what=7 RC 2
+               REGEX "inflow 'entry': the velocity function returned string at s = 0(\\.0)?: it must return a number")
+clsph_cli_test(inflow_function_k_negative ARGS info ${bad_inflow_turb} --set what=8 RC 2
+               REGEX "inflow 'entry': the k function gives 0(\\.0)? at s = 0\\.5: it must be positive")
+clsph_cli_test(inflow_function_with_profile ARGS info ${bad_inflow_turb} --set what=9 RC 2
+               REGEX "inflow 'entry': profile = belongs to a velocity number")
+clsph_cli_test(inflow_function_with_ramp ARGS info ${bad_inflow_turb} --set what=10 RC 2
+               REGEX "inflow 'entry': ramp = 0\\.5 needs a uniform or parabolic profile")
+clsph_cli_test(inflow_function_flows_out ARGS info ${bad_inflow_turb} --set what=11 RC 2
+               REGEX "inflow 'entry': the velocity function's mean over the section is -0\\.3")
+clsph_cli_test(inflow_function_inconsistent ARGS info ${bad_inflow_turb} --set what=12 RC 2
+               REGEX "inflow 'entry': k = 0\\.01 and epsilon = 1e-06 at s = 0\\.9[0-9]* m are inconsistent")
+clsph_cli_test(inflow_function_k_alone ARGS info ${bad_inflow_turb} --set what=13 RC 2
+               REGEX "inflow 'entry': give k and epsilon together \\(k alone")
 # decaying turbulence carried in from an entry through a periodic stream to a natural exit
 # (tests/case/inflow_ke.lua): k and ε against the exact homogeneous decay. Measured (dr = 0.1,
 # t = 6, double and float): k RMS 0.22%, largest 0.56%, ε RMS 0.45% of the entry's, the exit's k
@@ -891,6 +905,16 @@ clsph_cli_test(riemann_dissipation_off_with_ard ARGS info ${bad_inflow_turb} --s
 clsph_run_test(run_inflow_ke ${CASE_DIR}/inflow_ke.lua
                BOUNDS "k_err_rms<0.01" "k_err_max<0.025" "eps_err_rms<0.02" "k_exit_ratio>0.98"
                "k_exit_ratio<1.02")
+# An entry given as functions of s (tests/case/inflow_profile.lua): the first row of fluid
+# carries the entry's u(s), k(s), ε(s), and the stream its mean. Measured (dr = 0.05, t = 1,
+# double): u RMS 0.12% of U (largest 0.30%), k RMS 0.48% (largest 1.2%) of k0, ε RMS 1.3% of ε0
+# (the first row is up to dr/U = 0.05 s old: ε/k = 0.2/s and the shear's production change k by
+# about 1% meanwhile), the flux 0.9994 of the mean; bounds at about 4 times. An entry that took
+# its largest speed uniformly would read 12% in u, one that fell back on turbulence { }'s k 300%,
+# one that read s from the other end 70% in k.
+clsph_run_test(run_inflow_profile ${CASE_DIR}/inflow_profile.lua
+               BOUNDS "u_err_rms<0.005" "u_err_max<0.015" "k_err_rms<0.02" "k_err_max<0.05"
+               "eps_err_rms<0.05" "flux_ratio>0.99" "flux_ratio<1.01" "first_row>19")
 # The k-ε model's diffusion alone (tests/case/ke_diffusion.lua): a cosine mode of k in a fluid at
 # rest decays at D_k (2π)² plus the linearised sink (eq 28): measured within 0.3% of the exact
 # rate's decay over t = 0.04 (to 0.45); bound 2% (ε's own diffusion, the ⅔ ρ k pressure and the

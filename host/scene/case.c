@@ -917,6 +917,57 @@ static int l_circle(lua_State *L)
   return arc_common(L, 1);
 }
 
+/* An entry's functions of s (fns[q] for velocity, k, epsilon: names[q]) sampled along it into
+ * c->prof (INFLOW_SAMPLES points; NAN for the values given as numbers); the velocity's largest
+ * |u| into c->velocity, its mean (trapezoidal) into c->mean. k and ε must be positive. */
+#define INFLOW_SAMPLES 1025
+static void inflow_table(lua_State *L, struct scene_section *c, const int fns[3],
+                         const char *const names[3])
+{
+  static const char *const unit[3] = {"m/s", "m²/s²", "m²/s³"};
+  const double len = hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
+  c->nprof = INFLOW_SAMPLES;
+  c->prof = malloc(3 * (size_t)c->nprof * sizeof *c->prof);
+  if (c->prof == NULL) luaL_error(L, "out of memory");
+  double top = 0.0, sum = 0.0;
+  for (int i = 0; i < c->nprof; ++i) {
+    const double at = len * (double)i / (double)(c->nprof - 1);
+    for (int q = 0; q < 3; ++q) {
+      double v = NAN;
+      if (fns[q]) {
+        lua_getfield(L, 1, names[q]);
+        lua_pushnumber(L, at);
+        lua_call(L, 1, 1);
+        if (lua_type(L, -1) != LUA_TNUMBER)
+          luaL_error(L,
+                     "inflow '%s': the %s function returned %s at s = %f: it must return a "
+                     "number (%s)",
+                     c->name, names[q], luaL_typename(L, -1), at, unit[q]);
+        v = lua_tonumber(L, -1);
+        lua_pop(L, 1);
+        if (!isfinite(v) || (q > 0 && !(v > 0.0)))
+          luaL_error(L, "inflow '%s': the %s function gives %f at s = %f: it must be %s (%s)",
+                     c->name, names[q], v, at, q > 0 ? "positive" : "finite", unit[q]);
+      }
+      c->prof[3 * i + q] = v;
+    }
+    if (fns[0]) {
+      const double u = c->prof[3 * i];
+      top = fmax(top, fabs(u));
+      sum += (i == 0 || i == c->nprof - 1) ? 0.5 * u : u;
+    }
+  }
+  if (fns[0]) {
+    c->velocity = top;
+    c->mean = sum / (double)(c->nprof - 1);
+    if (!(c->mean > 0.0))
+      luaL_error(L,
+                 "inflow '%s': the velocity function's mean over the section is %f m/s: an "
+                 "entry's flow must go in (u > 0 along its normal)",
+                 c->name, c->mean);
+  }
+}
+
 static int section_common(lua_State *L, enum scene_section_kind kind)
 {
   static const char *const in_keys[] = {"velocity", "profile", "layers",  "name",
@@ -953,24 +1004,53 @@ static int section_common(lua_State *L, enum scene_section_kind kind)
                "not %f",
                fn, c->ramp);
   if (kind == SCENE_INFLOW) {
-    c->velocity = get_number(L, 1, fn, "velocity", NAN);
-    if (!isfinite(c->velocity)) luaL_error(L, "inflow: needs velocity = (m/s)");
-    int p = get_choice(L, 1, fn, "profile", profiles, 1);
-    c->profile = p == 2 ? SCENE_PARABOLIC : SCENE_UNIFORM;
+    /* velocity, k and epsilon: numbers, or functions of s, the distance from the first end
+     * along the section (a developed entry profile), sampled here */
+    static const char *const tabulated[3] = {"velocity", "k", "epsilon"};
+    int fns[3], any = 0;
+    for (int q = 0; q < 3; ++q) {
+      lua_getfield(L, 1, tabulated[q]);
+      fns[q] = lua_isfunction(L, -1);
+      any |= fns[q];
+      lua_pop(L, 1);
+    }
+    if (any) inflow_table(L, c, fns, tabulated);
+    if (fns[0]) {
+      lua_getfield(L, 1, "profile");
+      const int given = !lua_isnil(L, -1);
+      lua_pop(L, 1);
+      if (given)
+        luaL_error(L,
+                   "inflow '%s': profile = belongs to a velocity number; a velocity function "
+                   "of s is its own profile",
+                   c->name);
+      if (c->ramp > 0.0)
+        luaL_error(L,
+                   "inflow '%s': ramp = %f needs a uniform or parabolic profile, not a velocity "
+                   "function (start the fluid on the profile instead)",
+                   c->name, c->ramp);
+      c->profile = SCENE_TABLE;
+    } else {
+      c->velocity = get_number(L, 1, fn, "velocity", NAN);
+      if (!isfinite(c->velocity)) luaL_error(L, "inflow: needs velocity = (m/s)");
+      int p = get_choice(L, 1, fn, "profile", profiles, 1);
+      c->profile = p == 2 ? SCENE_PARABOLIC : SCENE_UNIFORM;
+    }
     /* the k-ε model's entry values (checked against turbulence { } at finish) */
-    c->k = get_number(L, 1, fn, "k", NAN);
-    c->epsilon = get_number(L, 1, fn, "epsilon", NAN);
+    c->k = fns[1] ? (double)NAN : get_number(L, 1, fn, "k", NAN);
+    c->epsilon = fns[2] ? (double)NAN : get_number(L, 1, fn, "epsilon", NAN);
     if (!isnan(c->k) && !(isfinite(c->k) && c->k > 0.0))
       luaL_error(L, "inflow '%s': k = %f must be a positive turbulent kinetic energy (m²/s²)",
                  c->name, c->k);
     if (!isnan(c->epsilon) && !(isfinite(c->epsilon) && c->epsilon > 0.0))
       luaL_error(L, "inflow '%s': epsilon = %f must be a positive dissipation rate (m²/s³)",
                  c->name, c->epsilon);
-    if (isnan(c->k) != isnan(c->epsilon))
+    const int has_k = fns[1] || !isnan(c->k), has_e = fns[2] || !isnan(c->epsilon);
+    if (has_k != has_e)
       luaL_error(L,
                  "inflow '%s': give k and epsilon together (%s alone: the other would come from "
                  "turbulence { }, and the pair need not belong together)",
-                 c->name, isnan(c->k) ? "epsilon" : "k");
+                 c->name, has_k ? "k" : "epsilon");
   } else {
     c->k = c->epsilon = NAN; /* natural exit (n·∇u = 0) unless a profile is prescribed */
     int p = get_choice(L, 1, fn, "profile", out_profiles, 0);
@@ -1397,21 +1477,31 @@ static enum clsph_status finish(const char *path, struct loader *ld)
   /* an entry's k and ε: only under the model, and a length scale that fits the entry */
   for (int q = 0; q < s->nsections; ++q) {
     const struct scene_section *c = &s->sections[q];
-    if (c->kind != SCENE_INFLOW || isnan(c->k)) continue;
+    if (c->kind != SCENE_INFLOW) continue;
+    const int k_table = c->nprof > 0 && !isnan(c->prof[1]),
+              e_table = c->nprof > 0 && !isnan(c->prof[2]), table = k_table || e_table;
+    if (isnan(c->k) && !table) continue;
     CLSPH_CHECK(s->turb.on, CLSPH_E_INPUT,
                 "%s:%d: inflow '%s': k and epsilon belong to the k-epsilon model: declare "
                 "turbulence { model = \"k-epsilon\", ... } or drop them",
                 path, c->line, c->name);
     const double width = hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
-    const double ell = pow(0.09, 0.75) * pow(c->k, 1.5) / c->epsilon,
-                 nut = 0.09 * c->k * c->k / c->epsilon;
-    CLSPH_CHECK(ell <= width, CLSPH_E_INPUT,
-                "%s:%d: inflow '%s': k = %g and epsilon = %g are inconsistent: their length scale "
-                "C_mu^3/4 k^3/2 / epsilon = %g m is larger than the entry (%g m wide), an eddy "
-                "viscosity C_mu k^2/epsilon = %g m²/s (%.3g times nu); raise epsilon or lower k "
-                "(a length scale of about 0.07 of the entry's width is usual)",
-                path, c->line, c->name, c->k, c->epsilon, ell, width, nut,
-                s->nu > 0.0 ? nut / s->nu : HUGE_VAL);
+    /* each sample of a table (or the two numbers) */
+    const int n = table ? c->nprof : 1;
+    for (int i = 0; i < n; ++i) {
+      const double k = k_table ? c->prof[3 * i + 1] : c->k,
+                   e = e_table ? c->prof[3 * i + 2] : c->epsilon;
+      const double ell = pow(0.09, 0.75) * pow(k, 1.5) / e, nut = 0.09 * k * k / e;
+      char where[64] = "";
+      if (table) snprintf(where, sizeof where, " at s = %g m", width * i / (double)(n - 1));
+      CLSPH_CHECK(ell <= width, CLSPH_E_INPUT,
+                  "%s:%d: inflow '%s': k = %g and epsilon = %g%s are inconsistent: their length "
+                  "scale C_mu^3/4 k^3/2 / epsilon = %g m is larger than the entry (%g m wide), "
+                  "an eddy viscosity C_mu k^2/epsilon = %g m²/s (%.3g times nu); raise epsilon "
+                  "or lower k (a length scale of about 0.07 of the entry's width is usual)",
+                  path, c->line, c->name, k, e, where, ell, width, nut,
+                  s->nu > 0.0 ? nut / s->nu : HUGE_VAL);
+    }
   }
   /* probes and profiles sample the fluid: outside the domain there is none (a column of NaN) */
   for (int k = 0; k < s->nprobes; ++k) {

@@ -368,7 +368,9 @@ static enum clsph_status check_scene(const struct scene *s, const char *model, i
     CLSPH_CHECK(sc->kind == SCENE_INFLOW || sc->kind == SCENE_OUTFLOW, CLSPH_E_INPUT,
                 "%s:%d: section '%s' is neither an inflow nor an outflow", path, sc->line,
                 sc->name);
-    CLSPH_CHECK(sc->profile == 0 || sc->profile == SCENE_UNIFORM || sc->profile == SCENE_PARABOLIC,
+    CLSPH_CHECK(sc->profile == 0 || sc->profile == SCENE_UNIFORM ||
+                    sc->profile == SCENE_PARABOLIC ||
+                    (sc->profile == SCENE_TABLE && sc->kind == SCENE_INFLOW),
                 CLSPH_E_INPUT, "%s:%d: section '%s' has an unknown profile %d", path, sc->line,
                 sc->name, (int)sc->profile);
     CLSPH_CHECK(isfinite(sc->a[0]) && isfinite(sc->a[1]) && isfinite(sc->b[0]) &&
@@ -786,12 +788,35 @@ static int section_near(const struct scene *s, const double x[2], double tol)
   return 0;
 }
 
+/* Marks with `value` the empty cells of the n[0] x n[1] grid (origin o, cell c) that the segment
+ * pa-pe passes through (sampled at a quarter cell); a point on a non-periodic far edge falls in
+ * the last cell. */
+static void mark_segment(unsigned char *mark, const long n[2], const double o[2], double c,
+                         const int periodic[2], const double *pa, const double *pe,
+                         unsigned char value)
+{
+  long m = (long)ceil(4.0 * hypot(pe[0] - pa[0], pe[1] - pa[1]) / c) + 1;
+  for (long q = 0; q <= m; ++q) {
+    double t = (double)q / (double)m;
+    long ix[2];
+    for (int a = 0; a < 2; ++a) {
+      ix[a] = (long)floor((pa[a] + t * (pe[a] - pa[a]) - o[a]) / c);
+      if (periodic[a]) ix[a] = ((ix[a] % n[a]) + n[a]) % n[a];
+      if (ix[a] == n[a] && !periodic[a]) ix[a] = n[a] - 1; /* on the far edge */
+    }
+    if (ix[0] >= 0 && ix[0] < n[0] && ix[1] >= 0 && ix[1] < n[1]) {
+      unsigned char *cell = &mark[(size_t)ix[1] * (size_t)n[0] + (size_t)ix[0]];
+      if (*cell == 0) *cell = value;
+    }
+  }
+}
+
 static enum clsph_status check_enclosed(struct build *b)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = b->s;
   const double c = 0.5 * b->dr; /* cell size */
-  unsigned char *mark = NULL;   /* 1: a wall crosses it, 2: reached */
+  unsigned char *mark = NULL;   /* 1: a wall crosses it, 2: reached, 3: a section crosses it */
   size_t *queue = NULL;
   if (b->nfluid == 0) return CLSPH_OK; /* no walls at all: the flood reaches the domain's edges */
   /* a non-periodic axis gets a margin of one cell on each side, where walls on the domain's edge
@@ -810,26 +835,18 @@ static enum clsph_status check_enclosed(struct build *b)
   mark = calloc(ncell, 1);
   queue = malloc(ncell * sizeof *queue);
   CLSPH_CHECK(mark != NULL && queue != NULL, CLSPH_E_NOMEM, "geometry: out of memory");
-  /* walls: every cell a segment passes through (sampled at a quarter cell) */
+  /* walls: every cell a segment passes through */
   for (int w = 0; w < s->nwalls; ++w) {
     const struct scene_wall *wl = &s->walls[w];
     int nseg = wl->closed ? wl->npts : wl->npts - 1;
-    for (int k = 0; k < nseg; ++k) {
-      const double *pa = &wl->pts[2 * k], *pe = &wl->pts[2 * ((k + 1) % wl->npts)];
-      long m = (long)ceil(4.0 * hypot(pe[0] - pa[0], pe[1] - pa[1]) / c) + 1;
-      for (long q = 0; q <= m; ++q) {
-        double t = (double)q / (double)m;
-        long ix[2];
-        for (int a = 0; a < 2; ++a) {
-          ix[a] = (long)floor((pa[a] + t * (pe[a] - pa[a]) - o[a]) / c);
-          if (s->periodic[a]) ix[a] = ((ix[a] % n[a]) + n[a]) % n[a];
-          if (ix[a] == n[a] && !s->periodic[a]) ix[a] = n[a] - 1; /* on the far edge */
-        }
-        if (ix[0] >= 0 && ix[0] < n[0] && ix[1] >= 0 && ix[1] < n[1])
-          mark[(size_t)ix[1] * (size_t)n[0] + (size_t)ix[0]] = 1;
-      }
-    }
+    for (int k = 0; k < nseg; ++k)
+      mark_segment(mark, n, o, c, s->periodic, &wl->pts[2 * k], &wl->pts[2 * ((k + 1) % wl->npts)],
+                   1);
   }
+  /* sections: the fluid leaves through them (a section across a channel that runs at a slant to
+   * the domain's sides opens no path to an edge; what lies beyond it is outside) */
+  for (int k = 0; k < s->nsections; ++k)
+    mark_segment(mark, n, o, c, s->periodic, s->sections[k].a, s->sections[k].b, 3);
   /* the flood, from the fluid's cells */
   size_t head = 0, tail = 0;
   for (size_t i = 0; i < b->nfluid; ++i) { /* the fluid particles come first */
@@ -1108,10 +1125,15 @@ static enum clsph_status build_section(struct build *b, int k)
       const double ap[2] = {p.x[0] - sc->a[0], p.x[1] - sc->a[1]};
       const double along = dot2(ap, t), h = dot2(ap, n);
       if (along < -tol || along > len + tol || h >= -tol || h < -thick) continue;
+      if (sc->kind == SCENE_INFLOW && sc->nprof > 0) { /* an entry's tables of k and ε */
+        if (isnan(sc->k)) p.k0 = scene_section_value(sc, 1, along);
+        if (isnan(sc->epsilon)) p.eps0 = scene_section_value(sc, 2, along);
+      }
       if (sc->kind == SCENE_INFLOW || sc->profile != 0) { /* outflow: along −n */
         double f = fmin(1.0, fmax(0.0, along / len));
-        double speed =
-            sc->profile == SCENE_PARABOLIC ? sc->velocity * 4.0 * f * (1.0 - f) : sc->velocity;
+        double speed = sc->profile == SCENE_PARABOLIC ? sc->velocity * 4.0 * f * (1.0 - f)
+                       : sc->profile == SCENE_TABLE   ? scene_section_value(sc, 0, along)
+                                                      : sc->velocity;
         if (sc->kind == SCENE_OUTFLOW) speed = -speed;
         p.v[0] = speed * n[0];
         p.v[1] = speed * n[1];

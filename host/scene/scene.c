@@ -1,6 +1,7 @@
 /* scene.c: ownership of the scene description. */
 #include "scene.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -10,6 +11,7 @@ void scene_free(struct scene *s)
   for (int i = 0; i < s->nwalls; ++i) free(s->walls[i].pts);
   free(s->regions);
   free(s->walls);
+  for (int i = 0; i < s->nsections; ++i) free(s->sections[i].prof);
   free(s->sections);
   free(s->probes);
   free(s->profiles);
@@ -17,6 +19,17 @@ void scene_free(struct scene *s)
   free(s->params);
   free(s->options);
   memset(s, 0, sizeof *s);
+}
+
+double scene_section_value(const struct scene_section *c, int what, double s)
+{
+  if (c->nprof < 2 || c->prof == NULL) return NAN;
+  const double len = hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
+  double f = len > 0.0 ? s / len * (double)(c->nprof - 1) : 0.0;
+  f = fmin(fmax(f, 0.0), (double)(c->nprof - 1));
+  const int i = (int)fmin(floor(f), (double)(c->nprof - 2));
+  const double w = f - (double)i;
+  return (1.0 - w) * c->prof[3 * i + what] + w * c->prof[3 * (i + 1) + what];
 }
 
 /* The defaults of the health checks, from runs that hold and runs that do not (the cavity's

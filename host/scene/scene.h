@@ -73,7 +73,7 @@ struct scene_wall {
 };
 
 enum scene_section_kind { SCENE_INFLOW = 1, SCENE_OUTFLOW };
-enum scene_profile { SCENE_UNIFORM = 1, SCENE_PARABOLIC };
+enum scene_profile { SCENE_UNIFORM = 1, SCENE_PARABOLIC, SCENE_TABLE };
 
 /** An inflow or outflow section: the segment a-b across the channel; the flow enters (inflow) or
  *  leaves (outflow) along its normal pointing into the fluid (left of a->b). */
@@ -81,13 +81,21 @@ struct scene_section {
   enum scene_section_kind kind;
   char name[SCENE_NAME];
   double a[2], b[2];
-  enum scene_profile profile; /* outflow: 0 (natural exit, n·∇u = 0) unless prescribed */
+  enum scene_profile profile; /* outflow: 0 (natural exit, n·∇u = 0) unless prescribed; an
+                               * inflow's SCENE_TABLE: prof below */
   double velocity; /* mean (uniform) or peak (parabolic) normal speed, m/s; 0 for a natural exit */
   int layers;      /* particle layers outside the section (3 unless given) */
   double ramp; /* the prescribed velocity rises as ½(1 − cos(π t/ramp)) until t = ramp, s (0:
                 * at once) */
-  /* an entry's k and ε under the k-ε model, m²/s², m²/s³ (NAN: turbulence { }'s) */
+  /* an entry's k and ε under the k-ε model, m²/s², m²/s³ (NAN: turbulence { }'s, or the table) */
   double k, epsilon;
+  /* an entry given as functions of s, the distance from a along the section (profile
+   * SCENE_TABLE for the velocity; k and ε may be functions too): nprof samples at s = len i /
+   * (nprof − 1) of u, k and ε (prof[3 i + 0, 1, 2]; NAN where given as a number); velocity is
+   * then the largest |u| and mean its mean over the section (m/s) */
+  int nprof;
+  double *prof;
+  double mean;
   int line;
 };
 
@@ -209,6 +217,10 @@ struct scene {
   struct scene_render render;   /* how frames show it */
   struct scene_turbulence turb; /* off unless declared */
 };
+
+/** @brief An entry's tabulated value `what` (0 u, 1 k, 2 ε) at the distance s along it (linear
+ *  between the samples, clamped to the section; NAN where the entry gives no table of it). */
+double scene_section_value(const struct scene_section *c, int what, double s);
 
 /** @brief Free everything a scene owns (safe on a zeroed scene). */
 void scene_free(struct scene *s);

@@ -53,7 +53,10 @@ static enum clsph_status upload_table(struct sim *sim, struct open_sections *o)
     t[5] = (real)(c->layers * sc->dr);
     t[6] = (real)c->velocity;
     t[7] = (real)(in ? 1 : 2);
-    t[8] = (real)(c->profile == SCENE_UNIFORM ? 1 : c->profile == SCENE_PARABOLIC ? 2 : 0);
+    /* (a table's entry keeps the velocities the geometry gave its particles: no ramp) */
+    t[8] = (real)(c->profile == SCENE_UNIFORM || c->profile == SCENE_TABLE ? 1
+                  : c->profile == SCENE_PARABOLIC                          ? 2
+                                                                           : 0);
     t[9] = (real)c->ramp;
     /* where an exit's particles wait for an entry: the park of geometry.c (struct geom_park), or
      * 0: where they stop, just behind the last layer */
@@ -235,11 +238,14 @@ static double ramp_factor(const struct scene_section *c, double t)
   return t < c->ramp ? 0.5 * (1.0 - cos(acos(-1.0) * t / c->ramp)) : 1.0;
 }
 
-/* the flux of a prescribed profile per unit depth: U len (uniform), ⅔ U len (parabolic) */
+/* the flux of a prescribed profile per unit depth: U len (uniform), ⅔ U len (parabolic), the
+ * table's mean times len */
 static double section_flux(const struct scene_section *c, double t)
 {
   const double len = hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
-  const double shape = c->profile == SCENE_PARABOLIC ? 2.0 / 3.0 : 1.0;
+  const double shape = c->profile == SCENE_PARABOLIC ? 2.0 / 3.0
+                       : c->profile == SCENE_TABLE   ? c->mean / c->velocity
+                                                     : 1.0;
   return ramp_factor(c, t) * c->velocity * shape * len;
 }
 

@@ -1,7 +1,11 @@
 -- An entry's turbulence, and wcsph-riemann's momentum dissipation, in ways the loader must refuse
 -- (what = ...): 1 inflow { k, epsilon } without turbulence { }, 2 k without epsilon, 3 k and
 -- epsilon whose length scale exceeds the entry's width, 4 a negative epsilon, 5 the reconstructed
--- dissipation in a laminar scene, 6 momentum_dissipation = "off" with ARD
+-- dissipation in a laminar scene, 6 momentum_dissipation = "off" with ARD; an entry given as
+-- functions of s: 7 a velocity function that returns a string, 8 a k function negative at the far
+-- end, 9 profile = with a velocity function, 10 ramp = with one, 11 a velocity function whose mean
+-- flows out, 12 k and epsilon functions inconsistent near s = 1 (only there), 13 a k function
+-- without epsilon
 param { what = 1 }
 domain { 0, 0, 2, 1 }
 particles { dr = 0.1 }
@@ -18,7 +22,15 @@ local k, eps = 0.01, 0.0025
 if what == 2 then eps = nil end
 if what == 3 then eps = 1e-6 end
 if what == 4 then eps = -1 end
-if what >= 5 then k, eps = nil, nil end
-inflow { {0, 1}, {0, 0}, velocity = 1, k = k, epsilon = eps, name = "entry" }
+if what == 5 or what == 6 then k, eps = nil, nil end
+local entry = {{0, 1}, {0, 0}, velocity = 1, k = k, epsilon = eps, name = "entry"}
+if what == 7 then entry.velocity = function(s) return "fast" end end
+if what == 8 then entry.k = function(s) return 0.01 - 0.02 * s end end
+if what == 9 then entry.velocity, entry.profile = function(s) return 1 end, "parabolic" end
+if what == 10 then entry.velocity, entry.ramp = function(s) return 1 end, 0.5 end
+if what == 11 then entry.velocity = function(s) return 0.2 - s end end
+if what == 12 then entry.epsilon = function(s) return s < 0.9 and 0.0025 or 1e-6 end end
+if what == 13 then entry.k, entry.epsilon = function(s) return 0.01 end, nil end
+inflow(entry)
 outflow { {2, 0}, {2, 1}, name = "exit" }
 run { t_end = 1 }

@@ -208,6 +208,11 @@ def curved(scratch, names):
         src = load(scratch, run["src"])
         tau_src = [t for _, t in u_tau_wall(src, "lowerWall")]
         words = []
+        # the entry: the periodic run's developed profile, as setup.py inlet imposed it
+        for y, u, k, e in setup.profile(scratch, run["src"]):
+            rows.append(f"{run['yp']:g},{sum(setup.rows(run))}x"
+                        f"{sum(nx for nx, _ in r['columns'])},entry,{y:.6e},{y / H:.6f},"
+                        f"{u:.6f},{0.0:.6e},{k:.6e},{e:.6e},{0.09 * k * k / e:.6e}")
         for key in ("bend_end", "outlet"):
             pairs, a, e, t = section(r, key)
             best = None
@@ -254,8 +259,9 @@ def curved(scratch, names):
              "in the distance from the inner wall, exact here); exit: zero gradient with p = 0. "
              "Streamwise cells 4 x 2 y_p long: 2 x 2 y_p moves U of strong_yp0.0009525 by at most "
              "4.9e-4 and k by 0.4%.\n")
-    cols = ("# Columns: y_p; mesh (cells across x along); section (bend_end: the bend's exit "
-            "plane; outlet: the last cells before the exit); s = distance from the inner wall "
+    cols = ("# Columns: y_p; mesh (cells across x along); section (entry: the developed profile "
+            "imposed on the entry, its periodic run's cells, nut = Cmu k^2 / epsilon; bend_end: the "
+            "bend's exit plane; outlet: the last cells before the exit); s = distance from the inner wall "
             "(cell centre); s/H; U = velocity along the channel (tangential); U_r = velocity "
             "across it, towards the outer wall; k; epsilon; nut.\n"
             "y_p,mesh,section,s,s_over_H,U,U_r,k,epsilon,nut\n")
