@@ -915,6 +915,36 @@ clsph_run_test(run_inflow_ke ${CASE_DIR}/inflow_ke.lua
 clsph_run_test(run_inflow_profile ${CASE_DIR}/inflow_profile.lua
                BOUNDS "u_err_rms<0.005" "u_err_max<0.015" "k_err_rms<0.02" "k_err_max<0.05"
                "eps_err_rms<0.05" "flux_ratio>0.99" "flux_ratio<1.01" "first_row>19")
+# Circular Couette flow between a turning cylinder and a fixed one (tests/case/couette_annulus.lua,
+# wcsph-riemann, Re = 2.5, steady by t = 3: the slowest mode has decayed by e^-12), the fluid in
+# rings along the walls (fill { points }) and the dummy layers in rings behind them (circle {
+# dummies = "fitted" }). Measured (nf = 10, double): u_θ RMS 2.8% of ω R1 (largest 6.0%), the
+# radial speed 0.15%; at nf = 20 1.4% (first order) and 0.05%. The Cartesian lattice for both
+# (fitted = 0): 3.2% and 2.1% at nf = 10, 2.1% and 1.3% at nf = 20, its largest error 11% and 15%
+# (the walls cut the lattice at every angle). Bounds at about 1.4 times the fitted run's.
+clsph_run_test(run_couette_annulus ${CASE_DIR}/couette_annulus.lua
+               BOUNDS "u_err_rms<0.04" "u_err_max<0.085" "u_r_rms<0.003")
+set(bad_fitted ${CASE_DIR}/bad_fitted.lua)
+clsph_cli_test(fitted_valid ARGS info ${bad_fitted} --set what=0 RC 0
+               REGEX "particles: 416 \\(fluid 200, wall vertices 0, dummy 216")
+clsph_cli_test(fill_points_not_list ARGS info ${bad_fitted} --set what=1 RC 2
+               REGEX "fill 'fill 1': points must be a list of particle positions")
+clsph_cli_test(fill_points_not_point ARGS info ${bad_fitted} --set what=2 RC 2
+               REGEX "fill 'fill 1': points\\[7\\] must be a point \\{x, y\\} of finite numbers")
+clsph_cli_test(fill_points_outside ARGS info ${bad_fitted} --set what=3 RC 2
+               REGEX "points\\[3\\] \\(2.5, 0.5\\) is outside the domain")
+clsph_cli_test(fill_points_twice ARGS info ${bad_fitted} --set what=4 RC 2
+               REGEX "are 0.01 m apart, less than dr/2: points given twice, or fills that overlap")
+clsph_cli_test(fill_points_and_polygon ARGS info ${bad_fitted} --set what=5 RC 2
+               REGEX "give points, a polygon or a rectangle, not two of them")
+clsph_cli_test(fitted_under_usaw ARGS info ${bad_fitted} --set what=6 RC 2
+               REGEX "wall \\{ dummies = \"fitted\" \\} arranges dummy particles, but this scheme's walls are usaw")
+clsph_cli_test(fitted_unknown ARGS info ${bad_fitted} --set what=7 RC 2
+               REGEX "wall: 'curved' is not a valid dummies")
+clsph_cli_test(fitted_turns_back ARGS info ${bad_fitted} --set what=8 RC 2
+               REGEX "it turns back on itself at \\(1.5, 0\\); fitted rows need a smooth wall")
+clsph_cli_test(fill_points_in_obstacle ARGS info ${bad_fitted} --set what=9 RC 2
+               REGEX "points\\[69\\] \\(0.85, 0.35\\) lies in an obstacle")
 # The k-ε model's diffusion alone (tests/case/ke_diffusion.lua): a cosine mode of k in a fluid at
 # rest decays at D_k (2π)² plus the linearised sink (eq 28): measured within 0.3% of the exact
 # rate's decay over t = 0.04 (to 0.45); bound 2% (ε's own diffusion, the ⅔ ρ k pressure and the

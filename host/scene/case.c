@@ -561,8 +561,8 @@ static int l_turbulence(lua_State *L)
 
 static int l_fill(lua_State *L)
 {
-  static const char *const keys[] = {"polygon", "name", "velocity", "pressure",
-                                     "density", "k",    "epsilon",  NULL};
+  static const char *const keys[] = {"polygon", "points", "name",    "velocity", "pressure",
+                                     "density", "k",      "epsilon", NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "fill");
@@ -626,6 +626,45 @@ static int l_fill(lua_State *L)
     }
     lua_pop(L, 1);
   }
+  /* points = { {x, y}, ... }: the particles' own positions (a body-fitted arrangement the
+   * script computes), instead of the lattice inside a polygon or rectangle */
+  lua_getfield(L, 1, "points");
+  if (!lua_isnil(L, -1)) {
+    int t = lua_gettop(L);
+    lua_getfield(L, 1, "polygon");
+    const int polygon = !lua_isnil(L, -1);
+    lua_pop(L, 1);
+    if (polygon || lua_rawlen(L, 1) != 0)
+      luaL_error(L, "fill '%s': give points, a polygon or a rectangle, not two of them", r->name);
+    if (!lua_istable(L, t) || lua_rawlen(L, t) < 1)
+      luaL_error(L, "fill '%s': points must be a list of particle positions { {x, y}, ... }",
+                 r->name);
+    const lua_Unsigned n = lua_rawlen(L, t);
+    if (n > 100000000u)
+      luaL_error(L, "fill '%s': %llu points: more than 1e8", r->name, (unsigned long long)n);
+    r->pts = calloc(2 * (size_t)n, sizeof *r->pts);
+    if (r->pts == NULL) luaL_error(L, "out of memory");
+    r->npts = (int)n;
+    r->given = 1;
+    for (int i = 0; i < r->npts; ++i) {
+      lua_geti(L, t, i + 1);
+      const int ok = lua_istable(L, -1) && lua_rawlen(L, -1) == 2;
+      if (ok) {
+        lua_geti(L, -1, 1);
+        lua_geti(L, -2, 2);
+      }
+      if (!ok || !lua_isnumber(L, -2) || !lua_isnumber(L, -1) || !isfinite(lua_tonumber(L, -2)) ||
+          !isfinite(lua_tonumber(L, -1)))
+        luaL_error(L, "fill '%s': points[%d] must be a point {x, y} of finite numbers", r->name,
+                   i + 1);
+      r->pts[2 * i] = lua_tonumber(L, -2);
+      r->pts[2 * i + 1] = lua_tonumber(L, -1);
+      lua_pop(L, 3);
+    }
+    lua_pop(L, 1);
+    return 0;
+  }
+  lua_pop(L, 1);
   lua_getfield(L, 1, "polygon");
   if (!lua_isnil(L, -1)) {
     int t = lua_gettop(L);
@@ -774,11 +813,13 @@ static void orient(lua_State *L, const char *fn, struct scene_wall *w, int fluid
 }
 
 static const char *const fluid_sides[] = {"", "inside", "outside", "left", "right", NULL};
+/* wall { dummies = ... }: the dummy layers on the lattice, or in rows along the wall */
+static const char *const arrangements[] = {"lattice", "fitted", NULL};
 
 static int l_wall(lua_State *L)
 {
-  static const char *const keys[] = {"closed", "fluid",  "group", "velocity",
-                                     "omega",  "centre", NULL};
+  static const char *const keys[] = {"closed", "fluid",  "group",   "velocity",
+                                     "omega",  "centre", "dummies", NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "wall");
@@ -800,6 +841,7 @@ static int l_wall(lua_State *L)
     to_point(L, "wall", "a point", &w->pts[2 * i]);
     lua_pop(L, 1);
   }
+  w->fitted = get_choice(L, 1, "wall", "dummies", arrangements, 0) == 1;
   wall_motion(L, "wall", w);
   check_simple(L, "wall", w);
   orient(L, "wall", w, get_choice(L, 1, "wall", "fluid", fluid_sides, 0));
@@ -860,10 +902,10 @@ static int l_box_wall(lua_State *L)
 /* arc and circle: a polyline with vertices about dr apart (particles {} must come first). */
 static int arc_common(lua_State *L, int full)
 {
-  static const char *const arc_keys[] = {"centre", "radius",   "from",  "to", "fluid",
-                                         "group",  "velocity", "omega", NULL};
-  static const char *const circle_keys[] = {"centre",   "radius", "fluid", "group",
-                                            "velocity", "omega",  NULL};
+  static const char *const arc_keys[] = {"centre", "radius",   "from",  "to",      "fluid",
+                                         "group",  "velocity", "omega", "dummies", NULL};
+  static const char *const circle_keys[] = {"centre",   "radius", "fluid",   "group",
+                                            "velocity", "omega",  "dummies", NULL};
   const char *fn = full ? "circle" : "arc";
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
@@ -902,6 +944,7 @@ static int arc_common(lua_State *L, int full)
     w->pts[2 * i + 1] = c[1] + r * sin(a);
   }
   if (!full && side == 2) reverse_points(w->pts, n); /* counter-clockwise keeps the centre left */
+  w->fitted = get_choice(L, 1, fn, "dummies", arrangements, 0) == 1;
   wall_motion(L, fn, w);
   if (full) orient(L, fn, w, side);
   return 0;

@@ -334,9 +334,9 @@ static enum clsph_status check_scene(const struct scene *s, const char *model, i
   }
   for (int r = 0; r < s->nregions; ++r) {
     const struct scene_region *g = &s->regions[r];
-    CLSPH_CHECK(g->npts >= 3, CLSPH_E_INPUT,
-                "%s:%d: fluid region '%s' needs at least 3 vertices, not %d", path, g->line,
-                g->name, g->npts);
+    CLSPH_CHECK(g->npts >= (g->given ? 1 : 3), CLSPH_E_INPUT,
+                "%s:%d: fluid region '%s' needs at least %s, not %d", path, g->line, g->name,
+                g->given ? "1 point" : "3 vertices", g->npts);
     CLSPH_CHECK(finite_pts(g->pts, g->npts), CLSPH_E_INPUT,
                 "%s:%d: fluid region '%s' has a coordinate that is not finite", path, g->line,
                 g->name);
@@ -356,6 +356,10 @@ static enum clsph_status check_scene(const struct scene *s, const char *model, i
     }
     CLSPH_CHECK(!wl->closed || fabs(polygon_area(wl->pts, wl->npts)) > merge_tol * dr * dr,
                 CLSPH_E_INPUT, "%s:%d: closed wall encloses no area", path, wl->line);
+    CLSPH_CHECK(!wl->fitted || *out == MODEL_DUMMY, CLSPH_E_INPUT,
+                "%s:%d: wall { dummies = \"fitted\" } arranges dummy particles, but this scheme's "
+                "walls are %s: drop it",
+                path, wl->line, model);
     CLSPH_CHECK(
         wl->motion == SCENE_FIXED || wl->motion == SCENE_SLIDING || wl->motion == SCENE_ROTATING,
         CLSPH_E_INPUT, "%s:%d: wall has an unknown motion %d", path, wl->line, (int)wl->motion);
@@ -635,6 +639,35 @@ done:
   return st;
 }
 
+/* A fluid particle of region r at xy: its initial scalars and velocity from the fill. */
+static enum clsph_status push_fluid(struct build *b, int r, const double xy[2])
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = b->s;
+  const struct scene_region *g = &s->regions[r];
+  struct particle p = {.x = {xy[0], xy[1]},
+                       .kind = KIND_FLUID,
+                       .group = r,
+                       .p0 = NAN,
+                       .rho0 = NAN,
+                       .k0 = NAN,
+                       .eps0 = NAN};
+  CLSPH_TRY(fill_scalars(s, g, r, xy, &p));
+  if (g->velocity == 1) memcpy(p.v, g->u0, sizeof p.v);
+  if (g->velocity == 2) {
+    CLSPH_CHECK(s->velocity_fn.eval != NULL, CLSPH_E_INPUT,
+                "%s:%d: fluid region '%s': its velocity function is gone (the case script was "
+                "closed)",
+                s->case_path, g->line, g->name);
+    CLSPH_CHECK(s->velocity_fn.eval(s->velocity_fn.ctx, r, xy, p.v) == CLSPH_OK, CLSPH_E_INPUT,
+                "%s:%d: fluid region '%s': its velocity at (%g, %g) failed", s->case_path, g->line,
+                g->name, xy[0], xy[1]);
+  }
+  CLSPH_TRY(push_particle(b, &p));
+done:
+  return st;
+}
+
 static enum clsph_status fill_fluid(struct build *b)
 {
   enum clsph_status st = CLSPH_OK;
@@ -655,7 +688,7 @@ static enum clsph_status fill_fluid(struct build *b)
   for (int r = 0; r < nr; ++r) {
     off[r] = total;
     total += (size_t)s->regions[r].npts;
-    for (int i = 0; i < s->regions[r].npts; ++i) {
+    for (int i = 0; i < s->regions[r].npts && !s->regions[r].given; ++i) {
       for (int a = 0; a < 2; ++a) {
         bb[2 * a] = fmin(bb[2 * a], s->regions[r].pts[2 * i + a]);
         bb[2 * a + 1] = fmax(bb[2 * a + 1], s->regions[r].pts[2 * i + a]);
@@ -668,13 +701,15 @@ static enum clsph_status fill_fluid(struct build *b)
   }
   xs = malloc(total * sizeof *xs);
   CLSPH_CHECK(xs != NULL, CLSPH_E_NOMEM, "geometry: out of memory");
-  long k0[2], k1[2];
-  CLSPH_TRY(lat_box(s, bb, k0, k1));
+  long k0[2] = {0, 0}, k1[2] = {-1, -1}; /* (no lattice when every region is given) */
+  if (bb[0] <= bb[1]) CLSPH_TRY(lat_box(s, bb, k0, k1));
   for (long j = k0[1]; j <= k1[1]; ++j) {
     const double y = lat(s, 1, j);
     int any = 0;
     for (int r = 0; r < nr; ++r) {
-      cnt[r] = row_crossings(s->regions[r].pts, s->regions[r].npts, y, xs + off[r]);
+      cnt[r] = s->regions[r].given
+                   ? 0
+                   : row_crossings(s->regions[r].pts, s->regions[r].npts, y, xs + off[r]);
       any |= cnt[r] > 0;
     }
     if (!any) continue;
@@ -706,26 +741,27 @@ static enum clsph_status fill_fluid(struct build *b)
                   "%s:%d: fluid region '%s' extends past the wall of line %d: the particle at "
                   "(%g, %g) is outside it (a counter-clockwise closed wall holds its fluid inside)",
                   s->case_path, g->line, g->name, s->walls[container].line, x, y);
-      struct particle p = {.x = {xy[0], xy[1]},
-                           .kind = KIND_FLUID,
-                           .group = first,
-                           .p0 = NAN,
-                           .rho0 = NAN,
-                           .k0 = NAN,
-                           .eps0 = NAN};
-      CLSPH_TRY(fill_scalars(s, g, first, xy, &p));
-      if (g->velocity == 1) memcpy(p.v, g->u0, sizeof p.v);
-      if (g->velocity == 2) {
-        CLSPH_CHECK(s->velocity_fn.eval != NULL, CLSPH_E_INPUT,
-                    "%s:%d: fluid region '%s': its velocity function is gone (the case script "
-                    "was closed)",
-                    s->case_path, g->line, g->name);
-        CLSPH_CHECK(s->velocity_fn.eval(s->velocity_fn.ctx, first, xy, p.v) == CLSPH_OK,
-                    CLSPH_E_INPUT, "%s:%d: fluid region '%s': its velocity at (%g, %g) failed",
-                    s->case_path, g->line, g->name, x, y);
-      }
-      CLSPH_TRY(push_particle(b, &p));
+      CLSPH_TRY(push_fluid(b, first, xy));
     }
+  }
+  /* regions given as points: their particles where the script puts them */
+  for (int r = 0; r < nr; ++r) {
+    const struct scene_region *g = &s->regions[r];
+    for (int i = 0; i < g->npts && g->given; ++i) {
+      const double *xy = &g->pts[2 * i];
+      for (int a = 0; a < 2; ++a)
+        CLSPH_CHECK(xy[a] >= s->lo[a] && xy[a] <= s->hi[a], CLSPH_E_INPUT,
+                    "%s:%d: fluid region '%s': points[%d] (%g, %g) is outside the domain "
+                    "[%g, %g] x [%g, %g]",
+                    s->case_path, g->line, g->name, i + 1, xy[0], xy[1], s->lo[0], s->hi[0],
+                    s->lo[1], s->hi[1]);
+      CLSPH_CHECK(!near_obstacle(b, xy, (0.5 - layer_tol) * s->dr), CLSPH_E_INPUT,
+                  "%s:%d: fluid region '%s': points[%d] (%g, %g) lies in an obstacle or within "
+                  "dr/2 of it",
+                  s->case_path, g->line, g->name, i + 1, xy[0], xy[1]);
+      CLSPH_TRY(push_fluid(b, r, xy));
+    }
+    count[r] += g->given ? (size_t)g->npts : 0;
   }
   for (int r = 0; r < nr; ++r)
     CLSPH_CHECK(count[r] > 0, CLSPH_E_INPUT,
@@ -736,6 +772,70 @@ done:
   free(count);
   free(cnt);
   free(off);
+  return st;
+}
+
+/* Points given by the script (fill { points }) keep dr/2 from every other fluid particle: two
+ * particles closer than that are a duplicate or an overlap of two fills (the lattice's own points
+ * are dr apart). Cells of dr/2 sorted by key; a pair that close lies in neighbouring cells. */
+struct cell_key {
+  long cx, cy;
+  size_t i;
+};
+
+static int cell_key_cmp(const void *pa, const void *pb)
+{
+  const struct cell_key *a = pa, *b = pb;
+  if (a->cy != b->cy) return a->cy < b->cy ? -1 : 1;
+  if (a->cx != b->cx) return a->cx < b->cx ? -1 : 1;
+  return (a->i > b->i) - (a->i < b->i);
+}
+
+static enum clsph_status check_given_spacing(struct build *b)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = b->s;
+  struct cell_key *keys = NULL;
+  int given = 0;
+  for (int r = 0; r < s->nregions; ++r) given |= s->regions[r].given;
+  if (!given || b->np < 2) goto done;
+  const double c = 0.5 * b->dr;
+  keys = malloc(b->np * sizeof *keys);
+  CLSPH_CHECK(keys != NULL, CLSPH_E_NOMEM, "geometry: out of memory");
+  for (size_t i = 0; i < b->np; ++i)
+    keys[i] = (struct cell_key){(long)floor((b->p[i].x[0] - s->lo[0]) / c),
+                                (long)floor((b->p[i].x[1] - s->lo[1]) / c), i};
+  qsort(keys, b->np, sizeof *keys, cell_key_cmp);
+  for (size_t k = 0; k < b->np; ++k) {
+    const struct particle *p = &b->p[keys[k].i];
+    for (long dy = 0; dy <= 1; ++dy) {
+      for (long dx = -1; dx <= 1; ++dx) {
+        if (dy == 0 && dx < 0) continue; /* each pair of cells once */
+        struct cell_key want = {keys[k].cx + dx, keys[k].cy + dy, 0};
+        size_t lo = 0, hi = b->np; /* the first key >= want */
+        while (lo < hi) {
+          size_t mid = lo + (hi - lo) / 2;
+          if (cell_key_cmp(&keys[mid], &want) < 0)
+            lo = mid + 1;
+          else
+            hi = mid;
+        }
+        for (size_t m = lo; m < b->np && keys[m].cx == want.cx && keys[m].cy == want.cy; ++m) {
+          if (dx == 0 && dy == 0 && m <= k) continue;
+          const struct particle *q = &b->p[keys[m].i];
+          const double d = hypot(p->x[0] - q->x[0], p->x[1] - q->x[1]);
+          const struct scene_region *gp = &s->regions[p->group], *gq = &s->regions[q->group];
+          CLSPH_CHECK(d >= c, CLSPH_E_INPUT,
+                      "%s:%d: fluid particles at (%g, %g) ('%s') and (%g, %g) ('%s') are %g m "
+                      "apart, less than dr/2: points given twice, or fills that overlap",
+                      s->case_path, gp->given ? gp->line : gq->line, p->x[0], p->x[1], gp->name,
+                      q->x[0], q->x[1], gq->name, d);
+        }
+      }
+    }
+  }
+done:
+  free(keys);
   return st;
 }
 
@@ -1030,6 +1130,79 @@ done:
 
 /* ---- dummy layers ------------------------------------------------------------------------- */
 
+/* A fitted wall's dummy layers (wall { dummies = "fitted" }): rows along the wall on its solid
+ * side at (j + ½) dr, j < layers (the polyline moved by the mitre of its segments' normals, as a
+ * body-fitted fluid's rows run along it), each row cut into equal parts of about dr with a
+ * particle at each part's middle (a closed wall: at each part's start). For smooth walls: where
+ * a row folds on itself (a concave solid corner sharper than its offset) its particles crowd. */
+static enum clsph_status build_fitted_dummy(struct build *b, int w, int layers)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = b->s;
+  const struct scene_wall *wl = &s->walls[w];
+  const double dr = b->dr;
+  const int n = wl->npts, nseg = wl->closed ? n : n - 1;
+  double *nrm = malloc(2 * (size_t)nseg * sizeof *nrm),
+         *row = malloc(2 * (size_t)(n + 1) * sizeof *row);
+  CLSPH_CHECK(nrm != NULL && row != NULL, CLSPH_E_NOMEM, "geometry: out of memory");
+  for (int k = 0; k < nseg; ++k) { /* unit normals into the fluid (on the left) */
+    const double *pa = &wl->pts[2 * k], *pe = &wl->pts[2 * ((k + 1) % n)];
+    const double len = hypot(pe[0] - pa[0], pe[1] - pa[1]);
+    nrm[2 * k] = -(pe[1] - pa[1]) / len;
+    nrm[2 * k + 1] = (pe[0] - pa[0]) / len;
+  }
+  for (int j = 0; j < layers; ++j) {
+    const double d = (j + 0.5) * dr;
+    for (int i = 0; i < n; ++i) { /* the row's vertices: each moved by −d along its mitre */
+      const int k1 = wl->closed ? (i + nseg - 1) % nseg : (i > 0 ? i - 1 : 0);
+      const int k2 = wl->closed ? i % nseg : (i < nseg ? i : nseg - 1);
+      const double *n1 = &nrm[2 * k1], *n2 = &nrm[2 * k2];
+      const double c = 1.0 + n1[0] * n2[0] + n1[1] * n2[1];
+      CLSPH_CHECK(c > 0.1, CLSPH_E_INPUT,
+                  "%s:%d: wall with dummies = \"fitted\": it turns back on itself at (%g, %g); "
+                  "fitted rows need a smooth wall (or dummies = \"lattice\")",
+                  s->case_path, wl->line, wl->pts[2 * i], wl->pts[2 * i + 1]);
+      row[2 * i] = wl->pts[2 * i] - d * (n1[0] + n2[0]) / c;
+      row[2 * i + 1] = wl->pts[2 * i + 1] - d * (n1[1] + n2[1]) / c;
+    }
+    if (wl->closed) memcpy(&row[2 * n], &row[0], 2 * sizeof *row);
+    const int nv = wl->closed ? n + 1 : n;
+    double total = 0.0;
+    for (int i = 0; i + 1 < nv; ++i)
+      total += hypot(row[2 * i + 2] - row[2 * i], row[2 * i + 3] - row[2 * i + 1]);
+    const long parts = lround(fmax(total / dr, wl->closed ? 3.0 : 1.0));
+    const double step = total / (double)parts;
+    int seg = 0;
+    double at = 0.0; /* the arc length at the start of row segment seg */
+    for (long q = 0; q < parts; ++q) {
+      const double want = (wl->closed ? (double)q : (double)q + 0.5) * step;
+      double len = hypot(row[2 * seg + 2] - row[2 * seg], row[2 * seg + 3] - row[2 * seg + 1]);
+      while (at + len < want && seg + 2 < nv) {
+        at += len;
+        ++seg;
+        len = hypot(row[2 * seg + 2] - row[2 * seg], row[2 * seg + 3] - row[2 * seg + 1]);
+      }
+      const double f = len > 0.0 ? fmin(1.0, (want - at) / len) : 0.0;
+      struct particle p = {.x = {row[2 * seg] + f * (row[2 * seg + 2] - row[2 * seg]),
+                                 row[2 * seg + 1] + f * (row[2 * seg + 3] - row[2 * seg + 1])},
+                           .kind = KIND_DUMMY,
+                           .group = w};
+      struct nearest r;
+      index_nearest(&b->ix, p.x, w, dr, &r);
+      if (!r.found || r.d <= merge_tol * dr) continue;
+      p.normal[0] = (r.q[0] - p.x[0]) / r.d;
+      p.normal[1] = (r.q[1] - p.x[1]) / r.d;
+      p.dist = r.d;
+      wall_velocity(wl, p.x, p.v);
+      CLSPH_TRY(push_particle(b, &p));
+    }
+  }
+done:
+  free(row);
+  free(nrm);
+  return st;
+}
+
 static enum clsph_status build_dummy(struct build *b, int layers)
 {
   enum clsph_status st = CLSPH_OK;
@@ -1051,7 +1224,7 @@ static enum clsph_status build_dummy(struct build *b, int layers)
       struct particle p = {.x = {lat(s, 0, i), lat(s, 1, j)}, .kind = KIND_DUMMY};
       struct nearest r;
       index_nearest(ix, p.x, -1, dr, &r);
-      if (!r.found) continue;
+      if (!r.found || s->walls[r.wall].fitted) continue; /* (a fitted wall's rows: below) */
       if (r.d <= merge_tol * dr) { /* on the wall: normal from the edges there */
         double nn = hypot(r.nsum[0], r.nsum[1]);
         if (nn < 1e-12) continue;
@@ -1069,6 +1242,8 @@ static enum clsph_status build_dummy(struct build *b, int layers)
       CLSPH_TRY(push_particle(b, &p));
     }
   }
+  for (int w = 0; w < s->nwalls; ++w)
+    if (s->walls[w].fitted) CLSPH_TRY(build_fitted_dummy(b, w, layers));
 done:
   return st;
 }
@@ -1254,6 +1429,7 @@ enum clsph_status geometry_build(const struct scene *s, const char *model, int l
   CLSPH_TRY(index_build(s, reach, &b.ix));
   /* fluid, then the walls, then the inflow/outflow layers */
   CLSPH_TRY(fill_fluid(&b));
+  CLSPH_TRY(check_given_spacing(&b));
   CLSPH_TRY(check_fluid_near_walls(&b));
   b.nfluid = b.np;
   if (b.model == MODEL_USAW) CLSPH_TRY(build_usaw(&b));

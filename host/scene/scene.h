@@ -30,9 +30,10 @@ struct scene_region {
   char name[SCENE_NAME]; /* "fill 1", or the name the case gives */
   int npts;              /* polygon vertices (a rectangle is a 4-vertex polygon) */
   double *pts;           /* npts x 2, counter-clockwise or not (either works) */
-  int line;              /* line of the case script that declared it */
-  int velocity;          /* initial velocity: 0 at rest, 1 u0, 2 scene.velocity_fn's */
-  double u0[2];          /* the constant initial velocity, m/s */
+  int given;    /* 1: pts are the particles' own positions (fill { points }), not a polygon */
+  int line;     /* line of the case script that declared it */
+  int velocity; /* initial velocity: 0 at rest, 1 u0, 2 scene.velocity_fn's */
+  double u0[2]; /* the constant initial velocity, m/s */
   int pressure, density; /* initial pressure and density: 0 the scheme's, 1 the constant below,
                           * 2 scene.velocity_fn's scalar function */
   double p0, rho0;       /* the constant initial pressure (Pa) and density (kg/m^3) */
@@ -65,6 +66,8 @@ struct scene_wall {
   int npts;               /* vertices, >= 2 */
   double *pts;            /* npts x 2 */
   int closed;             /* the last vertex joins the first */
+  int fitted; /* dummy layers in rows along the wall (wall { dummies = "fitted" }), not on the
+               * lattice */
   enum scene_motion motion;
   double velocity[2]; /* sliding velocity, m/s */
   double centre[2];   /* rotation centre, m */

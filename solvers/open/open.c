@@ -262,6 +262,32 @@ double open_natural_flux(const struct scene *sc, double t)
   return q;
 }
 
+double open_initial_outflow(const struct sim *sim)
+{
+  const struct scene *sc = sim->scene;
+  const struct geom *geo = &sim->geom;
+  double sum = 0.0, width = 0.0;
+  for (int k = 0; k < sc->nsections; ++k) {
+    const struct scene_section *c = &sc->sections[k];
+    if (c->kind != SCENE_OUTFLOW || c->profile != 0) continue;
+    const double len = hypot(c->b[0] - c->a[0], c->b[1] - c->a[1]);
+    const double t[2] = {(c->b[0] - c->a[0]) / len, (c->b[1] - c->a[1]) / len},
+                 n[2] = {-t[1], t[0]};
+    double u = 0.0;
+    size_t m = 0;
+    for (size_t i = 0; i < geo->nfluid; ++i) {
+      const double d[2] = {geo->x[2 * i] - c->a[0], geo->x[2 * i + 1] - c->a[1]};
+      const double along = d[0] * t[0] + d[1] * t[1], h = d[0] * n[0] + d[1] * n[1];
+      if (h < 0.0 || h >= sc->dr || along < 0.0 || along > len) continue;
+      u -= geo->v[2 * i] * n[0] + geo->v[2 * i + 1] * n[1]; /* out of the fluid: along −n */
+      ++m;
+    }
+    if (m > 0) sum += len * u / (double)m;
+    width += len;
+  }
+  return width > 0.0 ? sum / width : 0.0;
+}
+
 double open_transit(const struct scene *sc)
 {
   double d = HUGE_VAL;

@@ -133,6 +133,12 @@ enum clsph_status open_exit_speed(struct open_sections *o, struct sim *sim, doub
  *  incompressible flow. With the ramps (inflow { ramp }). */
 double open_natural_flux(const struct scene *sc, double t);
 
+/** @brief The mean speed out of the natural exits (outflow without a profile) of the fluid as the
+ *  geometry starts it: the normal outflow of the fluid particles in each exit's first row
+ *  (0 <= h < δr), weighted by the exits' lengths, m/s (0 for a fluid at rest or without such an
+ *  exit). The speed the exits let out before the entries' start-up wave arrives. */
+double open_initial_outflow(const struct sim *sim);
+
 /** @brief The shortest distance from an entry's midpoint to a natural exit's, m (0 without
  *  such a pair): the path of the start-up wave from the entries to the exits. */
 double open_transit(const struct scene *sc);

@@ -66,6 +66,7 @@ struct wcr {
   unsigned long sorted;      /* ... in the particles' order after this many sorts (sim->sorts) */
   struct open_sections open; /* inflow and outflow sections (solvers/open), nsec = 0: none */
   double *exit_p, *exit_rho; /* per section: the exits' p and ρ of this advection step */
+  double ubar0; /* the natural exits' outflow speed at the start (open_initial_outflow), m/s */
   /* the k-ε model (turbulence.cl), when the scene declares turbulence { } */
   int turb;
   int f_k, f_eps, f_nut, f_yplus;
@@ -424,6 +425,7 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
     w->exit_p = calloc(2 * w->open.nsec, sizeof *w->exit_p);
     CLSPH_CHECK(w->exit_p != NULL, CLSPH_E_NOMEM, "out of memory");
     w->exit_rho = w->exit_p + w->open.nsec;
+    w->ubar0 = open_initial_outflow(sim);
   }
   /* the advection step's buffers (the particles' current order; remade every step) */
   const size_t cap = ps->cap, rv = 2 * sizeof(real), groups = sim_reduce_groups(cap);
@@ -683,7 +685,10 @@ done:
  * (−0.3 U0 at t = 3) until a particle was thrown out of the domain at t = 3.3. With the delay the
  * exit lets the entries' wave out as it arrives, and the pressure stays >= 0 through the
  * start-up (in the linear acoustics of the channel the overshoot is the same, u = 1.5 ū, and it
- * settles after 3 L/c0 instead of 2 L/c0). */
+ * settles after 3 L/c0 instead of 2 L/c0). Until the wave arrives the exit lets out what the
+ * fluid let out at the start (open_initial_outflow: 0 from rest): a fluid started on its
+ * developed flow (cases/channel_curved.lua) was held back at the exit by ρ0 c0 ū from the first
+ * step (the strongly curved channel's outlet ran at 0.4 U_b by t = 0.04 s, L/c0 = 0.24 s). */
 static enum clsph_status open_exits(struct sim *sim, struct wcr *w)
 {
   enum clsph_status st = CLSPH_OK;
@@ -691,7 +696,9 @@ static enum clsph_status open_exits(struct sim *sim, struct wcr *w)
   const double rho0 = sc->rho0, c0 = w->c0;
   const double width = open_natural_width(sc);
   const double delay = open_transit(sc) / c0;
-  const double ubar = width > 0.0 ? open_natural_flux(sc, sim->time - delay) / width : 0.0;
+  const double ubar = width <= 0.0        ? 0.0
+                      : sim->time < delay ? w->ubar0
+                                          : open_natural_flux(sc, sim->time - delay) / width;
   if (!w->outlet_fixed) CLSPH_TRY(open_exit_speed(&w->open, sim, w->exit_p));
   for (int k = 0; k < sc->nsections; ++k) {
     const int natural = sc->sections[k].kind == SCENE_OUTFLOW && sc->sections[k].profile == 0;

@@ -3,7 +3,8 @@
 # `clsph run --frames --field k` and `clsph render` of its snapshots draw the same frames byte for
 # byte (a fixed range); render draws epsilon, nu_t, y_plus and the ARD indicator (ard) too, and the automatic range
 # of k spans what the run carried: from the exit's decayed k (0.005: k0 (1 + 0.92 ε0 L/(U k0))^-1.087
-# = 0.00494 at x = 4) to the entry's k0 = 0.01 (0.0101 in the start-up's sound waves).
+# = 0.00494 at x = 4) to the entry's k0 = 0.01 (up to 0.0101 while the exit held the moving
+# fluid back at the start and sent a sound wave up the stream).
 file(REMOVE_RECURSE ${OUT})
 
 function(clsph_run)
@@ -21,7 +22,7 @@ clsph_run(run ${CASE} --set t_end=2 --set ard=1 --out ${OUT}/run --frames --fiel
           --range 0.004,0.011 ${small})
 clsph_run(render ${OUT}/run --field k --range 0.004,0.011 --out ${OUT}/again ${small})
 clsph_run(render ${OUT}/run --field k --out ${OUT}/auto --size 320x240 --no-movie)
-if(NOT out MATCHES "colour range of k over 5 snapshots: 0\\.00(4[5-9]|5[0-5])[0-9]* \\.\\. 0\\.010[0-9]*")
+if(NOT out MATCHES "colour range of k over 5 snapshots: 0\\.00(4[5-9]|5[0-5])[0-9]* \\.\\. 0\\.01(0[0-9]*)?\n")
   message(FATAL_ERROR "the automatic range of k does not span the run's k (0.005 .. 0.01)")
 endif()
 file(GLOB fa ${OUT}/run/frames/k_*.png)

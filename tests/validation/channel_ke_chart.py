@@ -10,10 +10,15 @@
    (the exit section) of the runs given (cases/channel_hcd.lua: profile_platform.csv and
    profile_exit.csv, averaged over the outputs at t >= T0), beside OpenFOAM's
    (tests/data/openfoam_channel_hcd.csv, the uniform entry).
+3. The curved channels: u along the channel and k across the bend's exit plane and the last
+   section before the exit of the runs given (cases/channel_curved.lua: profile_bend.csv and
+   profile_outlet.csv, averaged over each run's own last `avg` s), beside OpenFOAM's
+   (tests/data/openfoam_channel_{mild,strong}.csv at the run's y_p).
 
     python3 tests/validation/channel_ke_chart.py OUT_DIR T0 channel:LABEL=RUN_DIR ... \
-        hcd:LABEL=RUN_DIR ...
-writes OUT_DIR/channel_ke_uplus.{csv,png} and OUT_DIR/channel_hcd_profiles.{csv,png} (gnuplot).
+        hcd:LABEL=RUN_DIR ... curved:LABEL=RUN_DIR ...
+writes OUT_DIR/channel_ke_uplus.{csv,png}, OUT_DIR/channel_hcd_profiles.{csv,png} and
+OUT_DIR/channel_curved_profiles.{csv,png} (gnuplot).
 """
 import csv
 import os
@@ -146,6 +151,75 @@ unset multiplot
 """)
 
 
+def curved_averaged(run_dir, line, t0, y_p):
+    """(s from the inner wall, mean u along the channel, mean k) over the outputs at t >= t0:
+    the line runs from the inner wall outwards, the channel's direction is its own turned by
+    +90° (the bend turns anticlockwise)."""
+    rows = [r for r in table(os.path.join(run_dir, f"profile_{line}.csv"))
+            if float(r["time"]) >= t0 - 1e-9]
+    first = [r for r in rows if float(r["s"]) == 0.0]
+    last = max(rows, key=lambda r: float(r["s"]))
+    ex, ey = float(last["x"]) - float(first[0]["x"]), float(last["y"]) - float(first[0]["y"])
+    n = (ex * ex + ey * ey) ** 0.5
+    tx, ty = -ey / n, ex / n
+    acc, times = {}, set()
+    for r in rows:
+        times.add(float(r["time"]))
+        a = acc.setdefault(float(r["s"]), [0.0, 0.0])
+        a[0] += float(r["vel_x"]) * tx + float(r["vel_y"]) * ty
+        a[1] += float(r["k"])
+    return [(y_p + s, a[0] / len(times), a[1] / len(times)) for s, a in sorted(acc.items())]
+
+
+def curved_chart(out_dir, runs):
+    rows, shown = [], set()
+    names = {1: ("mild", 0.0635), 2: ("strong", 0.0762)}
+    for label, run_dir in runs:
+        summary = json_load(os.path.join(run_dir, "summary.json"))
+        params, metrics = summary["parameters"], summary["metrics"]
+        name, height = names[int(params.get("setting", 1))]
+        t0 = summary["sim_time"] - metrics["avg"]
+        for line in ("bend", "outlet"):
+            rows += [(name, f"{label}", line, s / height, u, k)
+                     for s, u, k in curved_averaged(run_dir, line, t0, metrics["y_p"])]
+        if (name, metrics["y_p"]) in shown:
+            continue
+        shown.add((name, metrics["y_p"]))
+        for r in table(os.path.join(ROOT, f"tests/data/openfoam_channel_{name}.csv")):
+            if abs(float(r["y_p"]) - metrics["y_p"]) < 1e-9 and r["section"] in ("bend_end",
+                                                                                  "outlet"):
+                line = "bend" if r["section"] == "bend_end" else "outlet"
+                rows.append((name, f"OpenFOAM y_p {metrics['y_p']:g}", line,
+                             float(r["s_over_H"]), float(r["U"]), float(r["k"])))
+    csv_path = os.path.join(out_dir, "channel_curved_profiles.csv")
+    with open(csv_path, "w") as f:
+        f.write("channel,series,line,s_over_H,u,k\n")
+        f.writelines(f"{c},{s},{l},{y:.6g},{u:.6g},{k:.6g}\n" for c, s, l, y, u, k in rows)
+    channels = list(dict.fromkeys(c for c, *_ in rows))
+    panels = []
+    for c in channels:
+        series = list(dict.fromkeys(s for cc, s, *_ in rows if cc == c))
+        for col, what in ((5, "u along the channel / U_b"), (6, "k / U_b^2")):
+            plots = []
+            for s in series:
+                for line, dash in (("bend", "dt 3"), ("outlet", "")):
+                    style = "points pt 6 ps 0.7" if s.startswith("OpenFOAM") else f"lines lw 2 {dash}"
+                    plots.append(f"'{csv_path}' using (strcol(1) eq '{c}' && strcol(2) eq '{s}' && "
+                                 f"strcol(3) eq '{line}' ? $4 : 1/0):{col} with {style} "
+                                 f"title '{s}, {line}'")
+            panels.append(f"set title '{c} channel: {what}'\nset xlabel 's / H from the inner "
+                          f"wall'\nset ylabel '{what}'\nplot {', '.join(plots)}")
+    gnuplot(f"""set terminal pngcairo size 1200,{450 * len(channels)} font ",10" noenhanced
+set output '{os.path.join(out_dir, "channel_curved_profiles.png")}'
+set datafile separator ','
+set grid
+set key bottom center font ",8"
+set multiplot layout {len(channels)},2
+{chr(10).join(panels)}
+unset multiplot
+""")
+
+
 def json_load(path):
     import json
     with open(path) as f:
@@ -160,17 +234,21 @@ def main():
     if len(sys.argv) < 4:
         sys.exit(__doc__)
     out_dir, t0 = sys.argv[1], float(sys.argv[2])
-    channel, hcd = [], []
+    channel, hcd, curved = [], [], []
     for a in sys.argv[3:]:
         kind, rest = a.split(":", 1)
         label, run_dir = rest.rsplit("=", 1)
         if "," in label:
             sys.exit(f"channel_ke_chart.py: a label may not hold a comma (the CSV's separator): {label}")
-        (channel if kind == "channel" else hcd).append((label, run_dir))
+        if kind not in ("channel", "hcd", "curved"):
+            sys.exit(f"channel_ke_chart.py: '{kind}' is not channel, hcd or curved: {a}")
+        {"channel": channel, "hcd": hcd, "curved": curved}[kind].append((label, run_dir))
     if channel:
         channel_chart(out_dir, channel)
     if hcd:
         hcd_chart(out_dir, t0, hcd)
+    if curved:
+        curved_chart(out_dir, curved)
     print(f"wrote the charts into {out_dir}")
 
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The k-ε RANS validation runs of wcsph-riemann (Wang, Sun & Hu sec 5.1 and 5.3; about 1.5 h on
+# The k-ε RANS validation runs of wcsph-riemann (Wang, Sun & Hu sec 5.1 to 5.3; about 2.5 h on
 # 2 cores, two runs side by side), then RESULTS_rans.md and its charts.
 #   tests/validation/run_rans.sh [BUILD_DIR]     (default build)
 set -euo pipefail
@@ -31,12 +31,16 @@ run() { # name case sets...
   run channel_hcd_nf60_ard1 channel_hcd nf=60 ard=1 t_end=30 avg=10
   run channel_hcd_nf60_ard0 channel_hcd nf=60 ard=0 t_end=30 avg=10
 ) &
+# The curved channels at N_f = 20 (1.5 transits, averaged over the last 0.3)
 (
   run channel_hcd_nf80_ard1 channel_hcd nf=80 ard=1 t_end=30 avg=10
   run channel_hcd_nf80_ard0 channel_hcd nf=80 ard=0 t_end=30 avg=10
+  run channel_curved_strong_nf20 channel_curved setting=2 nf=20
+  run channel_curved_mild_nf20 channel_curved setting=1 nf=20
 ) &
 wait
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_rans.md
 python3 tests/validation/channel_ke_chart.py tests/validation 40 \
   "channel:SPH N_f = 20=$out/channel_ke_nf20_ub1" "channel:SPH N_f = 40=$out/channel_ke_nf40_ub1" \
-  "hcd:SPH N_f = 40 ARD=$out/channel_hcd_nf40_ard1" "hcd:SPH N_f = 40 no ARD=$out/channel_hcd_nf40_ard0"
+  "hcd:SPH N_f = 40 ARD=$out/channel_hcd_nf40_ard1" "hcd:SPH N_f = 40 no ARD=$out/channel_hcd_nf40_ard0" \
+  "curved:SPH N_f = 20=$out/channel_curved_strong_nf20" "curved:SPH N_f = 20=$out/channel_curved_mild_nf20"
