@@ -956,6 +956,8 @@ clsph_cli_test(fitted_turns_back ARGS info ${bad_fitted} --set what=8 RC 2
                REGEX "it turns back on itself at \\(1.5, 0\\); fitted rows need a smooth wall")
 clsph_cli_test(fill_points_in_obstacle ARGS info ${bad_fitted} --set what=9 RC 2
                REGEX "points\\[69\\] \\(0.85, 0.35\\) lies in an obstacle")
+clsph_cli_test(fill_points_across_period ARGS info ${bad_fitted} --set what=10 RC 2
+               REGEX "at \\(1.995, 0.05\\) \\('fill 1'\\) and \\(0.01, 0.05\\) \\('fill 1'\\) are 0.015 m apart")
 # The k-ε model's diffusion alone (tests/case/ke_diffusion.lua): a cosine mode of k in a fluid at
 # rest decays at D_k (2π)² plus the linearised sink (eq 28): measured within 0.3% of the exact
 # rate's decay over t = 0.04 (to 0.45); bound 2% (ε's own diffusion, the ⅔ ρ k pressure and the

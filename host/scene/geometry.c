@@ -800,11 +800,24 @@ static enum clsph_status check_given_spacing(struct build *b)
   for (int r = 0; r < s->nregions; ++r) given |= s->regions[r].given;
   if (!given || b->np < 2) goto done;
   const double c = 0.5 * b->dr;
+  /* a periodic axis wraps its cells (a whole number of them, each at least c) and distances */
+  double cell[2] = {c, c};
+  long ncell[2] = {0, 0};
+  for (int a = 0; a < 2; ++a) {
+    if (!s->periodic[a]) continue;
+    ncell[a] = (long)fmax(1.0, floor((s->hi[a] - s->lo[a]) / c));
+    cell[a] = (s->hi[a] - s->lo[a]) / (double)ncell[a];
+  }
   keys = malloc(b->np * sizeof *keys);
   CLSPH_CHECK(keys != NULL, CLSPH_E_NOMEM, "geometry: out of memory");
-  for (size_t i = 0; i < b->np; ++i)
-    keys[i] = (struct cell_key){(long)floor((b->p[i].x[0] - s->lo[0]) / c),
-                                (long)floor((b->p[i].x[1] - s->lo[1]) / c), i};
+  for (size_t i = 0; i < b->np; ++i) {
+    long ix[2];
+    for (int a = 0; a < 2; ++a) {
+      ix[a] = (long)floor((b->p[i].x[a] - s->lo[a]) / cell[a]);
+      if (s->periodic[a]) ix[a] = (ix[a] % ncell[a] + ncell[a]) % ncell[a];
+    }
+    keys[i] = (struct cell_key){ix[0], ix[1], i};
+  }
   qsort(keys, b->np, sizeof *keys, cell_key_cmp);
   for (size_t k = 0; k < b->np; ++k) {
     const struct particle *p = &b->p[keys[k].i];
@@ -812,6 +825,8 @@ static enum clsph_status check_given_spacing(struct build *b)
       for (long dx = -1; dx <= 1; ++dx) {
         if (dy == 0 && dx < 0) continue; /* each pair of cells once */
         struct cell_key want = {keys[k].cx + dx, keys[k].cy + dy, 0};
+        if (s->periodic[0]) want.cx = (want.cx % ncell[0] + ncell[0]) % ncell[0];
+        if (s->periodic[1]) want.cy = (want.cy % ncell[1] + ncell[1]) % ncell[1];
         size_t lo = 0, hi = b->np; /* the first key >= want */
         while (lo < hi) {
           size_t mid = lo + (hi - lo) / 2;
@@ -821,9 +836,11 @@ static enum clsph_status check_given_spacing(struct build *b)
             hi = mid;
         }
         for (size_t m = lo; m < b->np && keys[m].cx == want.cx && keys[m].cy == want.cy; ++m) {
-          if (dx == 0 && dy == 0 && m <= k) continue;
+          if (m == k || (dx == 0 && dy == 0 && m < k)) continue;
           const struct particle *q = &b->p[keys[m].i];
-          const double d = hypot(p->x[0] - q->x[0], p->x[1] - q->x[1]);
+          double e[2];
+          for (int a = 0; a < 2; ++a) e[a] = gap(s, a, p->x[a], q->x[a]);
+          const double d = hypot(e[0], e[1]);
           const struct scene_region *gp = &s->regions[p->group], *gq = &s->regions[q->group];
           CLSPH_CHECK(d >= c, CLSPH_E_INPUT,
                       "%s:%d: fluid particles at (%g, %g) ('%s') and (%g, %g) ('%s') are %g m "
