@@ -755,10 +755,23 @@ static enum clsph_status fill_fluid(struct build *b)
                     "[%g, %g] x [%g, %g]",
                     s->case_path, g->line, g->name, i + 1, xy[0], xy[1], s->lo[0], s->hi[0],
                     s->lo[1], s->hi[1]);
-      CLSPH_CHECK(!near_obstacle(b, xy, (0.5 - layer_tol) * s->dr), CLSPH_E_INPUT,
+      int inside = near_obstacle(b, xy, (0.5 - layer_tol) * s->dr), container = -1, held = 0;
+      for (int w = 0; w < nw; ++w) {
+        const struct scene_wall *wl = &s->walls[w];
+        if (b->area[w] < 0.0) inside |= point_inside(wl->pts, wl->npts, xy);
+        if (b->area[w] > 0.0) {
+          if (container < 0) container = w;
+          held |= point_inside(wl->pts, wl->npts, xy);
+        }
+      }
+      CLSPH_CHECK(!inside, CLSPH_E_INPUT,
                   "%s:%d: fluid region '%s': points[%d] (%g, %g) lies in an obstacle or within "
                   "dr/2 of it",
                   s->case_path, g->line, g->name, i + 1, xy[0], xy[1]);
+      CLSPH_CHECK(container < 0 || held, CLSPH_E_INPUT,
+                  "%s:%d: fluid region '%s': points[%d] (%g, %g) is outside the closed wall of "
+                  "line %d (a counter-clockwise closed wall holds its fluid inside)",
+                  s->case_path, g->line, g->name, i + 1, xy[0], xy[1], s->walls[container].line);
       CLSPH_TRY(push_fluid(b, r, xy));
     }
     count[r] += g->given ? (size_t)g->npts : 0;
