@@ -958,6 +958,17 @@ clsph_cli_test(fill_points_in_obstacle ARGS info ${bad_fitted} --set what=9 RC 2
                REGEX "points\\[69\\] \\(0.85, 0.35\\) lies in an obstacle")
 clsph_cli_test(fill_points_across_period ARGS info ${bad_fitted} --set what=10 RC 2
                REGEX "at \\(1.995, 0.05\\) \\('fill 1'\\) and \\(0.01, 0.05\\) \\('fill 1'\\) are 0.015 m apart")
+# The delayed activation (tests/case/ke_delay.lua: uniform k and ε at rest, delay 0.5 s, ν_t =
+# 1e-3 meanwhile). Waiting (t = 0.25): k and ν_t exactly as given (measured ratios 1 to 1e-15;
+# bounds 1e-6 for float). Then (t = 1) the homogeneous decay from t = 0.5: k within 0.003% of
+# exact and ν_t of eq 6 to 1e-15 (bound 0.5%: the linearised sink is first order, Δt ε/k =
+# 0.0025); a model that ignored the delay would read 0.83.
+clsph_run_test(run_ke_delay_waiting ${CASE_DIR}/ke_delay.lua SETS t_end=0.25
+               BOUNDS "k_ratio>0.999999" "k_ratio<1.000001" "nu_t_ratio>0.999999"
+               "nu_t_ratio<1.000001" "k_spread<1e-6")
+clsph_run_test(run_ke_delay ${CASE_DIR}/ke_delay.lua SETS t_end=1
+               BOUNDS "k_ratio>0.995" "k_ratio<1.005" "nu_t_ratio>0.999" "nu_t_ratio<1.001"
+               "k_spread<1e-6")
 # The k-ε model's diffusion alone (tests/case/ke_diffusion.lua): a cosine mode of k in a fluid at
 # rest decays at D_k (2π)² plus the linearised sink (eq 28): measured within 0.3% of the exact
 # rate's decay over t = 0.04 (to 0.45); bound 2% (ε's own diffusion, the ⅔ ρ k pressure and the
