@@ -68,8 +68,8 @@ if init == 1 then -- the reference's u, k and ε at the particle's distance from
   local scale = {u = sc, k = sc * sc, epsilon = sc ^ 3}
   local function at(col, y) return ref_at(col, math.min(y, H - y)) * scale[col] end
   fill { 0, off, L, H - off, velocity = function(x, y) return at("u", y), 0 end,
-         k = function(x, y) return at("k", y) end,
-         epsilon = function(x, y) return at("epsilon", y) end }
+         k = turb == 1 and function(x, y) return at("k", y) end or nil,
+         epsilon = turb == 1 and function(x, y) return at("epsilon", y) end or nil }
 else -- the 1/7 power law of the same mean, k and ε of turbulence { }
   fill { 0, off, L, H - off, velocity = function(x, y)
     local d = math.min(y, H - y) / delta
