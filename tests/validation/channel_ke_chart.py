@@ -15,10 +15,14 @@
    profile_outlet.csv, averaged over each run's own last `avg` s), beside OpenFOAM's
    (tests/data/openfoam_channel_{mild,strong}.csv at the run's y_p).
 
+4. The HCD channel's stability map: the disturbance (the RMS along a line of u's spread in time,
+   over U_b, and of k's over its mean: the metrics u_unsteady_* and k_unsteady_*) against N_f,
+   ARD on and off (the runs given as hcdmap:LABEL=RUN_DIR; the label is not used).
+
     python3 tests/validation/channel_ke_chart.py OUT_DIR T0 channel:LABEL=RUN_DIR ... \
-        hcd:LABEL=RUN_DIR ... curved:LABEL=RUN_DIR ...
-writes OUT_DIR/channel_ke_uplus.{csv,png}, OUT_DIR/channel_hcd_profiles.{csv,png} and
-OUT_DIR/channel_curved_profiles.{csv,png} (gnuplot).
+        hcd:LABEL=RUN_DIR ... curved:LABEL=RUN_DIR ... hcdmap:LABEL=RUN_DIR ...
+writes OUT_DIR/channel_ke_uplus.{csv,png}, OUT_DIR/channel_hcd_profiles.{csv,png},
+OUT_DIR/channel_curved_profiles.{csv,png} and OUT_DIR/channel_hcd_map.{csv,png} (gnuplot).
 """
 import csv
 import os
@@ -220,6 +224,49 @@ unset multiplot
 """)
 
 
+def hcd_map_chart(out_dir, runs):
+    rows = []
+    for _, run_dir in runs:
+        path = os.path.join(run_dir, "summary.json")
+        if not os.path.exists(path):
+            print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of the map")
+            continue
+        summary = json_load(path)
+        p, m = summary["parameters"], summary.get("metrics", {})
+        if "u_unsteady_exit" not in m:
+            print(f"channel_ke_chart.py: {run_dir} ({summary['status']}) has no disturbance "
+                  "metrics: left out of the map")
+            continue
+        rows.append(("ARD on" if p.get("ard", 1) else "ARD off", int(p["nf"]),
+                     m["u_unsteady_platform"], m["u_unsteady_exit"], m["k_unsteady_platform"],
+                     m["k_unsteady_exit"]))
+    rows.sort()
+    csv_path = os.path.join(out_dir, "channel_hcd_map.csv")
+    with open(csv_path, "w") as f:
+        f.write("series,nf,u_unsteady_platform,u_unsteady_exit,k_unsteady_platform,"
+                "k_unsteady_exit\n")
+        f.writelines(f"{r[0]},{r[1]},{r[2]:.6g},{r[3]:.6g},{r[4]:.6g},{r[5]:.6g}\n" for r in rows)
+    panels = []
+    for col, what in ((3, "u spread, x = 5"), (4, "u spread, x = 9.5"), (5, "k spread, x = 5"),
+                      (6, "k spread, x = 9.5")):
+        plots = [f"'{csv_path}' using (strcol(1) eq '{s}' ? $2 : 1/0):{col} with linespoints "
+                 f"lw 2 pt 7 title '{s}'" for s in ("ARD on", "ARD off")]
+        panels.append(f"set title '{what}'\nplot {', '.join(plots)}")
+    gnuplot(f"""set terminal pngcairo size 1000,700 font ",10" noenhanced
+set output '{os.path.join(out_dir, "channel_hcd_map.png")}'
+set datafile separator ','
+set grid
+set key top left
+set xlabel 'N_f (rows across the entry)'
+set ylabel 'RMS of the spread in time'
+set xrange [30:90]
+set yrange [0:*]
+set multiplot layout 2,2 title 'HCD channel: the disturbance with and without ARD (a steady RANS flow holds still)'
+{chr(10).join(panels)}
+unset multiplot
+""")
+
+
 def json_load(path):
     import json
     with open(path) as f:
@@ -234,21 +281,24 @@ def main():
     if len(sys.argv) < 4:
         sys.exit(__doc__)
     out_dir, t0 = sys.argv[1], float(sys.argv[2])
-    channel, hcd, curved = [], [], []
+    channel, hcd, curved, hcdmap = [], [], [], []
     for a in sys.argv[3:]:
         kind, rest = a.split(":", 1)
         label, run_dir = rest.rsplit("=", 1)
         if "," in label:
             sys.exit(f"channel_ke_chart.py: a label may not hold a comma (the CSV's separator): {label}")
-        if kind not in ("channel", "hcd", "curved"):
-            sys.exit(f"channel_ke_chart.py: '{kind}' is not channel, hcd or curved: {a}")
-        {"channel": channel, "hcd": hcd, "curved": curved}[kind].append((label, run_dir))
+        if kind not in ("channel", "hcd", "curved", "hcdmap"):
+            sys.exit(f"channel_ke_chart.py: '{kind}' is not channel, hcd, curved or hcdmap: {a}")
+        {"channel": channel, "hcd": hcd, "curved": curved, "hcdmap": hcdmap}[kind].append(
+            (label, run_dir))
     if channel:
         channel_chart(out_dir, channel)
     if hcd:
         hcd_chart(out_dir, t0, hcd)
     if curved:
         curved_chart(out_dir, curved)
+    if hcdmap:
+        hcd_map_chart(out_dir, hcdmap)
     print(f"wrote the charts into {out_dir}")
 
 
