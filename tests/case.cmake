@@ -908,6 +908,8 @@ clsph_cli_test(inflow_function_inconsistent ARGS info ${bad_inflow_turb} --set w
                REGEX "inflow 'entry': k = 0\\.01 and epsilon = 1e-06 at s = 0\\.9[0-9]* m are inconsistent")
 clsph_cli_test(inflow_function_k_alone ARGS info ${bad_inflow_turb} --set what=13 RC 2
                REGEX "inflow 'entry': give k and epsilon together \\(k alone")
+clsph_cli_test(inflow_function_nan ARGS info ${bad_inflow_turb} --set what=14 RC 2
+               REGEX "inflow 'entry': the velocity function gives -?nan at s = 0(\\.0)?: it must be finite")
 # decaying turbulence carried in from an entry through a periodic stream to a natural exit
 # (tests/case/inflow_ke.lua): k and ε against the exact homogeneous decay. Measured (dr = 0.1,
 # t = 6, double and float): k RMS 0.22%, largest 0.56%, ε RMS 0.45% of the entry's, the exit's k

@@ -5,7 +5,7 @@
 -- functions of s: 7 a velocity function that returns a string, 8 a k function negative at the far
 -- end, 9 profile = with a velocity function, 10 ramp = with one, 11 a velocity function whose mean
 -- flows out, 12 k and epsilon functions inconsistent near s = 1 (only there), 13 a k function
--- without epsilon
+-- without epsilon, 14 a velocity function that returns NaN
 param { what = 1 }
 domain { 0, 0, 2, 1 }
 particles { dr = 0.1 }
@@ -31,6 +31,7 @@ if what == 10 then entry.velocity, entry.ramp = function(s) return 1 end, 0.5 en
 if what == 11 then entry.velocity = function(s) return 0.2 - s end end
 if what == 12 then entry.epsilon = function(s) return s < 0.9 and 0.0025 or 1e-6 end end
 if what == 13 then entry.k, entry.epsilon = function(s) return 0.01 end, nil end
+if what == 14 then entry.velocity = function(s) return 0 / 0 end end
 inflow(entry)
 outflow { {2, 0}, {2, 1}, name = "exit" }
 run { t_end = 1 }
