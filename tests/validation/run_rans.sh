@@ -16,7 +16,7 @@ run() { # name case sets...
 }
 # the fully developed channel at Lee & Moser's U_b (flow-rate control), N_f = 20 and 40, the
 # scheme's default momentum dissipation; at N_f = 20 also eq 19's and none; and at the DNS's u_τ
-# (fixed body force) against the 1-D solver. The HCD channel: the comparison with OpenFOAM
+# (fixed body force) against the 1-D solver; N_f = 80 (t = 300, from the 1-D profile). The HCD channel: the comparison with OpenFOAM
 # (N_f = 40, 60 s averaged over the last 20), and the stability map, ARD on and off at N_f = 40,
 # 60, 80 (N_f = 60 and 80: 30 s, averaged over the last 10)
 (
@@ -26,6 +26,7 @@ run() { # name case sets...
   run channel_ke_nf20_fixed channel_ke nf=20 t_end=1000 every=100
   run channel_ke_nf40_ub1 channel_ke nf=40 ub=1 t_end=600 every=100
   run channel_ke_nf40_ub1_off channel_ke nf=40 ub=1 t_end=600 every=100 md=0
+  run channel_ke_nf80_ub1 channel_ke nf=80 ub=1 t_end=300 every=50
   run channel_hcd_nf40_ard1 channel_hcd nf=40 ard=1 t_end=60 avg=20
   run channel_hcd_nf40_ard0 channel_hcd nf=40 ard=0 t_end=60 avg=20
   run channel_hcd_nf60_ard1 channel_hcd nf=60 ard=1 t_end=30 avg=10
@@ -44,6 +45,7 @@ wait
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_rans.md
 python3 tests/validation/channel_ke_chart.py tests/validation 40 \
   "channel:SPH N_f = 20=$out/channel_ke_nf20_ub1" "channel:SPH N_f = 40=$out/channel_ke_nf40_ub1" \
+  "channel:SPH N_f = 80=$out/channel_ke_nf80_ub1" \
   "hcd:SPH N_f = 40 ARD=$out/channel_hcd_nf40_ard1" "hcd:SPH N_f = 40 no ARD=$out/channel_hcd_nf40_ard0" \
   "curved:SPH N_f = 20=$out/channel_curved_strong_nf20" "curved:SPH N_f = 20=$out/channel_curved_mild_nf20" \
   $(for nf in 40 60 80; do for a in 0 1; do echo "hcdmap:map=$out/channel_hcd_nf${nf}_ard$a"; done; done)
