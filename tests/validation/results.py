@@ -144,6 +144,11 @@ def lobovsky_section(runs):
     return out
 
 
+def pair(m, a, b, fmt=".4f"):
+    """Two metrics of a run as "a / b" ("–" for one it lacks)."""
+    return " / ".join(format(m[k], fmt) if k in m else "–" for k in (a, b))
+
+
 def rans_section(runs):
     """The k-ε RANS model of wcsph-riemann (Wang, Sun & Hu sec 5.1, 5.3): the fully developed
     channel (cases/channel_ke.lua) against the 1-D solver, OpenFOAM and Lee & Moser's DNS, and
@@ -208,16 +213,13 @@ def rans_section(runs):
                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for s in curved:
             p, m = s["parameters"], s.get("metrics", {})
-
-            def two(a, b, fmt=".4f"):
-                return " / ".join(format(m[k], fmt) if k in m else "–" for k in (a, b))
             name = {1: "mild", 2: "strong"}.get(int(p.get("setting", 1)), "?")
             peak = (f"{m['u_peak_outlet']:.3f} ({m['u_peak_outlet_fv']:.3f})"
                     if "u_peak_outlet" in m else "–")
             out.append(f"| {name} | {p.get('nf', 0):g} | {m.get('y_p', p.get('y_p', 0)):g} "
                        f"| {s['status']} | {s['sim_time']:.3g} ({m.get('avg', p.get('avg', 0)):.3g}) "
-                       f"| {two('u_rms_bend', 'u_rms_outlet')} | {two('u_max_bend', 'u_max_outlet')} "
-                       f"| {two('k_rms_bend', 'k_rms_outlet')} | {peak} | {s['particles']:g} "
+                       f"| {pair(m, 'u_rms_bend', 'u_rms_outlet')} | {pair(m, 'u_max_bend', 'u_max_outlet')} "
+                       f"| {pair(m, 'k_rms_bend', 'k_rms_outlet')} | {peak} | {s['particles']:g} "
                        f"| {s['steps']:g} | {wall(s)} | {s['particle_steps_per_second']:.3g} |")
     if hcd:
         out += ["", "## k-ε half converging-diverging channel (Wang, Sun & Hu sec 5.3)", "",
@@ -235,16 +237,13 @@ def rans_section(runs):
                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for s in hcd:
             p, m = s["parameters"], s.get("metrics", {})
-
-            def two(a, b, fmt=".3f"):
-                return " / ".join(format(m[k], fmt) if k in m else "–" for k in (a, b))
             out.append(f"| {'on' if p.get('ard', 1) else 'off'} | {p.get('nf', 0):g} "
                        f"| {s['status']} | {p.get('t_end', 0):g} ({p.get('avg', 0):g}) "
-                       f"| {two('u_rms_platform', 'u_rms_exit')} "
-                       f"| {two('k_rms_platform', 'k_rms_exit')} "
+                       f"| {pair(m, 'u_rms_platform', 'u_rms_exit', '.3f')} "
+                       f"| {pair(m, 'k_rms_platform', 'k_rms_exit', '.3f')} "
                        f"| {m.get('backflow_exit', float('nan')):.3f} "
-                       f"| {two('u_unsteady_platform', 'u_unsteady_exit', '.4f')} "
-                       f"| {two('k_unsteady_platform', 'k_unsteady_exit')} "
+                       f"| {pair(m, 'u_unsteady_platform', 'u_unsteady_exit')} "
+                       f"| {pair(m, 'k_unsteady_platform', 'k_unsteady_exit', '.3f')} "
                        f"| {m.get('ard_mean', float('nan')):.2f} | {s['particles']:g} "
                        f"| {wall(s)} | {s['particle_steps_per_second']:.3g} |")
     return out
