@@ -23,8 +23,10 @@
 -- u_rms_bend, u_max_bend, u_rms_outlet, u_max_outlet (over U_b), k_rms_bend, k_rms_outlet (over the
 -- section's largest k_FV); u_peak_bend and u_peak_outlet, where u_t peaks, s/H from the inner wall
 -- (OpenFOAM's in u_peak_*_fv: the bend moves the peak); y_p and avg as used.
+-- checkpoint > 0 writes a checkpoint every `checkpoint` s (the N_f = 40 runs take hours on a CPU:
+-- `clsph run --restart` continues them).
 param { setting = 1, nf = 20, y_p = 0, t_end = 0, every = 0, avg = 0, ard = 0, points = 81,
-        fitted = 1 }
+        fitted = 1, checkpoint = 0 }
 
 local S = ({
   {name = "mild", H = 0.0635, R1 = 99.5, angle = 43, L1 = 2.36, L2 = 2.36, Re = 60000,
@@ -189,7 +191,7 @@ profile { name = "outlet", from = at_exit(R1 + yp, 2 * dr), to = at_exit(R2 - yp
           points = points }
 force { "inner" }
 force { "outer" }
-run { t_end = t_end, output_every = every }
+run { t_end = t_end, output_every = every, checkpoint_every = checkpoint }
 
 function metrics(sim)
   local m = {y_p = yp, avg = avg}

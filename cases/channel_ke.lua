@@ -21,6 +21,15 @@
 -- tests/data/openfoam_channel_straight.csv), as u_tau_dev_1d and u_tau_dev_fv; the u+ metrics
 -- then take the measured u_tau against the 1-D profile of the fixed-u_τ run (u+ of a log law
 -- shifts by (1/κ) ln(Re_τ ratio) at most: 0.03 here).
+-- The same model on the same points (ub > 0, nf = 20, 40 or 80): the 1-D solver on this run's
+-- rows, with a cell of one spacing around each, the first one's bottom the offset wall, and the
+-- rows' mean velocity held at U_b as the flow-rate control holds the particles'
+-- (tests/data/channel1d_rowsN.csv: channel1d --rows N --bulk-over-rows; at nf = 20 OpenFOAM's
+-- wall-function mesh). Its wall layer is the run's first row, so that what is left is the
+-- particles' discretisation: u_tau_dev_rows, u_rows_dev_max and u_rows_rms (u per row over the
+-- reference's), k_rows_rms and k_rows_mean (k per row, RMS and mean of the relative deviation),
+-- and u_plus_model_dns_dev_max, the reference's own u+ against the DNS from the second row on
+-- (the model's error, which the particles' cannot make smaller but by cancelling it).
 -- The run is the last instant's (no time average yet).
 -- tvf: the transport-velocity correction (0 off, 1 full, 2 limited: the scheme's default);
 -- turb = 0 runs the same scene laminar (for the model's cost: `--profile`); ws ≥ 0 sets w_s of
@@ -93,6 +102,10 @@ end
 local dns = reference("tests/data/channel_dns_LM550.csv", "y_over_delta", "U_plus")
 local foam = reference("tests/data/openfoam_channel_straight.csv", "setting", "y_p", "mesh", "y",
                        "U", "u_tau")
+local rows_ref = nil
+if ub > 0 and (nf == 20 or nf == 40 or nf == 80) then
+  rows_ref = reference(("tests/data/channel1d_rows%d.csv"):format(nf), "y", "u", "u_plus", "k")
+end
 local fv_y, fv_up = {}, {}
 for j = 1, #foam.y do
   if foam.setting[j] == "a" and foam.y_p[j] == 0.05 and foam.mesh[j] == "uniform_20" then
@@ -103,12 +116,16 @@ end
 function metrics(sim)
   local y = sim.field("pos", 2).value
   local u = sim.field("vel", 1).value
+  local kf = turb == 1 and sim.field("k").value or nil
   local rows, half = {}, math.floor(nf / 2)
-  for r = 1, half do rows[r] = {sum = 0, n = 0} end
+  for r = 1, half do rows[r] = {sum = 0, k = 0, n = 0} end
   for i = 1, #u do
     local d = math.min(y[i], H - y[i]) -- distance from the nearer wall
     local r = math.floor((d - off) / dr) + 1
-    if r >= 1 and r <= half then rows[r].sum, rows[r].n = rows[r].sum + u[i], rows[r].n + 1 end
+    if r >= 1 and r <= half then
+      rows[r].sum, rows[r].n = rows[r].sum + u[i], rows[r].n + 1
+      if kf then rows[r].k = rows[r].k + kf[i] end
+    end
   end
   local m = {}
   -- the walls' friction over the second half of the run: u_τ,wall² = F_x/(2 L ρ) against the
@@ -148,6 +165,24 @@ function metrics(sim)
   m.u_plus_rms = math.sqrt(sq / half)
   m.u_plus_dns_dev_max = dworst
   m.u_plus_dns_dev_row1 = m.u_plus_row1 / interp(dns.y_over_delta, dns.U_plus, y_p) - 1
+  if rows_ref and kf then -- the same model on the same rows
+    local uw, usq, ksq, ksum, mworst = 0, 0, 0, 0, 0
+    for r = 1, half do
+      local n = math.max(rows[r].n, 1)
+      local du = rows[r].sum / n / rows_ref.u[r] - 1
+      local dk = rows[r].k / n / rows_ref.k[r] - 1
+      uw, usq = math.max(uw, math.abs(du)), usq + du * du
+      ksq, ksum = ksq + dk * dk, ksum + dk
+      if r > 1 then
+        local want = interp(dns.y_over_delta, dns.U_plus, rows_ref.y[r])
+        mworst = math.max(mworst, math.abs(rows_ref.u_plus[r] / want - 1))
+      end
+    end
+    m.u_tau_dev_rows = ut / (rows_ref.u[1] / rows_ref.u_plus[1]) - 1
+    m.u_rows_dev_max, m.u_rows_rms = uw, math.sqrt(usq / half)
+    m.k_rows_rms, m.k_rows_mean = math.sqrt(ksq / half), ksum / half
+    m.u_plus_model_dns_dev_max = mworst
+  end
   if ub > 0 then
     m.u_plus_fv_dev_max = fworst
     m.u_plus_fv_rms = math.sqrt(fsq / half)

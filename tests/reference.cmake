@@ -12,7 +12,7 @@ target_compile_options(channel1d PRIVATE ${CLSPH_WARNINGS})
 
 clsph_test_exe(test_channel1d reference/test_channel1d.c)
 target_link_libraries(test_channel1d PRIVATE clsph_channel1d)
-clsph_add_test(channel1d COMMAND test_channel1d LABELS unit)
+clsph_add_test(channel1d COMMAND test_channel1d ${CMAKE_SOURCE_DIR}/tests/data LABELS unit)
 
 # the command: Lee & Moser's Re_τ = 543.5 channel at 400 cells (u_τ 0.05146, test_channel1d)
 function(channel1d_cli_test name)

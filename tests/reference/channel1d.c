@@ -10,7 +10,16 @@
  * The steady state is reached in pseudo-time, implicitly in the diffusion and in the linearised
  * sinks of eqs 28-30 (every coefficient positive: k and ε stay positive), with the local step
  * k/ε. The paper integrates u with the backward (first-order) difference; the trapezoidal rule
- * here makes the whole scheme second order, which the grid-convergence test checks. */
+ * here keeps the stream second order, but the wall node's sources act over its half cell Δ/2
+ * (node 0 takes the mirror φ_{−1} = φ_1), so the whole scheme converges at first order, and to
+ * a limit in which the wall function's production and ε act on a vanishing layer
+ * (test_channel1d measures the order).
+ * The SPH channel's wall model acts on its first particle row, a layer of one spacing whose
+ * bottom is the offset wall (sec 4.4), and which shrinks as the particles refine: `rows` puts
+ * the nodes on the rows of an SPH run with cells of one spacing around them (the first one's
+ * bottom face the offset wall, the wall function's sources over the whole cell), so that the
+ * same model on the same points, with the same wall layer, is the reference of that run. At
+ * 20 rows (y_p = 0.05, the first cell [0, 2 y_p]) it is OpenFOAM's wall-function mesh. */
 #include "channel1d.h"
 
 #include <math.h>
@@ -82,9 +91,13 @@ static void diffusion(const struct channel1d_problem *p, const double *nu_t, dou
 }
 
 /* The rows of −d/dy(D dφ/dy) at node i (with a zero-flux node 0 and a symmetric node n−1):
- * coefficients of φ_{i−1}, φ_i, φ_{i+1} */
+ * coefficients of φ_{i−1}, φ_i, φ_{i+1}. Node 0 takes no flux through the face below it: on the
+ * node (the mirror φ_{−1} = φ_1, a half cell) or, with `rows`, half a spacing below (the cell of
+ * an SPH row, whose bottom face is the offset wall). The symmetry plane lies on node n−1
+ * (φ_n = φ_{n−2}) or, with `half`, half a spacing beyond it (φ_n = φ_{n−1}). */
 static void diffusion_row(const struct channel1d_model *m, const double *face, const double *node,
-                          int i, int n, double dx, double *a, double *b, double *c)
+                          int i, int n, int rows, int half, double dx, double *a, double *b,
+                          double *c)
 {
   double r = 1.0 / (dx * dx);
   double dl, dr;
@@ -94,12 +107,12 @@ static void diffusion_row(const struct channel1d_model *m, const double *face, c
     dl = i > 0 ? face[i - 1] : 0.0;
     dr = i + 1 < n ? face[i] : 0.0;
   }
-  if (i == 0) { /* the mirror φ_{−1} = φ_1: no flux into the wall */
+  if (i == 0) { /* no flux into the wall */
     *a = 0.0;
-    *c = -2.0 * (m->paper_diffusion ? node[0] : face[0]) * r;
+    *c = -(rows ? 1.0 : 2.0) * (m->paper_diffusion ? node[0] : face[0]) * r;
     *b = -*c;
-  } else if (i == n - 1) { /* symmetry: φ_{n} = φ_{n−2} */
-    *a = -2.0 * (m->paper_diffusion ? node[i] : face[i - 1]) * r;
+  } else if (i == n - 1) { /* symmetry: φ_n = φ_{n−2}, or φ_n = φ_{n−1} (half) */
+    *a = -(half ? 1.0 : 2.0) * (m->paper_diffusion ? node[i] : face[i - 1]) * r;
     *c = 0.0;
     *b = -*a;
   } else {
@@ -112,11 +125,12 @@ static void diffusion_row(const struct channel1d_model *m, const double *face, c
 int channel1d_solve(const struct channel1d_model *m, const struct channel1d_problem *p,
                     struct channel1d_solution *s)
 {
-  int n = p->cells + 1;
-  if (p->cells < 4 || !(p->delta > 0) || !(p->nu > 0) || !(p->y_p > 0) || !(p->y_p < p->delta) ||
-      !(p->u_tau > 0 || p->u_bulk > 0)) {
-    fprintf(stderr,
-            "channel1d: need cells >= 4, δ > 0, ν > 0, 0 < y_p < δ and u_bulk or u_tau > 0\n");
+  int rows = p->rows > 0, n = rows ? (p->rows + 1) / 2 : p->cells + 1;
+  int half = rows && p->rows % 2 == 0;
+  if ((rows ? p->rows < 8 : p->cells < 4) || !(p->delta > 0) || !(p->nu > 0) || !(p->y_p > 0) ||
+      !(p->y_p < p->delta) || !(p->u_tau > 0 || p->u_bulk > 0) || (p->bulk_over_rows && !rows)) {
+    fprintf(stderr, "channel1d: need cells >= 4 or rows >= 8, δ > 0, ν > 0, 0 < y_p < δ, "
+                    "u_bulk or u_tau > 0, and rows for a bulk over the rows\n");
     return -1;
   }
   double *mem = calloc((size_t)n * 14, sizeof(double));
@@ -133,7 +147,7 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
   double *g = mem + 5 * n, *prod = mem + 6 * n, *a = mem + 7 * n, *b = mem + 8 * n;
   double *c = mem + 9 * n, *d = mem + 10 * n, *face = mem + 11 * n, *node = mem + 12 * n;
   double *old = mem + 13 * n;
-  double dx = (p->delta - p->y_p) / p->cells;
+  double dx = rows ? 2.0 * (p->delta - p->y_p) / (p->rows - 1) : (p->delta - p->y_p) / p->cells;
   double cmu = m->c_mu, cmu14 = pow(cmu, 0.25), cmu34 = pow(cmu, 0.75);
 
   /* start: the log layer's equilibrium at u_τ = 0.05 U */
@@ -158,7 +172,18 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
       old[i] = old[i - 1] + 0.5 * dx * (g[i - 1] + g[i]);
       flux += 0.5 * dx * (old[i - 1] + old[i]);
     }
-    if (p->u_tau <= 0) u_tau = sqrt(p->u_bulk * p->delta / flux);
+    if (half) { /* the last half spacing, to the centre plane where df/dy = 0 */
+      double f_c = old[n - 1] + 0.25 * dx * g[n - 1];
+      flux += 0.25 * dx * (old[n - 1] + f_c);
+    }
+    double rows_sum = 0.0, rows_w = 0.0; /* the mean over the rows, the centre node's half */
+    for (int i = 0; i < n; ++i) {
+      double w = !half && i == n - 1 ? 0.5 : 1.0;
+      rows_sum += w * old[i];
+      rows_w += w;
+    }
+    if (p->u_tau <= 0)
+      u_tau = sqrt(p->bulk_over_rows ? p->u_bulk * rows_w / rows_sum : p->u_bulk * p->delta / flux);
     double ut2 = u_tau * u_tau;
     change = 0.0;
     for (int i = 0; i < n; ++i) {
@@ -168,6 +193,7 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
     }
     s->u_tau = u_tau;
     s->u_bulk = ut2 * flux / p->delta;
+    s->u_rows = ut2 * rows_sum / rows_w;
     s->y_plus_p = yp_plus;
     /* production: ν_t (du/dy)² in the stream, τ_w (∂U/∂n)_p at the first node (eq 13) */
     for (int i = 1; i < n; ++i) prod[i] = s->nu_t[i] * ut2 * g[i] * ut2 * g[i];
@@ -177,7 +203,7 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
     diffusion(p, s->nu_t, m->sigma_k, n, face, node);
     for (int i = 0; i < n; ++i) {
       double rate = s->eps[i] / s->k[i], dt = 1.0 / rate;
-      diffusion_row(m, face, node, i, n, dx, &a[i], &b[i], &c[i]);
+      diffusion_row(m, face, node, i, n, rows, half, dx, &a[i], &b[i], &c[i]);
       a[i] *= dt;
       c[i] *= dt;
       b[i] = 1.0 + dt * (b[i] + rate);
@@ -202,7 +228,7 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
         continue;
       }
       double rate = s->eps[i] / s->k[i], dt = 1.0 / rate;
-      diffusion_row(m, face, node, i, n, dx, &a[i], &b[i], &c[i]);
+      diffusion_row(m, face, node, i, n, rows, half, dx, &a[i], &b[i], &c[i]);
       a[i] *= dt;
       c[i] *= dt;
       b[i] = 1.0 + dt * (b[i] + m->c2 * rate);

@@ -21,6 +21,14 @@ struct channel1d_problem {
   double u_bulk; /* the mean of u over [0, delta], the wall-function profile below y_p included */
   double u_tau;  /* > 0: given; then u_bulk is a result */
   int cells;     /* nodes y_p + i (delta − y_p)/cells, i = 0..cells */
+  /* rows > 0 (instead of cells): the nodes are the particle rows of an SPH channel of `rows`
+   * rows across the full height 2 δ with its first row at y_p (the boundary offset of sec 4.4),
+   * y_p + i Δ, Δ = 2 (δ − y_p)/(rows − 1): the centre plane is a node for odd rows and lies
+   * midway between the last node and its mirror for even rows */
+  int rows;
+  /* with rows: u_bulk is the mean of u over the rows (what an SPH run's flow-rate control holds
+   * on its particles), not over [0, δ] */
+  int bulk_over_rows;
 };
 
 /** The solution on the nodes, and the scalars. */
@@ -28,6 +36,7 @@ struct channel1d_solution {
   int nodes;
   double *y, *u, *k, *eps, *nu_t;
   double u_tau, u_bulk, y_plus_p; /* y_plus_p: eq 10 at the first node */
+  double u_rows;                  /* the mean of u over the nodes (rows), the centre's half */
   int iterations;
   double residual; /* the largest relative change of u, k, ε over the last iteration */
 };

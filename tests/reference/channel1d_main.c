@@ -1,7 +1,10 @@
 /* channel1d_main.c: the 1-D k-ε channel reference (channel1d.h) as a command that writes the
  * profile as CSV.
- *   channel1d [--delta 1] [--nu 1e-4] [--y-p 0.05] [--u-bulk 1 | --u-tau U] [--cells 3200]
- *             [--paper-diffusion] [--out FILE]
+ *   channel1d [--delta 1] [--nu 1e-4] [--y-p 0.05] [--u-bulk 1 | --u-tau U]
+ *             [--cells 3200 | --rows N_f [--bulk-over-rows]] [--paper-diffusion] [--out FILE]
+ * --rows N_f puts the nodes on the particle rows of an SPH channel of N_f rows across with its
+ * first row at y_p (channel1d.h); --bulk-over-rows then holds the mean of u over those rows at
+ * --u-bulk, as the SPH run's flow-rate control holds its particles' mean.
  * The defaults are Lee & Moser's Re_τ = 543.5 channel (δ = 1, U_b = 1, ν = 1e-4) with the
  * wall model at y_p = 0.05 (half the spacing of 20 particles across the channel), on 3200 cells
  * (test_channel1d: u_τ there within 0.03% of its grid limit). */
@@ -35,6 +38,10 @@ int main(int argc, char **argv)
       m.paper_diffusion = 1;
       continue;
     }
+    if (strcmp(o, "--bulk-over-rows") == 0) {
+      p.bulk_over_rows = 1;
+      continue;
+    }
     if (i + 1 >= argc) {
       fprintf(stderr, "channel1d: %s needs a value (see the header of channel1d_main.c)\n", o);
       return 2;
@@ -57,6 +64,8 @@ int main(int argc, char **argv)
       p.u_tau = v;
     else if (strcmp(o, "--cells") == 0)
       p.cells = (int)v;
+    else if (strcmp(o, "--rows") == 0)
+      p.rows = (int)v;
     else {
       fprintf(stderr, "channel1d: unknown option %s\n", o);
       return 2;
@@ -75,10 +84,20 @@ int main(int argc, char **argv)
           "# channel1d (tests/reference): standard k-epsilon, wall function at y_p = %g "
           "(Wang, Sun & Hu sec 5.1, eq 41)%s\n",
           p.y_p, m.paper_diffusion ? ", diffusion as eq 41 writes it" : "");
+  char grid[96];
+  if (p.rows > 0)
+    snprintf(grid, sizeof grid, "rows = %d (spacing %.6g)%s", p.rows, s.y[1] - s.y[0],
+             p.bulk_over_rows ? ", bulk over the rows" : "");
+  else
+    snprintf(grid, sizeof grid, "cells = %d", p.cells);
   fprintf(f,
-          "# delta = %g, nu = %g, cells = %d: u_tau = %.6g, Re_tau = %.6g, u_bulk = %.6g, "
-          "y+ at y_p = %.5g, %d iterations\n",
-          p.delta, p.nu, p.cells, ut, ut * p.delta / p.nu, s.u_bulk, s.y_plus_p, s.iterations);
+          "# delta = %g, nu = %g, %s: u_tau = %.6g, Re_tau = %.6g, u_bulk = %.6g, "
+          "u_rows = %.6g, y+ at y_p = %.5g, %d iterations\n",
+          p.delta, p.nu, grid, ut, ut * p.delta / p.nu, s.u_bulk, s.u_rows, s.y_plus_p,
+          s.iterations);
+  fprintf(f, "# made by: channel1d");
+  for (int i = 1; i < argc; ++i) fprintf(f, " %s", argv[i]);
+  fprintf(f, "\n");
   fprintf(f, "y,y_over_delta,y_plus,u,u_plus,k,k_plus,epsilon,nu_t\n");
   for (int i = 0; i < s.nodes; ++i)
     fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", s.y[i], s.y[i] / p.delta,

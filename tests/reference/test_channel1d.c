@@ -3,6 +3,8 @@
  * law of its wall function in the overlap region, and refuses a bad problem. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "channel1d.h"
 #include "tcheck.h"
@@ -34,7 +36,44 @@ static double steady_residual(const struct channel1d_model *m, const struct chan
   return worst;
 }
 
-int main(void)
+/* The stored rows reference (tests/data/channel1d_rowsN.csv, which cases/channel_ke.lua reads)
+ * against a solve now: u_τ of its header, u and k on every row, to 1e-6 */
+static void check_rows_file(const struct channel1d_model *m, const char *dir, int rows)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s/channel1d_rows%d.csv", dir, rows);
+  FILE *f = fopen(path, "r");
+  TC_CHECK(f != NULL, "open %s", path);
+  if (f == NULL) return;
+  struct channel1d_problem q = {
+      .delta = 1.0, .nu = 1e-4, .y_p = 0.05, .u_bulk = 1.0, .rows = rows, .bulk_over_rows = 1};
+  struct channel1d_solution s = {0};
+  TC_CHECK(channel1d_solve(m, &q, &s) == 0, "solve on %d rows", rows);
+  char line[1024];
+  int row = 0;
+  double ut = -1.0;
+  while (fgets(line, sizeof line, f)) {
+    const char *at = strstr(line, "u_tau = ");
+    if (line[0] == '#') {
+      if (at) ut = strtod(at + 8, NULL);
+      continue;
+    }
+    double y, yd, yplus, u, uplus, k;
+    if (sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf", &y, &yd, &yplus, &u, &uplus, &k) != 6) continue;
+    if (row < s.nodes) {
+      TC_NEAR(y, s.y[row], 1e-8, "%s: y of row %d", path, row + 1);
+      TC_NEAR(u / s.u[row], 1.0, 1e-6, "%s: u of row %d", path, row + 1);
+      TC_NEAR(k / s.k[row], 1.0, 1e-6, "%s: k of row %d", path, row + 1);
+    }
+    ++row;
+  }
+  fclose(f);
+  TC_CHECK(row == s.nodes, "%s: %d rows, the solve %d", path, row, s.nodes);
+  TC_NEAR(ut / s.u_tau, 1.0, 1e-5, "%s: u_tau %.6g against %.7g", path, ut, s.u_tau);
+  channel1d_free(&s);
+}
+
+int main(int argc, char **argv)
 {
   struct channel1d_model m = channel1d_standard();
   /* Lee & Moser's Re_τ = 543.5 channel (δ = 1, U_b = 1, ν = 1e-4), the wall model at y_p = 0.05 */
@@ -123,6 +162,52 @@ int main(void)
     TC_CHECK(fabs(s.u_tau / ut[4] - 1.0) < 0.03, "the two diffusion forms within 3%%");
     channel1d_free(&s);
   }
+
+  /* the nodes on an SPH run's rows (cells of one spacing around them, the first cell's bottom
+   * the offset wall): a steady solution, the bulk over the rows held when asked, and the same
+   * limit as the node-centred grid as the rows refine (the wall layer vanishes either way) */
+  {
+    struct channel1d_problem q = p;
+    struct channel1d_solution s = {0};
+    q.cells = 0;
+    int rows[3] = {1280, 2560, 5120};
+    double ur[3];
+    for (int g = 0; g < 3; ++g) {
+      q.rows = rows[g];
+      TC_CHECK(channel1d_solve(&m, &q, &s) == 0, "solve on %d rows", rows[g]);
+      ur[g] = s.u_tau;
+      TC_NEAR(s.y[1] - s.y[0], 2.0 * (q.delta - q.y_p) / (rows[g] - 1), 1e-12, "row spacing");
+      channel1d_free(&s);
+    }
+    double lim = ur[2] + (ur[2] - ur[1]) * (ur[2] - ur[1]) / (ur[1] - ur[2] - (ur[0] - ur[1]));
+    printf("rows 1280, 2560, 5120: u_tau %.7f %.7f %.7f, limit %.7f (%+.3f%% of the nodes')\n",
+           ur[0], ur[1], ur[2], lim, 100.0 * (lim / limit - 1.0));
+    TC_CHECK(fabs(lim / limit - 1.0) < 5e-4, "rows and nodes share the grid limit (%.2e)",
+             lim / limit - 1.0);
+    /* 20 and 21 rows: the centre plane between two rows and on one */
+    for (int r = 20; r <= 21; ++r) {
+      q.rows = r;
+      q.bulk_over_rows = 1;
+      TC_CHECK(channel1d_solve(&m, &q, &s) == 0, "solve on %d rows, the bulk over them", r);
+      TC_NEAR(s.u_rows, 1.0, 1e-12, "the rows' mean velocity, %d rows", r);
+      TC_CHECK(s.u_bulk < 1.0, "the bulk over [0, δ] under the rows' (%.4f)", s.u_bulk);
+      double res = steady_residual(&m, &q, &s);
+      TC_CHECK(res < 1e-6, "steady residual %.3g < 1e-6, %d rows", res, r);
+      TC_NEAR(s.y[0], q.y_p, 1e-15, "the first row at y_p");
+      printf("%d rows, the bulk over the rows: u_tau %.7f, bulk over [0, δ] %.5f\n", r, s.u_tau,
+             s.u_bulk);
+      channel1d_free(&s);
+    }
+    q.bulk_over_rows = 0;
+    q.rows = 0;
+    q.cells = 100;
+    q.bulk_over_rows = 1;
+    TC_CHECK(channel1d_solve(&m, &q, &s) != 0, "a bulk over the rows without rows is refused");
+  }
+
+  /* the references of the SPH channel (cases/channel_ke.lua) are this solver's */
+  if (argc > 1)
+    for (int r = 20; r <= 80; r *= 2) check_rows_file(&m, argv[1], r);
 
   /* a bad problem is refused */
   {
