@@ -3,10 +3,31 @@
 #include "metrics.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "kern.h"
+
+/* A refused input: the reason goes to the api's `why`, which the script's error (case.c) quotes,
+ * so that it is said once, where the script asked */
+#define METRIC_REFUSE(cond, ...)                                                                   \
+  do {                                                                                             \
+    if (!(cond)) {                                                                                 \
+      struct case_sim_api *api_ = ctx;                                                             \
+      snprintf(api_->why, sizeof api_->why, __VA_ARGS__);                                          \
+      st = CLSPH_E_INPUT;                                                                          \
+      goto done;                                                                                   \
+    }                                                                                              \
+  } while (0)
+
+/* The run behind a callback's ctx (the api itself: metrics_api), its `why` cleared */
+static struct sim *begin(void *ctx)
+{
+  struct case_sim_api *api = ctx;
+  api->why[0] = '\0';
+  return api->run;
+}
 
 /* Statistics of a field over the particles of a kind (−1: all) in a box (NULL: everywhere). */
 static enum clsph_status metric_stats(void *ctx, const char *field, int comp, int kind,
@@ -14,14 +35,13 @@ static enum clsph_status metric_stats(void *ctx, const char *field, int comp, in
                                       size_t *count)
 {
   enum clsph_status st = CLSPH_OK;
-  struct sim *sim = ctx;
+  struct sim *sim = begin(ctx);
   real *v = NULL, *x = NULL;
   cl_uint *k = NULL;
   int idx = pset_find(&sim->ps, field);
-  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  METRIC_REFUSE(idx >= 0, "no field '%s'", field);
   const struct pfield *f = &sim->ps.f[idx];
-  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
-              field, f->nout);
+  METRIC_REFUSE(comp >= 0 && comp < f->nout, "field '%s' has %d components", field, f->nout);
   size_t n = sim->ps.n;
   v = malloc(n * f->elem + 1);
   k = malloc(n * sizeof *k + 1);
@@ -64,14 +84,14 @@ done:
 static enum clsph_status metric_series(void *ctx, const char *name, size_t *n, double **rows)
 {
   enum clsph_status st = CLSPH_OK;
-  const struct sim *sim = ctx;
+  const struct sim *sim = begin(ctx);
   const struct sim_samples *h = &sim->samples;
   int col = -1;
   *n = 0;
   *rows = NULL;
   for (int c = 0; c < h->ncols; ++c)
     if (strcmp(h->names[c], name) == 0) col = c;
-  CLSPH_CHECK(col >= 0, CLSPH_E_INPUT, "metrics: sample() records no value '%s'", name);
+  METRIC_REFUSE(col >= 0, "sample() records no value '%s'", name);
   double *out = malloc(2 * (h->nrows + 1) * sizeof *out);
   CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
   const size_t cols = 1 + (size_t)h->ncols;
@@ -90,15 +110,14 @@ static enum clsph_status metric_particles(void *ctx, const char *field, int comp
                                           size_t *count, double **xy, double **values)
 {
   enum clsph_status st = CLSPH_OK;
-  struct sim *sim = ctx;
+  struct sim *sim = begin(ctx);
   real *v = NULL, *x = NULL;
   cl_uint *k = NULL;
   double *oxy = NULL, *ov = NULL;
   int idx = pset_find(&sim->ps, field);
-  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  METRIC_REFUSE(idx >= 0, "no field '%s'", field);
   const struct pfield *f = &sim->ps.f[idx];
-  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
-              field, f->nout);
+  METRIC_REFUSE(comp >= 0 && comp < f->nout, "field '%s' has %d components", field, f->nout);
   const size_t n = sim->ps.n;
   v = malloc(n * f->elem);
   x = malloc(2 * n * sizeof *x);
@@ -136,12 +155,12 @@ static enum clsph_status metric_sample(void *ctx, const char *field, int comp, d
                                        double *value)
 {
   enum clsph_status st = CLSPH_OK;
-  struct sim *sim = ctx;
+  struct sim *sim = begin(ctx);
   double at[2] = {x, y}, out[4];
   int idx = pset_find(&sim->ps, field);
-  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
-  CLSPH_CHECK(comp >= 0 && comp < sim->ps.f[idx].nout, CLSPH_E_INPUT,
-              "metrics: field '%s' has %d components", field, sim->ps.f[idx].nout);
+  METRIC_REFUSE(idx >= 0, "no field '%s'", field);
+  METRIC_REFUSE(comp >= 0 && comp < sim->ps.f[idx].nout, "field '%s' has %d components", field,
+                sim->ps.f[idx].nout);
   CLSPH_TRY(sim_sample(sim, idx, 1, at, out));
   *value = out[comp];
 done:
@@ -152,20 +171,18 @@ static enum clsph_status metric_probe(void *ctx, const char *name, const char *f
                                       double *value)
 {
   enum clsph_status st = CLSPH_OK;
-  struct sim *sim = ctx;
+  struct sim *sim = begin(ctx);
   const struct scene *s = sim->scene;
   const struct scene_probe *pr = NULL;
   double out[4];
   for (int k = 0; k < s->nprobes; ++k)
     if (strcmp(s->probes[k].name, name) == 0) pr = &s->probes[k];
-  CLSPH_CHECK(pr != NULL, CLSPH_E_INPUT, "metrics: the case declares no probe '%s'", name);
+  METRIC_REFUSE(pr != NULL, "the case declares no probe '%s'", name);
   int idx = pset_find(&sim->ps, field);
-  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  METRIC_REFUSE(idx >= 0, "no field '%s'", field);
   const struct pfield *f = &sim->ps.f[idx];
-  CLSPH_CHECK(f->type == PF_REAL && f->ncomp <= 4, CLSPH_E_INPUT,
-              "metrics: field '%s' cannot be interpolated", field);
-  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
-              field, f->nout);
+  METRIC_REFUSE(f->type == PF_REAL && f->ncomp <= 4, "field '%s' cannot be interpolated", field);
+  METRIC_REFUSE(comp >= 0 && comp < f->nout, "field '%s' has %d components", field, f->nout);
   CLSPH_TRY(sim_sample_probes(sim, idx, 1, pr, out));
   *value = out[comp];
 done:
@@ -176,13 +193,12 @@ static enum clsph_status metric_sample_many(void *ctx, const char *field, int co
                                             const double *xy, double *values)
 {
   enum clsph_status st = CLSPH_OK;
-  struct sim *sim = ctx;
+  struct sim *sim = begin(ctx);
   double *out = NULL;
   int idx = pset_find(&sim->ps, field);
-  CLSPH_CHECK(idx >= 0, CLSPH_E_INPUT, "metrics: no field '%s'", field);
+  METRIC_REFUSE(idx >= 0, "no field '%s'", field);
   const struct pfield *f = &sim->ps.f[idx];
-  CLSPH_CHECK(comp >= 0 && comp < f->nout, CLSPH_E_INPUT, "metrics: field '%s' has %d components",
-              field, f->nout);
+  METRIC_REFUSE(comp >= 0 && comp < f->nout, "field '%s' has %d components", field, f->nout);
   out = malloc((size_t)np * (size_t)f->ncomp * sizeof *out);
   CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
   CLSPH_TRY(sim_sample(sim, idx, (size_t)np, xy, out));
@@ -205,13 +221,11 @@ static enum clsph_status metric_force_history(void *ctx, const char *group, doub
                                               double **rows)
 {
   enum clsph_status st = CLSPH_OK;
-  struct sim *sim = ctx;
+  struct sim *sim = begin(ctx);
   const int g = force_group(sim->scene, group);
   *rows = NULL;
   *n = 0;
-  CLSPH_CHECK(g >= 0, CLSPH_E_INPUT,
-              "metrics: sim.force_history: the case records no force of '%s' (force { \"%s\" })",
-              group, group);
+  METRIC_REFUSE(g >= 0, "the case records no force of '%s' (force { \"%s\" })", group, group);
   const size_t cols = 1 + 4 * (size_t)sim->scene->nforces;
   double *out = malloc(3 * (sim->nforce_rows + 1) * sizeof *out);
   CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
@@ -233,14 +247,14 @@ static enum clsph_status metric_force(void *ctx, const char *group, double since
                                       int *samples)
 {
   enum clsph_status st = CLSPH_OK;
-  struct sim *sim = ctx;
+  struct sim *sim = begin(ctx);
   const struct scene *s = sim->scene;
   const int g = force_group(s, group);
-  CLSPH_CHECK(g >= 0, CLSPH_E_INPUT,
-              "metrics: sim.force: the case records no force of '%s' "
-              "(force { \"%s\" })",
-              group, group);
-  CLSPH_CHECK(sim->nforce_rows > 0, CLSPH_E_INPUT, "metrics: sim.force: no force recorded yet");
+  METRIC_REFUSE(g >= 0,
+                "the case records no force of '%s' "
+                "(force { \"%s\" })",
+                group, group);
+  METRIC_REFUSE(sim->nforce_rows > 0, "no force recorded yet");
   const size_t cols = 1 + 4 * (size_t)s->nforces;
   double sum[4] = {0.0, 0.0, 0.0, 0.0};
   int c = 0;
@@ -250,7 +264,7 @@ static enum clsph_status metric_force(void *ctx, const char *group, double since
     for (int k = 0; k < 4; ++k) sum[k] += row[1 + 4 * g + k];
     ++c;
   }
-  CLSPH_CHECK(c > 0, CLSPH_E_INPUT, "metrics: sim.force: no force recorded at t >= %g s", since);
+  METRIC_REFUSE(c > 0, "no force recorded at t >= %g s", since);
   for (int k = 0; k < 4; ++k) sum[k] /= c;
   out[0] = sum[0] + sum[2];
   out[1] = sum[1] + sum[3];
@@ -263,7 +277,8 @@ done:
 void metrics_api(struct sim *sim, const char *dir, struct case_sim_api *api)
 {
   memset(api, 0, sizeof *api);
-  api->ctx = sim;
+  api->ctx = api;
+  api->run = sim;
   api->time = sim->time;
   api->steps = sim->step;
   api->particles = (double)sim->ps.n;

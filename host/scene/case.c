@@ -1661,6 +1661,12 @@ done:
 
 /* ---- metrics ---- */
 
+/* why a callback refused (its own words), or a device or memory failure already logged */
+static const char *why_of(const struct case_sim_api *api)
+{
+  return api->why[0] != '\0' ? api->why : "the run could not provide it (see above)";
+}
+
 static const struct case_sim_api *api_of(lua_State *L)
 {
   return lua_touserdata(L, lua_upvalueindex(1));
@@ -1719,7 +1725,8 @@ static int l_stat(lua_State *L, int which)
   double v[3];
   size_t count = 0;
   if (api->stats(api->ctx, field, comp, kind, region, &v[0], &v[1], &v[2], &count) != CLSPH_OK)
-    return luaL_error(L, "sim: no statistics for field '%s' component %d", field, comp + 1);
+    return luaL_error(L, "sim: no statistics for field '%s' component %d: %s", field, comp + 1,
+                      why_of(api));
   if (count == 0 && region != NULL) {
     lua_pushnil(L);
     return 1;
@@ -1738,7 +1745,7 @@ static int l_series(lua_State *L)
   size_t n = 0;
   double *rows = NULL;
   if (api->series == NULL || api->series(api->ctx, name, &n, &rows) != CLSPH_OK)
-    return luaL_error(L, "sim.series: sample() records no value '%s'", name);
+    return luaL_error(L, "sim.series: %s", api->series ? why_of(api) : "the case has no sample()");
   lua_createtable(L, 0, 2);
   const char *names[] = {"time", "value"};
   for (int c = 0; c < 2; ++c) {
@@ -1777,8 +1784,8 @@ static int l_probe_now(lua_State *L)
   int comp = (int)luaL_optinteger(L, 3, 1) - 1;
   double v = 0.0;
   if (api->probe == NULL || api->probe(api->ctx, name, field, comp, &v) != CLSPH_OK)
-    return luaL_error(L, "sim.probe: no value of '%s' (component %d) at probe '%s'", field,
-                      comp + 1, name);
+    return luaL_error(L, "sim.probe: no value of '%s' (component %d) at probe '%s': %s", field,
+                      comp + 1, name, why_of(api));
   lua_pushnumber(L, v);
   return 1;
 }
@@ -1791,7 +1798,8 @@ static int l_sample(lua_State *L)
   double x = luaL_checknumber(L, 2), y = luaL_checknumber(L, 3), v = 0.0;
   int comp = (int)luaL_optinteger(L, 4, 1) - 1;
   if (api->sample(api->ctx, field, comp, x, y, &v) != CLSPH_OK)
-    return luaL_error(L, "sim.sample: cannot sample '%s' at (%f, %f)", field, x, y);
+    return luaL_error(L, "sim.sample: cannot sample '%s' at (%f, %f): %s", field, x, y,
+                      why_of(api));
   lua_pushnumber(L, v);
   return 1;
 }
@@ -1808,7 +1816,8 @@ static int l_field_values(lua_State *L)
   double *xy = NULL, *v = NULL;
   if (api->field_values == NULL ||
       api->field_values(api->ctx, field, comp, kind, &n, &xy, &v) != CLSPH_OK)
-    return luaL_error(L, "sim.field: no field '%s' component %d", field, comp + 1);
+    return luaL_error(L, "sim.field: no values of '%s' component %d: %s", field, comp + 1,
+                      why_of(api));
   lua_createtable(L, 0, 3);
   const char *names[] = {"x", "y", "value"};
   for (int c = 0; c < 3; ++c) {
@@ -1836,7 +1845,7 @@ static int l_force_metric(lua_State *L)
   double since = lua_isnoneornil(L, 2) ? -1.0 : luaL_checknumber(L, 2), v[6];
   int samples = 0;
   if (api->force == NULL || api->force(api->ctx, group, since, v, &samples) != CLSPH_OK)
-    return luaL_error(L, "sim.force: no force of wall group '%s'", group);
+    return luaL_error(L, "sim.force: %s", why_of(api));
   lua_createtable(L, 0, 7);
   for (int k = 0; k < 6; ++k) {
     lua_pushnumber(L, v[k]);
@@ -1857,7 +1866,7 @@ static int l_force_history(lua_State *L)
   size_t n = 0;
   if (api->force_history == NULL ||
       api->force_history(api->ctx, group, since, &n, &rows) != CLSPH_OK)
-    return luaL_error(L, "sim.force_history: no force of wall group '%s'", group);
+    return luaL_error(L, "sim.force_history: %s", why_of(api));
   static const char *const names[] = {"time", "x", "y"};
   lua_createtable(L, 0, 3);
   for (int c = 0; c < 3; ++c) {
@@ -2112,7 +2121,10 @@ static int l_profile_error(lua_State *L)
     free(vs);
     free(xy);
     free(got);
-    return luaL_error(L, "profile_error: cannot sample '%s' at the points of %s", field, path);
+    return luaL_error(L, "profile_error: cannot sample '%s' at the points of %s: %s", field, path,
+                      xy == NULL || got == NULL ? "out of memory"
+                      : m == 0                  ? "none of them is inside"
+                                                : why_of(api));
   }
   double ss = 0.0, mx = 0.0;
   for (int k = 0; k < m; ++k) {

@@ -11,6 +11,8 @@ struct cJSON;
 /** What a case's `metrics(sim)` function can ask of the finished run. */
 struct case_sim_api {
   void *ctx;        /* passed back to the callbacks */
+  void *run;        /* what the callbacks read (struct sim for metrics_api) */
+  char why[256];    /* why a callback refused its input: the script's error quotes it */
   double time;      /* simulated time, s */
   long steps;       /* time steps */
   double particles; /* particle count */

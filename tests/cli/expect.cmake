@@ -1,5 +1,6 @@
 # Runs a command and checks its exit status and output; used by the command-line tests.
 #   cmake -DCMD="prog|arg|..." -DRC=0|nonzero|N -DREGEX="..." [-DREGEX2="..."] [-DENV="K=V|..."]
+#         [-DNOT_REGEX="..."] (the output must not match it: a message said twice, say)
 #         [-DBREAK_KERNELS=DIR -DKERNELS=SRC] [-DFRESH_DIR=DIR] -P expect.cmake
 # BREAK_KERNELS copies the kernel sources SRC to DIR and appends a line that is not OpenCL C to
 # common/grid.cl; the expected compiler message names that file and line (@LINE@ in REGEX).
@@ -40,3 +41,6 @@ foreach(re IN ITEMS "${REGEX}" "${REGEX2}")
     message(FATAL_ERROR "output does not match '${re}'")
   endif()
 endforeach()
+if(NOT_REGEX AND out MATCHES "${NOT_REGEX}")
+  message(FATAL_ERROR "output matches '${NOT_REGEX}'")
+endif()
