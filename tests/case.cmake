@@ -875,6 +875,17 @@ clsph_run_test(run_channel_curved_start ${CMAKE_SOURCE_DIR}/cases/channel_curved
                SETS setting=2 t_end=0.1 every=0.05 avg=0.05
                BOUNDS "u_rms_bend<0.03" "u_rms_outlet<0.04" "u_max_outlet<0.08" "k_rms_bend<0.13"
                "k_rms_outlet<0.14" "health.nearest_spacing_min_dr>0.8")
+# The HCD channel's start with its particles fitted to the lower wall (cases/channel_hcd.lua,
+# fitted = 1: six rows parallel to the ramps and the platform, round at the convex corners,
+# trimmed at the concave ones, the lattice above, the floor's dummy layers in rows): no particle
+# crosses the wall, and the band's junction with the lattice closes to 0.71 dr (double and float;
+# it starts at 0.89 dr; the Cartesian lattice alone reaches 0.67 dr). 2-4 s.
+clsph_run_test(run_channel_hcd_fitted_start ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
+               SETS fitted=1 t_end=0.3 every=0.1 avg=0.3
+               BOUNDS "health.nearest_spacing_min_dr>0.65" "wall_crossings.steps<0.5")
+clsph_cli_test(channel_hcd_band_too_thin ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
+               --set fitted=1 --set band=1 RC 2
+               REGEX "channel_hcd: band = 1: the fitted rows must be a whole number from 2")
 # fill { k, epsilon } needs a turbulence model; k and ε of a fill must be positive
 clsph_cli_test(turbulence_fill_without_model ARGS info ${bad_turb} --set what=7 RC 2
                REGEX "fill \\{ k, epsilon \\}: the case declares no turbulence")

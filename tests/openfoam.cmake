@@ -2,13 +2,13 @@
 # Hu sec 5.1-5.3): each test re-runs one case of run.sh into the build tree and compares the fresh
 # CSV with tests/data/openfoam_channel_<case>.csv (compare.py: U to a relative 1e-3). They need
 # OpenFOAM v1912 (Debian's openfoam package; skipped, exit 77, without it) and take minutes of one
-# core (straight 0.5, mild 1.5, strong 1, hcd 0.5): labels slow and openfoam, so CI (-LE slow)
-# leaves them out; ctest -L openfoam runs them.
-foreach(case straight mild strong hcd)
+# core (straight 0.5, mild 1.5, strong 1, hcd 0.5, hcd_fine 4-6): labels slow and openfoam, so CI
+# (-LE slow) leaves them out; ctest -L openfoam runs them.
+foreach(case straight mild strong hcd hcd_fine)
   clsph_add_test(openfoam_channel_${case} TIMEOUT 1800 LABELS "slow;openfoam"
                  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/validation/openfoam/channel_ke/check.sh ${case}
                          ${CMAKE_CURRENT_BINARY_DIR}/openfoam_channel/${case})
 endforeach()
 # one OpenFOAM run at a time: each is serial, and the references were made that way
 set_tests_properties(openfoam_channel_straight openfoam_channel_mild openfoam_channel_strong
-                     openfoam_channel_hcd PROPERTIES RUN_SERIAL TRUE)
+                     openfoam_channel_hcd openfoam_channel_hcd_fine PROPERTIES RUN_SERIAL TRUE)

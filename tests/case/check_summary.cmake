@@ -1,6 +1,7 @@
 # Checks OUT/summary.json of a finished run: the keys every run writes, status "ok", and the
 # metrics bounds given as METRIC_NAME<value, e.g. -DBOUNDS="drop_error<0.1;x_min>-1e-9", and bounds
-# on the health checks' worst values (summary.json "health") as health.NAME<value.
+# on another object of summary.json as BLOCK.NAME<value: the health checks' worst values
+# (health.nearest_spacing_min_dr>0.8), the wall crossings (wall_crossings.steps<0.5).
 file(READ ${OUT}/summary.json json)
 foreach(key case scheme precision device particles steps sim_time wall_seconds
             particle_steps_per_second status metrics)
@@ -18,16 +19,16 @@ if(err OR NOT failure STREQUAL "none")
   message(FATAL_ERROR "failure is '${failure}', not 'none'")
 endif()
 foreach(b IN LISTS BOUNDS)
-  if(NOT b MATCHES "^(health\\.)?([A-Za-z_][A-Za-z0-9_]*)([<>])(.+)$")
-    message(FATAL_ERROR "bound '${b}' is not [health.]NAME<value or [health.]NAME>value")
+  if(NOT b MATCHES "^(([a-z_]+)\\.)?([A-Za-z_][A-Za-z0-9_]*)([<>])(.+)$")
+    message(FATAL_ERROR "bound '${b}' is not [BLOCK.]NAME<value or [BLOCK.]NAME>value")
   endif()
   set(block metrics)
   if(CMAKE_MATCH_1)
-    set(block health)
+    set(block ${CMAKE_MATCH_2})
   endif()
-  set(name ${CMAKE_MATCH_2})
-  set(op ${CMAKE_MATCH_3})
-  set(bound ${CMAKE_MATCH_4})
+  set(name ${CMAKE_MATCH_3})
+  set(op ${CMAKE_MATCH_4})
+  set(bound ${CMAKE_MATCH_5})
   string(JSON v ERROR_VARIABLE err GET "${json}" ${block} ${name})
   if(err)
     message(FATAL_ERROR "summary.json has no ${block} value '${name}'")

@@ -4,7 +4,8 @@
 1. The fully developed channel: u+ against y+ of the runs given (cases/channel_ke.lua with
    ub = 1: each run's u+ and y+ in its own friction velocity, the rows' means over the last
    snapshot, both halves folded), beside Lee & Moser's DNS at Re_tau = 543.5, the 1-D solver
-   (tests/data/channel1d_re_tau543.csv) and OpenFOAM's 20-cell run at the same U_b
+   (tests/data/channel1d_re_tau543.csv; and on the rows of N_f = 40, channel1d_rows40.csv) and
+   OpenFOAM's 20-cell run at the same U_b
    (tests/data/openfoam_channel_straight.csv, setting a, y_p = 0.05).
 2. The half converging-diverging channel: u and k along x = 5 (over the platform) and x = 9.5
    (the exit section) of the runs given (cases/channel_hcd.lua: profile_platform.csv and
@@ -80,6 +81,8 @@ def channel_chart(out_dir, runs):
             rows.append(("DNS (Lee & Moser)", float(r["y_plus"]), float(r["U_plus"])))
     for r in table(os.path.join(ROOT, "tests/data/channel1d_re_tau543.csv")):
         rows.append(("1-D solver", float(r["y_plus"]), float(r["u_plus"])))
+    for r in table(os.path.join(ROOT, "tests/data/channel1d_rows40.csv")):
+        rows.append(("1-D solver on the 40 rows", float(r["y_plus"]), float(r["u_plus"])))
     for r in table(os.path.join(ROOT, "tests/data/openfoam_channel_straight.csv")):
         if r["setting"] == "a" and float(r["y_p"]) == 0.05 and r["mesh"] == "uniform_20":
             ut = float(r["u_tau"])

@@ -340,8 +340,10 @@ def hcd(scratch, names):
                  "same 40 cells across), copied face by face" if run["src"] != "uniform" else
                  "SPHinXsys's: uniform U = 1, k = 3/2 (0.05 U)^2 = 3.75e-3, epsilon = Cmu^(3/4) "
                  "k^(3/2) / (0.07 H) = 2.695e-4")
+        gap = run["H"] - h1 - 2 * run["l"]
         head.append(f"# {name}: entry {entry}; mesh {mesh_words(r)} (the core is finer over the "
-                    f"platform: 38 cells in 1.034), streamwise cells 0.05 on the lower wall; "
+                    f"platform: {run['ncore']} cells in {gap:.4g}), streamwise cells "
+                    f"{run['aspect'] * run['l']:g} on the lower wall; "
                     f"{convergence_words(r)}; {words}; wall time {lg['clock']} s")
         print(f"{name}: {words}, {lg['its']} its, "
               f"{'converged' if lg['converged'] else 'NOT converged'}, {lg['clock']} s",
@@ -368,7 +370,7 @@ def main():
         sys.exit(__doc__)
     scratch, outdir = sys.argv[1], sys.argv[2]
     wanted = sys.argv[3:]
-    make = {"straight": straight, "mild": curved, "strong": curved, "hcd": hcd}
+    make = {"straight": straight, "mild": curved, "strong": curved, "hcd": hcd, "hcd_fine": hcd}
     for case in make:
         names = [n for n in setup.CASES[case] if case == "straight" or n.startswith(case)]
         names = [n for n in names if "periodic" not in n]

@@ -10,12 +10,14 @@
 #   mild      curved channel of Table 1, Re = 60000, y_p = 1.59e-3 and 7e-4
 #   strong    curved channel of Table 1, Re = 148400, y_p = H/40 and H/80
 #   hcd       the half converging-diverging channel of SPHinXsys, Re = 40000, y_p = 0.025
+#   hcd_fine  hcd's uniform entry on a mesh with the same wall cells and a core and streamwise
+#             cells twice as fine: how far the reference is from its mesh limit
 # The curved and HCD entries take the fully developed profile (U, k, epsilon) of a periodic run at
 # the same Re and y_p (run first: mild_periodic_*, strong_periodic_*, straight_b_yp0.025); hcd
 # also runs SPHinXsys's uniform entry. Each run is made in $OF_SCRATCH/<run> (default
 # /tmp/of_channel_ke), run serial under nice, then post.py writes
 # $OF_OUT/openfoam_channel_<case>.csv (default tests/data). On one core, all the runs of a case:
-# straight 15 s, mild 1 minute, strong 20 s, hcd 25 s.
+# straight 15 s, mild 1 minute, strong 20 s, hcd 25 s, hcd_fine 4 minutes.
 #   tests/validation/openfoam/channel_ke/run.sh CASE...   run these cases, then their CSVs
 #   tests/validation/openfoam/channel_ke/run.sh post      the CSVs of every case found in scratch
 set -eo pipefail

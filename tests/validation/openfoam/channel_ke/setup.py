@@ -16,7 +16,7 @@ wall + 2 y_p, second wall - 2 y_p, second wall. Blocks run column by column, row
                                and, for a periodic run, constant/fvOptions
     setup.py inlet RUN DIR     DIR/constant/inlet/{U,k,epsilon}: the entry profile (needs DIR/0/C
                                and the source run's results in SCRATCH, DIR's parent)
-    setup.py list NAME         the runs of straight, mild, strong or hcd, in the order to run them
+    setup.py list NAME         the runs of straight, mild, strong, hcd or hcd_fine, in the order to run them
 """
 import math
 import os
@@ -78,6 +78,8 @@ RUNS = {
     # HCD (sec 5.3): the fully developed entry of "straight_b_yp0.025", or SPHinXsys's uniform one
     "hcd_developed": hcd("developed"),
     "hcd_uniform": hcd("uniform"),
+    # hcd_uniform's wall cells, its core and streamwise cells halved: the reference's convergence
+    "hcd_fine_uniform": dict(hcd("uniform"), ncore=76, aspect=0.5),
 }
 
 CASES = {
@@ -88,6 +90,7 @@ CASES = {
     "strong": ["strong_periodic_yp0.001905", "strong_periodic_yp0.0009525", "strong_yp0.001905",
                "strong_yp0.0009525"],
     "hcd": ["straight_b_yp0.025", "hcd_developed", "hcd_uniform"],
+    "hcd_fine": ["hcd_fine_uniform"],
 }
 
 
