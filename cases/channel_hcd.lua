@@ -37,12 +37,15 @@
 -- corner (x = 4.47) to 0.65 by x = 4.87, and the shear over them makes its k (0.13 U_b², the
 -- second cell); the particles keep their speed past the corner. pbg sets the scheme's
 -- background_pressure (20 = ρ0 c0 U_b: no separation either, u RMS 0.30 at the exit line).
+-- wallp = 1 extrapolates the walls' pressure along them with the particles' own pressure
+-- gradient (wall_pressure = "gradient"): with the mirror the wall-adjacent row feels 0.78 of the
+-- adverse gradient past the corners.
 -- OpenFOAM's profiles are near their mesh limit: halving its core and streamwise cells
 -- (tests/data/openfoam_channel_hcd_fine.csv, the wall cells kept) moves U by 0.01 U_b RMS along
 -- both lines (0.05 at most, the platform's wall cell), k by 3% of its largest along x = 9.5 and
 -- 18% at the platform's near-wall peak; its backflow spans x = 5.65-10.69 (5.61-10.63).
 param { nf = 40, t_end = 60, y_p = 0.025, ard = 1, every = 1, avg = 20, ramp = 2, c0 = 20,
-        points = 121, fitted = 0, band = 6, pbg = 0 }
+        points = 121, fitted = 0, band = 6, pbg = 0, wallp = 0 }
 
 local H, U, Re = 2.0, 1.0, 40000
 local nu = U * H / Re
@@ -87,7 +90,8 @@ local top = H - off
 -- the domain between the offset walls: the lattice's rows then sit y_p off the real walls
 domain { 0, off, L, top }
 particles { dr = dr }
-scheme { "wcsph-riemann", ard = ard, sound_speed = c0 * U, background_pressure = pbg }
+scheme { "wcsph-riemann", ard = ard, sound_speed = c0 * U, background_pressure = pbg,
+         wall_pressure = wallp == 1 and "gradient" or "mirror" }
 fluid { density = 1, viscosity = nu }
 local k_in = 1.5 * (0.05 * U) ^ 2
 local eps_in = 0.09 ^ 0.75 * k_in ^ 1.5 / (0.07 * H)

@@ -10,15 +10,17 @@
 -- --set wcsph=1 runs the weakly-compressible baseline, with the pressure gradient of its pressure
 -- less the hydrostatic part (pressure_form = "dynamic", the form that holds a fluid at rest);
 -- --set dynamic=0 gives it the paper's G+ of the total pressure (6% off and 3e-2 √(gH) currents
--- at δr = 0.05 m).
+-- at δr = 0.05 m). With riemann = 1, wallp = 1 extrapolates the walls' pressure along them with
+-- the particles' own pressure gradient (wall_pressure = "gradient").
 param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0.5, wcsph = 0, dynamic = 1,
-        riemann = 0, tvf = 2 }
+        riemann = 0, tvf = 2, wallp = 0 }
 
 local g = 9.81
 domain { 0, 0, width, 1.5 * depth }
 particles { dr = dr }
 if riemann == 1 then -- Riemann WCSPH, c0 = 10 √(2 g H) (the default from the depth)
-  scheme { "wcsph-riemann", transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
+  scheme { "wcsph-riemann", transport_velocity = ({"off", "full", "limited"})[tvf + 1],
+           wall_pressure = wallp == 1 and "gradient" or "mirror" }
 elseif wcsph == 1 then -- the baseline: c0 = 10 √(g H)
   scheme { "wcsph-usaw", sound_speed = 10 * math.sqrt(g * depth),
            pressure_form = dynamic == 1 and "dynamic" or "total" }

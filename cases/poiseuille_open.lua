@@ -26,14 +26,15 @@
 -- dr = 0.1 and 0.05 against 0.066 and 0.16 with p = 0; a channel this short does not ring).
 param { dr = 0.025, t_end = 1, homogeneous = 0, exit_parabolic = 0, shift = 0.04, wall_image = 1,
         checkpoint = 0, implicit = 0, riemann = 0, c0 = 0,
-        characteristic = 0 }
+        characteristic = 0, wallp = 0 }
 
 local H, L, U0, nu = 1, 1, 1, 1
 domain { 0, 0, L, H }
 particles { dr = dr }
 if riemann == 1 then
   scheme { "wcsph-riemann", sound_speed = c0 > 0 and c0 or nil,
-           outlet = characteristic == 1 and "characteristic" or "fixed" }
+           outlet = characteristic == 1 and "characteristic" or "fixed",
+           wall_pressure = wallp == 1 and "gradient" or "mirror" }
 else
   scheme { "isph-rotational", projection = homogeneous == 1 and "homogeneous" or "rotational",
            shifting = shift, wall_velocity = wall_image == 1 and "image" or "shepard",

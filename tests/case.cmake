@@ -777,6 +777,16 @@ clsph_run_test(run_poiseuille_open_riemann_characteristic ${CMAKE_SOURCE_DIR}/ca
                SETS riemann=1 dr=0.1 c0=30 characteristic=1
                BOUNDS "u_err_rms<0.015" "u_err_max<0.035" "p_err_exit_max<0.18" "v_max<0.012"
                       "fluid>96.5" "fluid<103.5")
+# The same with the walls' pressure extrapolated along them with the particles' pressure gradient
+# (wall_pressure = "gradient", acoustic.cl): in this steady laminar flow the mirror's a_prior
+# (the viscous force, which the pressure gradient balances) already carries it, and the two agree
+# to 3 digits (u_err_rms 0.0062, dpdx_err −1.2%; float the same); the bounds are the mirror's.
+clsph_run_test(run_poiseuille_open_riemann_wallp ${CMAKE_SOURCE_DIR}/cases/poiseuille_open.lua
+               SETS riemann=1 dr=0.1 c0=30 wallp=1
+               BOUNDS "u_err_rms<0.011" "u_err_max<0.035" "p_err_max<0.15" "p_err_exit_max<0.1"
+                      "v_max<0.012" "fluid>96.5" "fluid<103.5")
+clsph_cli_test(riemann_bad_wall_pressure ARGS info ${CASE_DIR}/bad_riemann_wall_pressure.lua RC 2
+               REGEX "wcsph-riemann option wall_pressure must be one of \"mirror\", \"gradient\"")
 # The square cylinder at Re = 20 in Breuer's geometry (32 D long, cylinder 8 D from the entry,
 # natural exit) with wcsph-riemann at H/40 (the cylinder 5 particles across), 30 D/U0, C_D
 # averaged from 15, the density from the continuity equation (the case's choice for this

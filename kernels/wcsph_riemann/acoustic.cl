@@ -120,6 +120,44 @@ __kernel void wcr_drift(const uint n, const struct grid g, __global const uint *
   p[i] = pr;
 }
 
+/* ∇p_i for the wall pressure of wall_pressure = "gradient" (config.cl): the corrected gradient
+ * over the fluid neighbours only, B^in Σ_j (p_j − p_i) ∇W_ij V_j with B^in the inverse of
+ * −Σ_j F r_ij ⊗ r_ij V_j over the same neighbours (exact for a linear p however truncated the
+ * support), p the pressure of the momentum sum (with ⅔ ρ k under the k-ε model); 0 where i has
+ * no dummy neighbour (it is not needed there) */
+realv wcr_pressure_gradient(realv x, real pi, const struct grid *g,
+                            __global const realv *pos, __global const real *vol,
+                            __global const uint *kind, __global const real *p,
+                            __global const real *rho, __global const real *tk,
+                            __global const uint *row, uint c)
+{
+  real axx = R(0.0), axy = R(0.0), ayy = R(0.0);
+  realv s = (realv)(R(0.0));
+  uint walls = 0;
+  for (uint k = 0; k < c; ++k) {
+    const uint j = row[k];
+    if (kind[j] == WCR_DUMMY) {
+      ++walls;
+      continue;
+    }
+    const realv r = wcr_sep(x, pos[j], g);
+    const real f = smoothing_f(sqrt(dot(r, r))) * vol[j];
+    real pj = p[j];
+#if WCR_TURB
+    pj += R(2.0) / R(3.0) * rho[j] * tk[j];
+#else
+    (void)rho;
+    (void)tk;
+#endif
+    axx -= f * r.x * r.x;
+    axy -= f * r.x * r.y;
+    ayy -= f * r.y * r.y;
+    s += f * (pj - pi) * r;
+  }
+  if (walls == 0) return (realv)(R(0.0));
+  return wcr_apply(wcr_correction(axx, axy, ayy), s);
+}
+
 /* dv/dt = a_prior + a^p (eq 19), and with ARD the Riemann viscosity (eq 31-32); fluid only */
 __kernel void wcr_momentum(const uint n, const struct grid g, __global const realv *pos,
                            __global const realv *vel, __global const real *vol,
@@ -130,7 +168,7 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
                            const real p_bg, const real mu, const real h, __global realv *acc,
                            __global const real *tk, __global const real *nu_t,
                            __global const realv *wall_normal, const realv gravity,
-                           __global const real4 *grad)
+                           __global const real4 *grad, __global realv *gradp)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
@@ -156,6 +194,12 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
 #endif
   const uint c = ncount[i];
   __global const uint *row = nlist + (size_t)i * WCR_MAXN;
+#if WCR_WALL_PGRAD
+  const realv gpi = wcr_pressure_gradient(x, pi - p_bg, &g, pos, vol, kind, p, rho, tk, row, c);
+  gradp[i] = gpi; /* for the walls' force (force.cl) */
+#else
+  (void)gradp;
+#endif
   for (uint k = 0; k < c; ++k) {
     const uint j = row[k];
     const realv r = wcr_sep(x, pos[j], &g);
@@ -174,7 +218,11 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
 #else
       vj = R(2.0) * vel[j] - vi;
 #endif
+#if WCR_WALL_PGRAD
+      pj = wcr_wall_pressure_grad(pi, ri, ai, r, wall_normal[j], gpi);
+#else
       pj = wcr_wall_pressure(pi, ri, ai, r, wall_normal[j], gravity);
+#endif
       bj = bi;
     } else {
       vj = vel[j];

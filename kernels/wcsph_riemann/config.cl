@@ -107,6 +107,20 @@ real wcr_wall_pressure(real pi, real ri, realv ai, realv r, realv nw, realv grav
 #endif
 }
 
+/* With wall_pressure = "gradient" (WCR_WALL_PGRAD): the pressure along the wall extrapolated
+ * with i's own gradient ∇p_i (wcr_pressure_gradient, acoustic.cl), the normal part as above,
+ *   p_w = p_i − ρ_i (a_prior·n)(r·n) − (∇p_i − (∇p_i·n) n)·r,
+ * where the mirror keeps p_i along the wall and so leaves a pressure gradient along the wall out
+ * of the dummy half of i's support: the first row of a lattice (h = 1.3 dr, Wendland C2) feels
+ * 0.78 of it, the second 0.995, so that a boundary layer meets 0.78 of an adverse gradient
+ * (gravity's part along the wall is in ∇p_i, and comes in once). */
+real wcr_wall_pressure_grad(real pi, real ri, realv ai, realv r, realv nw, realv gp)
+{
+  const real rn = dot(r, nw);
+  const realv gt = gp - dot(gp, nw) * nw;
+  return pi - ri * dot(ai, nw) * rn - dot(gt, r);
+}
+
 /* The pair's mean of a diffusivity (µ_eff of eq 21, D_k and D_ε of eqs 23-24): the harmonic
  * mean 2ab/(a + b) (Wang, Sun & Hu, after eq 21). The logarithmic mean (a − b)/ln(a/b), exact for
  * a diffusivity linear between the two, moved the channel's steady bulk velocity by 0.4%

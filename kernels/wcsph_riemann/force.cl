@@ -17,10 +17,13 @@ __kernel void wcr_wall_force(
     const uint nmask, const real dr, const real rho0, const real c0, const real p_bg, const real mu,
     const real inv_lambda, const real h, __global real4 *out, __global const real *tk,
     __global const real *nu_t, __global const real4 *frame, __global const real2 *wallv,
-    const real r_ext, const uint wall_model, const realv gravity)
+    const real r_ext, const uint wall_model, const realv gravity, __global const realv *gradp)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
+#if !WCR_WALL_PGRAD
+  (void)gradp;
+#endif
   real4 o = (real4)(R(0.0));
   if (kind[i] != WCR_FLUID) {
     out[i] = o;
@@ -63,7 +66,11 @@ __kernel void wcr_wall_force(
 #else
     const realv vij = R(2.0) * (vi - vel[j]);
 #endif
+#if WCR_WALL_PGRAD
+    const real pj = wcr_wall_pressure_grad(pi, ri, ai, r, wall_normal[j], gradp[i]);
+#else
     const real pj = wcr_wall_pressure(pi, ri, ai, r, wall_normal[j], gravity);
+#endif
     const real u = rr > R(0.0) ? -dot(vij, r) / rr : R(0.0);
     const real beta = wcr_beta(u, c0, 1u);
     fp += f * (pi + pj + R(2.0) * p_bg) * wcr_apply(bi, r);

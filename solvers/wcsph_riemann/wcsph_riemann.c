@@ -23,6 +23,9 @@
  *                        under gravity), "summation" (ρ = ρ_sum; the default otherwise) or
  *                        "continuity" (no re-initialisation; see read_options for when)
  *   wall_dissipation     "limited" (the fluid pairs' limiter; default) or "full" (sec 4.3)
+ *   wall_pressure        "mirror" (the dummy shows i's pressure along the wall; default) or
+ *                        "gradient" (extrapolated along the wall with i's pressure gradient over
+ *                        its fluid neighbours: config.cl, wcr_wall_pressure_grad)
  *   momentum_dissipation "riemann" (eq 19's dissipative term between fluid pairs; the default of
  *                        a laminar scene or one with ARD) or "off" (the default under the k-ε
  *                        model without ARD; acoustic.cl says why)
@@ -54,12 +57,13 @@ struct wcr {
   cl_mem d_bmat, d_sigma;         /* B (4 reals) and the normalised kernel sum */
   cl_mem d_prior, d_shift, d_acc; /* a_prior, the TVF correction, dv/dt of a sub-step */
   cl_mem d_partial, d_force, d_mask, d_none;
+  cl_mem d_gradp; /* ∇p of the near-wall particles (wall_pressure = "gradient") */
   real *h_partial, *h_force;
   size_t cap;
   cl_kernel k_config, k_count, k_adv, k_drift, k_mom, k_cont, k_force, k_lattice;
   double c0, p_bg, mass, sigma0, lambda, u_scale;
   double cfl_ad, cfl_ac, tvf_alpha;
-  int tvf, ard, wall_full, cont_riemann, outlet_fixed, mom_diss;
+  int tvf, ard, wall_full, cont_riemann, outlet_fixed, mom_diss, wall_pgrad;
   cl_uint reinit;
   double vmax;               /* the fluid's largest speed at the last max_dt, m/s */
   int configured;            /* the list and B have been made ... */
@@ -89,6 +93,7 @@ static const char *const options[] = {"sound_speed",
                                       "ard",
                                       "density",
                                       "wall_dissipation",
+                                      "wall_pressure",
                                       "momentum_dissipation",
                                       "outlet",
                                       "continuity",
@@ -169,6 +174,8 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
                           &reinit));
   w->reinit = (cl_uint)reinit;
   CLSPH_TRY(option_choice(sc, "wall_dissipation", wall_names, 0, &w->wall_full));
+  static const char *const wallp_names[] = {"mirror", "gradient", NULL};
+  CLSPH_TRY(option_choice(sc, "wall_pressure", wallp_names, 0, &w->wall_pgrad));
   static const char *const cont_names[] = {"plain", "riemann", NULL};
   CLSPH_TRY(option_choice(sc, "continuity", cont_names, 1, &w->cont_riemann));
   static const char *const outlet_names[] = {"characteristic", "fixed", NULL};
@@ -242,10 +249,11 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   if (verbose)
     log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), background "
              "pressure %.4g Pa, transport velocity %s, ARD %s, density %s, walls' dissipation %s, "
-             "fluid pairs' momentum dissipation %s",
+             "fluid pairs' momentum dissipation %s%s",
              w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach, w->p_bg,
              tvf_names[w->tvf], w->ard ? "on" : "off", dens_names[reinit], wall_names[w->wall_full],
-             mom_names[w->mom_diss]);
+             mom_names[w->mom_diss],
+             w->wall_pgrad ? ", walls' pressure extrapolated along them with ∇p" : "");
 done:
   return st;
 }
@@ -279,6 +287,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_MAXN", list_stride(sim)));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_ARD", w.ard));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_FULL", w.wall_full));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_PGRAD", w.wall_pgrad));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_MOM_DISS", w.mom_diss));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_CONT_RIEMANN", w.cont_riemann));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_CONT_NORMAL", w.reinit == WCR_REINIT_OFF));
@@ -439,6 +448,8 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   CLSPH_TRY(kern_buffer(sim->dev, cap * rv, NULL, &w->d_acc, "acceleration"));
   CLSPH_TRY(kern_buffer(sim->dev, (groups + 1) * sizeof(real), NULL, &w->d_partial, "partials"));
   CLSPH_TRY(kern_buffer(sim->dev, sizeof(real), NULL, &w->d_none, "placeholder"));
+  if (w->wall_pgrad)
+    CLSPH_TRY(kern_buffer(sim->dev, cap * rv, NULL, &w->d_gradp, "wall pressure gradient"));
   w->h_partial = calloc(groups + 1, sizeof *w->h_partial);
   CLSPH_CHECK(w->h_partial != NULL, CLSPH_E_NOMEM, "out of memory");
   const char *names[] = {"wcr_config",   "wcr_count_pairs", "wcr_advection",  "wcr_drift",
@@ -627,11 +638,12 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   cl_mem tk = w->turb ? pset_mem(ps, w->f_k) : w->d_none;
   cl_mem nut = w->turb ? pset_mem(ps, w->f_nut) : w->d_none;
   cl_mem grad = w->turb ? w->d_grad : w->d_none;
+  cl_mem gradp = w->wall_pgrad ? w->d_gradp : w->d_none;
   CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(pbg), KARG(mu),
                      KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn), KARG(grav),
-                     KARG(grad)));
+                     KARG(grad), KARG(gradp)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
   CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(w->d_acc),
                      KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist),
@@ -845,12 +857,14 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   const real r_ext = (real)(2.0 * sim->sm.h - sc->dr);
   const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
   const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
+  cl_mem gradp = w->wall_pgrad ? w->d_gradp : w->d_none;
   CLSPH_TRY(KERN_SET(w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist),
                      KARG(w->d_ncount), KARG(w->d_bmat), KARG(w->d_prior), KARG(wall),
                      KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0), KARG(pbg),
                      KARG(mu), KARG(ilam), KARG(h), KARG(w->d_force), KARG(tk), KARG(nut),
-                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(grav)));
+                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(grav),
+                     KARG(gradp)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
   memset(out, 0, sizeof *out);
@@ -875,7 +889,8 @@ static void wcr_destroy(void *state)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   cl_mem *ms[] = {&w->d_nlist, &w->d_ncount,  &w->d_bmat,  &w->d_sigma, &w->d_prior, &w->d_shift,
                   &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,  &w->d_none,  &w->d_frame,
-                  &w->d_wallv, &w->d_knew,    &w->d_enew,  &w->d_nut2,  &w->d_clips, &w->d_grad};
+                  &w->d_wallv, &w->d_knew,    &w->d_enew,  &w->d_nut2,  &w->d_clips, &w->d_grad,
+                  &w->d_gradp};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
   open_destroy(&w->open);
   free(w->exit_p);

@@ -158,7 +158,8 @@ def rans_section(runs):
                   key=lambda s: (s["parameters"].get("ub", 0), s["parameters"].get("nf", 0),
                                  s["parameters"].get("md", -1)))
     hcd = sorted((s for s in runs if s["case"] == "channel_hcd"),
-                 key=lambda s: (s["parameters"].get("ard", 1), s["parameters"].get("nf", 0)))
+                 key=lambda s: (s["parameters"].get("wallp", 0), s["parameters"].get("ard", 1),
+                                s["parameters"].get("nf", 0)))
     curved = sorted((s for s in runs if s["case"] == "channel_curved"),
                     key=lambda s: (s["parameters"].get("setting", 1), s["parameters"].get("nf", 0),
                                    s["parameters"].get("ard", 0)))
@@ -257,13 +258,14 @@ def rans_section(runs):
                 "past the platform's leading corner where OpenFOAM's wall cells slow from 2.0 to "
                 "0.65 U_b, and do not separate behind it. "
                 "Chart: [channel_hcd_profiles.png](channel_hcd_profiles.png).", "",
-                "| ARD | N_f | status | t_end (avg) | u RMS x=5 / 9.5 | k RMS x=5 / 9.5 "
-                "| backflow x=9.5 | u unsteady x=5 / 9.5 | k unsteady x=5 / 9.5 | ARD indicator "
-                "| particles | wall s | particle-steps/s |",
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+                "| ARD | wall pressure | N_f | status | t_end (avg) | u RMS x=5 / 9.5 "
+                "| k RMS x=5 / 9.5 | backflow x=9.5 | u unsteady x=5 / 9.5 | k unsteady x=5 / 9.5 "
+                "| ARD indicator | particles | wall s | particle-steps/s |",
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for s in hcd:
             p, m = s["parameters"], s.get("metrics", {})
-            out.append(f"| {'on' if p.get('ard', 1) else 'off'} | {p.get('nf', 0):g} "
+            wallp = "gradient" if p.get("wallp", 0) else "mirror"
+            out.append(f"| {'on' if p.get('ard', 1) else 'off'} | {wallp} | {p.get('nf', 0):g} "
                        f"| {s['status']} | {p.get('t_end', 0):g} ({p.get('avg', 0):g}) "
                        f"| {pair(m, 'u_rms_platform', 'u_rms_exit', '.3f')} "
                        f"| {pair(m, 'k_rms_platform', 'k_rms_exit', '.3f')} "
