@@ -125,11 +125,10 @@ __kernel void wcr_drift(const uint n, const struct grid g, __global const uint *
  * −Σ_j F r_ij ⊗ r_ij V_j over the same neighbours (exact for a linear p however truncated the
  * support), p the pressure of the momentum sum (with ⅔ ρ k under the k-ε model); 0 where i has
  * no dummy neighbour (it is not needed there) */
-realv wcr_pressure_gradient(realv x, real pi, const struct grid *g,
-                            __global const realv *pos, __global const real *vol,
-                            __global const uint *kind, __global const real *p,
-                            __global const real *rho, __global const real *tk,
-                            __global const uint *row, uint c)
+realv wcr_pressure_gradient(realv x, real pi, const struct grid *g, __global const realv *pos,
+                            __global const real *vol, __global const uint *kind,
+                            __global const real *p, __global const real *rho,
+                            __global const real *tk, __global const uint *row, uint c)
 {
   real axx = R(0.0), axy = R(0.0), ayy = R(0.0);
   realv s = (realv)(R(0.0));

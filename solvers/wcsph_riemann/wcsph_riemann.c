@@ -642,8 +642,8 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(pbg), KARG(mu),
-                     KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn), KARG(grav),
-                     KARG(grad), KARG(gradp)));
+                     KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn), KARG(grav), KARG(grad),
+                     KARG(gradp)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
   CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(w->d_acc),
                      KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist),
@@ -863,8 +863,7 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
                      KARG(w->d_ncount), KARG(w->d_bmat), KARG(w->d_prior), KARG(wall),
                      KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0), KARG(pbg),
                      KARG(mu), KARG(ilam), KARG(h), KARG(w->d_force), KARG(tk), KARG(nut),
-                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(grav),
-                     KARG(gradp)));
+                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(grav), KARG(gradp)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
   memset(out, 0, sizeof *out);
@@ -887,10 +886,10 @@ static void wcr_destroy(void *state)
                      &w->k_force,  &w->k_lattice, &w->k_twall, &w->k_ttrans, &w->k_tupd};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
-  cl_mem *ms[] = {&w->d_nlist, &w->d_ncount,  &w->d_bmat,  &w->d_sigma, &w->d_prior, &w->d_shift,
-                  &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,  &w->d_none,  &w->d_frame,
-                  &w->d_wallv, &w->d_knew,    &w->d_enew,  &w->d_nut2,  &w->d_clips, &w->d_grad,
-                  &w->d_gradp};
+  cl_mem *ms[] = {&w->d_nlist, &w->d_ncount, &w->d_bmat,    &w->d_sigma, &w->d_prior,
+                  &w->d_shift, &w->d_acc,    &w->d_partial, &w->d_force, &w->d_mask,
+                  &w->d_none,  &w->d_frame,  &w->d_wallv,   &w->d_knew,  &w->d_enew,
+                  &w->d_nut2,  &w->d_clips,  &w->d_grad,    &w->d_gradp};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
   open_destroy(&w->open);
   free(w->exit_p);
