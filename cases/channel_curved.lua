@@ -25,8 +25,11 @@
 -- (OpenFOAM's in u_peak_*_fv: the bend moves the peak); y_p and avg as used.
 -- checkpoint > 0 writes a checkpoint every `checkpoint` s (the N_f = 40 runs take hours on a CPU:
 -- `clsph run --restart` continues them).
+-- wallp = 1 extrapolates the walls' pressure along them with the particles' own pressure gradient
+-- (wcsph-riemann's wall_pressure = "gradient"; the mirror's first row feels 0.78 of the pressure
+-- gradient that drives the flow along the walls).
 param { setting = 1, nf = 20, y_p = 0, t_end = 0, every = 0, avg = 0, ard = 0, points = 81,
-        fitted = 1, checkpoint = 0 }
+        fitted = 1, checkpoint = 0, wallp = 0 }
 
 local S = ({
   {name = "mild", H = 0.0635, R1 = 99.5, angle = 43, L1 = 2.36, L2 = 2.36, Re = 60000,
@@ -84,7 +87,8 @@ for _, line in ipairs({wall_line(rin, 0), wall_line(rout, 0)}) do
 end
 domain { xmin - 1e-9, ymin, xmax + 1e-9, ymax + 1e-9 }
 particles { dr = dr }
-scheme { "wcsph-riemann", ard = ard, sound_speed = 15 * U }
+scheme { "wcsph-riemann", ard = ard, sound_speed = 15 * U,
+         wall_pressure = wallp == 1 and "gradient" or "mirror" }
 fluid { density = 1, viscosity = nu }
 
 -- OpenFOAM's entry profile (s from the inner wall) and its sections

@@ -162,7 +162,7 @@ def rans_section(runs):
                                 s["parameters"].get("nf", 0)))
     curved = sorted((s for s in runs if s["case"] == "channel_curved"),
                     key=lambda s: (s["parameters"].get("setting", 1), s["parameters"].get("nf", 0),
-                                   s["parameters"].get("ard", 0)))
+                                   s["parameters"].get("ard", 0), s["parameters"].get("wallp", 0)))
     if not chan and not hcd and not curved:
         return []
 
@@ -228,16 +228,18 @@ def rans_section(runs):
                 "section's largest k_FV, and where u peaks (s/H from the inner wall; OpenFOAM's "
                 "beside it). The paper: within 2.4% of its FVM's velocity (strong channel). "
                 "Chart: [channel_curved_profiles.png](channel_curved_profiles.png).", "",
-                "| channel | N_f | y_p | status | t_end (avg) | u RMS bend / outlet "
+                "| channel | N_f | y_p | wall pressure | status | t_end (avg) | u RMS bend / outlet "
                 "| u max bend / outlet | k RMS bend / outlet | u peak s/H outlet (FV) | particles "
                 "| steps | wall s | particle-steps/s |",
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for s in curved:
             p, m = s["parameters"], s.get("metrics", {})
             name = {1: "mild", 2: "strong"}.get(int(p.get("setting", 1)), "?")
             peak = (f"{m['u_peak_outlet']:.3f} ({m['u_peak_outlet_fv']:.3f})"
                     if "u_peak_outlet" in m else "–")
+            wallp = "gradient" if p.get("wallp", 0) else "mirror"
             out.append(f"| {name} | {p.get('nf', 0):g} | {m.get('y_p', p.get('y_p', 0)):g} "
+                       f"| {wallp} "
                        f"| {s['status']} | {s['sim_time']:.3g} ({m.get('avg', p.get('avg', 0)):.3g}) "
                        f"| {pair(m, 'u_rms_bend', 'u_rms_outlet')} | {pair(m, 'u_max_bend', 'u_max_outlet')} "
                        f"| {pair(m, 'k_rms_bend', 'k_rms_outlet')} | {peak} | {s['particles']:g} "

@@ -31,6 +31,10 @@ run() { # name case sets...
   run channel_hcd_nf40_ard0 channel_hcd nf=40 ard=0 t_end=60 avg=20
   run channel_hcd_nf60_ard1 channel_hcd nf=60 ard=1 t_end=30 avg=10
   run channel_hcd_nf60_ard0 channel_hcd nf=60 ard=0 t_end=30 avg=10
+  # the walls' pressure extrapolated along them with the particles' gradient (wall_pressure =
+  # "gradient")
+  run channel_hcd_nf40_ard1_wallp channel_hcd nf=40 ard=1 t_end=60 avg=20 wallp=1
+  run channel_hcd_nf40_ard0_wallp channel_hcd nf=40 ard=0 t_end=60 avg=20 wallp=1
 ) &
 # The curved channels at N_f = 20: the strong one over 1.5 transits averaged over the last 0.3, the
 # mild one (80 H long) over one transit averaged over the last 0.2 (the fluid starts on the
@@ -40,6 +44,7 @@ run() { # name case sets...
   run channel_hcd_nf80_ard0 channel_hcd nf=80 ard=0 t_end=30 avg=10
   run channel_curved_strong_nf20 channel_curved setting=2 nf=20
   run channel_curved_mild_nf20 channel_curved setting=1 nf=20 t_end=5.08 avg=1
+  run channel_curved_strong_nf20_wallp channel_curved setting=2 nf=20 wallp=1
 ) &
 wait
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_rans.md
@@ -47,5 +52,6 @@ python3 tests/validation/channel_ke_chart.py tests/validation 40 \
   "channel:SPH N_f = 20=$out/channel_ke_nf20_ub1" "channel:SPH N_f = 40=$out/channel_ke_nf40_ub1" \
   "channel:SPH N_f = 80=$out/channel_ke_nf80_ub1" \
   "hcd:SPH N_f = 40 ARD=$out/channel_hcd_nf40_ard1" "hcd:SPH N_f = 40 no ARD=$out/channel_hcd_nf40_ard0" \
+  "hcd:SPH N_f = 40 ARD, wall gradient=$out/channel_hcd_nf40_ard1_wallp" \
   "curved:SPH N_f = 20=$out/channel_curved_strong_nf20" "curved:SPH N_f = 20=$out/channel_curved_mild_nf20" \
   $(for nf in 40 60 80; do for a in 0 1; do echo "hcdmap:map=$out/channel_hcd_nf${nf}_ard$a"; done; done)
