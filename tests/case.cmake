@@ -785,7 +785,7 @@ clsph_run_test(run_poiseuille_open_riemann_wallp ${CMAKE_SOURCE_DIR}/cases/poise
                SETS riemann=1 dr=0.1 c0=30 wallp=1
                BOUNDS "u_err_rms<0.011" "u_err_max<0.035" "p_err_max<0.15" "p_err_exit_max<0.1"
                       "v_max<0.012" "fluid>96.5" "fluid<103.5")
-clsph_cli_test(riemann_bad_wall_pressure ARGS info ${CASE_DIR}/bad_riemann_wall_pressure.lua RC 2
+clsph_cli_test(riemann_bad_wall_pressure ARGS info ${CASE_DIR}/bad_riemann_choice.lua --set what=2 RC 2
                REGEX "wcsph-riemann option wall_pressure must be one of \"mirror\", \"gradient\"")
 # The square cylinder at Re = 20 in Breuer's geometry (32 D long, cylinder 8 D from the entry,
 # natural exit) with wcsph-riemann at H/40 (the cylinder 5 particles across), 30 D/U0, C_D

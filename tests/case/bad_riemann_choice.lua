@@ -1,7 +1,13 @@
--- wcsph-riemann with a transport-velocity choice it does not know.
+-- wcsph-riemann with a choice it does not know: what = 1, transport_velocity = "strong";
+-- what = 2, wall_pressure = "linear" (mirror or gradient).
+param { what = 1 }
 domain { 0, 0, 1, 1 }
 particles { dr = 0.1 }
-scheme { "wcsph-riemann", sound_speed = 10, transport_velocity = "strong" }
+if what == 1 then
+  scheme { "wcsph-riemann", sound_speed = 10, transport_velocity = "strong" }
+else
+  scheme { "wcsph-riemann", sound_speed = 10, wall_pressure = "linear" }
+end
 fluid { density = 1, viscosity = 0.01 }
 box_wall { 0, 0, 1, 1, lid_velocity = {1, 0} }
 fill { 0, 0, 1, 1 }
