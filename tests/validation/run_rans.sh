@@ -35,6 +35,8 @@ run() { # name case sets...
   # "gradient")
   run channel_hcd_nf40_ard1_wallp channel_hcd nf=40 ard=1 t_end=60 avg=20 wallp=1
   run channel_hcd_nf40_ard0_wallp channel_hcd nf=40 ard=0 t_end=60 avg=20 wallp=1
+  run channel_hcd_nf60_ard0_wallp channel_hcd nf=60 ard=0 t_end=30 avg=10 wallp=1
+  run channel_hcd_nf80_ard0_wallp channel_hcd nf=80 ard=0 t_end=30 avg=10 wallp=1
 ) &
 # The curved channels at N_f = 20: the strong one over 1.5 transits averaged over the last 0.3, the
 # mild one (80 H long) over one transit averaged over the last 0.2 (the fluid starts on the
