@@ -448,8 +448,11 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   CLSPH_TRY(kern_buffer(sim->dev, cap * rv, NULL, &w->d_acc, "acceleration"));
   CLSPH_TRY(kern_buffer(sim->dev, (groups + 1) * sizeof(real), NULL, &w->d_partial, "partials"));
   CLSPH_TRY(kern_buffer(sim->dev, sizeof(real), NULL, &w->d_none, "placeholder"));
-  if (w->wall_pgrad)
+  if (w->wall_pgrad) { /* zero until the first sub-step: a force output at t = 0 reads it */
+    const real zero = (real)0.0;
     CLSPH_TRY(kern_buffer(sim->dev, cap * rv, NULL, &w->d_gradp, "wall pressure gradient"));
+    CLSPH_TRY(kern_fill(sim->dev, w->d_gradp, &zero, sizeof zero, cap * rv));
+  }
   w->h_partial = calloc(groups + 1, sizeof *w->h_partial);
   CLSPH_CHECK(w->h_partial != NULL, CLSPH_E_NOMEM, "out of memory");
   const char *names[] = {"wcr_config",   "wcr_count_pairs", "wcr_advection",  "wcr_drift",
