@@ -9,7 +9,8 @@
    (tests/data/openfoam_channel_straight.csv, setting a, y_p = 0.05).
 2. The half converging-diverging channel: u and k along x = 5 (over the platform) and x = 9.5
    (the exit section) of the runs given (cases/channel_hcd.lua: profile_platform.csv and
-   profile_exit.csv, averaged over the outputs at t >= T0), beside OpenFOAM's
+   profile_exit.csv, averaged over each run's own last `avg` s, as its metrics are), beside
+   OpenFOAM's
    (tests/data/openfoam_channel_hcd.csv, the uniform entry).
 3. The curved channels: u along the channel and k across the bend's exit plane and the last
    section before the exit of the runs given (cases/channel_curved.lua: profile_bend.csv and
@@ -20,7 +21,7 @@
    over U_b, and of k's over its mean: the metrics u_unsteady_* and k_unsteady_*) against N_f,
    ARD on and off (the runs given as hcdmap:LABEL=RUN_DIR; the label is not used).
 
-    python3 tests/validation/channel_ke_chart.py OUT_DIR T0 channel:LABEL=RUN_DIR ... \
+    python3 tests/validation/channel_ke_chart.py OUT_DIR channel:LABEL=RUN_DIR ... \
         hcd:LABEL=RUN_DIR ... curved:LABEL=RUN_DIR ... hcdmap:LABEL=RUN_DIR ...
 writes OUT_DIR/channel_ke_uplus.{csv,png}, OUT_DIR/channel_hcd_profiles.{csv,png},
 OUT_DIR/channel_curved_profiles.{csv,png} and OUT_DIR/channel_hcd_map.{csv,png} (gnuplot).
@@ -124,11 +125,16 @@ def averaged(run_dir, line, t0):
     return [(y, a[0] / len(times), a[1] / len(times)) for y, a in sorted(acc.items())]
 
 
-def hcd_chart(out_dir, t0, runs):
+def hcd_chart(out_dir, runs):
     rows = []
     for label, run_dir in runs:
+        summary = json_load(os.path.join(run_dir, "summary.json"))
+        t0 = summary["sim_time"] - summary["parameters"]["avg"]
         for line in ("platform", "exit"):
-            rows += [(label, line, y, u, k) for y, u, k in averaged(run_dir, line, t0)]
+            got = averaged(run_dir, line, t0 - 1e-9)
+            if not got:
+                sys.exit(f"channel_ke_chart.py: {run_dir} has no {line} profile after t = {t0:g}")
+            rows += [(label, line, y, u, k) for y, u, k in got]
     for r in table(os.path.join(ROOT, "tests/data/openfoam_channel_hcd.csv")):
         if r["inlet"] == "uniform":
             rows.append(("OpenFOAM", r["line"], float(r["y"]), float(r["U"]), float(r["k"])))
@@ -281,11 +287,11 @@ def gnuplot(script):
 
 
 def main():
-    if len(sys.argv) < 4:
+    if len(sys.argv) < 3:
         sys.exit(__doc__)
-    out_dir, t0 = sys.argv[1], float(sys.argv[2])
+    out_dir = sys.argv[1]
     channel, hcd, curved, hcdmap = [], [], [], []
-    for a in sys.argv[3:]:
+    for a in sys.argv[2:]:
         kind, rest = a.split(":", 1)
         label, run_dir = rest.rsplit("=", 1)
         if "," in label:
@@ -297,7 +303,7 @@ def main():
     if channel:
         channel_chart(out_dir, channel)
     if hcd:
-        hcd_chart(out_dir, t0, hcd)
+        hcd_chart(out_dir, hcd)
     if curved:
         curved_chart(out_dir, curved)
     if hcdmap:
