@@ -30,6 +30,9 @@
 -- gradient that drives the flow along the walls).
 param { setting = 1, nf = 20, y_p = 0, t_end = 0, every = 0, avg = 0, ard = 0, points = 81,
         fitted = 1, checkpoint = 0, wallp = 0 }
+if wallp ~= 0 and wallp ~= 1 then
+  error(("channel_curved: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
+end
 
 local S = ({
   {name = "mild", H = 0.0635, R1 = 99.5, angle = 43, L1 = 2.36, L2 = 2.36, Re = 60000,

@@ -49,6 +49,9 @@
 -- 18% at the platform's near-wall peak; its backflow spans x = 5.65-10.69 (5.61-10.63).
 param { nf = 40, t_end = 60, y_p = 0.025, ard = 1, every = 1, avg = 20, ramp = 2, c0 = 20,
         points = 121, fitted = 0, band = 6, pbg = 0, wallp = 0 }
+if wallp ~= 0 and wallp ~= 1 then
+  error(("channel_hcd: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
+end
 
 local H, U, Re = 2.0, 1.0, 40000
 local nu = U * H / Re

@@ -14,6 +14,9 @@
 -- the particles' own pressure gradient (wall_pressure = "gradient").
 param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0.5, wcsph = 0, dynamic = 1,
         riemann = 0, tvf = 2, wallp = 0 }
+if wallp ~= 0 and wallp ~= 1 then
+  error(("hydrostatic: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
+end
 
 local g = 9.81
 domain { 0, 0, width, 1.5 * depth }

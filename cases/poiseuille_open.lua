@@ -27,6 +27,9 @@
 param { dr = 0.025, t_end = 1, homogeneous = 0, exit_parabolic = 0, shift = 0.04, wall_image = 1,
         checkpoint = 0, implicit = 0, riemann = 0, c0 = 0,
         characteristic = 0, wallp = 0 }
+if wallp ~= 0 and wallp ~= 1 then
+  error(("poiseuille_open: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
+end
 
 local H, L, U0, nu = 1, 1, 1, 1
 domain { 0, 0, L, H }

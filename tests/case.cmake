@@ -896,6 +896,11 @@ clsph_run_test(run_channel_hcd_fitted_start ${CMAKE_SOURCE_DIR}/cases/channel_hc
 clsph_cli_test(channel_hcd_band_too_thin ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
                --set fitted=1 --set band=1 RC 2
                REGEX "channel_hcd: band = 1: the fitted rows must be a whole number from 2")
+clsph_cli_test(channel_hcd_fitted_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
+               --set fitted=2 RC 2 REGEX "channel_hcd: fitted must be 0 or 1, not 2")
+clsph_cli_test(channel_hcd_wallp_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
+               --set wallp=2 RC 2
+               REGEX "channel_hcd: wallp must be 0 \\(the mirror\\) or 1 \\(the gradient\\), not 2")
 # fill { k, epsilon } needs a turbulence model; k and ε of a fill must be positive
 clsph_cli_test(turbulence_fill_without_model ARGS info ${bad_turb} --set what=7 RC 2
                REGEX "fill \\{ k, epsilon \\}: the case declares no turbulence")

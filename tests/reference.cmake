@@ -26,3 +26,7 @@ channel1d_cli_test(channel1d_cli ARGS --cells 400 RC 0 REGEX "u_tau = 0\\.05145[
                    REGEX2 "y,y_over_delta,y_plus,u,u_plus,k,k_plus,epsilon,nu_t")
 channel1d_cli_test(channel1d_cli_bad_number ARGS --nu fast RC 2 REGEX "--nu: 'fast' is not a number")
 channel1d_cli_test(channel1d_cli_bad_option ARGS --re 40000 RC 2 REGEX "unknown option --re")
+# --rows: fewer than 8 rows, or a bulk over the rows without them, is refused
+channel1d_cli_test(channel1d_cli_few_rows ARGS --rows 5 RC 1 REGEX "channel1d: rows must be 8 or more")
+channel1d_cli_test(channel1d_cli_bulk_without_rows ARGS --bulk-over-rows RC 1
+                   REGEX "channel1d: a bulk over the rows needs rows")

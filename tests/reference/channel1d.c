@@ -127,10 +127,19 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
 {
   int rows = p->rows > 0, n = rows ? (p->rows + 1) / 2 : p->cells + 1;
   int half = rows && p->rows % 2 == 0;
-  if ((rows ? p->rows < 8 : p->cells < 4) || !(p->delta > 0) || !(p->nu > 0) || !(p->y_p > 0) ||
-      !(p->y_p < p->delta) || !(p->u_tau > 0 || p->u_bulk > 0) || (p->bulk_over_rows && !rows)) {
-    fprintf(stderr, "channel1d: need cells >= 4 or rows >= 8, δ > 0, ν > 0, 0 < y_p < δ, "
-                    "u_bulk or u_tau > 0, and rows for a bulk over the rows\n");
+  const char *bad = NULL;
+  if (rows ? p->rows < 8 : p->cells < 4)
+    bad = rows ? "rows must be 8 or more" : "cells must be 4 or more";
+  else if (!(p->delta > 0) || !(p->nu > 0))
+    bad = "δ and ν must be positive";
+  else if (!(p->y_p > 0) || !(p->y_p < p->delta))
+    bad = "y_p must lie between 0 and δ";
+  else if (!(p->u_tau > 0 || p->u_bulk > 0))
+    bad = "give a positive u_bulk or u_tau";
+  else if (p->bulk_over_rows && !rows)
+    bad = "a bulk over the rows needs rows";
+  if (bad != NULL) {
+    fprintf(stderr, "channel1d: %s\n", bad);
     return -1;
   }
   double *mem = calloc((size_t)n * 14, sizeof(double));
