@@ -8,6 +8,7 @@
  * The defaults are Lee & Moser's Re_τ = 543.5 channel (δ = 1, U_b = 1, ν = 1e-4) with the
  * wall model at y_p = 0.05 (half the spacing of 20 particles across the channel), on 3200 cells
  * (test_channel1d: u_τ there within 0.03% of its grid limit). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -62,11 +63,13 @@ int main(int argc, char **argv)
       p.u_bulk = v, p.u_tau = 0.0;
     else if (strcmp(o, "--u-tau") == 0)
       p.u_tau = v;
-    else if (strcmp(o, "--cells") == 0)
-      p.cells = (int)v;
-    else if (strcmp(o, "--rows") == 0)
-      p.rows = (int)v;
-    else {
+    else if (strcmp(o, "--cells") == 0 || strcmp(o, "--rows") == 0) {
+      if (!(v >= 1.0 && v <= 1e7) || v != floor(v)) {
+        fprintf(stderr, "channel1d: %s must be a whole number from 1 to 1e7, not %s\n", o, val);
+        return 2;
+      }
+      *(strcmp(o, "--cells") == 0 ? &p.cells : &p.rows) = (int)v;
+    } else {
       fprintf(stderr, "channel1d: unknown option %s\n", o);
       return 2;
     }
