@@ -37,8 +37,8 @@
 -- corner (x = 4.47) to 0.65 by x = 4.87, and the shear over them makes its k (0.13 U_b², the
 -- second cell); the particles keep their speed past the corner. pbg sets the scheme's
 -- background_pressure (20 = ρ0 c0 U_b: no separation either, u RMS 0.30 at the exit line).
--- wallp = 1 extrapolates the walls' pressure along them with the particles' own pressure
--- gradient (wall_pressure = "gradient"): with the mirror the wall-adjacent row feels 0.78 of the
+-- wallp = 1 (the default; 0 is the mirror) extrapolates the walls' pressure along them with the
+-- particles' own pressure gradient (wall_pressure = "gradient"): with the mirror the wall-adjacent row feels 0.78 of the
 -- adverse gradient past the corners. At nf = 40 (t = 60, the last 20 s) the exit line's u RMS
 -- fell from 0.182 to 0.132 (ard = 1) and from 0.137 to 0.085 (ard = 0), k's from 0.181 to
 -- 0.126 and 0.135 to 0.081, and with ard = 0 5% of the line flows back (OpenFOAM's 12.5%); at
@@ -48,7 +48,7 @@
 -- both lines (0.05 at most, the platform's wall cell), k by 3% of its largest along x = 9.5 and
 -- 18% at the platform's near-wall peak; its backflow spans x = 5.65-10.69 (5.61-10.63).
 param { nf = 40, t_end = 60, y_p = 0.025, ard = 1, every = 1, avg = 20, ramp = 2, c0 = 20,
-        points = 121, fitted = 0, band = 6, pbg = 0, wallp = 0 }
+        points = 121, fitted = 0, band = 6, pbg = 0, wallp = 1 }
 if wallp ~= 0 and wallp ~= 1 then
   error(("channel_hcd: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
 end

@@ -34,8 +34,13 @@
 -- tvf: the transport-velocity correction (0 off, 1 full, 2 limited: the scheme's default);
 -- turb = 0 runs the same scene laminar (for the model's cost: `--profile`); ws ≥ 0 sets w_s of
 -- eq 40 (the scheme's 0.1 otherwise); md ≥ 0 sets the scheme's momentum_dissipation (0 off,
--- 1 riemann, 2 reconstructed: the default under the model).
-param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1, md = -1, ub = 0 }
+-- 1 riemann, 2 reconstructed: the default under the model); wallp ≥ 0 sets its wall_pressure (0
+-- the mirror, 1 the gradient: the default under the model, the mirror in a laminar run).
+param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1, md = -1, ub = 0,
+        wallp = -1 }
+if wallp ~= -1 and wallp ~= 0 and wallp ~= 1 then
+  error(("channel_ke: wallp must be -1 (the scheme's default), 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
+end
 
 local delta, nu, u_tau, kappa, cmu = 1.0, 1e-4, 0.0543496, 0.41, 0.09
 local H = 2 * delta
@@ -45,7 +50,9 @@ local nx = math.max(math.floor(1.0 / dr + 0.5), 8)
 local L = nx * dr
 domain { 0, off, L, H - off, periodic = "x" }
 particles { dr = dr }
-scheme { "wcsph-riemann", ard = ard, momentum_dissipation = ({"off", "riemann", "reconstructed"})[md + 1], transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
+scheme { "wcsph-riemann", ard = ard, momentum_dissipation = ({"off", "riemann", "reconstructed"})[md + 1],
+         transport_velocity = ({"off", "full", "limited"})[tvf + 1],
+         wall_pressure = ({"mirror", "gradient"})[wallp + 1] }
 if ub > 0 then
   fluid { density = 1, viscosity = nu,
           flow_rate_control = { velocity = ub, slice = { 0, L * (1 - 1e-9) } } }

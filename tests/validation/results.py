@@ -149,6 +149,15 @@ def pair(m, a, b, fmt=".4f"):
     return " / ".join(format(m[k], fmt) if k in m else "–" for k in (a, b))
 
 
+def wall_pressure(s):
+    """wcsph-riemann's wall_pressure of a run: the case's wallp (−1 the scheme's default, the
+    gradient under the k-ε model; runs from before the parameter used the mirror)."""
+    w = s["parameters"].get("wallp", 0)
+    if w == -1:
+        w = 1 if s.get("turbulence", {}).get("model") else 0
+    return "gradient" if w == 1 else "mirror"
+
+
 def rans_section(runs):
     """The k-ε RANS model of wcsph-riemann (Wang, Sun & Hu sec 5.1, 5.3): the fully developed
     channel (cases/channel_ke.lua) against the 1-D solver, OpenFOAM and Lee & Moser's DNS, and
@@ -156,13 +165,13 @@ def rans_section(runs):
     off over resolutions."""
     chan = sorted((s for s in runs if s["case"] == "channel_ke"),
                   key=lambda s: (s["parameters"].get("ub", 0), s["parameters"].get("nf", 0),
-                                 s["parameters"].get("md", -1)))
+                                 s["parameters"].get("md", -1), wall_pressure(s)))
     hcd = sorted((s for s in runs if s["case"] == "channel_hcd"),
-                 key=lambda s: (s["parameters"].get("wallp", 0), s["parameters"].get("ard", 1),
+                 key=lambda s: (wall_pressure(s), s["parameters"].get("ard", 1),
                                 s["parameters"].get("nf", 0)))
     curved = sorted((s for s in runs if s["case"] == "channel_curved"),
                     key=lambda s: (s["parameters"].get("setting", 1), s["parameters"].get("nf", 0),
-                                   s["parameters"].get("ard", 0), s["parameters"].get("wallp", 0)))
+                                   s["parameters"].get("ard", 0), wall_pressure(s)))
     if not chan and not hcd and not curved:
         return []
 
@@ -183,16 +192,16 @@ def rans_section(runs):
                 "DNS's buffer layer), OpenFOAM and the 1-D solver. The paper: u+ within 3.1% (N_f = "
                 "20) and 0.75% (N_f = 40) of the DNS, u_τ 0.94% over its FVM's. "
                 "Chart: [channel_ke_uplus.png](channel_ke_uplus.png).", "",
-                "| N_f | U_b | momentum dissipation | t_end | u_τ | vs 1-D | vs OpenFOAM | u+ vs DNS "
-                "(rows 2+) | u+ vs DNS row 1 | u+ vs OpenFOAM | u+ vs 1-D | bulk | wall s "
-                "| particle-steps/s |",
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+                "| N_f | U_b | momentum dissipation | wall pressure | t_end | u_τ | vs 1-D "
+                "| vs OpenFOAM | u+ vs DNS (rows 2+) | u+ vs DNS row 1 | u+ vs OpenFOAM | u+ vs 1-D "
+                "| bulk | wall s | particle-steps/s |",
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for s in chan:
             p, m = s["parameters"], s.get("metrics", {})
             ub = f"{p['ub']:g}" if p.get("ub", 0) > 0 else "(u_τ fixed)"
             ut = f"{m['u_tau']:.5f}" if "u_tau" in m else "0.05435 (fixed)"
             out.append(f"| {p.get('nf', 0):g} | {ub} | {md_names.get(int(p.get('md', -1)), '?')} "
-                       f"| {p.get('t_end', 0):g} | {ut} | {pct(m, 'u_tau_dev_1d')} "
+                       f"| {wall_pressure(s)} | {p.get('t_end', 0):g} | {ut} | {pct(m, 'u_tau_dev_1d')} "
                        f"| {pct(m, 'u_tau_dev_fv')} | {mag(m, 'u_plus_dns_dev_max')} "
                        f"| {pct(m, 'u_plus_dns_dev_row1')} | {mag(m, 'u_plus_fv_dev_max')} "
                        f"| {mag(m, 'u_plus_dev_max')} | {m.get('bulk', float('nan')):.4f} "
@@ -207,13 +216,14 @@ def rans_section(runs):
                     "tests/data/channel1d_rowsN.csv). What differs is the particles' "
                     "discretisation. The grid limit above is that of a wall layer that vanishes; "
                     "the reference's own u+ against the DNS is the model's error.", "",
-                    "| N_f | momentum dissipation | u_τ vs 1-D rows | u max / RMS vs 1-D rows "
-                    "| k RMS / mean vs 1-D rows | u+ vs DNS (rows 2+): model / SPH |",
-                    "|---|---|---|---|---|---|"]
+                    "| N_f | momentum dissipation | wall pressure | u_τ vs 1-D rows "
+                    "| u max / RMS vs 1-D rows | k RMS / mean vs 1-D rows "
+                    "| u+ vs DNS (rows 2+): model / SPH |",
+                    "|---|---|---|---|---|---|---|"]
             for s in same:
                 p, m = s["parameters"], s["metrics"]
                 out.append(f"| {p.get('nf', 0):g} | {md_names.get(int(p.get('md', -1)), '?')} "
-                           f"| {pct(m, 'u_tau_dev_rows')} | {mag(m, 'u_rows_dev_max')} / "
+                           f"| {wall_pressure(s)} | {pct(m, 'u_tau_dev_rows')} | {mag(m, 'u_rows_dev_max')} / "
                            f"{mag(m, 'u_rows_rms')} | {mag(m, 'k_rows_rms')} / "
                            f"{pct(m, 'k_rows_mean')} | {mag(m, 'u_plus_model_dns_dev_max')} / "
                            f"{mag(m, 'u_plus_dns_dev_max')} |")
@@ -237,7 +247,7 @@ def rans_section(runs):
             name = {1: "mild", 2: "strong"}.get(int(p.get("setting", 1)), "?")
             peak = (f"{m['u_peak_outlet']:.3f} ({m['u_peak_outlet_fv']:.3f})"
                     if "u_peak_outlet" in m else "–")
-            wallp = "gradient" if p.get("wallp", 0) else "mirror"
+            wallp = wall_pressure(s)
             out.append(f"| {name} | {p.get('nf', 0):g} | {m.get('y_p', p.get('y_p', 0)):g} "
                        f"| {wallp} "
                        f"| {s['status']} | {s['sim_time']:.3g} ({m.get('avg', p.get('avg', 0)):.3g}) "
@@ -269,7 +279,7 @@ def rans_section(runs):
                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for s in hcd:
             p, m = s["parameters"], s.get("metrics", {})
-            wallp = "gradient" if p.get("wallp", 0) else "mirror"
+            wallp = wall_pressure(s)
             out.append(f"| {'on' if p.get('ard', 1) else 'off'} | {wallp} | {p.get('nf', 0):g} "
                        f"| {s['status']} | {p.get('t_end', 0):g} ({p.get('avg', 0):g}) "
                        f"| {pair(m, 'u_rms_platform', 'u_rms_exit', '.3f')} "

@@ -4,6 +4,7 @@
 # On 2 CPU cores each takes hours (strong: 94k particles, about 9500 steps, some 2.5 h alone;
 # mild: about twice that), so the runs write a checkpoint every 0.25 s of flow and this script,
 # run again, continues each from its last checkpoint (`clsph run --restart`) until it is done.
+# Both use the walls' pressure gradient (wallp = 1), the wall model's default wall pressure.
 # Then run tests/validation/run_rans.sh's report lines (results.py) to put them in RESULTS_rans.md.
 #   tests/validation/run_rans_curved40.sh [BUILD_DIR] [strong|mild|both]   (default build, both)
 set -euo pipefail
@@ -36,8 +37,8 @@ curved40() {
   fi
 }
 if [ "$which" = strong ] || [ "$which" = both ]; then
-  curved40 channel_curved_strong_nf40 setting=2 nf=40 y_p=0.0009525 checkpoint=0.25
+  curved40 channel_curved_strong_nf40 setting=2 nf=40 y_p=0.0009525 wallp=1 checkpoint=0.25
 fi
 if [ "$which" = mild ] || [ "$which" = both ]; then
-  curved40 channel_curved_mild_nf40 setting=1 nf=40 y_p=7e-4 t_end=5.08 avg=1 checkpoint=0.25
+  curved40 channel_curved_mild_nf40 setting=1 nf=40 y_p=7e-4 t_end=5.08 avg=1 wallp=1 checkpoint=0.25
 fi
