@@ -11,10 +11,12 @@ extern const struct scheme_ops scheme_isph_usaw;
 extern const struct scheme_ops scheme_wcsph_usaw;
 extern const struct scheme_ops scheme_isph_rotational;
 extern const struct scheme_ops scheme_wcsph_riemann;
+extern const struct scheme_ops scheme_isph_stabilized;
 
 static const struct scheme_ops *const schemes[] = {
-    &scheme_none,       &scheme_ballistic,       &scheme_isph_usaw,
-    &scheme_wcsph_usaw, &scheme_isph_rotational, &scheme_wcsph_riemann};
+    &scheme_none,           &scheme_ballistic,       &scheme_isph_usaw,
+    &scheme_wcsph_usaw,     &scheme_isph_rotational, &scheme_wcsph_riemann,
+    &scheme_isph_stabilized};
 
 enum clsph_status scheme_find(const char *name, const char *where, const struct scheme_ops **out)
 {

@@ -120,6 +120,30 @@ struct neigh_iter {
   realv wrap_shift; /* and its shift */
 };
 
+/* A position moved back into [lo, lo + len) along the periodic axes (the time integration's wrap,
+ * which the neighbour loop needs); unchanged along the others. */
+real grid_wrap_coord(real x, real lo, real len)
+{
+  real t = x - lo;
+  t -= len * floor(t / len);
+  if (t >= len) t -= len; /* round-off of the line above */
+  return lo + t;
+}
+
+realv grid_wrap(const struct grid *g, realv x)
+{
+#if PERIODIC_X
+  x.x = grid_wrap_coord(x.x, g->lo.x, g->len.x);
+#endif
+#if PERIODIC_Y
+  x.y = grid_wrap_coord(x.y, g->lo.y, g->len.y);
+#endif
+#if PERIODIC_Z && DIM == 3
+  x.z = grid_wrap_coord(x.z, g->lo.z, g->len.z);
+#endif
+  return x;
+}
+
 void neigh_begin(struct neigh_iter *it, const struct grid *g, realv x)
 {
   int escaped = 0;

@@ -51,30 +51,17 @@ __kernel void rot_dummy_velocity(const uint n, const struct grid g, __global con
     return;
   }
   const realv img = pos[i] + R(2.0) * dist[i] * normal[i];
-  realv s = (realv)(R(0.0));
-  real wsum = R(0.0), best = INFINITY;
-  uint m = i;
-  struct neigh_iter it;
-  neigh_begin(&it, &g, img);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
-    if (kind[j] == ROT_DUMMY) continue;
-    realv r = img - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
-    real w = vol[j] * smoothing_w(sqrt(r2));
-    wsum += w;
-    s += w * vel[j];
-    if (r2 < best) { /* fluid, or an entry or exit layer particle (resolved in open.cl) */
-      best = r2;
-      m = j;
-    }
-  }
+  /* the Shepard sum of the fluid and the nearest particle at the image (common/marker.cl):
+   * fluid, or an entry or exit layer particle (resolved in open.cl) */
+  const struct marker_sums s =
+      marker_shepard(&g, cell_start, pos, vol, kind, img, i, MARKER_VEL, vel, 0);
+  const real wsum = s.wsum;
+  const uint m = s.nearest;
   const realv uw = wall_vel[i];
 #if ROT_WALL_IMAGE
   const realv u = m != i ? R(2.0) * uw - vel[m] : uw;
 #else
-  const realv u = wsum > R(0.0) ? R(2.0) * uw - s / wsum : uw;
+  const realv u = wsum > R(0.0) ? R(2.0) * uw - s.u / wsum : uw;
 #endif
   if (!all(isfinite(u))) flags_raise(flags, CLSPH_FLAG_NAN);
   vel[i] = u;

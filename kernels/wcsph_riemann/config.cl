@@ -205,23 +205,3 @@ __kernel void wcr_count_pairs(const uint n, __global const uint *kind, __global 
   reduce_local_sum(s);
   if (l == 0) partial[get_group_id(0)] = s[0];
 }
-
-/* Over the square lattice of spacing dr around a particle (one work-item):
- *   out[0] = Σ_k W(|x_k|) dr², itself included: sigma0, the kernel sum of a full support;
- *   out[1] = −Σ_k F(|x_k|) x_k² dr²: lambda, what the viscous sum 2 Σ V F (v_i − v_j) makes of
- *            ∇²(x²/2) = 1 (advection.cl divides by it). */
-__kernel void wcr_lattice_sum(const real dr, __global real *out)
-{
-  if (get_global_id(0) != 0) return;
-  const int m = (int)ceil(SMOOTH_SUPPORT / dr) + 1;
-  real s = R(0.0), l = R(0.0);
-  for (int a = -m; a <= m; ++a)
-    for (int b = -m; b <= m; ++b) {
-      const real r = dr * sqrt((real)(a * a + b * b));
-      if (r >= SMOOTH_SUPPORT) continue;
-      s += smoothing_w(r);
-      if (a != 0 || b != 0) l -= smoothing_f(r) * (real)(a * a) * dr * dr;
-    }
-  out[0] = s * dr * dr;
-  out[1] = l * dr * dr;
-}

@@ -81,6 +81,7 @@ struct wcr {
 };
 
 static const char *const sources[] = {OPEN_SOURCES,
+                                      "common/lattice.cl",
                                       "wcsph_riemann/config.cl",
                                       "wcsph_riemann/advection.cl",
                                       "wcsph_riemann/acoustic.cl",
@@ -460,7 +461,7 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   w->h_partial = calloc(groups + 1, sizeof *w->h_partial);
   CLSPH_CHECK(w->h_partial != NULL, CLSPH_E_NOMEM, "out of memory");
   const char *names[] = {"wcr_config",   "wcr_count_pairs", "wcr_advection",  "wcr_drift",
-                         "wcr_momentum", "wcr_continuity",  "wcr_wall_force", "wcr_lattice_sum"};
+                         "wcr_momentum", "wcr_continuity",  "wcr_wall_force", "lattice_sums"};
   cl_kernel *ks[] = {&w->k_config, &w->k_count, &w->k_adv,   &w->k_drift,
                      &w->k_mom,    &w->k_cont,  &w->k_force, &w->k_lattice};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)

@@ -1,0 +1,112 @@
+/* predict.cl (isph-stabilized): the explicit viscous prediction and the source of the stabilized
+ * pressure equation (Asai, Aly, Sonoda & Sakai 2012, J. Appl. Math. 2012:139583, "A12"; seed
+ * paper S = stabilized_isph_virtual_marker.txt sec 2.3, eq 8).
+ *
+ * Conventions: r_ij = x_i − x_j, ∇_iW_ij = F(r_ij) r_ij (smoothing.h), V_j = dr², ρ = ρ0.
+ *   prediction (A12 projection, viscous term explicit):
+ *     u*_i = u_i + Δt (ν L{u}_i + a),  L{u}_i = Σ_j 2 V_j F_ij r_ij²/(r_ij² + η²) (u_i − u_j)
+ *     (Morris et al. 1997; common/poisson.cl's pair term), over fluid and dummies (walls.cl
+ *     gives the dummies their velocity), a = g + body force.
+ *   intermediate density (A12; S sec 2.3 "the density updated on the intermediate positions"):
+ *     x*_i = x_i + Δt u*_i (fluid), x*_w = x_w + Δt u_W (dummies move with their wall),
+ *     s*_i = Σ_j V_j W(|x*_i − x*_j|) over fluid and dummies, i itself included,
+ *     ρ*_i/ρ0 = s*_i/σ0, σ0 the same sum over the full lattice (common/lattice.cl). CHOICE: the
+ *     reference is the discrete lattice sum, not 1: otherwise a lattice at rest carries the source
+ *     αρ0(1 − σ0)/Δt², which grows as Δt shrinks.
+ *     The pairs are those of the neighbour grid at x^n: its cells cover the support plus the skin
+ *     (support_skin), more than two moves of a step bounded by 0.25 h/U each apart.
+ *   free surface (A12, MPS practice; S: β ≈ 0.97): a Dirichlet row where s*_i / σ0 < β_fs. The
+ *     dummies count in s*, so fluid next to a wall keeps a full support. Its value: CHOICE, the
+ *     pressure half a spacing inside the surface, p_i = −ρ0 a·n dr/2 (≥ 0; n = −Σ V ∇W / |…|, the
+ *     outward normal), not A12's p = 0 on the particle itself (the reading isph-usaw makes too,
+ *     its free_surface_offset): with the symmetric gradient of project.cl a top particle at
+ *     p = 0 feels only half of the weight of its half support (Σ V F Δy² over the rows below is
+ *     0.50 at h = 1.2 dr), sinks into the row below at g/2, and the paper's tank clustered within
+ *     0.3 s; at 0.54 ρ g dr it is in equilibrium, and ρ g dr/2 is the fluid's own surface.
+ *   source (A12 stabilized PPE, S eq 8):
+ *     ∇²p_i = (ρ0/Δt) D_i + α ρ0 (1 − s*_i/σ0)/Δt²,  D_i = Σ_j V_j (u*_j − u*_i)·∇_iW_ij at x^n,
+ *     the Laplacian that of common/poisson.cl. α = 0: the divergence-free projection alone;
+ *     α > 0 pulls the density back to ρ0 (S: "around 1% or less").
+ * The dummy rows of the pseudo-Neumann condition are Dirichlet rows whose value walls.cl writes
+ * into rhs after this kernel. */
+
+/* u* of the fluid */
+__kernel void stab_predict(OP_ARGS, __global const uint *kind, __global const realv *vel,
+                           const real nu, const real dt, const realv accel, __global realv *ustar,
+                           __global uint *flags)
+{
+  const uint i = get_global_id(0);
+  if (i >= n || kind[i] != STAB_FLUID) return;
+  const realv x = pos[i], u_i = vel[i];
+  const realm L_i = mat_identity();
+  realv lap = (realv)(R(0.0));
+  struct neigh_iter it;
+  neigh_begin(&it, &g, x);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv r = x - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    lap += poisson_pair(L_i, vol[j], r, r2) * (u_i - vel[j]);
+  }
+  const realv u = u_i + dt * (nu * lap + accel);
+  if (!all(isfinite(u))) flags_raise(flags, CLSPH_FLAG_NAN);
+  ustar[i] = u;
+}
+
+/* x* of particle j: the fluid's with its u*, a dummy's with its wall */
+realv stab_xstar(uint j, __global const realv *pos, __global const uint *kind,
+                 __global const realv *ustar, __global const realv *wall_vel, real dt)
+{
+  return pos[j] + dt * (kind[j] == STAB_FLUID ? ustar[j] : wall_vel[j]);
+}
+
+/* s* / σ0, the free surface, the Dirichlet mask, D and the right-hand side (0 on the Dirichlet
+ * rows: the free surface's p = 0; the dummies' values come from walls.cl) */
+__kernel void stab_source(OP_ARGS, __global const uint *kind, __global const realv *ustar,
+                          __global const realv *wall_vel, const real dt, const real inv_sigma0,
+                          const real beta_fs, const real alpha, const real rho0,
+                          const realv accel, const real fs_offset, __global real *rho_star, __global uint *free_surface,
+                          __global uint *dirichlet, __global real *div, __global real *rhs,
+                          __global uint *flags)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  if (kind[i] != STAB_FLUID) {
+    rho_star[i] = R(1.0);
+    free_surface[i] = 0u;
+    dirichlet[i] = 1u;
+    div[i] = R(0.0);
+    rhs[i] = R(0.0);
+    return;
+  }
+  const realv x = pos[i], u_i = ustar[i], xs = x + dt * u_i;
+  real s = R(0.0), d = R(0.0);
+  realv gs = (realv)(R(0.0)); /* Σ V ∇W: −gs points out of the fluid */
+  struct neigh_iter it;
+  neigh_begin(&it, &g, x);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    realv rs = xs - (stab_xstar(j, pos, kind, ustar, wall_vel, dt) + it.shift);
+    s += vol[j] * smoothing_w(sqrt(dot(rs, rs))); /* j == i included: W(0) */
+    realv r = x - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    const realv gw = smoothing_f(sqrt(r2)) * r;
+    d += vol[j] * dot(ustar[j] - u_i, gw);
+    gs += vol[j] * gw;
+  }
+  const real ratio = s * inv_sigma0;
+  const uint fs = ratio < beta_fs;
+  /* a free-surface particle: the pressure fs_offset inside the surface, −ρ0 a·n fs_offset along
+   * its outward normal n (≥ 0) */
+  const real gn = length(gs);
+  const real pfs = gn > R(0.0) ? fmax(R(0.0), rho0 * fs_offset * dot(accel, gs) / gn) : R(0.0);
+  const real b = fs ? pfs : rho0 / dt * d + alpha * rho0 * (R(1.0) - ratio) / (dt * dt);
+  if (!isfinite(b)) flags_raise(flags, CLSPH_FLAG_NAN);
+  rho_star[i] = ratio;
+  free_surface[i] = fs;
+  dirichlet[i] = fs;
+  div[i] = d;
+  rhs[i] = b;
+}
