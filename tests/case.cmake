@@ -895,6 +895,9 @@ clsph_run_test(run_channel_curved_start ${CMAKE_SOURCE_DIR}/cases/channel_curved
                SETS setting=2 t_end=0.1 every=0.05 avg=0.05
                BOUNDS "u_rms_bend<0.03" "u_rms_outlet<0.04" "u_max_outlet<0.08" "k_rms_bend<0.13"
                "k_rms_outlet<0.14" "health.nearest_spacing_min_dr>0.8")
+clsph_cli_test(channel_curved_wallp_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_curved.lua
+               --set wallp=2 RC 2
+               REGEX "channel_curved: wallp must be 0 \\(the mirror\\) or 1 \\(the gradient\\), not 2")
 # The HCD channel's start with its particles fitted to the lower wall (cases/channel_hcd.lua,
 # fitted = 1: six rows parallel to the ramps and the platform, round at the convex corners,
 # trimmed at the concave ones, the lattice above, the floor's dummy layers in rows): no particle
