@@ -26,8 +26,8 @@
 -- checkpoint > 0 writes a checkpoint every `checkpoint` s (the N_f = 40 runs take hours on a CPU:
 -- `clsph run --restart` continues them).
 -- wallp = 1 (the default; 0 is the mirror) extrapolates the walls' pressure along them with the
--- particles' own pressure gradient (wcsph-riemann's wall_pressure = "gradient"; the mirror's first row feels 0.78 of the pressure
--- gradient that drives the flow along the walls).
+-- particles' own pressure gradient (wcsph-riemann's wall_pressure = "gradient"; the mirror's
+-- first row feels 0.78 of the pressure gradient that drives the flow along the walls).
 param { setting = 1, nf = 20, y_p = 0, t_end = 0, every = 0, avg = 0, ard = 0, points = 81,
         fitted = 1, checkpoint = 0, wallp = 1 }
 if wallp ~= 0 and wallp ~= 1 then

@@ -38,11 +38,11 @@
 -- second cell); the particles keep their speed past the corner. pbg sets the scheme's
 -- background_pressure (20 = ρ0 c0 U_b: no separation either, u RMS 0.30 at the exit line).
 -- wallp = 1 (the default; 0 is the mirror) extrapolates the walls' pressure along them with the
--- particles' own pressure gradient (wall_pressure = "gradient"): with the mirror the wall-adjacent row feels 0.78 of the
--- adverse gradient past the corners. At nf = 40 (t = 60, the last 20 s) the exit line's u RMS
--- fell from 0.182 to 0.132 (ard = 1) and from 0.137 to 0.085 (ard = 0), k's from 0.181 to
--- 0.126 and 0.135 to 0.081, and with ard = 0 5% of the line flows back (OpenFOAM's 12.5%); at
--- nf = 80 (t = 30, ard = 0) 0.074 (mirror 0.132), k 0.083 (0.137), 7.5% backflow.
+-- particles' own pressure gradient (wall_pressure = "gradient"): with the mirror the wall-adjacent
+-- row feels 0.78 of the adverse gradient past the corners. At nf = 40 (t = 60, the last 20 s) the
+-- exit line's u RMS fell from 0.182 to 0.132 (ard = 1) and from 0.137 to 0.085 (ard = 0), k's from
+-- 0.181 to 0.126 and 0.135 to 0.081, and with ard = 0 5% of the line flows back (OpenFOAM's 12.5%);
+-- at nf = 80 (t = 30, ard = 0) 0.074 (mirror 0.132), k 0.083 (0.137), 7.5% backflow.
 -- OpenFOAM's profiles are near their mesh limit: halving its core and streamwise cells
 -- (tests/data/openfoam_channel_hcd_fine.csv, the wall cells kept) moves U by 0.01 U_b RMS along
 -- both lines (0.05 at most, the platform's wall cell), k by 3% of its largest along x = 9.5 and

@@ -36,8 +36,14 @@
 -- eq 40 (the scheme's 0.1 otherwise); md ≥ 0 sets the scheme's momentum_dissipation (0 off,
 -- 1 riemann, 2 reconstructed: the default under the model); wallp ≥ 0 sets its wall_pressure (0
 -- the mirror, 1 the gradient: the default under the model, the mirror in a laminar run).
+-- sample_dt: the walls' forces are recorded every `sample_dt` δ/U_b (at most every output), so that
+-- u_τ averages the second half's friction over many samples: over 10% windows of a run it moves
+-- by ±1%, so that three or four samples (one per output) are not an average.
 param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1, md = -1, ub = 0,
-        wallp = -1 }
+        wallp = -1, sample_dt = 1 }
+if not (sample_dt > 0) then
+  error(("channel_ke: sample_dt must be a positive time between force samples, not %g"):format(sample_dt))
+end
 if wallp ~= -1 and wallp ~= 0 and wallp ~= 1 then
   error(("channel_ke: wallp must be -1 (the scheme's default), 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
 end
@@ -94,7 +100,7 @@ else -- the 1/7 power law of the same mean, k and ε of turbulence { }
 end
 force { "floor" }
 force { "ceiling" }
-run { t_end = t_end, output_every = every }
+run { t_end = t_end, output_every = every, sample_every = math.min(sample_dt, every) }
 
 -- a column of a table against y, linear (flat beyond the ends)
 local function interp(ys, vs, y)

@@ -19,7 +19,8 @@
 
 4. The HCD channel's stability map: the disturbance (the RMS along a line of u's spread in time,
    over U_b, and of k's over its mean: the metrics u_unsteady_* and k_unsteady_*) against N_f,
-   ARD on and off (the runs given as hcdmap:LABEL=RUN_DIR; the label is not used).
+   ARD on and off (the runs given as hcdmap:LABEL=RUN_DIR; a label other than "map" names a
+   series beside ARD on or off, e.g. the mirror's walls).
 
     python3 tests/validation/channel_ke_chart.py OUT_DIR channel:LABEL=RUN_DIR ... \
         hcd:LABEL=RUN_DIR ... curved:LABEL=RUN_DIR ... hcdmap:LABEL=RUN_DIR ...
@@ -72,7 +73,11 @@ def snapshot_rows(run_dir, nf, y_p):
 def channel_chart(out_dir, runs):
     rows = []
     for label, run_dir in runs:
-        summary = json_load(os.path.join(run_dir, "summary.json"))
+        path = os.path.join(run_dir, "summary.json")
+        if not os.path.exists(path):  # a run still going (the N_f = 40 ones take hours)
+            print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of the chart")
+            continue
+        summary = json_load(path)
         params, metrics = summary["parameters"], summary["metrics"]
         ut = metrics.get("u_tau", U_TAU_REF)
         for y, u in snapshot_rows(run_dir, int(params["nf"]), params["y_p"]):
@@ -188,7 +193,11 @@ def curved_chart(out_dir, runs):
     rows, shown = [], set()
     names = {1: ("mild", 0.0635), 2: ("strong", 0.0762)}
     for label, run_dir in runs:
-        summary = json_load(os.path.join(run_dir, "summary.json"))
+        path = os.path.join(run_dir, "summary.json")
+        if not os.path.exists(path):  # a run still going (the N_f = 40 ones take hours)
+            print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of the chart")
+            continue
+        summary = json_load(path)
         params, metrics = summary["parameters"], summary["metrics"]
         name, height = names[int(params.get("setting", 1))]
         t0 = summary["sim_time"] - metrics["avg"]
@@ -235,7 +244,7 @@ unset multiplot
 
 def hcd_map_chart(out_dir, runs):
     rows = []
-    for _, run_dir in runs:
+    for label, run_dir in runs:
         path = os.path.join(run_dir, "summary.json")
         if not os.path.exists(path):
             print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of the map")
@@ -246,7 +255,8 @@ def hcd_map_chart(out_dir, runs):
             print(f"channel_ke_chart.py: {run_dir} ({summary['status']}) has no disturbance "
                   "metrics: left out of the map")
             continue
-        rows.append(("ARD on" if p.get("ard", 1) else "ARD off", int(p["nf"]),
+        series = ("ARD on" if p.get("ard", 1) else "ARD off") + ("" if label == "map" else f" {label}")
+        rows.append((series, int(p["nf"]),
                      m["u_unsteady_platform"], m["u_unsteady_exit"], m["k_unsteady_platform"],
                      m["k_unsteady_exit"]))
     rows.sort()
@@ -259,7 +269,7 @@ def hcd_map_chart(out_dir, runs):
     for col, what in ((3, "u spread, x = 5"), (4, "u spread, x = 9.5"), (5, "k spread, x = 5"),
                       (6, "k spread, x = 9.5")):
         plots = [f"'{csv_path}' using (strcol(1) eq '{s}' ? $2 : 1/0):{col} with linespoints "
-                 f"lw 2 pt 7 title '{s}'" for s in ("ARD on", "ARD off")]
+                 f"lw 2 pt 7 title '{s}'" for s in sorted({r[0] for r in rows})]
         panels.append(f"set title '{what}'\nplot {', '.join(plots)}")
     gnuplot(f"""set terminal pngcairo size 1000,700 font ",10" noenhanced
 set output '{os.path.join(out_dir, "channel_hcd_map.png")}'

@@ -186,7 +186,10 @@ def rans_section(runs):
         out += ["", "## k-ε channel, fully developed (Wang, Sun & Hu sec 5.1)", "",
                 "Lee & Moser's channel (δ = 1, ν = 1e-4, U_b = 1 under flow-rate control, `ub = 1`; "
                 "or u_τ = 0.05435 fixed), y_p = 0.05, N_f rows across with the boundary offset. u_τ "
-                "from the walls' friction over the second half of the run, against the 1-D solver "
+                "from the walls' friction over the second half of the run, sampled every "
+                "`sample_dt` δ/U_b (a run without sample_dt among its parameters sampled it once "
+                "per output: three or four samples, where 10% windows of a run differ by ±1%), "
+                "against the 1-D solver "
                 "(0.051372) and OpenFOAM's 20-cell run (0.052403); u+ per row against the DNS "
                 "(rows 2 on; row 1 apart: the wall function's log law at y+ = 27 stands above the "
                 "DNS's buffer layer), OpenFOAM and the 1-D solver. The paper: u+ within 3.1% (N_f = "

@@ -60,10 +60,15 @@ python3 tests/validation/results.py "$out" tests/validation/RESULTS_rans.md
 python3 tests/validation/channel_ke_chart.py tests/validation \
   "channel:SPH N_f = 20=$out/channel_ke_nf20_ub1" "channel:SPH N_f = 40=$out/channel_ke_nf40_ub1" \
   "channel:SPH N_f = 80=$out/channel_ke_nf80_ub1" \
-  "hcd:SPH N_f = 40 ARD=$out/channel_hcd_nf40_ard1" "hcd:SPH N_f = 40 no ARD=$out/channel_hcd_nf40_ard0" \
-  "hcd:SPH N_f = 40 ARD + wall gradient=$out/channel_hcd_nf40_ard1_wallp" \
-  "hcd:SPH N_f = 40 no ARD + wall gradient=$out/channel_hcd_nf40_ard0_wallp" \
-  "hcd:SPH N_f = 80 no ARD + wall gradient=$out/channel_hcd_nf80_ard0_wallp" \
-  "curved:SPH N_f = 20=$out/channel_curved_strong_nf20" "curved:SPH N_f = 20=$out/channel_curved_mild_nf20" \
-  "curved:SPH N_f = 20 wall gradient=$out/channel_curved_strong_nf20_wallp" \
-  $(for nf in 40 60 80; do for a in 0 1; do echo "hcdmap:map=$out/channel_hcd_nf${nf}_ard$a"; done; done)
+  "hcd:SPH N_f = 40 ARD=$out/channel_hcd_nf40_ard1_wallp" \
+  "hcd:SPH N_f = 40 no ARD=$out/channel_hcd_nf40_ard0_wallp" \
+  "hcd:SPH N_f = 80 no ARD=$out/channel_hcd_nf80_ard0_wallp" \
+  "hcd:SPH N_f = 40 ARD (mirror)=$out/channel_hcd_nf40_ard1" \
+  "hcd:SPH N_f = 40 no ARD (mirror)=$out/channel_hcd_nf40_ard0" \
+  "curved:SPH N_f = 20=$out/channel_curved_strong_nf20_wallp" \
+  "curved:SPH N_f = 20=$out/channel_curved_mild_nf20_wallp" \
+  "curved:SPH N_f = 20 (mirror)=$out/channel_curved_strong_nf20" \
+  "curved:SPH N_f = 20 (mirror)=$out/channel_curved_mild_nf20" \
+  "curved:SPH N_f = 40=$out/channel_curved_strong_nf40" "curved:SPH N_f = 40=$out/channel_curved_mild_nf40" \
+  $(for nf in 40 60 80; do for a in 0 1; do echo "hcdmap:map=$out/channel_hcd_nf${nf}_ard${a}_wallp"; done; done) \
+  $(for nf in 40 60 80; do for a in 0 1; do echo "hcdmap:mirror=$out/channel_hcd_nf${nf}_ard$a"; done; done)
