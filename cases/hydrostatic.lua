@@ -12,34 +12,35 @@
 -- --set dynamic=0 gives it the paper's G+ of the total pressure (6% off and 3e-2 √(gH) currents
 -- at δr = 0.05 m). With riemann = 1, wallp = 1 extrapolates the walls' pressure along them with
 -- the particles' own pressure gradient (wall_pressure = "gradient").
--- stab = 1 runs isph-stabilized (Asai et al. 2012) with the pseudo-Neumann wall pressure
--- (neumann = 0; the modified virtual marker is not there yet), relaxation alpha, slip = 1 free-slip
--- walls, direct = 1 the UMFPACK solve; the paper's tank is --set stab=1 depth=0.2 width=0.2
--- dr=0.01; it starts from ρ g (H − z) (start_p = 0: from p = 0), cfl scales the time step.
+-- stab = 1 runs isph-stabilized (Asai et al. 2012) with the modified virtual marker's Neumann wall
+-- pressure (neumann = 1; 0 the pseudo-Neumann one), relaxation alpha, slip = 1 free-slip walls,
+-- direct = 1 the UMFPACK solve, recompute = 1 the BiCGStab recomputing the operator at every
+-- application, layers the dummy layers (wall_layers); the paper's tank is --set stab=1
+-- depth=0.2 width=0.2 dr=0.01; it starts from ρ g (H − z) (start_p = 0: from p = 0), cfl scales
+-- the time step.
 -- bottom_error is the largest |p − ρ g (H − z)| / (ρ g H) over the fluid particles within 3 dr of
 -- the floor, bottom_bias its signed mean: measured on the particles, because an interpolation next
 -- to the floor is one-sided and biased by about ρ g dr/2 by itself.
 param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0.5, wcsph = 0, dynamic = 1,
-        riemann = 0, tvf = 2, wallp = 0, stab = 0, neumann = 0, alpha = 0.01, slip = 0,
-        direct = 0, start_p = 1, cfl = 1 }
+        riemann = 0, tvf = 2, wallp = 0, stab = 0, neumann = 1, alpha = 0.01, slip = 0,
+        direct = 0, recompute = 0, layers = 3, start_p = 1, cfl = 1 }
 if wallp ~= 0 and wallp ~= 1 then
   error(("hydrostatic: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
 end
-for k, v in pairs({ stab = stab, slip = slip, direct = direct, start_p = start_p }) do
+for k, v in pairs({ stab = stab, neumann = neumann, slip = slip, direct = direct,
+                    recompute = recompute, start_p = start_p }) do
   if v ~= 0 and v ~= 1 then error(("hydrostatic: %s must be 0 or 1, not %g"):format(k, v)) end
-end
-if neumann ~= 0 then
-  error(("hydrostatic: neumann must be 0 (pseudo-Neumann, the only wall pressure of " ..
-         "isph-stabilized so far), not %g"):format(neumann))
 end
 
 local g = 9.81
 domain { 0, 0, width, 1.5 * depth }
 particles { dr = dr }
 if stab == 1 then -- stabilized ISPH, virtual-marker dummy walls
-  scheme { "isph-stabilized", alpha = alpha, wall_pressure = "pseudo_neumann",
+  scheme { "isph-stabilized", alpha = alpha,
+           wall_pressure = neumann == 1 and "neumann" or "pseudo_neumann",
            wall_velocity = slip == 1 and "slip" or "no_slip",
-           solver = direct == 1 and "direct" or "bicgstab" }
+           solver = direct == 1 and "direct" or "bicgstab",
+           solver_apply = recompute == 1 and "recompute" or "stored", wall_layers = layers }
 elseif riemann == 1 then -- Riemann WCSPH, c0 = 10 √(2 g H) (the default from the depth)
   scheme { "wcsph-riemann", transport_velocity = ({"off", "full", "limited"})[tvf + 1],
            wall_pressure = wallp == 1 and "gradient" or "mirror" }

@@ -1050,7 +1050,8 @@ clsph_cli_test(metrics_sample_no_field ARGS run ${bad_metrics} --set what=5
 
 
 # isph-stabilized (solvers/isph_stabilized/): stabilized ISPH of Asai et al. 2012 on dummy walls
-# with virtual markers, the pseudo-Neumann wall pressure (S = the seed paper's sec 3.2). Bad input
+# with virtual markers, the modified virtual marker's Neumann wall pressure (S = the seed paper's
+# sec 3.3) and the pseudo-Neumann one (sec 3.2). Bad input
 # is refused with the case's scheme line and the key: α out of range, options that are not numbers
 # or not among the choices, wall_velocity and slip_ratio together, too few dummy layers for the
 # markers, and sections.
@@ -1061,7 +1062,7 @@ set(bad_stab ${CASE_DIR}/bad_stab.lua)
 clsph_cli_test(stab_alpha_text ARGS info ${bad_stab} --set what=1 RC 2
                REGEX "bad_stab.lua:12: isph-stabilized option alpha must be a number from 0 to 1, not \"small\"")
 clsph_cli_test(stab_bad_wall_pressure ARGS info ${bad_stab} --set what=2 RC 2
-               REGEX "bad_stab.lua:12: isph-stabilized option wall_pressure must be one of \"pseudo_neumann\", not \"dirichlet\"")
+               REGEX "bad_stab.lua:12: isph-stabilized option wall_pressure must be one of \"pseudo_neumann\", \"neumann\", not \"dirichlet\"")
 clsph_cli_test(stab_slip_twice ARGS info ${bad_stab} --set what=3 RC 2
                REGEX "bad_stab.lua:12: .*give wall_velocity or slip_ratio, not both")
 clsph_cli_test(stab_surface_threshold ARGS info ${bad_stab} --set what=4 RC 2
@@ -1072,33 +1073,57 @@ clsph_cli_test(stab_wall_layers ARGS info ${bad_stab} --set what=6 RC 2
                REGEX "bad_stab.lua: isph-stabilized: wall_layers = 1 puts dummies .* wall_layers >= 2")
 clsph_cli_test(stab_sections ARGS info ${CASE_DIR}/bad_open_scheme.lua --set usaw=2 RC 2
                REGEX "bad_open_scheme.lua: isph-stabilized has no inflow or outflow sections")
-# The paper's tank (S sec 4.1: 0.2 m of water, 0.2 m wide, dr = 0.01 m), pseudo-Neumann walls,
-# α = 0.01, from the hydrostatic pressure, 1 s (230 steps, 7.6 BiCGStab iterations a step in
-# double, 5.7 in float; about 1.5 s). What S finds (its figs 3 and 5): the pressure is low near the
-# floor. The walls' values are the fluid's Shepard mean at their markers plus ρ g 2d, lagged one
-# step: the mean at a marker half a spacing from the floor reads the fluid above it, so the floor
-# carries less than the water's weight and the fluid over it settles slightly compressed.
-# Measured on the particles within 3 dr of the floor, against ρ g (H − z), relative to ρ g H:
-# bottom_bias −0.0584 (double) and −0.0578 (float), bottom_error 0.0718 and 0.0721, speed_ratio
-# 0.0250 and 0.0321 (the fluid jostles at 3-4 cm/s), no particle behind a wall. Bounds: the sign
-# and at least 3.5% (the paper's finding), no lower than −0.09 (1.5 times the measured bias; a
-# wall mapping without its ρ a·(x_w − x_m) term reads −0.5), error and speed 1.5 times measured.
-# The same tank at 0.25 √(h/g), twice the scheme's step, lets a particle through the floor at
-# t = 0.23 s; α = 0.1 clusters particles at t = 0.74 s, and the tank itself at t = 1.17 s.
+# The paper's tank (S sec 4.1: 0.2 m of water, 0.2 m wide, dr = 0.01 m), from the hydrostatic
+# pressure, α = 0.01. What S finds (its figs 3 and 5), here in numbers on the particles within 3 dr
+# of the floor, against ρ g (H − z), relative to ρ g H: the modified virtual marker (the default)
+# right, the pseudo-Neumann walls low.
+# Modified virtual marker, 2 s (460 steps, 5.9 BiCGStab iterations a step in double, 3.9 in float;
+# about 5 s): bottom_error 0.0074 (double) and 0.0129 (float), bottom_bias −0.0064 and −0.0070,
+# speed_ratio 0.021 and 0.030 (the fluid jostles at 3-4 cm/s, as with the pseudo-Neumann walls),
+# no particle behind a wall. The error at a given instant swings with the jostle: 0.031 at t = 1 s
+# in double, 0.016 at most over 10 s. Bound 0.045, under the pseudo-Neumann walls' 0.072 below,
+# and speed 1.5 times the float value.
+clsph_run_test(run_stab_hydrostatic_neumann ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
+               SETS stab=1 depth=0.2 width=0.2 dr=0.01 t_end=2
+               BOUNDS "bottom_error<0.045" "speed_ratio<0.045" "crossed_wall<0.5")
+# Pseudo-Neumann, 1 s (230 steps, 5.1 BiCGStab iterations a step in double, 2.2 in float). The
+# walls' values are the fluid's Shepard mean at their markers plus ρ g 2d, lagged one step: the
+# mean at a marker half a spacing from the floor reads the fluid above it, so the floor carries
+# less than the water's weight and the fluid over it settles slightly compressed. bottom_bias
+# −0.0589 (double) and −0.0583 (float), bottom_error 0.0723 and 0.0717, speed_ratio 0.0248 and
+# 0.0275, no particle behind a wall. Bounds: the sign and at least 3.5% (the paper's finding), no
+# lower than −0.09 (1.5 times the measured bias; a wall mapping without its ρ a·(x_w − x_m) term
+# reads −0.5), error and speed 1.5 times measured. Over 10 s: −0.067 to −0.068, steady.
+# Both conditions clustered in the top row (at 0.52 s and 1.17 s) before the pressure gradient took
+# Thomas & Couchman's kernel derivative for close pairs (isph_stabilized/project.cl).
 clsph_run_test(run_stab_hydrostatic_pseudo ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
-               SETS stab=1 depth=0.2 width=0.2 dr=0.01 t_end=1
+               SETS stab=1 depth=0.2 width=0.2 dr=0.01 t_end=1 neumann=0
                BOUNDS "bottom_bias<-0.035" "bottom_bias>-0.09" "bottom_error<0.11" "speed_ratio<0.05"
                       "crossed_wall<0.5")
 # The same with α = 0, the divergence-free projection alone: nothing pulls the density back, and
-# the fluid over the floor stays more compressed: bottom_bias −0.0972 (double), −0.0981 (float),
-# speed_ratio 0.0290 and 0.0305. The bound on the bias separates it from the α = 0.01 run above
-# (−0.058): the relaxation term is what lifts the pressure there.
+# the fluid over the floor stays more compressed: bottom_bias −0.0969 (double), −0.0981 (float),
+# speed_ratio 0.0285 and 0.0301. The bound on the bias separates it from the α = 0.01 run above
+# (−0.059): the relaxation term is what lifts the pressure there.
 clsph_run_test(run_stab_alpha0 ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
-               SETS stab=1 depth=0.2 width=0.2 dr=0.01 t_end=1 alpha=0
+               SETS stab=1 depth=0.2 width=0.2 dr=0.01 t_end=1 alpha=0 neumann=0
                BOUNDS "bottom_bias<-0.07" "bottom_bias>-0.15" "speed_ratio<0.05" "crossed_wall<0.5")
+# The modified virtual marker's system three ways, 0.1 s (30 steps, before the jostle makes the two
+# precisions part): the stored BiCGStab gives bottom_bias 0.00860 (double) and 0.00836 (float);
+# UMFPACK on the assembled rows (`coefficients`) 0.00860 and 0.00861; the BiCGStab recomputing the
+# operator at every application (`apply`) 0.00860 and 0.00836; with 5 dummy layers instead of 3
+# 0.00860 and 0.00843 (the deeper dummies, which no fluid particle sees, are Dirichlet rows: as
+# unknowns their marker rows reached beyond the multigrid's stencil, whose lumping left them a
+# zero diagonal, and that tank blew up at its first step). Bounds ±6% around 0.0086: a rows/apply
+# mismatch or a deep dummy that counts moves it more.
+foreach(v direct=1 recompute=1 layers=5)
+  string(REGEX REPLACE "=.*" "" tag ${v})
+  clsph_run_test(run_stab_hydrostatic_${tag} ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
+                 SETS stab=1 depth=0.2 width=0.2 dr=0.01 t_end=0.1 ${v}
+                 BOUNDS "bottom_bias>0.0081" "bottom_bias<0.0091" "crossed_wall<0.5")
+endforeach()
 # The tank at rest (cases/hydrostatic.lua as shipped: 1 m of water, dr = H/20), 2 s (210 steps):
-# largest speed 0.0195 √(gH) in double, 0.0224 in float (0.06 m/s), the floor's pressure low as
-# above (bottom_bias −0.055 in both), no particle behind a wall. Bound 1.5 times the float value.
+# largest speed 0.0365 √(gH) in double, 0.0374 in float (0.11 m/s), bottom_error 0.0078 and
+# 0.0038, no particle behind a wall. Bounds 1.5 times the float speed, and 3% on the floor.
 clsph_run_test(run_stab_hydrostatic_rest ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
                SETS stab=1 dr=0.05 t_end=2
-               BOUNDS "speed_ratio<0.035" "bottom_bias<0" "crossed_wall<0.5")
+               BOUNDS "speed_ratio<0.056" "bottom_error<0.03" "crossed_wall<0.5")

@@ -27,8 +27,8 @@
  *     ∇²p_i = (ρ0/Δt) D_i + α ρ0 (1 − s*_i/σ0)/Δt²,  D_i = Σ_j V_j (u*_j − u*_i)·∇_iW_ij at x^n,
  *     the Laplacian that of common/poisson.cl. α = 0: the divergence-free projection alone;
  *     α > 0 pulls the density back to ρ0 (S: "around 1% or less").
- * The dummy rows of the pseudo-Neumann condition are Dirichlet rows whose value walls.cl writes
- * into rhs after this kernel. */
+ * The dummies' rows (ppe.cl) get their right-hand side from walls.cl (pseudo-Neumann) or ppe.cl
+ * (the modified virtual marker) after this kernel. */
 
 /* u* of the fluid */
 __kernel void stab_predict(OP_ARGS, __global const uint *kind, __global const realv *vel,
@@ -61,12 +61,13 @@ realv stab_xstar(uint j, __global const realv *pos, __global const uint *kind,
   return pos[j] + dt * (kind[j] == STAB_FLUID ? ustar[j] : wall_vel[j]);
 }
 
-/* s* / σ0, the free surface, the Dirichlet mask, D and the right-hand side (0 on the Dirichlet
- * rows: the free surface's p = 0; the dummies' values come from walls.cl) */
+/* s* / σ0, the free surface, the Dirichlet mask, D and the right-hand side (a free-surface row
+ * d0 p_i = d0 p_s, ppe.cl; the dummies' rows come from walls.cl and ppe.cl) */
 __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const realv *ustar,
                           __global const realv *wall_vel, const real dt, const real inv_sigma0,
                           const real beta_fs, const real alpha, const real rho0,
-                          const realv accel, const real fs_offset, __global real *rho_star, __global uint *free_surface,
+                          const realv accel, const real fs_offset, const real d0,
+                          __global real *rho_star, __global uint *free_surface,
                           __global uint *dirichlet, __global real *div, __global real *rhs,
                           __global uint *flags)
 {
@@ -102,7 +103,7 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
    * its outward normal n (≥ 0) */
   const real gn = length(gs);
   const real pfs = gn > R(0.0) ? fmax(R(0.0), rho0 * fs_offset * dot(accel, gs) / gn) : R(0.0);
-  const real b = fs ? pfs : rho0 / dt * d + alpha * rho0 * (R(1.0) - ratio) / (dt * dt);
+  const real b = fs ? d0 * pfs : rho0 / dt * d + alpha * rho0 * (R(1.0) - ratio) / (dt * dt);
   if (!isfinite(b)) flags_raise(flags, CLSPH_FLAG_NAN);
   rho_star[i] = ratio;
   free_surface[i] = fs;

@@ -18,9 +18,36 @@
  *     ("plus ρ g times the distance"), computed from the fluid's last pressure and imposed as a
  *     Dirichlet value on the dummy rows of the pressure equation; after the solve it is mapped
  *     again from the new pressure (S eq 22) for the projection and the next step. A dry marker
- *     gives p_w = 0 (no fluid near: nothing to hold). */
+ *     gives p_w = 0 (no fluid near: nothing to hold). CHOICE: p_w ≥ 0, as the free surface's:
+ *     above the water the carry ρ0 a·(x_w − x_m) is negative and would pull the contact line's
+ *     particles into the wall (see stab_wall_at_surface). */
 #define STAB_FLUID 0u
 #define STAB_DUMMY 2u
+
+/* Is the wall point x (a dummy's pressure marker, on the wall) at the free surface: its kernel sum
+ * over fluid and dummies below β_fs σ0, the fluid's own test (predict.cl)? CHOICE (MPS practice
+ * tests wall particles like fluid ones): such a dummy, like a free-surface particle, is a
+ * Dirichlet row, its value the Neumann formula from the last pressure held at p_w ≥ 0
+ * (ppe.cl stab_wall_neumann). Solved for, the hydrostatic carry ρ0 a·(x_w − x_k) of a dummy
+ * above the water is negative, and a negative wall pressure pulls the contact line's particles
+ * into the wall's corner (the symmetric gradient of project.cl attracts where p_i + p_j < 0): the
+ * paper's tank clustered there at t = 0.70 s. With p_w = 0 instead the wall pushes the top row
+ * (p = ρ0 g dr/2) less than the water beside it does, and the tank clustered at t = 0.52 s. */
+int stab_wall_at_surface(const struct grid *g, __global const uint *cell_start,
+                         __global const realv *pos, __global const real *vol, realv x,
+                         real inv_sigma0, real beta_fs)
+{
+  real s = R(0.0);
+  struct neigh_iter it;
+  neigh_begin(&it, g, x);
+  uint j;
+  while (neigh_next(&it, g, cell_start, &j)) {
+    realv r = x - (pos[j] + it.shift);
+    real r2 = dot(r, r);
+    if (r2 < SMOOTH_SUPPORT2) s += vol[j] * smoothing_w(sqrt(r2));
+  }
+  return s * inv_sigma0 < beta_fs;
+}
 
 /* vel and ustar of the dummies (the fluid's are left alone) */
 __kernel void stab_wall_velocity(const uint n, const struct grid g, __global const uint *cell_start,
@@ -47,21 +74,22 @@ __kernel void stab_wall_velocity(const uint n, const struct grid g, __global con
   ustar[i] = u + dt * accel;
 }
 
-/* p of the dummies by the pseudo-Neumann mapping; also into rhs (their Dirichlet value) when
- * write_rhs (before the solve) */
+/* p of the dummies by the pseudo-Neumann mapping; also into rhs (their Dirichlet row d0 p_w = d0
+ * p̂_w, ppe.cl) when write_rhs (before the solve) */
 __kernel void stab_wall_pressure(const uint n, const struct grid g, __global const uint *cell_start,
                                  __global const realv *pos, __global const real *vol,
                                  __global const uint *kind, __global const real *dist,
                                  __global const realv *normal, const real rho0, const realv accel,
-                                 const uint write_rhs, __global real *p, __global real *rhs,
+                                 const uint write_rhs, const real d0, __global real *p,
+                                 __global real *rhs,
                                  __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != STAB_DUMMY) return;
   const realv xw = pos[i], xm = xw + R(2.0) * dist[i] * normal[i];
   const struct marker_sums s = marker_shepard(&g, cell_start, pos, vol, kind, xm, i, MARKER_P, 0, p);
-  const real pw = s.wsum > R(0.0) ? s.p / s.wsum + rho0 * dot(accel, xw - xm) : R(0.0);
+  const real pw = s.wsum > R(0.0) ? fmax(R(0.0), s.p / s.wsum + rho0 * dot(accel, xw - xm)) : R(0.0);
   if (!isfinite(pw)) flags_raise(flags, CLSPH_FLAG_NAN);
   p[i] = pw;
-  if (write_rhs) rhs[i] = pw;
+  if (write_rhs) rhs[i] = d0 * pw;
 }

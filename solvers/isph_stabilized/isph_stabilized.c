@@ -9,24 +9,30 @@
  *      lattice (common/lattice.cl); a free surface where s* / σ0 < β_fs, its pressure that of
  *      half a spacing inside the surface (predict.cl); the source
  *      (ρ0/Δt) ∇·u* + α ρ0 (1 − s* / σ0)/Δt² (A12's stabilized PPE, S eq 8; predict.cl)
- *   4. the dummies' pressure by the pseudo-Neumann mapping p_w = Σ W̃(x_m − x_j) p_j + ρ0 a·(x_w −
- *      x_m) from the last pressure (S sec 3.2), imposed as Dirichlet rows (walls.cl)
- *   5. the Morris Laplacian of the pressure (solvers/pressure/poisson_op, Dirichlet rows through
- *      its mask: the dummies and the free surface; the fluid block stays symmetric, as S's CG
- *      needs) solved by the device BiCGStab, the last pressure as the initial guess
- *   6. the dummies' pressure mapped again from the new one (S eq 22), then
+ *   4. the dummies' rows (ppe.cl): the modified virtual marker (S sec 3.3, the default), whose
+ *      dummies are unknowns tied to the fluid at their on-wall marker by the non-homogeneous
+ *      Neumann condition p_w = Σ W̃(x_v − x_k) [p_k + ρ0 a·(x_w − x_k)]; or the pseudo-Neumann
+ *      mapping p_w = Σ W̃(x_m − x_j) p_j + ρ0 a·(x_w − x_m) of the last pressure (S sec 3.2),
+ *      Dirichlet rows (walls.cl)
+ *   5. the Morris Laplacian over fluid and dummies (ppe.cl; not symmetric with the modified
+ *      virtual marker) solved by the device BiCGStab, the last pressure as the initial guess
+ *   6. pseudo-Neumann: the dummies' pressure mapped again from the new one (S eq 22); then
  *      u^{n+1} = u* − (Δt/ρ0) Σ V (p_i + p_j) ∇W (A12's symmetric gradient) and
  *      x^{n+1} = x + Δt u^{n+1} (project.cl)
  * CHOICES (the paper gives none of these; see the kernels' comments): cubic spline (S sec 2.2)
  * with h = 1.2 dr; σ0 from the device lattice sum, never 1; the dummies' u* carries Δt a; the
- * free surface's pressure that of half a spacing in; the time step 0.25 h/U, 0.125 h²/ν and
- * 0.125 √(h/|a|) (see stab_max_dt).
- * Options: alpha (α, 0 to 1, default 0.01: S "around 1% or less"), wall_pressure
- * ("pseudo_neumann", S sec 3.2; the modified virtual marker of S sec 3.3 is not yet here),
- * wall_velocity ("no_slip" or "slip") or slip_ratio (β_s from 0 to 1, S eq 13), surface_threshold
- * (β_fs, 0.8 to 0.995, default 0.97), wall_layers (checked against the support the markers
- * need) and the pressure solver's. Left out: A12's eddy viscosity, no-tension clamping, inflow
- * and outflow sections (refused), rotating and translating walls (refused), wall forces. */
+ * free surface's pressure that of half a spacing in; the walls' pressure held at ≥ 0 where their
+ * wall point is at the free surface; Thomas & Couchman's kernel derivative in the pressure
+ * gradient for pairs closer than 2h/3; the time step 0.25 h/U, 0.125 h²/ν and 0.125 √(h/|a|)
+ * (see stab_max_dt).
+ * Options: alpha (α, 0 to 1, default 0.01: S "around 1% or less"), wall_pressure ("neumann",
+ * S sec 3.3, the default, or "pseudo_neumann", S sec 3.2), wall_velocity ("no_slip" or "slip")
+ * or slip_ratio (β_s from 0 to 1, S eq 13), surface_threshold (β_fs, 0.8 to 0.995, default
+ * 0.97), wall_layers (checked against the support the markers need) and the pressure solver's.
+ * Left out: A12's eddy viscosity, inflow and outflow sections (refused), rotating and translating
+ * walls (refused), wall forces. A closed box under the modified virtual marker has no Dirichlet
+ * row: its pressure is fixed up to a constant only (the solve reinforces the diagonal), and a
+ * negative level attracts particles in the symmetric gradient. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,21 +41,24 @@
 #include "clsph_config.h"
 #include "geometry.h"
 #include "log.h"
-#include "poisson_op.h"
 #include "psolve.h"
 #include "sim.h"
 
 struct stab {
-  struct poisson_op po; /* the pressure operator (Dirichlet rows through `dirichlet`) */
+  struct sim *sim;       /* the simulation of the current step (the operator's callbacks) */
+  struct psolve_op op;   /* the pressure equation over fluid and dummies (ppe.cl) */
   struct psolve ps;
   struct psolve_options popt;
+  cl_uint mode;   /* the walls' pressure: STAB_PSEUDO or STAB_NEUMANN of ppe.cl */
+  double d0;      /* the Laplacian's diagonal on the lattice: the scale of the non-fluid rows */
   double alpha;   /* α of the density-invariance term (A12) */
   double beta_fs; /* free surface where s* / σ0 < β_fs */
   double beta_s;  /* slip ratio: 0 no-slip, 1 free slip (S eq 13) */
   double sigma0;  /* Σ dr² W over the full lattice support, in the build's precision */
   double umax;    /* largest fluid speed at the last max_dt, m/s */
   int f_p, f_fs, f_rhostar, f_dist, f_normal, f_uwall, f_ustar, f_div, f_rhs, f_dir;
-  cl_kernel k_lattice, k_wall_vel, k_wall_p, k_predict, k_source, k_project, k_move;
+  cl_kernel k_lattice, k_wall_vel, k_wall_p, k_predict, k_source, k_project, k_move, k_diag0,
+      k_count, k_coeffs, k_apply, k_diag, k_neumann;
   cl_mem d_sums; /* the lattice sums (2 reals) */
 };
 
@@ -60,6 +69,7 @@ static const char *const sources[] = {"common/blas1.cl",
                                       "common/marker.cl",
                                       "common/lattice.cl",
                                       "isph_stabilized/walls.cl",
+                                      "isph_stabilized/ppe.cl",
                                       "isph_stabilized/predict.cl",
                                       "isph_stabilized/project.cl",
                                       NULL};
@@ -136,9 +146,11 @@ static enum clsph_status read_options(const struct sim *sim, struct stab *b)
                     "the relaxation coefficient α of the density-invariance term (Asai et al. "
                     "2012)",
                     " (about 0.01 or less in the paper)", &b->alpha));
-  static const char *const wallp_names[] = {"pseudo_neumann", NULL};
-  int wallp = 0;
-  CLSPH_TRY(option_choice(sc, "wall_pressure", wallp_names, 0, &wallp));
+  /* the order of ppe.cl's STAB_PSEUDO and STAB_NEUMANN */
+  static const char *const wallp_names[] = {"pseudo_neumann", "neumann", NULL};
+  int wallp = 1;
+  CLSPH_TRY(option_choice(sc, "wall_pressure", wallp_names, 1, &wallp));
+  b->mode = (cl_uint)wallp;
   static const char *const wallv_names[] = {"no_slip", "slip", NULL};
   int slip = 0;
   CLSPH_TRY(option_choice(sc, "wall_velocity", wallv_names, 0, &slip));
@@ -200,7 +212,7 @@ static enum clsph_status wall_pressure(struct sim *sim, struct stab *b, cl_uint 
   enum clsph_status st = CLSPH_OK;
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n;
-  const real rho = (real)sim->scene->rho0;
+  const real rho = (real)sim->scene->rho0, d0 = (real)b->d0;
   const real2 accel = body_accel(sim);
   cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
   cl_mem kind = pset_mem(ps, sim->f_kind), dist = pset_mem(ps, b->f_dist);
@@ -208,8 +220,101 @@ static enum clsph_status wall_pressure(struct sim *sim, struct stab *b, cl_uint 
   cl_mem rhs = pset_mem(ps, b->f_rhs);
   CLSPH_TRY(KERN_SET(b->k_wall_p, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
                      KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(rho), KARG(accel),
-                     KARG(write_rhs), KARG(p), KARG(rhs), KARG(sim->d_flags)));
+                     KARG(write_rhs), KARG(d0), KARG(p), KARG(rhs), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_wall_p, n, NULL));
+done:
+  return st;
+}
+
+/* The pressure operator (ppe.cl): psolve_op's callbacks, ctx the struct stab of the step. */
+struct ppe_args {
+  cl_mem kind, dist, normal, dir;
+  real d0;
+};
+
+static struct ppe_args ppe_args(const struct stab *b)
+{
+  const struct pset *ps = &b->sim->ps;
+  return (struct ppe_args){pset_mem(ps, b->sim->f_kind), pset_mem(ps, b->f_dist),
+                           pset_mem(ps, b->f_normal), pset_mem(ps, b->f_dir), (real)b->d0};
+}
+
+static enum clsph_status ppe_count(void *ctx, cl_mem count)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct stab *b = ctx;
+  struct ppe_args q = ppe_args(b);
+  cl_uint n;
+  CLSPH_TRY(op_prefix(b->sim, b->k_count, &n));
+  const struct karg a[] = {KARG(q.kind), KARG(q.dist), KARG(q.normal), KARG(q.dir), KARG(count)};
+  CLSPH_TRY(set_from(b->k_count, 6, sizeof a / sizeof *a, a));
+  CLSPH_TRY(kern_launch(b->sim->dev, b->k_count, n, NULL));
+done:
+  return st;
+}
+
+static enum clsph_status ppe_coefficients(void *ctx, cl_mem row, cl_mem col, cl_mem val)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct stab *b = ctx;
+  struct ppe_args q = ppe_args(b);
+  cl_uint n;
+  CLSPH_TRY(op_prefix(b->sim, b->k_coeffs, &n));
+  const struct karg a[] = {KARG(q.kind), KARG(q.dist), KARG(q.normal), KARG(q.dir),
+                           KARG(q.d0),   KARG(row),    KARG(col),      KARG(val)};
+  CLSPH_TRY(set_from(b->k_coeffs, 6, sizeof a / sizeof *a, a));
+  CLSPH_TRY(kern_launch(b->sim->dev, b->k_coeffs, n, NULL));
+done:
+  return st;
+}
+
+static enum clsph_status ppe_apply(void *ctx, cl_mem x, cl_mem y)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct stab *b = ctx;
+  struct ppe_args q = ppe_args(b);
+  cl_uint n;
+  CLSPH_TRY(op_prefix(b->sim, b->k_apply, &n));
+  const struct karg a[] = {KARG(q.kind), KARG(q.dist), KARG(q.normal), KARG(q.dir),
+                           KARG(q.d0),   KARG(x),      KARG(y)};
+  CLSPH_TRY(set_from(b->k_apply, 6, sizeof a / sizeof *a, a));
+  CLSPH_TRY(kern_launch(b->sim->dev, b->k_apply, n, NULL));
+done:
+  return st;
+}
+
+static enum clsph_status ppe_diagonal(void *ctx, cl_mem d)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct stab *b = ctx;
+  struct ppe_args q = ppe_args(b);
+  cl_uint n;
+  CLSPH_TRY(op_prefix(b->sim, b->k_diag, &n));
+  const struct karg a[] = {KARG(q.kind), KARG(q.dir), KARG(q.d0), KARG(d)};
+  CLSPH_TRY(set_from(b->k_diag, 6, sizeof a / sizeof *a, a));
+  CLSPH_TRY(kern_launch(b->sim->dev, b->k_diag, n, NULL));
+done:
+  return st;
+}
+
+/* the right-hand side of the dummies' rows under the modified virtual marker (ppe.cl) */
+static enum clsph_status wall_neumann(struct sim *sim, struct stab *b)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  const real rho = (real)sim->scene->rho0, d0 = (real)b->d0;
+  const real inv_sigma0 = (real)(1.0 / b->sigma0), beta_fs = (real)b->beta_fs;
+  const real2 force = body_accel(sim); /* f = g − a_W: no wall of this scheme accelerates */
+  cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
+  cl_mem kind = pset_mem(ps, sim->f_kind), dist = pset_mem(ps, b->f_dist);
+  cl_mem normal = pset_mem(ps, b->f_normal), rhs = pset_mem(ps, b->f_rhs);
+  cl_mem dir = pset_mem(ps, b->f_dir), p = pset_mem(ps, b->f_p);
+  CLSPH_TRY(KERN_SET(b->k_neumann, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
+                     KARG(pos), KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(rho),
+                     KARG(force), KARG(d0), KARG(inv_sigma0), KARG(beta_fs), KARG(p), KARG(dir),
+                     KARG(rhs), KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch(sim->dev, b->k_neumann, n, NULL));
 done:
   return st;
 }
@@ -279,10 +384,15 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
             {&b->k_predict, "stab_predict"},
             {&b->k_source, "stab_source"},
             {&b->k_project, "stab_project"},
-            {&b->k_move, "stab_move"}};
+            {&b->k_move, "stab_move"},
+            {&b->k_diag0, "stab_lattice_diag"},
+            {&b->k_count, "stab_ppe_count"},
+            {&b->k_coeffs, "stab_ppe_coeffs"},
+            {&b->k_apply, "stab_ppe_apply"},
+            {&b->k_diag, "stab_ppe_diag"},
+            {&b->k_neumann, "stab_wall_neumann"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
-  CLSPH_TRY(poisson_op_create(sim->dev, sim->prog, &b->po));
   CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &b->popt, &b->ps));
   /* σ0: the kernel sum of a full support on the lattice, on the device (common/lattice.cl) */
   real sums[2];
@@ -292,13 +402,23 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
   CLSPH_TRY(kern_launch(sim->dev, b->k_lattice, 1, NULL));
   CLSPH_TRY(kern_read(sim->dev, b->d_sums, sizeof sums, sums));
   b->sigma0 = (double)sums[0];
+  CLSPH_TRY(KERN_SET(b->k_diag0, KARG(dr), KARG(b->d_sums)));
+  CLSPH_TRY(kern_launch(sim->dev, b->k_diag0, 1, NULL));
+  CLSPH_TRY(kern_read(sim->dev, b->d_sums, sizeof sums, sums));
+  b->d0 = (double)sums[0]; /* negative: the Morris diagonal of a full support */
   CLSPH_CHECK(b->sigma0 > 0.5 && b->sigma0 < 1.5, CLSPH_E_INPUT,
               "%s: isph-stabilized: the kernel sum of the lattice is %g, not about 1: the "
               "smoothing length (h_over_dr) is too small for the particle spacing",
               sc->case_path, b->sigma0);
-  log_debug("isph-stabilized: alpha %g, wall pressure pseudo-Neumann, slip ratio %g, free surface "
-            "below rho*/rho0 = %g, lattice sum %.8g",
-            b->alpha, b->beta_s, b->beta_fs, b->sigma0);
+  log_debug("isph-stabilized: alpha %g, wall pressure %s, slip ratio %g, free surface below "
+            "rho*/rho0 = %g, lattice sum %.8g, Laplacian diagonal %.8g",
+            b->alpha, b->mode == 1 ? "modified virtual marker (Neumann)" : "pseudo-Neumann",
+            b->beta_s, b->beta_fs, b->sigma0, b->d0);
+  b->op = (struct psolve_op){.ctx = b,
+                             .apply = ppe_apply,
+                             .diagonal = ppe_diagonal,
+                             .row_counts = ppe_count,
+                             .coefficients = ppe_coefficients};
   *state = b;
   b = NULL;
 done:
@@ -314,6 +434,7 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   const struct scene *sc = sim->scene;
   struct pset *ps = &sim->ps;
   cl_uint n;
+  b->sim = sim;
 #define M(f) cl_mem f = pset_mem(ps, b->f_##f)
   M(p);
   M(fs);
@@ -332,7 +453,8 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   const real beta_s = (real)b->beta_s, beta_fs = (real)b->beta_fs, alpha = (real)b->alpha;
   const real inv_sigma0 = (real)(1.0 / b->sigma0);
   const real2 accel = body_accel(sim);
-  const real fs_offset = (real)(0.5 * sc->dr);
+  const real fs_offset = (real)(0.5 * sc->dr), d0 = (real)b->d0;
+  const int neumann = b->mode == 1;
 
   /* 1. the dummies' velocity and u* from their markers (S eqs 11-13) */
   n = (cl_uint)ps->n;
@@ -354,25 +476,32 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   {
     const struct karg a[] = {KARG(kind),       KARG(ustar),     KARG(uwall),   KARG(rdt),
                              KARG(inv_sigma0), KARG(beta_fs),   KARG(alpha),   KARG(rho),
-                             KARG(accel),      KARG(fs_offset), KARG(rhostar), KARG(fs),
-                             KARG(dir),        KARG(div),       KARG(rhs),     KARG(sim->d_flags)};
+                             KARG(accel),      KARG(fs_offset), KARG(d0),      KARG(rhostar),
+                             KARG(fs),         KARG(dir),       KARG(div),     KARG(rhs),
+                             KARG(sim->d_flags)};
     CLSPH_TRY(set_from(b->k_source, 6, sizeof a / sizeof *a, a));
   }
   CLSPH_TRY(kern_launch(sim->dev, b->k_source, n, NULL));
-  /* 4. the dummies' Dirichlet values: pseudo-Neumann from the last pressure (S sec 3.2) */
-  CLSPH_TRY(wall_pressure(sim, b, 1));
-  /* 5. the pressure equation; without any Dirichlet row (no wall, no free surface) it is
-   *    singular and the diagonal is reinforced */
+  /* 4. the dummies' rows: pseudo-Neumann, Dirichlet values mapped from the last pressure (S sec
+   *    3.2); the modified virtual marker, the hydrostatic carry of its fluid (S sec 3.3) */
+  if (neumann)
+    CLSPH_TRY(wall_neumann(sim, b));
+  else
+    CLSPH_TRY(wall_pressure(sim, b, 1));
+  /* 5. the pressure equation; without any Dirichlet row (the modified virtual marker in a closed
+   *    box, or no wall and no free surface) it is singular and the diagonal is reinforced */
   double nfixed = 0.0;
   CLSPH_TRY(sim_count(sim, dir, &nfixed));
   b->ps.opt.singular = nfixed > 0.0 ? b->popt.singular : PSOLVE_REINFORCE;
-  poisson_op_bind(&b->po, &sim->grid, ps->n, pos, vol, NULL, dir);
+  b->op.n = ps->n;
+  b->op.grid = &sim->grid;
   struct psolve_result res;
-  CLSPH_TRY(psolve_solve(&b->ps, &b->po.op, rhs, p, &res));
+  CLSPH_TRY(psolve_solve(&b->ps, &b->op, rhs, p, &res));
   sim->solver_its = res.its;
   sim->solver_res = res.rnorm;
-  /* 6. the dummies' pressure from the new one (S eq 22), the projection and the motion */
-  CLSPH_TRY(wall_pressure(sim, b, 0));
+  /* 6. pseudo-Neumann: the dummies' pressure mapped from the new one (S eq 22; the modified
+   *    virtual marker solved for it); the projection and the motion */
+  if (!neumann) CLSPH_TRY(wall_pressure(sim, b, 0));
   const real coef = (real)(dt / sc->rho0);
   CLSPH_TRY(op_prefix(sim, b->k_project, &n));
   {
@@ -420,13 +549,13 @@ static void stab_destroy(void *state)
 {
   struct stab *b = state;
   if (b == NULL) return;
-  cl_kernel ks[] = {b->k_move,   b->k_project,  b->k_source, b->k_predict,
-                    b->k_wall_p, b->k_wall_vel, b->k_lattice};
+  cl_kernel ks[] = {b->k_move,    b->k_project,  b->k_source, b->k_predict, b->k_wall_p,
+                    b->k_wall_vel, b->k_lattice, b->k_diag0,  b->k_count,   b->k_coeffs,
+                    b->k_apply,    b->k_diag,    b->k_neumann};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (ks[k] != NULL) clReleaseKernel(ks[k]);
   kern_release(&b->d_sums);
   psolve_destroy(&b->ps);
-  poisson_op_destroy(&b->po);
   free(b);
 }
 

@@ -1,7 +1,7 @@
 -- isph-stabilized with an option it refuses: what = 1, alpha = "small" (a number from 0 to 1);
--- 2, wall_pressure = "dirichlet" (pseudo_neumann); 3, wall_velocity and slip_ratio together;
--- 4, surface_threshold = 1.2 (0.8 to 0.995); 5, wall_velocity = "sticky" (no_slip or slip);
--- 6, wall_layers = 1 (the markers of the fluid next to a wall need 2 at h = 1.2 dr).
+-- 2, wall_pressure = "dirichlet" (pseudo_neumann or neumann); 3, wall_velocity and slip_ratio
+-- together; 4, surface_threshold = 1.2 (0.8 to 0.995); 5, wall_velocity = "sticky" (no_slip or
+-- slip); 6, wall_layers = 1 (the markers of the fluid next to a wall need 2 at h = 1.2 dr).
 param { what = 1 }
 local opts = ({ { alpha = "small" }, { wall_pressure = "dirichlet" },
                 { wall_velocity = "slip", slip_ratio = 0.5 }, { surface_threshold = 1.2 },
