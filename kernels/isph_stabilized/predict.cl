@@ -65,11 +65,10 @@ realv stab_xstar(uint j, __global const realv *pos, __global const uint *kind,
  * d0 p_i = d0 p_s, ppe.cl; the dummies' rows come from walls.cl and ppe.cl) */
 __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const realv *ustar,
                           __global const realv *wall_vel, const real dt, const real inv_sigma0,
-                          const real beta_fs, const real alpha, const real rho0,
-                          const realv accel, const real fs_offset, const real d0,
-                          __global real *rho_star, __global uint *free_surface,
-                          __global uint *dirichlet, __global real *div, __global real *rhs,
-                          __global uint *flags)
+                          const real beta_fs, const real alpha, const real rho0, const realv accel,
+                          const real fs_offset, const real d0, __global real *rho_star,
+                          __global uint *free_surface, __global uint *dirichlet, __global real *div,
+                          __global real *rhs, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;

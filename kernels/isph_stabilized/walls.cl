@@ -81,14 +81,15 @@ __kernel void stab_wall_pressure(const uint n, const struct grid g, __global con
                                  __global const uint *kind, __global const real *dist,
                                  __global const realv *normal, const real rho0, const realv accel,
                                  const uint write_rhs, const real d0, __global real *p,
-                                 __global real *rhs,
-                                 __global uint *flags)
+                                 __global real *rhs, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != STAB_DUMMY) return;
   const realv xw = pos[i], xm = xw + R(2.0) * dist[i] * normal[i];
-  const struct marker_sums s = marker_shepard(&g, cell_start, pos, vol, kind, xm, i, MARKER_P, 0, p);
-  const real pw = s.wsum > R(0.0) ? fmax(R(0.0), s.p / s.wsum + rho0 * dot(accel, xw - xm)) : R(0.0);
+  const struct marker_sums s =
+      marker_shepard(&g, cell_start, pos, vol, kind, xm, i, MARKER_P, 0, p);
+  const real pw =
+      s.wsum > R(0.0) ? fmax(R(0.0), s.p / s.wsum + rho0 * dot(accel, xw - xm)) : R(0.0);
   if (!isfinite(pw)) flags_raise(flags, CLSPH_FLAG_NAN);
   p[i] = pw;
   if (write_rhs) rhs[i] = d0 * pw;

@@ -45,8 +45,8 @@
 #include "sim.h"
 
 struct stab {
-  struct sim *sim;       /* the simulation of the current step (the operator's callbacks) */
-  struct psolve_op op;   /* the pressure equation over fluid and dummies (ppe.cl) */
+  struct sim *sim;     /* the simulation of the current step (the operator's callbacks) */
+  struct psolve_op op; /* the pressure equation over fluid and dummies (ppe.cl) */
   struct psolve ps;
   struct psolve_options popt;
   cl_uint mode;   /* the walls' pressure: STAB_PSEUDO or STAB_NEUMANN of ppe.cl */
@@ -474,11 +474,10 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   /* 3. s* at x*, the free surface and the source (A12, S eq 8) */
   CLSPH_TRY(op_prefix(sim, b->k_source, &n));
   {
-    const struct karg a[] = {KARG(kind),       KARG(ustar),     KARG(uwall),   KARG(rdt),
-                             KARG(inv_sigma0), KARG(beta_fs),   KARG(alpha),   KARG(rho),
-                             KARG(accel),      KARG(fs_offset), KARG(d0),      KARG(rhostar),
-                             KARG(fs),         KARG(dir),       KARG(div),     KARG(rhs),
-                             KARG(sim->d_flags)};
+    const struct karg a[] = {
+        KARG(kind),  KARG(ustar), KARG(uwall), KARG(rdt),       KARG(inv_sigma0),  KARG(beta_fs),
+        KARG(alpha), KARG(rho),   KARG(accel), KARG(fs_offset), KARG(d0),          KARG(rhostar),
+        KARG(fs),    KARG(dir),   KARG(div),   KARG(rhs),       KARG(sim->d_flags)};
     CLSPH_TRY(set_from(b->k_source, 6, sizeof a / sizeof *a, a));
   }
   CLSPH_TRY(kern_launch(sim->dev, b->k_source, n, NULL));
@@ -549,7 +548,7 @@ static void stab_destroy(void *state)
 {
   struct stab *b = state;
   if (b == NULL) return;
-  cl_kernel ks[] = {b->k_move,    b->k_project,  b->k_source, b->k_predict, b->k_wall_p,
+  cl_kernel ks[] = {b->k_move,     b->k_project, b->k_source, b->k_predict, b->k_wall_p,
                     b->k_wall_vel, b->k_lattice, b->k_diag0,  b->k_count,   b->k_coeffs,
                     b->k_apply,    b->k_diag,    b->k_neumann};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
