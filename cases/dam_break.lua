@@ -23,7 +23,8 @@
 --                           support of its face)
 -- and the metrics at the end: those of the last sample, floor_speed_max and lead_ahead_max (the
 -- largest over the samples), max_speed_over_sqrt_gH (the largest fluid speed over √(gH) now),
--- volume_ratio (the fluid's volume against the column's), time_star = t √(g/H); the front
+-- volume_ratio (the fluid's volume against the column's), time_star = t √(g/H), crossed_wall
+-- (the steps with a fluid particle behind a wall, where the scheme checks it); the front
 -- against time, front_x_star_t1, _t1p5, _t2 ((front − L)/H at t* = 1, 1.5, 2, no experimental
 -- H = 300 mm front being at hand: Ritter's ideal is 2 t*) and front_wall_t_star (the first sample
 -- with the front within dr of the downstream wall); and sensor 1 against the experiment
@@ -48,9 +49,14 @@
 -- Measured with riemann = 1 to t = 1.1 s (README, Validation): the impact 18% late at n = 20,
 -- 8.5% at 40, 3.2% at 80, 1.8% at 120 and 0.66% at 160.
 -- --set wcsph=1 runs the weakly-compressible baseline (c0 = 10 · 2 √(gH)); --set riemann=1 runs
--- wcsph-riemann with the same sound speed.
+-- wcsph-riemann with the same sound speed; --set stab=1 runs isph-stabilized (Asai et al. 2012)
+-- with the modified virtual marker's walls (neumann = 0: the pseudo-Neumann ones) and relaxation
+-- alpha, the column starting from its hydrostatic pressure.
 param { n = 20, t_end = 0.4, wcsph = 0, riemann = 0, every = 0.001, cfl = 1,
-        tvf = 2, ard = 0 }
+        tvf = 2, ard = 0, stab = 0, neumann = 1, alpha = 0.01 }
+for k, v in pairs({ stab = stab, neumann = neumann }) do
+  if v ~= 0 and v ~= 1 then error(("dam_break: %s must be 0 or 1, not %g"):format(k, v)) end
+end
 
 local g, H, L, tank, top, rho = 9.81, 0.3, 0.6, 1.61, 1.0, 997
 local dr = H / n
@@ -58,7 +64,10 @@ local U = 2 * math.sqrt(g * H) -- Ritter's front speed
 
 domain { 0, 0, tank, top }
 particles { dr = dr }
-if riemann == 1 then
+if stab == 1 then
+  scheme { "isph-stabilized", alpha = alpha,
+           wall_pressure = neumann == 1 and "neumann" or "pseudo_neumann" }
+elseif riemann == 1 then
   scheme { "wcsph-riemann", sound_speed = 10 * U, ard = ard,
            transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
 elseif wcsph == 1 then
@@ -68,7 +77,8 @@ else
 end
 fluid { density = rho, viscosity = 8.9e-7, gravity = {0, -g} }
 wall { {0, top}, {0, 0}, {tank, 0}, {tank, top}, fluid = "left", group = "tank" }
-fill { 0, 0, L, H, name = "water" }
+fill { 0, 0, L, H, name = "water",
+       pressure = stab == 1 and function(x, y) return rho * g * (H - y) end or nil }
 probe { "sensor_1", {tank, 0.0009}, {tank, 0.0051} } -- its face, on the wall
 run { t_end = t_end, output_every = 0.05, sample_every = every, cfl = cfl }
 
@@ -218,6 +228,7 @@ function metrics(sim)
   m.max_speed_over_sqrt_gH = top_speed / math.sqrt(g * H)
   m.volume_ratio = #sim.field("pos", 1).value * dr * dr / (L * H)
   m.time_star = sim.time * math.sqrt(g / H)
+  m.crossed_wall = sim.wall_crossing_steps -- steps with a fluid particle behind a wall
   sensor_metrics(sim, m)
   front_metrics(sim, m)
   return m

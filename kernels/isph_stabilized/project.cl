@@ -13,8 +13,8 @@
  * pseudo-Neumann walls, whatever α (0 to 0.1), the time step (cfl 0.5) or β_fs (0.9 to 0.97);
  * with it both hold 10 s. The lattice's pairs (r ≥ dr > 2h/3) see the spline unchanged. */
 __kernel void stab_project(OP_ARGS, __global const uint *kind, __global const realv *ustar,
-                           __global const real *p, const real coef, __global realv *vel,
-                           __global uint *flags)
+                           __global const real *p, const real coef, const real dt, const realv body,
+                           __global realv *vel, __global realv *accel, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != STAB_FLUID) return;
@@ -35,16 +35,45 @@ __kernel void stab_project(OP_ARGS, __global const uint *kind, __global const re
   const realv u = ustar[i] - coef * gp; /* coef = Δt/ρ0 */
   if (!all(isfinite(u))) flags_raise(flags, CLSPH_FLAG_NAN);
   vel[i] = u;
+  accel[i] = body - coef * gp / dt; /* the body force and the pressure's, for the time step */
 }
 
-/* x += Δt u for the fluid (the dummies stay: no wall of this scheme translates) */
-__kernel void stab_move(const uint n, const struct grid g, __global const uint *kind,
-                        __global const realv *vel, const real dt, __global realv *pos,
-                        __global uint *flags)
+/* x += Δt u for the fluid (the dummies stay: no wall of this scheme translates), and the wall
+ * crossing check: a particle is behind the wall when it is behind the wall point q_d = x_d + d_d
+ * n_d of its nearest dummy, (x − q_d)·n_d < 0 (at a corner, where dummies tie for nearest, in front
+ * of any of them puts it in the fluid). A crossing raises CLSPH_FLAG_WALL, counts in flags[1] and
+ * keeps the deepest distance behind the wall in flags[2] (usaw/gamma.cl's protocol, which
+ * host/sim/checks.c reads). The dummies' positions do not change here, so the loop reads them
+ * from the same array the fluid writes. */
+__kernel void stab_move(const uint n, const struct grid g, __global const uint *cell_start,
+                        __global const uint *kind, __global const realv *vel,
+                        __global const real *dist, __global const realv *normal, const real dt,
+                        __global realv *pos, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != STAB_FLUID) return;
   const realv x = grid_wrap(&g, pos[i] + dt * vel[i]);
   if (!all(isfinite(x))) flags_raise(flags, CLSPH_FLAG_NAN);
   pos[i] = x;
+  real best = INFINITY, side = INFINITY; /* nearest dummy's distance², the best side there */
+  struct neigh_iter it;
+  neigh_begin(&it, &g, x);
+  uint j;
+  while (neigh_next(&it, &g, cell_start, &j)) {
+    if (kind[j] == STAB_FLUID) continue;
+    const realv xd = pos[j] + it.shift;
+    const realv r = x - xd;
+    const real r2 = dot(r, r);
+    const real s = dot(x - (xd + dist[j] * normal[j]), normal[j]);
+    if (r2 < best * (R(1.0) - R(1e-4))) {
+      best = r2;
+      side = s;
+    } else if (r2 <= best * (R(1.0) + R(1e-4)))
+      side = fmax(side, s);
+  }
+  if (best < INFINITY && side < R(0.0)) {
+    flags_raise(flags, CLSPH_FLAG_WALL);
+    atomic_inc(flags + 1);
+    atomic_max(flags + 2, as_uint((float)(-side)));
+  }
 }

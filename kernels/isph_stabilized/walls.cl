@@ -19,35 +19,10 @@
  *     Dirichlet value on the dummy rows of the pressure equation; after the solve it is mapped
  *     again from the new pressure (S eq 22) for the projection and the next step. A dry marker
  *     gives p_w = 0 (no fluid near: nothing to hold). CHOICE: p_w ≥ 0, as the free surface's:
- *     above the water the carry ρ0 a·(x_w − x_m) is negative and would pull the contact line's
- *     particles into the wall (see stab_wall_at_surface). */
+ *     above the water the carry ρ0 a·(x_w − x_m) is negative, a tension that pulls the contact
+ *     line's particles into the wall. */
 #define STAB_FLUID 0u
 #define STAB_DUMMY 2u
-
-/* Is the wall point x (a dummy's pressure marker, on the wall) at the free surface: its kernel sum
- * over fluid and dummies below β_fs σ0, the fluid's own test (predict.cl)? CHOICE (MPS practice
- * tests wall particles like fluid ones): such a dummy, like a free-surface particle, is a
- * Dirichlet row, its value the Neumann formula from the last pressure held at p_w ≥ 0
- * (ppe.cl stab_wall_neumann). Solved for, the hydrostatic carry ρ0 a·(x_w − x_k) of a dummy
- * above the water is negative, and a negative wall pressure pulls the contact line's particles
- * into the wall's corner (the symmetric gradient of project.cl attracts where p_i + p_j < 0): the
- * paper's tank clustered there at t = 0.70 s. With p_w = 0 instead the wall pushes the top row
- * (p = ρ0 g dr/2) less than the water beside it does, and the tank clustered at t = 0.52 s. */
-int stab_wall_at_surface(const struct grid *g, __global const uint *cell_start,
-                         __global const realv *pos, __global const real *vol, realv x,
-                         real inv_sigma0, real beta_fs)
-{
-  real s = R(0.0);
-  struct neigh_iter it;
-  neigh_begin(&it, g, x);
-  uint j;
-  while (neigh_next(&it, g, cell_start, &j)) {
-    realv r = x - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 < SMOOTH_SUPPORT2) s += vol[j] * smoothing_w(sqrt(r2));
-  }
-  return s * inv_sigma0 < beta_fs;
-}
 
 /* vel and ustar of the dummies (the fluid's are left alone) */
 __kernel void stab_wall_velocity(const uint n, const struct grid g, __global const uint *cell_start,

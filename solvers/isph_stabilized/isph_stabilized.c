@@ -56,7 +56,7 @@ struct stab {
   double beta_s;  /* slip ratio: 0 no-slip, 1 free slip (S eq 13) */
   double sigma0;  /* Σ dr² W over the full lattice support, in the build's precision */
   double umax;    /* largest fluid speed at the last max_dt, m/s */
-  int f_p, f_fs, f_rhostar, f_dist, f_normal, f_uwall, f_ustar, f_div, f_rhs, f_dir;
+  int f_p, f_fs, f_rhostar, f_dist, f_normal, f_uwall, f_ustar, f_div, f_rhs, f_dir, f_acc;
   cl_kernel k_lattice, k_wall_vel, k_wall_p, k_predict, k_source, k_project, k_move, k_diag0,
       k_count, k_coeffs, k_apply, k_diag, k_neumann;
   cl_mem d_sums; /* the lattice sums (2 reals) */
@@ -298,24 +298,126 @@ done:
 }
 
 /* the right-hand side of the dummies' rows under the modified virtual marker (ppe.cl) */
-static enum clsph_status wall_neumann(struct sim *sim, struct stab *b)
+static enum clsph_status wall_neumann(struct sim *sim, struct stab *b, double dt)
 {
   enum clsph_status st = CLSPH_OK;
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n;
-  const real rho = (real)sim->scene->rho0, d0 = (real)b->d0;
-  const real inv_sigma0 = (real)(1.0 / b->sigma0), beta_fs = (real)b->beta_fs;
+  const real rho = (real)sim->scene->rho0, d0 = (real)b->d0, rdt = (real)dt;
   const real2 force = body_accel(sim); /* f = g − a_W: no wall of this scheme accelerates */
   cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
   cl_mem kind = pset_mem(ps, sim->f_kind), dist = pset_mem(ps, b->f_dist);
   cl_mem normal = pset_mem(ps, b->f_normal), rhs = pset_mem(ps, b->f_rhs);
   cl_mem dir = pset_mem(ps, b->f_dir), p = pset_mem(ps, b->f_p);
+  cl_mem vel = pset_mem(ps, sim->f_vel), uwall = pset_mem(ps, b->f_uwall);
   CLSPH_TRY(KERN_SET(b->k_neumann, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
                      KARG(pos), KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(rho),
-                     KARG(force), KARG(d0), KARG(inv_sigma0), KARG(beta_fs), KARG(p), KARG(dir),
+                     KARG(force), KARG(d0), KARG(p), KARG(vel), KARG(uwall), KARG(rdt), KARG(dir),
                      KARG(rhs), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_neumann, n, NULL));
 done:
+  return st;
+}
+
+/* A dummy of wall w with its normal on n's side within 0.75 dr of (x, y)? The dummies are binned
+ * in cells of side dr from (x0, y0), nx x ny of them (first[c] .. first[c + 1] in `order`). */
+static int dummy_near(const struct geom *geo, const size_t *order, const size_t *first, int nx,
+                      int ny, double x0, double y0, double dr, double x, double y, int w,
+                      const double *n)
+{
+  const int cx = (int)floor((x - x0) / dr), cy = (int)floor((y - y0) / dr);
+  for (int b = cy - 1; b <= cy + 1; ++b)
+    for (int a = cx - 1; a <= cx + 1; ++a) {
+      if (a < 0 || b < 0 || a >= nx || b >= ny) continue;
+      const size_t c = (size_t)b * (size_t)nx + (size_t)a;
+      for (size_t k = first[c]; k < first[c + 1]; ++k) {
+        const size_t d = order[k];
+        const double *q = geo->x + 2 * d, *m = geo->normal + 2 * d;
+        if (geo->group[d] == w && hypot(q[0] - x, q[1] - y) < 0.75 * dr &&
+            m[0] * n[0] + m[1] * n[1] > 0.0)
+          return 1;
+      }
+    }
+  return 0;
+}
+
+/* The walls' geometry against what the virtual markers need (host, in double, once):
+ *   thickness: behind every dummy of the first row (within dr of its wall) the solid holds
+ *     dummies of the same wall, facing the same side, over the kernel support less half a spacing
+ *     (the reach of the fluid nearest the wall): a plate thinner than that splits its dummies
+ *     between its two faces and the fluid on either side misses part of its support;
+ *   markers: every velocity marker x_m = x_d + 2 d n lies inside the domain on each non-periodic
+ *     axis (no fluid can be beyond it: the dummy would read a dry marker next to the fluid). */
+static enum clsph_status check_walls(const struct sim *sim)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *sc = sim->scene;
+  const struct geom *geo = &sim->geom;
+  const double dr = sc->dr, tol = 1e-9 * dr;
+  size_t *order = NULL, *first = NULL;
+  double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+  size_t nd = 0;
+  for (size_t i = 0; i < geo->n; ++i) {
+    if (geo->kind[i] != KIND_DUMMY) continue;
+    ++nd;
+    const double *x = geo->x + 2 * i, *n = geo->normal + 2 * i;
+    const struct scene_wall *w = &sc->walls[geo->group[i]];
+    for (int a = 0; a < 2; ++a) {
+      lo[a] = fmin(lo[a], x[a]);
+      hi[a] = fmax(hi[a], x[a]);
+      const double m = x[a] + 2.0 * geo->dist[i] * n[a];
+      CLSPH_CHECK(sc->periodic[a] || (m >= sc->lo[a] - tol && m <= sc->hi[a] + tol), CLSPH_E_INPUT,
+                  "%s:%d: wall (group '%s'): the virtual marker of the dummy at (%g, %g) falls at "
+                  "(%g, %g), outside the domain [%g, %g] x [%g, %g]: the wall's fluid side faces "
+                  "the domain's edge closer than the %.3g m (twice the dummy's depth) its markers "
+                  "reach",
+                  sc->case_path, w->line, w->group, x[0], x[1], x[0] + 2.0 * geo->dist[i] * n[0],
+                  x[1] + 2.0 * geo->dist[i] * n[1], sc->lo[0], sc->hi[0], sc->lo[1], sc->hi[1],
+                  2.0 * geo->dist[i]);
+    }
+  }
+  if (nd == 0) goto done;
+  /* bin the dummies in cells of side dr */
+  const int nx = (int)floor((hi[0] - lo[0]) / dr) + 1, ny = (int)floor((hi[1] - lo[1]) / dr) + 1;
+  const size_t ncell = (size_t)nx * (size_t)ny;
+  order = malloc(nd * sizeof *order);
+  first = calloc(ncell + 1, sizeof *first);
+  CLSPH_CHECK(order != NULL && first != NULL, CLSPH_E_NOMEM, "out of memory");
+#define CELL(i)                                                                                    \
+  ((size_t)floor((geo->x[2 * (i) + 1] - lo[1]) / dr) * (size_t)nx +                                \
+   (size_t)floor((geo->x[2 * (i)] - lo[0]) / dr))
+  for (size_t i = 0; i < geo->n; ++i)
+    if (geo->kind[i] == KIND_DUMMY) ++first[CELL(i) + 1];
+  for (size_t c = 0; c < ncell; ++c) first[c + 1] += first[c];
+  for (size_t i = 0; i < geo->n; ++i) /* first[c] moves to the cell's end; restored below */
+    if (geo->kind[i] == KIND_DUMMY) order[first[CELL(i)]++] = i;
+  for (size_t c = ncell; c > 0; --c) first[c] = first[c - 1];
+  first[0] = 0;
+#undef CELL
+  const double reach = sim->sm.support - 0.5 * dr;
+  const int steps = (int)ceil(reach / dr - 1e-9);
+  for (size_t i = 0; i < geo->n; ++i) {
+    if (geo->kind[i] != KIND_DUMMY || geo->dist[i] > dr) continue;
+    const double *x = geo->x + 2 * i, *n = geo->normal + 2 * i;
+    const double q[2] = {x[0] + geo->dist[i] * n[0], x[1] + geo->dist[i] * n[1]};
+    for (int k = 1; k <= steps; ++k) {
+      const double depth = fmin(k * dr, reach) + 0.5 * dr;
+      const double y[2] = {q[0] - depth * n[0], q[1] - depth * n[1]};
+      const struct scene_wall *w = &sc->walls[geo->group[i]];
+      CLSPH_CHECK(
+          dummy_near(geo, order, first, nx, ny, lo[0], lo[1], dr, y[0], y[1], geo->group[i], n),
+          CLSPH_E_INPUT,
+          "%s:%d: wall (group '%s') is too thin for the virtual markers: behind (%g, %g) "
+          "the solid holds no dummy of this side %.3g m deep, and the fluid next to it "
+          "reaches %.3g m behind the wall (the kernel support %.3g m less half a spacing, "
+          "dr = %g): make it at least %.3g m thick",
+          sc->case_path, w->line, w->group, q[0], q[1], depth, reach, sim->sm.support, dr,
+          2.0 * reach);
+    }
+  }
+done:
+  free(order);
+  free(first);
   return st;
 }
 
@@ -341,6 +443,7 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
                 "%s: isph-stabilized has a particle of kind %d (fluid and dummy walls only)",
                 sc->case_path, geo->kind[i]);
   CLSPH_TRY(read_options(sim, b));
+  CLSPH_TRY(check_walls(sim));
   CLSPH_TRY(sim_psolve_options(sim, &b->popt));
   /* fields: the wall geometry of the dummies, then the scheme's state */
   struct pset *ps = &sim->ps;
@@ -364,7 +467,8 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
     const char *name;
     size_t elem;
     int *f;
-  } hidden[] = {{"ustar", rv, &b->f_ustar}, {"rhs", sizeof(real), &b->f_rhs}};
+  } hidden[] = {
+      {"ustar", rv, &b->f_ustar}, {"rhs", sizeof(real), &b->f_rhs}, {"accel", rv, &b->f_acc}};
   for (size_t k = 0; k < sizeof hidden / sizeof *hidden; ++k) {
     CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
@@ -446,6 +550,7 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   M(div);
   M(rhs);
   M(dir);
+  M(acc);
 #undef M
   cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
   cl_mem vel = pset_mem(ps, sim->f_vel), kind = pset_mem(ps, sim->f_kind);
@@ -457,6 +562,7 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   const int neumann = b->mode == 1;
 
   /* 1. the dummies' velocity and u* from their markers (S eqs 11-13) */
+  n = (cl_uint)ps->n;
   n = (cl_uint)ps->n;
   CLSPH_TRY(KERN_SET(b->k_wall_vel, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
                      KARG(pos), KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(uwall),
@@ -484,7 +590,7 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   /* 4. the dummies' rows: pseudo-Neumann, Dirichlet values mapped from the last pressure (S sec
    *    3.2); the modified virtual marker, the hydrostatic carry of its fluid (S sec 3.3) */
   if (neumann)
-    CLSPH_TRY(wall_neumann(sim, b));
+    CLSPH_TRY(wall_neumann(sim, b, dt));
   else
     CLSPH_TRY(wall_pressure(sim, b, 1));
   /* 5. the pressure equation; without any Dirichlet row (the modified virtual marker in a closed
@@ -501,16 +607,18 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   /* 6. pseudo-Neumann: the dummies' pressure mapped from the new one (S eq 22; the modified
    *    virtual marker solved for it); the projection and the motion */
   if (!neumann) CLSPH_TRY(wall_pressure(sim, b, 0));
+
   const real coef = (real)(dt / sc->rho0);
   CLSPH_TRY(op_prefix(sim, b->k_project, &n));
   {
-    const struct karg a[] = {KARG(kind), KARG(ustar), KARG(p),
-                             KARG(coef), KARG(vel),   KARG(sim->d_flags)};
+    const struct karg a[] = {KARG(kind),  KARG(ustar), KARG(p),   KARG(coef),        KARG(rdt),
+                             KARG(accel), KARG(vel),   KARG(acc), KARG(sim->d_flags)};
     CLSPH_TRY(set_from(b->k_project, 6, sizeof a / sizeof *a, a));
   }
   CLSPH_TRY(kern_launch(sim->dev, b->k_project, n, NULL));
-  CLSPH_TRY(KERN_SET(b->k_move, KARG(n), KARG(sim->grid.geom), KARG(kind), KARG(vel), KARG(rdt),
-                     KARG(pos), KARG(sim->d_flags)));
+  CLSPH_TRY(KERN_SET(b->k_move, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(kind),
+                     KARG(vel), KARG(dist), KARG(normal), KARG(rdt), KARG(pos),
+                     KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_move, n, NULL));
 done:
   return st;
@@ -522,6 +630,11 @@ done:
  * depth=0.2 width=0.2 dr=0.01) lets a particle through the floor at t = 0.23 s in double and in
  * float, with half of it (and 0.4 or 0.6 of it) the tank holds past 1 s. The relaxation term
  * α ρ0 (1 − s* / σ0)/Δt² that holds the fluid off the pseudo-Neumann walls stiffens as Δt shrinks.
+ * |a| is the larger of the body force and the fluid's largest acceleration in the last step (the
+ * pressure's included; Monaghan's force criterion): at an impact the pressure accelerates the
+ * fluid by hundreds of g within a step, and a step sized on the speed alone carried particles a
+ * spacing through the floor (cases/dam_break.lua stab=1 n=40); the walls' approach term
+ * (ppe.cl), without it, pumped the paper's tank until it clustered at t = 2.4 s.
  * The CFL bound keeps each move within 0.25 h, which the neighbour grid's skin (support_skin)
  * covers for x*. */
 static enum clsph_status stab_max_dt(struct sim *sim, void *state, double *dt)
@@ -535,10 +648,16 @@ static enum clsph_status stab_max_dt(struct sim *sim, void *state, double *dt)
   for (int w = 0; w < s->nwalls; ++w) /* a sliding wall drives the fluid */
     u = fmax(u, hypot(s->walls[w].velocity[0], s->walls[w].velocity[1]));
   const double a = hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]);
+  double am = 0.0; /* the last step's largest acceleration */
+  if (sim->step > 0) CLSPH_TRY(sim_max_norm(sim, pset_mem(&sim->ps, b->f_acc), KIND_FLUID, &am));
   double d = HUGE_VAL;
   if (u > 0.0) d = fmin(d, 0.25 * h / u);
   if (s->nu > 0.0) d = fmin(d, 0.125 * h * h / s->nu);
   if (a > 0.0) d = fmin(d, 0.125 * sqrt(h / a));
+  /* not under a quarter of the other bounds: the relaxation term's acceleration grows as 1/Δt²,
+   * and the bound on it alone ran Δt down step after step until the pressure reached −9e9 Pa (the
+   * n = 40 dam break in float at t = 0.71 s) */
+  if (am > 0.0) d = fmax(0.25 * d, fmin(d, 0.125 * sqrt(h / am)));
   *dt = d;
 done:
   return st;

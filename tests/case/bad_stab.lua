@@ -1,16 +1,24 @@
 -- isph-stabilized with an option it refuses: what = 1, alpha = "small" (a number from 0 to 1);
 -- 2, wall_pressure = "dirichlet" (pseudo_neumann or neumann); 3, wall_velocity and slip_ratio
 -- together; 4, surface_threshold = 1.2 (0.8 to 0.995); 5, wall_velocity = "sticky" (no_slip or
--- slip); 6, wall_layers = 1 (the markers of the fluid next to a wall need 2 at h = 1.2 dr).
+-- slip); 6, wall_layers = 1 (the markers of the fluid next to a wall need 2 at h = 1.2 dr); 7, a
+-- plate 0.15 m thick in the water (the markers need 0.38 m); 8, a wall near the top whose fluid
+-- side faces the domain's edge (its markers fall above it).
 param { what = 1 }
 local opts = ({ { alpha = "small" }, { wall_pressure = "dirichlet" },
                 { wall_velocity = "slip", slip_ratio = 0.5 }, { surface_threshold = 1.2 },
-                { wall_velocity = "sticky" }, { wall_layers = 1 } })[what]
+                { wall_velocity = "sticky" }, { wall_layers = 1 }, {}, {} })[what]
 domain { 0, 0, 1, 1.5 }
 particles { dr = 0.1 }
 opts[1] = "isph-stabilized"
 scheme(opts)
 fluid { density = 1000, viscosity = 1e-6, gravity = {0, -9.81} }
 wall { {0, 1.5}, {0, 0}, {1, 0}, {1, 1.5}, fluid = "left" }
+if what == 7 then
+  wall { {0.4, 0.3}, {0.6, 0.3}, {0.6, 0.45}, {0.4, 0.45}, closed = true, fluid = "outside",
+         group = "plate" }
+elseif what == 8 then
+  wall { {0, 1.45}, {1, 1.45}, fluid = "left", group = "lid" }
+end
 fill { 0, 0, 1, 1 }
 run { t_end = 1 }
