@@ -87,24 +87,6 @@ __kernel void stab_ppe_count(OP_ARGS, __global const uint *kind, __global const 
   count[i] = c;
 }
 
-/* Σ_k V_k W(x_v − x_k) over the fluid at a pressure marker */
-real stab_marker_wsum(const struct grid *g, __global const uint *cell_start,
-                      __global const realv *pos, __global const real *vol,
-                      __global const uint *kind, realv xv)
-{
-  real s = R(0.0);
-  struct neigh_iter it;
-  neigh_begin(&it, g, xv);
-  uint j;
-  while (neigh_next(&it, g, cell_start, &j)) {
-    if (kind[j] != STAB_FLUID) continue;
-    realv r = xv - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 < SMOOTH_SUPPORT2) s += vol[j] * smoothing_w(sqrt(r2));
-  }
-  return s;
-}
-
 /* the stored rows (csr.cl's layout: the diagonal first, then stab_ppe_count's neighbours) */
 __kernel void stab_ppe_coeffs(OP_ARGS, __global const uint *kind, __global const real *dist,
                               __global const realv *normal, __global const uint *dirichlet,
@@ -120,7 +102,8 @@ __kernel void stab_ppe_coeffs(OP_ARGS, __global const uint *kind, __global const
   const int dummy = kind[i] != STAB_FLUID;
   const realv x = dummy ? stab_pmarker(i, pos, dist, normal) : pos[i];
   /* dummy rows: −d0 / Σ V W (stab_wall_neumann made a dry marker a Dirichlet row) */
-  const real scale = dummy ? -d0 / stab_marker_wsum(&g, cell_start, pos, vol, kind, x) : R(0.0);
+  const real scale =
+      dummy ? -d0 / marker_shepard(&g, cell_start, pos, vol, kind, x, i, 0, 0, 0).wsum : R(0.0);
   uint k = first + 1;
   real diag = R(0.0);
   struct neigh_iter it;
