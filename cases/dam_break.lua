@@ -51,11 +51,19 @@
 -- --set wcsph=1 runs the weakly-compressible baseline (c0 = 10 · 2 √(gH)); --set riemann=1 runs
 -- wcsph-riemann with the same sound speed; --set stab=1 runs isph-stabilized (Asai et al. 2012)
 -- with the modified virtual marker's walls (neumann = 0: the pseudo-Neumann ones) and relaxation
--- alpha, the column starting from its hydrostatic pressure.
+-- alpha, the column starting from its hydrostatic pressure. With stab = 1, gate = 1 holds the
+-- column behind a gate at x = L (0.5 m tall, three dummy layers thick) that lifts 0.4 m at
+-- gate_speed from t = 0 (S sec 4.2 and the refdata's secondary source: 4.53 m/s), as the
+-- experiment's; gate_lift (a metric) is how far its lowest dummy rose. checkpoint: s between
+-- checkpoints (0: none).
 param { n = 20, t_end = 0.4, wcsph = 0, riemann = 0, every = 0.001, cfl = 1,
-        tvf = 2, ard = 0, stab = 0, neumann = 1, alpha = 0.01 }
-for k, v in pairs({ stab = stab, neumann = neumann }) do
+        tvf = 2, ard = 0, stab = 0, neumann = 1, alpha = 0.01, gate = 0, gate_speed = 4.53,
+        checkpoint = 0 }
+for k, v in pairs({ stab = stab, neumann = neumann, gate = gate }) do
   if v ~= 0 and v ~= 1 then error(("dam_break: %s must be 0 or 1, not %g"):format(k, v)) end
+end
+if gate == 1 and stab ~= 1 then
+  error("dam_break: gate = 1 needs stab = 1 (isph-stabilized moves the gate)")
 end
 
 local g, H, L, tank, top, rho = 9.81, 0.3, 0.6, 1.61, 1.0, 997
@@ -66,7 +74,9 @@ domain { 0, 0, tank, top }
 particles { dr = dr }
 if stab == 1 then
   scheme { "isph-stabilized", alpha = alpha,
-           wall_pressure = neumann == 1 and "neumann" or "pseudo_neumann" }
+           wall_pressure = neumann == 1 and "neumann" or "pseudo_neumann",
+           gate = gate == 1 and "gate" or nil, gate_speed = gate == 1 and gate_speed or nil,
+           gate_stop = gate == 1 and 0.4 / gate_speed or nil }
 elseif riemann == 1 then
   scheme { "wcsph-riemann", sound_speed = 10 * U, ard = ard,
            transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
@@ -77,10 +87,12 @@ else
 end
 fluid { density = rho, viscosity = 8.9e-7, gravity = {0, -g} }
 wall { {0, top}, {0, 0}, {tank, 0}, {tank, top}, fluid = "left", group = "tank" }
+if gate == 1 then wall { {L, 0}, {L, 0.5}, fluid = "left", group = "gate" } end
 fill { 0, 0, L, H, name = "water",
        pressure = stab == 1 and function(x, y) return rho * g * (H - y) end or nil }
 probe { "sensor_1", {tank, 0.0009}, {tank, 0.0051} } -- its face, on the wall
-run { t_end = t_end, output_every = 0.05, sample_every = every, cfl = cfl }
+run { t_end = t_end, output_every = 0.05, sample_every = every, cfl = cfl,
+      checkpoint_every = checkpoint > 0 and checkpoint or nil } -- s between checkpoints
 
 function sample(sim)
   local x, y = sim.field("pos", 1), sim.field("pos", 2)
@@ -229,6 +241,15 @@ function metrics(sim)
   m.volume_ratio = #sim.field("pos", 1).value * dr * dr / (L * H)
   m.time_star = sim.time * math.sqrt(g / H)
   m.crossed_wall = sim.wall_crossing_steps -- steps with a fluid particle behind a wall
+  if gate == 1 then
+    local gx, gy, low = sim.field("pos", 1, "dummy"), sim.field("pos", 2, "dummy"), math.huge
+    for i = 1, #gx.value do
+      if gx.value[i] > L and gx.value[i] < L + 3 * dr and gy.value[i] > 0 then -- not the floor's
+        low = math.min(low, gy.value[i])
+      end
+    end
+    m.gate_lift = low - dr / 2 -- its lowest dummy started half a spacing above the floor
+  end
   sensor_metrics(sim, m)
   front_metrics(sim, m)
   return m

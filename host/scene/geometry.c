@@ -1233,6 +1233,27 @@ done:
   return st;
 }
 
+/* A point on the fluid side of its nearest wall `skip` can still be inside another wall's solid
+ * layers, where a wall ends on another (a gate standing on a floor: beside its foot the floor is
+ * nearer than the gate): the nearest such wall, if any, replaces *r. Fluid is never there (it is
+ * refused on an open wall's solid side and kept out of closed ones). */
+static int other_solid(const struct build *b, const double p[2], int skip, double thick,
+                       struct nearest *r)
+{
+  struct nearest best;
+  best.found = 0;
+  for (int w = 0; w < b->s->nwalls; ++w) {
+    if (w == skip) continue;
+    struct nearest rw;
+    index_nearest(&b->ix, p, w, b->dr, &rw);
+    if (!rw.found || !solid_side(b, w, p, &rw) || fmax(rw.mitre, rw.d / sqrt(2.0)) > thick)
+      continue;
+    if (!best.found || rw.d < best.d) best = rw;
+  }
+  if (best.found) *r = best;
+  return best.found;
+}
+
 static enum clsph_status build_dummy(struct build *b, int layers)
 {
   enum clsph_status st = CLSPH_OK;
@@ -1261,7 +1282,7 @@ static enum clsph_status build_dummy(struct build *b, int layers)
         p.normal[0] = r.nsum[0] / nn;
         p.normal[1] = r.nsum[1] / nn;
       } else {
-        if (!solid_side(b, r.wall, p.x, &r)) continue;
+        if (!solid_side(b, r.wall, p.x, &r) && !other_solid(b, p.x, r.wall, thick, &r)) continue;
         if (fmax(r.mitre, r.d / sqrt(2.0)) > thick) continue;
         p.normal[0] = (r.q[0] - p.x[0]) / r.d;
         p.normal[1] = (r.q[1] - p.x[1]) / r.d;

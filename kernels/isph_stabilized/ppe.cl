@@ -200,11 +200,13 @@ __kernel void stab_wall_neumann(const uint n, const struct grid g, __global cons
                                 __global const realv *normal, const real rho0, const realv force,
                                 const real d0, __global const real *p, __global const realv *vel,
                                 __global const realv *wall_vel, const real dt,
+                                __global const uint *gate, const realv a_gate,
                                 __global uint *dirichlet, __global real *rhs, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] == STAB_FLUID) return;
   const realv xw = pos[i], xv = stab_pmarker(i, pos, dist, normal);
+  const realv f = gate[i] != 0u ? force - a_gate : force; /* f = g − a_W */
   real ws = R(0.0), s = R(0.0), sp = R(0.0);
   struct neigh_iter it;
   neigh_begin(&it, &g, xv);
@@ -217,7 +219,7 @@ __kernel void stab_wall_neumann(const uint n, const struct grid g, __global cons
     if (r2 >= SMOOTH_SUPPORT2) continue;
     const real w = vol[j] * smoothing_w(sqrt(r2));
     ws += w;
-    s += w * dot(force, xw - xj);
+    s += w * dot(f, xw - xj);
     /* the approach: (u_j − u_W)·n < 0 */
     const real vn = dot(vel[j] - wall_vel[i], normal[i]);
     s += w * fmax(R(0.0), -vn) / dt * dot(normal[i], xj - xw);

@@ -29,8 +29,11 @@
  * S sec 3.3, the default, or "pseudo_neumann", S sec 3.2), wall_velocity ("no_slip" or "slip")
  * or slip_ratio (β_s from 0 to 1, S eq 13), surface_threshold (β_fs, 0.8 to 0.995, default
  * 0.97), wall_layers (checked against the support the markers need) and the pressure solver's.
- * Left out: A12's eddy viscosity, inflow and outflow sections (refused), rotating and translating
- * walls (refused), wall forces. A closed box under the modified virtual marker has no Dirichlet
+ * The gate (options gate, a wall group, gate_speed, gate_start, gate_stop): that group's dummies
+ * lift against gravity from gate_start to gate_stop (gate_step), and the modified virtual marker
+ * carries their acceleration, f = g − a_W (the pseudo-Neumann mapping keeps g).
+ * Left out: A12's eddy viscosity, inflow and outflow sections (refused), rotating walls (refused),
+ * wall forces. A closed box under the modified virtual marker has no Dirichlet
  * row: its pressure is fixed up to a constant only (the solve reinforces the diagonal), and a
  * negative level attracts particles in the symmetric gradient. */
 #include <math.h>
@@ -56,9 +59,16 @@ struct stab {
   double beta_s;  /* slip ratio: 0 no-slip, 1 free slip (S eq 13) */
   double sigma0;  /* Σ dr² W over the full lattice support, in the build's precision */
   double umax;    /* largest fluid speed at the last max_dt, m/s */
-  int f_p, f_fs, f_rhostar, f_dist, f_normal, f_uwall, f_ustar, f_div, f_rhs, f_dir, f_acc;
+  /* the gate: the dummies of the walls of group `gate` lift along −g/|g| at gate_speed from
+   * gate_start to gate_stop (Lobovsky et al.'s set-up, S sec 4.2) */
+  int has_gate;
+  char gate[SCENE_NAME];
+  double gate_speed, gate_start, gate_stop, gate_dir[2];
+  double v_prev[2]; /* the gate's velocity over the last step (persisted) */
+  real2 a_gate;     /* its acceleration over this step */
+  int f_p, f_fs, f_rhostar, f_dist, f_normal, f_uwall, f_ustar, f_div, f_rhs, f_dir, f_acc, f_gate;
   cl_kernel k_lattice, k_wall_vel, k_wall_p, k_predict, k_source, k_project, k_move, k_diag0,
-      k_count, k_coeffs, k_apply, k_diag, k_neumann;
+      k_count, k_coeffs, k_apply, k_diag, k_neumann, k_wall_move;
   cl_mem d_sums; /* the lattice sums (2 reals) */
 };
 
@@ -73,14 +83,9 @@ static const char *const sources[] = {"common/blas1.cl",
                                       "isph_stabilized/predict.cl",
                                       "isph_stabilized/project.cl",
                                       NULL};
-static const char *const options[] = {"alpha",
-                                      "wall_pressure",
-                                      "wall_velocity",
-                                      "slip_ratio",
-                                      "surface_threshold",
-                                      "wall_layers",
-                                      PSOLVE_OPTION_NAMES,
-                                      NULL};
+static const char *const options[] = {
+    "alpha", "wall_pressure", "wall_velocity", "slip_ratio", "surface_threshold", "wall_layers",
+    "gate",  "gate_speed",    "gate_start",    "gate_stop",  PSOLVE_OPTION_NAMES, NULL};
 
 static const struct scene_option *option(const struct scene *s, const char *key)
 {
@@ -166,6 +171,50 @@ static enum clsph_status read_options(const struct sim *sim, struct stab *b)
   b->beta_fs = 0.97; /* the top row of a lattice reads 0.78 at h = 1.2 dr, the second 0.997 */
   CLSPH_TRY(option_number(sc, "surface_threshold", 0.8, 0.995, "the free-surface threshold β_fs",
                           " (free surface where ρ* / ρ0 < β_fs)", &b->beta_fs));
+  /* the gate */
+  const struct scene_option *go = option(sc, "gate");
+  static const char *const gate_keys[] = {"gate_speed", "gate_start", "gate_stop"};
+  for (int k = 0; k < 3; ++k)
+    CLSPH_CHECK(go != NULL || option(sc, gate_keys[k]) == NULL, CLSPH_E_INPUT,
+                "%s:%d: isph-stabilized option %s needs gate = \"<wall group>\", the walls that "
+                "lift",
+                sc->case_path, sc->scheme_line, gate_keys[k]);
+  if (go != NULL) {
+    char groups[256] = "";
+    size_t used = 0;
+    int found = 0;
+    for (int w = 0; w < sc->nwalls; ++w) {
+      if (!go->is_number && strcmp(sc->walls[w].group, go->text) == 0) found = 1;
+      if (strstr(groups, sc->walls[w].group) == NULL)
+        used += (size_t)snprintf(groups + used, used < sizeof groups ? sizeof groups - used : 0,
+                                 "%s%s", used ? ", " : "", sc->walls[w].group);
+    }
+    CLSPH_CHECK(found, CLSPH_E_INPUT,
+                "%s:%d: isph-stabilized option gate = %s%s%s: no wall has that group (groups: %s)",
+                sc->case_path, sc->scheme_line, go->is_number ? "" : "\"",
+                go->is_number ? "a number" : go->text, go->is_number ? "" : "\"", groups);
+    b->has_gate = 1;
+    snprintf(b->gate, sizeof b->gate, "%s", go->text);
+    const struct scene_option *gs = option(sc, "gate_speed"), *ge = option(sc, "gate_stop");
+    CLSPH_CHECK(gs != NULL && ge != NULL, CLSPH_E_INPUT,
+                "%s:%d: isph-stabilized option gate needs gate_speed (m/s) and gate_stop (s, when "
+                "the lift ends; gate_start, when it begins, is 0 unless given)",
+                sc->case_path, sc->scheme_line);
+    b->gate_speed = b->gate_start = 0.0;
+    b->gate_stop = 0.0;
+    CLSPH_TRY(option_number(sc, "gate_speed", 1e-9, 1e3, "the gate's lifting speed (m/s)", "",
+                            &b->gate_speed));
+    CLSPH_TRY(option_number(sc, "gate_start", 0.0, 1e9, "the time the gate starts (s)", "",
+                            &b->gate_start));
+    CLSPH_TRY(
+        option_number(sc, "gate_stop", 0.0, 1e9, "the time the gate stops (s)", "", &b->gate_stop));
+    CLSPH_CHECK(b->gate_stop > b->gate_start, CLSPH_E_INPUT,
+                "%s:%d: isph-stabilized option gate_stop = %g s must come after gate_start = %g s",
+                sc->case_path, sc->scheme_line, b->gate_stop, b->gate_start);
+    const double gx = sc->gravity[0], gy = sc->gravity[1], gn = hypot(gx, gy);
+    b->gate_dir[0] = gn > 0.0 ? -gx / gn : 0.0; /* against gravity, +y without it */
+    b->gate_dir[1] = gn > 0.0 ? -gy / gn : 1.0;
+  }
   /* the dummies fill layers dr behind the wall; the fluid's first row, dr/2 in front of it, sees
    * support − dr/2 behind it */
   const struct scene_option *lo = option(sc, "wall_layers");
@@ -304,16 +353,17 @@ static enum clsph_status wall_neumann(struct sim *sim, struct stab *b, double dt
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n;
   const real rho = (real)sim->scene->rho0, d0 = (real)b->d0, rdt = (real)dt;
-  const real2 force = body_accel(sim); /* f = g − a_W: no wall of this scheme accelerates */
+  const real2 force = body_accel(sim); /* f = g − a_W: a_W of the gate in the kernel */
   cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
   cl_mem kind = pset_mem(ps, sim->f_kind), dist = pset_mem(ps, b->f_dist);
   cl_mem normal = pset_mem(ps, b->f_normal), rhs = pset_mem(ps, b->f_rhs);
   cl_mem dir = pset_mem(ps, b->f_dir), p = pset_mem(ps, b->f_p);
   cl_mem vel = pset_mem(ps, sim->f_vel), uwall = pset_mem(ps, b->f_uwall);
+  cl_mem gate = pset_mem(ps, b->f_gate);
   CLSPH_TRY(KERN_SET(b->k_neumann, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
                      KARG(pos), KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(rho),
-                     KARG(force), KARG(d0), KARG(p), KARG(vel), KARG(uwall), KARG(rdt), KARG(dir),
-                     KARG(rhs), KARG(sim->d_flags)));
+                     KARG(force), KARG(d0), KARG(p), KARG(vel), KARG(uwall), KARG(rdt), KARG(gate),
+                     KARG(b->a_gate), KARG(dir), KARG(rhs), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_neumann, n, NULL));
 done:
   return st;
@@ -347,8 +397,9 @@ static int dummy_near(const struct geom *geo, const size_t *order, const size_t 
  *     (the reach of the fluid nearest the wall): a plate thinner than that splits its dummies
  *     between its two faces and the fluid on either side misses part of its support;
  *   markers: every velocity marker x_m = x_d + 2 d n lies inside the domain on each non-periodic
- *     axis (no fluid can be beyond it: the dummy would read a dry marker next to the fluid). */
-static enum clsph_status check_walls(const struct sim *sim)
+ *     axis (no fluid can be beyond it: the dummy would read a dry marker next to the fluid); the
+ *     gate's at both ends of its lift, and its dummies stay inside the neighbour grid. */
+static enum clsph_status check_walls(const struct sim *sim, const struct stab *b)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *sc = sim->scene;
@@ -360,21 +411,36 @@ static enum clsph_status check_walls(const struct sim *sim)
   for (size_t i = 0; i < geo->n; ++i) {
     if (geo->kind[i] != KIND_DUMMY) continue;
     ++nd;
-    const double *x = geo->x + 2 * i, *n = geo->normal + 2 * i;
+    const double *x0 = geo->x + 2 * i, *n = geo->normal + 2 * i;
     const struct scene_wall *w = &sc->walls[geo->group[i]];
+    const int gate = b->has_gate && strcmp(w->group, b->gate) == 0;
+    const double lift = gate ? b->gate_speed * (b->gate_stop - b->gate_start) : 0.0;
+    const double x1[2] = {x0[0] + lift * b->gate_dir[0], x0[1] + lift * b->gate_dir[1]};
     for (int a = 0; a < 2; ++a) {
-      lo[a] = fmin(lo[a], x[a]);
-      hi[a] = fmax(hi[a], x[a]);
-      const double m = x[a] + 2.0 * geo->dist[i] * n[a];
-      CLSPH_CHECK(sc->periodic[a] || (m >= sc->lo[a] - tol && m <= sc->hi[a] + tol), CLSPH_E_INPUT,
-                  "%s:%d: wall (group '%s'): the virtual marker of the dummy at (%g, %g) falls at "
-                  "(%g, %g), outside the domain [%g, %g] x [%g, %g]: the wall's fluid side faces "
-                  "the domain's edge closer than the %.3g m (twice the dummy's depth) its markers "
-                  "reach",
-                  sc->case_path, w->line, w->group, x[0], x[1], x[0] + 2.0 * geo->dist[i] * n[0],
-                  x[1] + 2.0 * geo->dist[i] * n[1], sc->lo[0], sc->hi[0], sc->lo[1], sc->hi[1],
-                  2.0 * geo->dist[i]);
+      lo[a] = fmin(lo[a], x0[a]);
+      hi[a] = fmax(hi[a], x0[a]);
+      CLSPH_CHECK(!gate || sc->periodic[a] ||
+                      (x1[a] >= sim->gspec.lo[a] && x1[a] < sim->gspec.hi[a]),
+                  CLSPH_E_INPUT,
+                  "%s:%d: isph-stabilized: the gate (group '%s') leaves the domain: after its "
+                  "lift of %g m its dummy from (%g, %g) is at (%g, %g); lower gate_speed or "
+                  "gate_stop",
+                  sc->case_path, w->line, w->group, lift, x0[0], x0[1], x1[0], x1[1]);
     }
+    for (int e = 0; e < (gate ? 2 : 1); ++e)
+      for (int a = 0; a < 2; ++a) {
+        const double *x = e == 0 ? x0 : x1;
+        const double m = x[a] + 2.0 * geo->dist[i] * n[a];
+        CLSPH_CHECK(
+            sc->periodic[a] || (m >= sc->lo[a] - tol && m <= sc->hi[a] + tol), CLSPH_E_INPUT,
+            "%s:%d: wall (group '%s'): the virtual marker of the dummy at (%g, %g)%s "
+            "falls at (%g, %g), outside the domain [%g, %g] x [%g, %g]: the wall's fluid "
+            "side faces the domain's edge closer than the %.3g m (twice the dummy's "
+            "depth) its markers reach",
+            sc->case_path, w->line, w->group, x[0], x[1], e == 1 ? " after the gate's lift" : "",
+            x[0] + 2.0 * geo->dist[i] * n[0], x[1] + 2.0 * geo->dist[i] * n[1], sc->lo[0],
+            sc->hi[0], sc->lo[1], sc->hi[1], 2.0 * geo->dist[i]);
+      }
   }
   if (nd == 0) goto done;
   /* bin the dummies in cells of side dr */
@@ -443,7 +509,7 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
                 "%s: isph-stabilized has a particle of kind %d (fluid and dummy walls only)",
                 sc->case_path, geo->kind[i]);
   CLSPH_TRY(read_options(sim, b));
-  CLSPH_TRY(check_walls(sim));
+  CLSPH_TRY(check_walls(sim, b));
   CLSPH_TRY(sim_psolve_options(sim, &b->popt));
   /* fields: the wall geometry of the dummies, then the scheme's state */
   struct pset *ps = &sim->ps;
@@ -473,6 +539,16 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
     CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
   }
+  {
+    cl_uint *gate = calloc(geo->n + 1, sizeof *gate);
+    CLSPH_CHECK(gate != NULL, CLSPH_E_NOMEM, "out of memory");
+    for (size_t i = 0; i < geo->n && b->has_gate; ++i)
+      gate[i] = geo->kind[i] == KIND_DUMMY && strcmp(sc->walls[geo->group[i]].group, b->gate) == 0;
+    st = pset_add(ps, sim->dev, "gate", sizeof(cl_uint), gate, &b->f_gate);
+    free(gate);
+    if (st != CLSPH_OK) goto done;
+    pset_describe(ps, b->f_gate, PF_UINT, 0, 0);
+  }
   CLSPH_TRY(pset_add(ps, sim->dev, "dirichlet", sizeof(cl_uint), NULL, &b->f_dir));
   pset_describe(ps, b->f_dir, PF_UINT, 0, 0);
   pset_describe(ps, b->f_dist, PF_REAL, 0, 0);
@@ -494,7 +570,8 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
             {&b->k_coeffs, "stab_ppe_coeffs"},
             {&b->k_apply, "stab_ppe_apply"},
             {&b->k_diag, "stab_ppe_diag"},
-            {&b->k_neumann, "stab_wall_neumann"}};
+            {&b->k_neumann, "stab_wall_neumann"},
+            {&b->k_wall_move, "stab_wall_move"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
   CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &b->popt, &b->ps));
@@ -531,6 +608,33 @@ done:
   return st;
 }
 
+/* The gate over [t, t + Δt]: its displacement (the lift's overlap with [gate_start, gate_stop],
+ * exact, so that it stops where it should), its velocity over the step and the acceleration
+ * since the last one (the a_W of f = g − a_W in the walls' Neumann condition). */
+static enum clsph_status gate_step(struct sim *sim, struct stab *b, double dt)
+{
+  enum clsph_status st = CLSPH_OK;
+  const double t0 = sim->time, t1 = t0 + dt;
+  const double moving = fmax(0.0, fmin(t1, b->gate_stop) - fmax(t0, b->gate_start));
+  double v[2];
+  for (int a = 0; a < 2; ++a) v[a] = b->gate_speed * moving / dt * b->gate_dir[a];
+  b->a_gate = dev_real2((v[0] - b->v_prev[0]) / dt, (v[1] - b->v_prev[1]) / dt);
+  if (moving > 0.0 || v[0] != b->v_prev[0] || v[1] != b->v_prev[1]) {
+    struct pset *ps = &sim->ps;
+    const cl_uint n = (cl_uint)ps->n;
+    const real2 disp = dev_real2(v[0] * dt, v[1] * dt), rv = dev_real2(v[0], v[1]);
+    cl_mem gate = pset_mem(ps, b->f_gate), pos = pset_mem(ps, sim->f_pos);
+    cl_mem uwall = pset_mem(ps, b->f_uwall);
+    CLSPH_TRY(KERN_SET(b->k_wall_move, KARG(n), KARG(gate), KARG(disp), KARG(rv), KARG(pos),
+                       KARG(uwall)));
+    CLSPH_TRY(kern_launch(sim->dev, b->k_wall_move, n, NULL));
+  }
+  b->v_prev[0] = v[0];
+  b->v_prev[1] = v[1];
+done:
+  return st;
+}
+
 static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
 {
   enum clsph_status st = CLSPH_OK;
@@ -561,6 +665,8 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   const real fs_offset = (real)(0.5 * sc->dr), d0 = (real)b->d0;
   const int neumann = b->mode == 1;
 
+  /* 0. the gate (its dummies move before anything reads them) */
+  if (b->has_gate) CLSPH_TRY(gate_step(sim, b, dt));
   /* 1. the dummies' velocity and u* from their markers (S eqs 11-13) */
   n = (cl_uint)ps->n;
   n = (cl_uint)ps->n;
@@ -647,6 +753,7 @@ static enum clsph_status stab_max_dt(struct sim *sim, void *state, double *dt)
   double u = b->umax;
   for (int w = 0; w < s->nwalls; ++w) /* a sliding wall drives the fluid */
     u = fmax(u, hypot(s->walls[w].velocity[0], s->walls[w].velocity[1]));
+  if (b->has_gate && sim->time < b->gate_stop) u = fmax(u, b->gate_speed); /* the gate's moves */
   const double a = hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]);
   double am = 0.0; /* the last step's largest acceleration */
   if (sim->step > 0) CLSPH_TRY(sim_max_norm(sim, pset_mem(&sim->ps, b->f_acc), KIND_FLUID, &am));
@@ -663,13 +770,20 @@ done:
   return st;
 }
 
+static double *stab_persist(void *state, int *count)
+{
+  struct stab *b = state;
+  *count = 2;
+  return b->v_prev;
+}
+
 static void stab_destroy(void *state)
 {
   struct stab *b = state;
   if (b == NULL) return;
-  cl_kernel ks[] = {b->k_move,     b->k_project, b->k_source, b->k_predict, b->k_wall_p,
-                    b->k_wall_vel, b->k_lattice, b->k_diag0,  b->k_count,   b->k_coeffs,
-                    b->k_apply,    b->k_diag,    b->k_neumann};
+  cl_kernel ks[] = {b->k_move,     b->k_project, b->k_source,  b->k_predict,  b->k_wall_p,
+                    b->k_wall_vel, b->k_lattice, b->k_diag0,   b->k_count,    b->k_coeffs,
+                    b->k_apply,    b->k_diag,    b->k_neumann, b->k_wall_move};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (ks[k] != NULL) clReleaseKernel(ks[k]);
   kern_release(&b->d_sums);
@@ -691,5 +805,6 @@ const struct scheme_ops scheme_isph_stabilized = {
     .create = stab_create,
     .step = stab_step,
     .max_dt = stab_max_dt,
+    .persist = stab_persist,
     .destroy = stab_destroy,
 };
