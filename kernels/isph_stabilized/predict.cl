@@ -16,7 +16,13 @@
  *     The pairs are those of the neighbour grid at x^n: its cells cover the support plus the skin
  *     (support_skin), more than two moves of a step bounded by 0.25 h/U each apart.
  *   free surface (A12, MPS practice; S: β ≈ 0.97): a Dirichlet row where s*_i / σ0 < β_fs. The
- *     dummies count in s*, so fluid next to a wall keeps a full support. Its value: CHOICE, the
+ *     dummies count in s*, so fluid next to a wall keeps a full support. With the option
+ *     surface_detection = "scan" the row must also have an empty scan region (Marrone et al.
+ *     2010, stab_scan_empty): a lattice cut by a curved or slanted wall leaves holes between the
+ *     fluid and the dummies, the particles around a hole read s* / σ0 from 0.83 to 0.96, and as
+ *     Dirichlet rows deep in the water they held p = 0 there (cases/hydrostatic_shapes.lua:
+ *     28% of ρ g H off over the fluid); the region beyond a hole holds particles, the air's
+ *     does not. Its value: CHOICE, the
  *     pressure half a spacing inside the surface, p_i = −ρ0 a·n dr/2 (≥ 0; n = −Σ V ∇W / |…|, the
  *     outward normal), not A12's p = 0 on the particle itself (the reading isph-usaw makes too,
  *     its free_surface_offset): with the symmetric gradient of project.cl a top particle at
@@ -61,11 +67,44 @@ realv stab_xstar(uint j, __global const realv *pos, __global const uint *kind,
   return pos[j] + dt * (kind[j] == STAB_FLUID ? ustar[j] : wall_vel[j]);
 }
 
+/* Is the scan region of fluid i at x*_i empty (Marrone et al. 2010, CMAME 199:2734 sec 3.2)?
+ * n = −∇s* / |∇s*| (the outward normal of the kernel sum at x*), T = x*_i + h n; a neighbour j
+ * (fluid or dummy, at x*_j) fills it when |x_ji| ≥ √2 h and |x_j − T| < h, or |x_ji| < √2 h and
+ * |n⊥·x_ji| + |n·(x_j − T)| < h, with x_ji = x*_j − x*_i. A particle with no gradient (alone, or
+ * thinned evenly) has an empty region. */
+uint stab_scan_empty(uint i, realv xs, realv gss, const struct grid *gg,
+                     __global const uint *cell_start, __global const realv *pos,
+                     __global const uint *kind, __global const realv *ustar,
+                     __global const realv *wall_vel, real dt)
+{
+  const real gl = length(gss);
+  if (!(gl > R(0.0))) return 1u;
+  const realv nrm = -gss / gl;
+  const real h = R(1.0) / SMOOTH_INV_H;
+  const realv t = xs + h * nrm;
+  struct neigh_iter it;
+  neigh_begin(&it, gg, pos[i]);
+  uint j;
+  while (neigh_next(&it, gg, cell_start, &j)) {
+    if (j == i) continue;
+    const realv xj = stab_xstar(j, pos, kind, ustar, wall_vel, dt) + it.shift;
+    const realv rj = xj - xs, rt = xj - t;
+    const real r2 = dot(rj, rj);
+    if (r2 >= SMOOTH_SUPPORT2) continue;
+    if (r2 >= R(2.0) * h * h) {
+      if (dot(rt, rt) < h * h) return 0u;
+    } else if (fabs(nrm.x * rj.y - nrm.y * rj.x) + fabs(dot(nrm, rt)) < h) {
+      return 0u;
+    }
+  }
+  return 1u;
+}
+
 /* s* / σ0, the free surface, the Dirichlet mask, D and the right-hand side (a free-surface row
  * d0 p_i = d0 p_s, ppe.cl; the dummies' rows come from walls.cl and ppe.cl) */
 __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const realv *ustar,
                           __global const realv *wall_vel, const real dt, const real inv_sigma0,
-                          const real beta_fs, const real alpha, const real rho0, const realv accel,
+                          const real beta_fs, const uint scan, const real alpha, const real rho0, const realv accel,
                           const real fs_offset, const real d0, __global real *rho_star,
                           __global uint *free_surface, __global uint *dirichlet, __global real *div,
                           __global real *rhs, __global uint *flags)
@@ -83,12 +122,15 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
   const realv x = pos[i], u_i = ustar[i], xs = x + dt * u_i;
   real s = R(0.0), d = R(0.0);
   realv gs = (realv)(R(0.0)); /* Σ V ∇W: −gs points out of the fluid */
+  realv gss = (realv)(R(0.0)); /* the same at x*, for the scan */
   struct neigh_iter it;
   neigh_begin(&it, &g, x);
   uint j;
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv rs = xs - (stab_xstar(j, pos, kind, ustar, wall_vel, dt) + it.shift);
-    s += vol[j] * smoothing_w(sqrt(dot(rs, rs))); /* j == i included: W(0) */
+    const real rsl = sqrt(dot(rs, rs));
+    s += vol[j] * smoothing_w(rsl); /* j == i included: W(0) */
+    if (j != i && rsl < SMOOTH_SUPPORT) gss += vol[j] * smoothing_f(rsl) * rs;
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
@@ -97,7 +139,9 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
     gs += vol[j] * gw;
   }
   const real ratio = s * inv_sigma0;
-  const uint fs = ratio < beta_fs;
+  const uint fs = ratio < beta_fs && (scan == 0u || stab_scan_empty(i, xs, gss, &g, cell_start,
+                                                                     pos, kind, ustar, wall_vel,
+                                                                     dt));
   /* a free-surface particle: the pressure fs_offset inside the surface, −ρ0 a·n fs_offset along
    * its outward normal n (≥ 0) */
   const real gn = length(gs);

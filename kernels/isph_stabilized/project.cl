@@ -38,38 +38,44 @@ __kernel void stab_project(OP_ARGS, __global const uint *kind, __global const re
   accel[i] = body - coef * gp / dt; /* the body force and the pressure's, for the time step */
 }
 
-/* x += Δt u for the fluid (the dummies stay: no wall of this scheme translates), and the wall
- * crossing check: a particle is behind the wall when it is behind the wall point q_d = x_d + d_d
- * n_d of its nearest dummy, (x − q_d)·n_d < 0 (at a corner, where dummies tie for nearest, in front
- * of any of them puts it in the fluid). A crossing raises CLSPH_FLAG_WALL, counts in flags[1] and
+/* x += Δt u for the fluid (the gate's dummies move in walls.cl), and the wall crossing check: a
+ * particle is behind the wall when it is behind the nearest of the dummies' wall points
+ * q_d = x_d + d_d n_d, (x − q_d)·n_d < 0, where in front of any wall point within `band` (dr/2)
+ * of the nearest puts it in the fluid. Not the nearest dummy's: inside a pit next to its rim (a
+ * convex corner of the solid) that is a floor's dummy, and the particle below the floor's line was
+ * taken for behind it (cases/hydrostatic_shapes.lua shape = 2 stopped at its second step). The
+ * band: next to a convex apex the wall points are sparse (its dummies' nearest points all lie on
+ * one flank), and a particle in front of the other flank read as behind the first. A crossing raises CLSPH_FLAG_WALL, counts in flags[1] and
  * keeps the deepest distance behind the wall in flags[2] (usaw/gamma.cl's protocol, which
  * host/sim/checks.c reads). The dummies' positions do not change here, so the loop reads them
  * from the same array the fluid writes. */
 __kernel void stab_move(const uint n, const struct grid g, __global const uint *cell_start,
                         __global const uint *kind, __global const realv *vel,
                         __global const real *dist, __global const realv *normal, const real dt,
-                        __global realv *pos, __global uint *flags)
+                        const real band, __global realv *pos, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != STAB_FLUID) return;
   const realv x = grid_wrap(&g, pos[i] + dt * vel[i]);
   if (!all(isfinite(x))) flags_raise(flags, CLSPH_FLAG_NAN);
   pos[i] = x;
-  real best = INFINITY, side = INFINITY; /* nearest dummy's distance², the best side there */
+  /* the nearest of the dummies' wall points q_d = x_d + d n_d (distance²), the best side there */
+  real best = INFINITY, side = INFINITY;
   struct neigh_iter it;
   neigh_begin(&it, &g, x);
   uint j;
   while (neigh_next(&it, &g, cell_start, &j)) {
     if (kind[j] == STAB_FLUID) continue;
-    const realv xd = pos[j] + it.shift;
-    const realv r = x - xd;
+    const realv r = x - (pos[j] + it.shift + dist[j] * normal[j]);
     const real r2 = dot(r, r);
-    const real s = dot(x - (xd + dist[j] * normal[j]), normal[j]);
-    if (r2 < best * (R(1.0) - R(1e-4))) {
+    const real s = dot(r, normal[j]);
+    if (r2 < best) {
+      /* a nearer point: the ones within `band` of it stay candidates */
+      side = sqrt(r2) + band < sqrt(best) ? s : fmax(side, s);
       best = r2;
-      side = s;
-    } else if (r2 <= best * (R(1.0) + R(1e-4)))
+    } else if (sqrt(r2) <= sqrt(best) + band) {
       side = fmax(side, s);
+    }
   }
   if (best < INFINITY && side < R(0.0)) {
     flags_raise(flags, CLSPH_FLAG_WALL);

@@ -28,14 +28,15 @@
  * Options: alpha (α, 0 to 1, default 0.01: S "around 1% or less"), wall_pressure ("neumann",
  * S sec 3.3, the default, or "pseudo_neumann", S sec 3.2), wall_velocity ("no_slip" or "slip")
  * or slip_ratio (β_s from 0 to 1, S eq 13), surface_threshold (β_fs, 0.8 to 0.995, default
- * 0.97), wall_layers (checked against the support the markers need) and the pressure solver's.
- * The gate (options gate, a wall group, gate_speed, gate_start, gate_stop): that group's dummies
- * lift against gravity from gate_start to gate_stop (gate_step), and the modified virtual marker
- * carries their acceleration, f = g − a_W (the pseudo-Neumann mapping keeps g).
- * Left out: A12's eddy viscosity, inflow and outflow sections (refused), rotating walls (refused),
- * wall forces. A closed box under the modified virtual marker has no Dirichlet
- * row: its pressure is fixed up to a constant only (the solve reinforces the diagonal), and a
- * negative level attracts particles in the symmetric gradient. */
+ * 0.97), surface_detection ("density", the default, or "scan": Marrone et al. 2010's scan region
+ * must be empty too, for walls that cut the lattice; predict.cl), wall_layers (checked against the
+ * support the markers need) and the pressure solver's. The gate (options gate, a wall group,
+ * gate_speed, gate_start, gate_stop): that group's dummies lift against gravity from gate_start to
+ * gate_stop (gate_step), and the modified virtual marker carries their acceleration, f = g − a_W
+ * (the pseudo-Neumann mapping keeps g). Left out: A12's eddy viscosity, inflow and outflow sections
+ * (refused), rotating walls (refused), wall forces. A closed box under the modified virtual marker
+ * has no Dirichlet row: its pressure is fixed up to a constant only (the solve reinforces the
+ * diagonal), and a negative level attracts particles in the symmetric gradient. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -56,6 +57,7 @@ struct stab {
   double d0;      /* the Laplacian's diagonal on the lattice: the scale of the non-fluid rows */
   double alpha;   /* α of the density-invariance term (A12) */
   double beta_fs; /* free surface where s* / σ0 < β_fs */
+  cl_uint scan;   /* 1: and where the scan region is empty (surface_detection = "scan") */
   double beta_s;  /* slip ratio: 0 no-slip, 1 free slip (S eq 13) */
   double sigma0;  /* Σ dr² W over the full lattice support, in the build's precision */
   double umax;    /* largest fluid speed at the last max_dt, m/s */
@@ -83,9 +85,19 @@ static const char *const sources[] = {"common/blas1.cl",
                                       "isph_stabilized/predict.cl",
                                       "isph_stabilized/project.cl",
                                       NULL};
-static const char *const options[] = {
-    "alpha", "wall_pressure", "wall_velocity", "slip_ratio", "surface_threshold", "wall_layers",
-    "gate",  "gate_speed",    "gate_start",    "gate_stop",  PSOLVE_OPTION_NAMES, NULL};
+static const char *const options[] = {"alpha",
+                                      "wall_pressure",
+                                      "wall_velocity",
+                                      "slip_ratio",
+                                      "surface_threshold",
+                                      "surface_detection",
+                                      "wall_layers",
+                                      "gate",
+                                      "gate_speed",
+                                      "gate_start",
+                                      "gate_stop",
+                                      PSOLVE_OPTION_NAMES,
+                                      NULL};
 
 static const struct scene_option *option(const struct scene *s, const char *key)
 {
@@ -171,6 +183,10 @@ static enum clsph_status read_options(const struct sim *sim, struct stab *b)
   b->beta_fs = 0.97; /* the top row of a lattice reads 0.78 at h = 1.2 dr, the second 0.997 */
   CLSPH_TRY(option_number(sc, "surface_threshold", 0.8, 0.995, "the free-surface threshold β_fs",
                           " (free surface where ρ* / ρ0 < β_fs)", &b->beta_fs));
+  static const char *const detect_names[] = {"density", "scan", NULL};
+  int scan = 0;
+  CLSPH_TRY(option_choice(sc, "surface_detection", detect_names, 0, &scan));
+  b->scan = (cl_uint)scan;
   /* the gate */
   const struct scene_option *go = option(sc, "gate");
   static const char *const gate_keys[] = {"gate_speed", "gate_start", "gate_stop"};
@@ -369,8 +385,10 @@ done:
   return st;
 }
 
-/* A dummy of wall w with its normal on n's side within 0.75 dr of (x, y)? The dummies are binned
- * in cells of side dr from (x0, y0), nx x ny of them (first[c] .. first[c + 1] in `order`). */
+/* A dummy of wall w within 0.75 dr of (x, y) whose normal does not face away from n (at most 90°
+ * from it: behind one face of a solid's convex right-angled corner lie the dummies of the other
+ * face, turned by 90°; a plate's far face turns them by 180°)? The dummies are binned in cells of
+ * side dr from (x0, y0), nx x ny of them (first[c] .. first[c + 1] in `order`). */
 static int dummy_near(const struct geom *geo, const size_t *order, const size_t *first, int nx,
                       int ny, double x0, double y0, double dr, double x, double y, int w,
                       const double *n)
@@ -384,7 +402,7 @@ static int dummy_near(const struct geom *geo, const size_t *order, const size_t 
         const size_t d = order[k];
         const double *q = geo->x + 2 * d, *m = geo->normal + 2 * d;
         if (geo->group[d] == w && hypot(q[0] - x, q[1] - y) < 0.75 * dr &&
-            m[0] * n[0] + m[1] * n[1] > 0.0)
+            m[0] * n[0] + m[1] * n[1] > -1e-6)
           return 1;
       }
     }
@@ -393,8 +411,8 @@ static int dummy_near(const struct geom *geo, const size_t *order, const size_t 
 
 /* The walls' geometry against what the virtual markers need (host, in double, once):
  *   thickness: behind every dummy of the first row (within dr of its wall) the solid holds
- *     dummies of the same wall, facing the same side, over the kernel support less half a spacing
- *     (the reach of the fluid nearest the wall): a plate thinner than that splits its dummies
+ *     dummies of the same wall, not facing the other way, over the kernel support less half a
+ * spacing (the reach of the fluid nearest the wall): a plate thinner than that splits its dummies
  *     between its two faces and the fluid on either side misses part of its support;
  *   markers: every velocity marker x_m = x_d + 2 d n lies inside the domain on each non-periodic
  *     axis (no fluid can be beyond it: the dummy would read a dry marker next to the fluid); the
@@ -592,9 +610,9 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
               "smoothing length (h_over_dr) is too small for the particle spacing",
               sc->case_path, b->sigma0);
   log_debug("isph-stabilized: alpha %g, wall pressure %s, slip ratio %g, free surface below "
-            "rho*/rho0 = %g, lattice sum %.8g, Laplacian diagonal %.8g",
+            "rho*/rho0 = %g%s, lattice sum %.8g, Laplacian diagonal %.8g",
             b->alpha, b->mode == 1 ? "modified virtual marker (Neumann)" : "pseudo-Neumann",
-            b->beta_s, b->beta_fs, b->sigma0, b->d0);
+            b->beta_s, b->beta_fs, b->scan ? " with an empty scan region" : "", b->sigma0, b->d0);
   b->op = (struct psolve_op){.ctx = b,
                              .apply = ppe_apply,
                              .diagonal = ppe_diagonal,
@@ -687,9 +705,9 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(op_prefix(sim, b->k_source, &n));
   {
     const struct karg a[] = {
-        KARG(kind),  KARG(ustar), KARG(uwall), KARG(rdt),       KARG(inv_sigma0),  KARG(beta_fs),
-        KARG(alpha), KARG(rho),   KARG(accel), KARG(fs_offset), KARG(d0),          KARG(rhostar),
-        KARG(fs),    KARG(dir),   KARG(div),   KARG(rhs),       KARG(sim->d_flags)};
+        KARG(kind),    KARG(ustar), KARG(uwall), KARG(rdt),   KARG(inv_sigma0), KARG(beta_fs),
+        KARG(b->scan), KARG(alpha), KARG(rho),   KARG(accel), KARG(fs_offset),  KARG(d0),
+        KARG(rhostar), KARG(fs),    KARG(dir),   KARG(div),   KARG(rhs),        KARG(sim->d_flags)};
     CLSPH_TRY(set_from(b->k_source, 6, sizeof a / sizeof *a, a));
   }
   CLSPH_TRY(kern_launch(sim->dev, b->k_source, n, NULL));
@@ -714,7 +732,7 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
    *    virtual marker solved for it); the projection and the motion */
   if (!neumann) CLSPH_TRY(wall_pressure(sim, b, 0));
 
-  const real coef = (real)(dt / sc->rho0);
+  const real coef = (real)(dt / sc->rho0), band = (real)(0.5 * sc->dr);
   CLSPH_TRY(op_prefix(sim, b->k_project, &n));
   {
     const struct karg a[] = {KARG(kind),  KARG(ustar), KARG(p),   KARG(coef),        KARG(rdt),
@@ -723,7 +741,7 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   }
   CLSPH_TRY(kern_launch(sim->dev, b->k_project, n, NULL));
   CLSPH_TRY(KERN_SET(b->k_move, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(kind),
-                     KARG(vel), KARG(dist), KARG(normal), KARG(rdt), KARG(pos),
+                     KARG(vel), KARG(dist), KARG(normal), KARG(rdt), KARG(band), KARG(pos),
                      KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_move, n, NULL));
 done:
