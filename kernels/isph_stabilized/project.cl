@@ -45,7 +45,8 @@ __kernel void stab_project(OP_ARGS, __global const uint *kind, __global const re
  * convex corner of the solid) that is a floor's dummy, and the particle below the floor's line was
  * taken for behind it (cases/hydrostatic_shapes.lua shape = 2 stopped at its second step). The
  * band: next to a convex apex the wall points are sparse (its dummies' nearest points all lie on
- * one flank), and a particle in front of the other flank read as behind the first. A crossing raises CLSPH_FLAG_WALL, counts in flags[1] and
+ * one flank), and a particle in front of the other flank read as behind the first. Only wall
+ * points within 2 dr count (a crossing deeper than that has long stopped the run). A crossing raises CLSPH_FLAG_WALL, counts in flags[1] and
  * keeps the deepest distance behind the wall in flags[2] (usaw/gamma.cl's protocol, which
  * host/sim/checks.c reads). The dummies' positions do not change here, so the loop reads them
  * from the same array the fluid writes. */
@@ -77,7 +78,9 @@ __kernel void stab_move(const uint n, const struct grid g, __global const uint *
       side = fmax(side, s);
     }
   }
-  if (best < INFINITY && side < R(0.0)) {
+  /* a wall point farther than 2 dr (4 bands) is no wall of this particle: away from the walls the
+   * loop still meets the dummies of a convex apex, whose points lie on one flank */
+  if (best < R(16.0) * band * band && side < R(0.0)) {
     flags_raise(flags, CLSPH_FLAG_WALL);
     atomic_inc(flags + 1);
     atomic_max(flags + 2, as_uint((float)(-side)));
