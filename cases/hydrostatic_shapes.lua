@@ -47,7 +47,7 @@ local floor, concave, convex = {}, { {0, 0}, {width, 0} }, {}
 local function add(x, y) floor[#floor + 1] = {x, y} end
 if shape == 1 then
   local c, r = width / 2, 0.05
-  local n = math.ceil(math.pi * r / (dr / 2))
+  local n = math.ceil(math.pi * r / dr) -- edges of about dr (USAW wants its vertices dr apart)
   add(0, 0)
   for k = 0, n do
     local a = math.pi * (1 - k / n)

@@ -1149,10 +1149,11 @@ clsph_run_test(run_stab_hydrostatic_rest ${CMAKE_SOURCE_DIR}/cases/hydrostatic.l
 # m, 1 s, errors against ρ g (H − y) relative to ρ g H, averaged over the last 0.5 s. The lattice
 # cut by an arc leaves holes between the fluid and the dummies; with surface_detection = "scan"
 # (the case's default) they stay interior rows (with the density test alone the bump's fluid was
-# 34% off, RMS). The semicircular bump under the modified virtual marker (428 steps; 13 s, 25 s
-# in float, shared cores): RMS over the fluid 0.053 (double), 0.057 (float), the fluid within
-# 3 dr of the floor +0.091 and +0.097 (concave corners +0.12 and +0.13, the arc +0.072 and
-# +0.076), speed 0.049 and 0.059 √(gH), no particle behind a wall. High, and it is the walls'
+# 34% off, RMS). The semicircular bump (its arc cut into edges of about dr) under the modified
+# virtual marker (426 steps in double, 441 in float; 11 s and 8 s, shared cores): RMS over the
+# fluid 0.056 (double), 0.053 (float), the fluid within 3 dr of the floor +0.096 and +0.091
+# (concave corners +0.125 and +0.125, the arc +0.077 and +0.069), speed 0.050 and 0.051 √(gH), no
+# particle behind a wall. High, and it is the walls'
 # approach term (ppe.cl): it turns the jostle into pressure (with it counted only within 0.4 dr
 # of a wall the floor read −0.004, but the n = 40 dam break blew up after its impact). Bounds:
 # 1.5 times the RMS and the speed, the floor's bias under +0.15, no crossing.
@@ -1160,9 +1161,9 @@ clsph_run_test(run_stab_shapes_bump ${CMAKE_SOURCE_DIR}/cases/hydrostatic_shapes
                SETS shape=1
                BOUNDS "fluid_error_avg<0.085" "wall_bias_avg>0" "wall_bias_avg<0.15"
                       "speed_ratio<0.09" "crossed_wall<0.5")
-# The same with the pseudo-Neumann walls (369 steps): low, as S finds: the floor −0.054 (both
-# precisions), concave corners −0.063, the arc −0.048, RMS 0.030; particles behind the bump at 6
-# steps (9 in float), never 0.5 dr deep (which stops a run). Bounds: the paper's sign by at least
+# The same with the pseudo-Neumann walls (367 steps): low, as S finds: the floor −0.055 (both
+# precisions), concave corners −0.064, the arc −0.049, RMS 0.030, no particle behind a wall (with
+# the arc in edges of dr/2, particles behind it at 6 steps, never 0.5 dr deep). Bounds: the paper's sign by at least
 # 3.5%, 1.5 times the measured bias below, 1.5 times the RMS.
 clsph_run_test(run_stab_shapes_bump_pseudo ${CMAKE_SOURCE_DIR}/cases/hydrostatic_shapes.lua
                SETS shape=1 neumann=0
@@ -1194,12 +1195,14 @@ clsph_run_test(run_dam_break_stab ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
                SETS stab=1 n=20 t_end=0.42 every=0.002
                BOUNDS "floor_speed_max<1" "front_over_ritter>0.6" "front_over_ritter<1"
                       "volume_ratio>0.999" "crossed_wall<0.5")
-# n = 40 to t = 0.72 s, sensor 1 against the experiment (1015 steps, 10.7 BiCGStab iterations a
-# step in double, 1054 and 6.4 in float; about 60 s and 36 s): the impact at t* = 2.4307 (double)
-# and 2.4311 (float), 0.54% and 0.53% before the experiment's; the peak 2.70 and 2.55 times its
-# (one sample); the mean over the 0.1 after the impact 0.39 and 0.23 of the experiment's (the ISPH
-# impact is a sharp peak and a trough, where the weakly-compressible scheme rings; its test holds
-# 0.75); the plateau over t* 3-4 1.06 and 1.16; no particle behind a wall. Bounds: the impact time
+# n = 40 to t = 0.72 s, sensor 1 against the experiment (1030 steps, 10.7 BiCGStab iterations a
+# step in double, 1009 in float; about 80 s and 63 s on shared cores): the impact 0.54% and 0.51%
+# before the experiment's; the peak 2.70 and 1.55 times its (one sample); the mean over the 0.1
+# after the impact 0.39 and 0.26 of the experiment's (the ISPH impact is a sharp peak and a trough,
+# where the weakly-compressible scheme rings; its test holds 0.75); the plateau over t* 3-4 1.20
+# and 1.18 (1.06 and 1.16 before the last rounding changes: the flow after the impact is chaotic);
+# no particle behind a wall. The same run to t = 1.1 s crosses the downstream corner at 0.64 s
+# (tests/validation/RESULTS_isph_stabilized.md). Bounds: the impact time
 # within 2.5% of the measured, the peak and mean as the riemann test's with the mean's floor at
 # 0.15, the plateau within 30%. In float this run once ran Δt down to a pressure of −9e9 Pa at
 # t = 0.71 s (the acceleration bound chasing the α/Δt² term), which the bound's floor stopped.

@@ -144,6 +144,60 @@ def lobovsky_section(runs):
     return out
 
 
+def hydrostatic_section(runs):
+    """Tanks at rest (cases/hydrostatic.lua, hydrostatic_shapes.lua): the pressure against
+    ρ g (H − y) relative to ρ g H, averaged over the samples of each run's second half, per wall
+    model: isph-stabilized's modified virtual marker and pseudo-Neumann walls (the stabilized ISPH
+    paper, sec 4.1: the pseudo-Neumann pressure low near the walls), isph-usaw's USAW walls."""
+    rows = [s for s in runs if s["case"] in ("hydrostatic", "hydrostatic_shapes")
+            and s["scheme"] in ("isph-stabilized", "isph-usaw")]
+    if not rows:
+        return []
+
+    def walls(s):
+        if s["scheme"] == "isph-usaw":
+            return "USAW"
+        return ("pseudo-Neumann" if s["parameters"].get("neumann", 1) == 0
+                else "modified virtual marker")
+
+    def shape(s):
+        if s["case"] == "hydrostatic":
+            return "flat"
+        return {1: "semicircular bump", 2: "pyramid and pit"}.get(
+            int(s["parameters"].get("shape", 1)), "?")
+
+    def f(m, k, fmt="+.3g"):
+        return format(m[k], fmt) if k in m else "–"
+    rows.sort(key=lambda s: (s["case"], shape(s), s["parameters"].get("dr", 0), s["scheme"],
+                             walls(s)))
+    out = ["", "## Tanks at rest: the walls' pressure", "",
+           "Errors against ρ g (H − y) relative to ρ g H, averaged over the samples of the run's "
+           "second half. Floor: the fluid within 3 dr of the floor (largest error / mean); "
+           "corners: the mean over the fluid within 3 dr of the concave corners (the tank's, the "
+           "bump's feet, the pyramid's feet, the pit's bottom) and of the convex ones (the bump's "
+           "arc, the pyramid's apex, the pit's rim); fluid: the RMS over the fluid deeper than "
+           "3 dr. Crossings: steps at which a particle was behind a wall.", "",
+           "| floor | dr | scheme | walls | floor error / bias | fluid RMS | concave / convex "
+           "| speed / √(gH) | crossings | steps | wall s | solver its mean |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for s in rows:
+        m = s.get("metrics", {})
+        if s["case"] == "hydrostatic":
+            floor = f"{f(m, 'bottom_error_avg', '.3g')} / {f(m, 'bottom_bias_avg')}"
+            fluid, corners = "–", "–"
+        else:
+            floor = f"{f(m, 'wall_error_avg', '.3g')} / {f(m, 'wall_bias_avg')}"
+            fluid = f(m, "fluid_error_avg", ".3g")
+            corners = f"{f(m, 'concave_bias_avg')} / {f(m, 'convex_bias_avg')}"
+        its = f"{s['solver']['iterations_mean']:.1f}" if s.get("solver") else ""
+        status = "" if s["status"] == "ok" else f" ({s['status']})"
+        out.append(f"| {shape(s)} | {s['parameters'].get('dr', 0):g} | {s['scheme']} "
+                   f"({s['precision']}){status} | {walls(s)} | {floor} | {fluid} | {corners} "
+                   f"| {f(m, 'speed_ratio', '.3g')} | {m.get('crossed_wall', '–')} "
+                   f"| {s['steps']:g} | {s['wall_seconds']:.1f} | {its} |")
+    return out
+
+
 def pair(m, a, b, fmt=".4f"):
     """Two metrics of a run as "a / b" ("–" for one it lacks)."""
     return " / ".join(format(m[k], fmt) if k in m else "–" for k in (a, b))
@@ -607,6 +661,7 @@ def main():
     lines += pressure_section(runs_dir)
     lines += square_cylinder_section(runs)
     lines += wedge_section(runs)
+    lines += hydrostatic_section(runs)
     lines += lobovsky_section(runs)
     lines += rans_section(runs)
     lines += profile_section(runs)
