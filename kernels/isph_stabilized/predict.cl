@@ -104,10 +104,11 @@ uint stab_scan_empty(uint i, realv xs, realv gss, const struct grid *gg,
  * d0 p_i = d0 p_s, ppe.cl; the dummies' rows come from walls.cl and ppe.cl) */
 __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const realv *ustar,
                           __global const realv *wall_vel, const real dt, const real inv_sigma0,
-                          const real beta_fs, const uint scan, const real alpha, const real rho0, const realv accel,
-                          const real fs_offset, const real d0, __global real *rho_star,
-                          __global uint *free_surface, __global uint *dirichlet, __global real *div,
-                          __global real *rhs, __global uint *flags)
+                          const real beta_fs, const uint scan, const real alpha, const real rho0,
+                          const realv accel, const real fs_offset, const real d0,
+                          __global real *rho_star, __global uint *free_surface,
+                          __global uint *dirichlet, __global real *div, __global real *rhs,
+                          __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -121,7 +122,7 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
   }
   const realv x = pos[i], u_i = ustar[i], xs = x + dt * u_i;
   real s = R(0.0), d = R(0.0);
-  realv gs = (realv)(R(0.0)); /* Σ V ∇W: −gs points out of the fluid */
+  realv gs = (realv)(R(0.0));  /* Σ V ∇W: −gs points out of the fluid */
   realv gss = (realv)(R(0.0)); /* the same at x*, for the scan */
   struct neigh_iter it;
   neigh_begin(&it, &g, x);
@@ -139,9 +140,8 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
     gs += vol[j] * gw;
   }
   const real ratio = s * inv_sigma0;
-  const uint fs = ratio < beta_fs && (scan == 0u || stab_scan_empty(i, xs, gss, &g, cell_start,
-                                                                     pos, kind, ustar, wall_vel,
-                                                                     dt));
+  const uint fs = ratio < beta_fs && (scan == 0u || stab_scan_empty(i, xs, gss, &g, cell_start, pos,
+                                                                    kind, ustar, wall_vel, dt));
   /* a free-surface particle: the pressure fs_offset inside the surface, −ρ0 a·n fs_offset along
    * its outward normal n (≥ 0) */
   const real gn = length(gs);

@@ -46,10 +46,10 @@ __kernel void stab_project(OP_ARGS, __global const uint *kind, __global const re
  * taken for behind it (cases/hydrostatic_shapes.lua shape = 2 stopped at its second step). The
  * band: next to a convex apex the wall points are sparse (its dummies' nearest points all lie on
  * one flank), and a particle in front of the other flank read as behind the first. Only wall
- * points within 2 dr count (a crossing deeper than that has long stopped the run). A crossing raises CLSPH_FLAG_WALL, counts in flags[1] and
- * keeps the deepest distance behind the wall in flags[2] (usaw/gamma.cl's protocol, which
- * host/sim/checks.c reads). The dummies' positions do not change here, so the loop reads them
- * from the same array the fluid writes. */
+ * points within 2 dr count (a crossing deeper than that has long stopped the run). A crossing
+ * raises CLSPH_FLAG_WALL, counts in flags[1] and keeps the deepest distance behind the wall in
+ * flags[2] (usaw/gamma.cl's protocol, which host/sim/checks.c reads). The dummies' positions do not
+ * change here, so the loop reads them from the same array the fluid writes. */
 __kernel void stab_move(const uint n, const struct grid g, __global const uint *cell_start,
                         __global const uint *kind, __global const realv *vel,
                         __global const real *dist, __global const realv *normal, const real dt,
