@@ -24,6 +24,11 @@ def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     prefix, runs = sys.argv[1], [a.split("=", 1) for a in sys.argv[2:]]
+    for r in runs:
+        # the label is the CSV's first column and gnuplot's selector: no separator, no quote
+        if len(r) != 2 or any(c in r[0] for c in ",'\""):
+            sys.exit(f"lobovsky_chart.py: '{'='.join(r)}' is not LABEL=DIR with a label free of "
+                     "commas and quotes")
     rows, keys = [], []
     with open(EXPERIMENT) as f:
         lines = [ln for ln in f if not ln.startswith("#")]
