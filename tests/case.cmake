@@ -1076,6 +1076,11 @@ clsph_cli_test(stab_thin_wall ARGS info ${bad_stab} --set what=7 RC 2
                REGEX "bad_stab.lua:22: wall \\(group 'plate'\\) is too thin for the virtual markers: .* make it at least 0.38 m thick")
 clsph_cli_test(stab_marker_outside ARGS info ${bad_stab} --set what=8 RC 2
                REGEX "bad_stab.lua:25: wall \\(group 'lid'\\): the virtual marker of the dummy at .* falls at .*, outside the domain")
+# a scene without a gate builds no gate field; the dam break with one does
+clsph_cli_test(stab_no_gate_field ARGS info ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua --set stab=1
+               RC 0 REGEX "fields: pos .* dirichlet" NOT_REGEX " gate \\(")
+clsph_cli_test(stab_gate_field ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua --set stab=1
+               --set gate=1 RC 0 REGEX "fields: pos .* gate \\(4 B\\)")
 clsph_cli_test(stab_gate_group ARGS info ${bad_stab} --set what=9 RC 2
                REGEX "bad_stab.lua:18: isph-stabilized option gate = \"door\": no wall has that group \\(groups: walls\\)")
 clsph_cli_test(stab_gate_alone ARGS info ${bad_stab} --set what=10 RC 2

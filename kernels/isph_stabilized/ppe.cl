@@ -206,7 +206,8 @@ __kernel void stab_wall_neumann(const uint n, const struct grid g, __global cons
   const uint i = get_global_id(0);
   if (i >= n || kind[i] == STAB_FLUID) return;
   const realv xw = pos[i], xv = stab_pmarker(i, pos, dist, normal);
-  const realv f = gate[i] != 0u ? force - a_gate : force; /* f = g − a_W */
+  /* f = g − a_W; gate is NULL in a scene without a gate */
+  const realv f = gate != 0 && gate[i] != 0u ? force - a_gate : force;
   real ws = R(0.0), s = R(0.0), sp = R(0.0);
   struct neigh_iter it;
   neigh_begin(&it, &g, xv);

@@ -375,7 +375,8 @@ static enum clsph_status wall_neumann(struct sim *sim, struct stab *b, double dt
   cl_mem normal = pset_mem(ps, b->f_normal), rhs = pset_mem(ps, b->f_rhs);
   cl_mem dir = pset_mem(ps, b->f_dir), p = pset_mem(ps, b->f_p);
   cl_mem vel = pset_mem(ps, sim->f_vel), uwall = pset_mem(ps, b->f_uwall);
-  cl_mem gate = pset_mem(ps, b->f_gate);
+  /* no gate: a NULL buffer (OpenCL 1.2 clSetKernelArg), which ppe.cl reads as "no dummy moves" */
+  cl_mem gate = b->has_gate ? pset_mem(ps, b->f_gate) : NULL;
   CLSPH_TRY(KERN_SET(b->k_neumann, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
                      KARG(pos), KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(rho),
                      KARG(force), KARG(d0), KARG(p), KARG(vel), KARG(uwall), KARG(rdt), KARG(gate),
@@ -557,10 +558,11 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
     CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
   }
-  {
+  b->f_gate = -1; /* a scene without a gate pays nothing for it */
+  if (b->has_gate) {
     cl_uint *gate = calloc(geo->n + 1, sizeof *gate);
     CLSPH_CHECK(gate != NULL, CLSPH_E_NOMEM, "out of memory");
-    for (size_t i = 0; i < geo->n && b->has_gate; ++i)
+    for (size_t i = 0; i < geo->n; ++i)
       gate[i] = geo->kind[i] == KIND_DUMMY && strcmp(sc->walls[geo->group[i]].group, b->gate) == 0;
     st = pset_add(ps, sim->dev, "gate", sizeof(cl_uint), gate, &b->f_gate);
     free(gate);
