@@ -55,11 +55,11 @@
 -- column behind a gate at x = L (0.5 m tall, three dummy layers thick) that lifts 0.4 m at
 -- gate_speed from t = 0 (S sec 4.2 and the refdata's secondary source: 4.53 m/s), as the
 -- experiment's; gate_lift (a metric) is how far its lowest dummy rose. checkpoint: s between
--- checkpoints (0: none).
+-- checkpoints (0: none). dyn = 1: isph-stabilized's pressure_form = "dynamic".
 param { n = 20, t_end = 0.4, wcsph = 0, riemann = 0, every = 0.001, cfl = 1,
         tvf = 2, ard = 0, stab = 0, neumann = 1, alpha = 0.01, gate = 0, gate_speed = 4.53,
-        checkpoint = 0 }
-for k, v in pairs({ stab = stab, neumann = neumann, gate = gate }) do
+        checkpoint = 0, dyn = 0 }
+for k, v in pairs({ stab = stab, neumann = neumann, gate = gate, dyn = dyn }) do
   if v ~= 0 and v ~= 1 then error(("dam_break: %s must be 0 or 1, not %g"):format(k, v)) end
 end
 if gate == 1 and stab ~= 1 then
@@ -76,7 +76,8 @@ if stab == 1 then
   scheme { "isph-stabilized", alpha = alpha,
            wall_pressure = neumann == 1 and "neumann" or "pseudo_neumann",
            gate = gate == 1 and "gate" or nil, gate_speed = gate == 1 and gate_speed or nil,
-           gate_stop = gate == 1 and 0.4 / gate_speed or nil }
+           gate_stop = gate == 1 and 0.4 / gate_speed or nil,
+           pressure_form = dyn == 1 and "dynamic" or "total" }
 elseif riemann == 1 then
   scheme { "wcsph-riemann", sound_speed = 10 * U, ard = ard,
            transport_velocity = ({"off", "full", "limited"})[tvf + 1] }

@@ -12,7 +12,8 @@
 -- slope or an arc the first row therefore stands between dr/2 and about dr off the wall.
 -- stab = 1 (default) runs isph-stabilized (neumann = 1: the modified virtual marker's Neumann wall
 -- pressure, 0: pseudo-Neumann; alpha, cfl as in hydrostatic.lua); stab = 0 runs isph-usaw on the
--- same floor. Every run starts from ρ g (H − y).
+-- same floor. dyn = 1 gives isph-stabilized pressure_form = "dynamic" (its pressure equation solved
+-- for p − ρ0 g·x). Every run starts from ρ g (H − y).
 -- Metrics, all relative to ρ g H and against ρ g (H − y), over the samples (40 a run) of the run's
 -- second half and at the end:
 --   fluid_error: the RMS over the fluid deeper than 3 dr below the surface (the whole fluid);
@@ -24,8 +25,8 @@
 --   there against ρ g (H − y) (the paper's measuring point, the middle of the bottom);
 --   speed_ratio: the largest speed over √(g H); crossed_wall: steps with a particle behind a wall.
 param { dr = 0.005, t_end = 1, shape = 1, clear = 0.3, stab = 1, neumann = 1, alpha = 0.01, cfl = 1,
-        scan = 1 }
-for k, v in pairs({ stab = stab, neumann = neumann, scan = scan }) do
+        scan = 1, dyn = 0 }
+for k, v in pairs({ stab = stab, neumann = neumann, scan = scan, dyn = dyn }) do
   if v ~= 0 and v ~= 1 then error(("hydrostatic_shapes: %s must be 0 or 1, not %g"):format(k, v)) end
 end
 if shape ~= 1 and shape ~= 2 then
@@ -110,7 +111,8 @@ particles { dr = dr }
 if stab == 1 then
   scheme { "isph-stabilized", alpha = alpha,
            wall_pressure = neumann == 1 and "neumann" or "pseudo_neumann",
-           surface_detection = scan == 1 and "scan" or "density" }
+           surface_detection = scan == 1 and "scan" or "density",
+           pressure_form = dyn == 1 and "dynamic" or "total" }
 else
   scheme { "isph-usaw" }
 end

@@ -220,7 +220,7 @@ __kernel void stab_wall_neumann(const uint n, const struct grid g, __global cons
     if (r2 >= SMOOTH_SUPPORT2) continue;
     const real w = vol[j] * smoothing_w(sqrt(r2));
     ws += w;
-    s += w * dot(f, xw - xj);
+    s += w * dot(f - STAB_DYNAMIC * force, xw - xj); /* P_w − P_k: (f − a)·(x_w − x_k) */
     /* the approach: (u_j − u_W)·n < 0 */
     const real vn = dot(vel[j] - wall_vel[i], normal[i]);
     s += w * fmax(R(0.0), -vn) / dt * dot(normal[i], xj - xw);
@@ -235,12 +235,22 @@ __kernel void stab_wall_neumann(const uint n, const struct grid g, __global cons
   }
   const int lagged = wet && !seen;
   const int fixed = !wet || lagged;
-  real b = R(0.0);
+  real b = -d0 * STAB_DYNAMIC * rho0 * dot(force, xw); /* dry: p_w = 0 */
   if (lagged)
-    b = d0 * fmax(R(0.0), (sp + rho0 * s) / ws);
+    b = d0 * (fmax(R(0.0), (sp + rho0 * s) / ws) - STAB_DYNAMIC * rho0 * dot(force, xw));
   else if (wet)
     b = d0 * rho0 * s / ws;
   if (!isfinite(b)) flags_raise(flags, CLSPH_FLAG_NAN);
   dirichlet[i] = (uint)fixed;
   rhs[i] = b;
+}
+
+/* p += sign ρ0 a·x (pressure_form = "dynamic": the solve's unknown is P = p − ρ0 a·x, so that the
+ * hydrostatic part never meets a truncated support; Leroy et al. 2014 eqs 41-42) */
+__kernel void stab_hydro_shift(const uint n, __global const realv *pos, const real rho0,
+                               const realv accel, const real sign, __global real *p)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  p[i] += sign * rho0 * dot(accel, pos[i]);
 }

@@ -145,7 +145,16 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
   /* a free-surface particle: the pressure fs_offset inside the surface, −ρ0 a·n fs_offset along
    * its outward normal n (≥ 0) */
   const real gn = length(gs);
-  const real pfs = gn > R(0.0) ? fmax(R(0.0), rho0 * fs_offset * dot(accel, gs) / gn) : R(0.0);
+  real pfs = gn > R(0.0) ? fmax(R(0.0), rho0 * fs_offset * dot(accel, gs) / gn) : R(0.0);
+#if STAB_DYNAMIC
+  /* a surface facing up (within 60° of −a): the whole ρ0 |a| fs_offset, whatever the tilt of its
+   * normal, which the dummies above the water bend at a wall: under a level surface P = p − ρ0 a·x
+   * is then the same on every surface row, and a tank at rest stays at rest to the solver's
+   * tolerance. The dummies' rows and the free-surface rows carry the shift too (ppe.cl). */
+  if (gn > R(0.0) && dot(accel, gs) / gn > R(0.5) * length(accel))
+    pfs = rho0 * fs_offset * length(accel);
+  pfs -= rho0 * dot(accel, x);
+#endif
   const real b = fs ? d0 * pfs : rho0 / dt * d + alpha * rho0 * (R(1.0) - ratio) / (dt * dt);
   if (!isfinite(b)) flags_raise(flags, CLSPH_FLAG_NAN);
   rho_star[i] = ratio;

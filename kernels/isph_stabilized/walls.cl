@@ -21,6 +21,9 @@
  *     gives p_w = 0 (no fluid near: nothing to hold). CHOICE: p_w ≥ 0, as the free surface's:
  *     above the water the carry ρ0 a·(x_w − x_m) is negative, a tension that pulls the contact
  *     line's particles into the wall. */
+#ifndef STAB_DYNAMIC /* isph_stabilized.c stab_define: pressure_form = "dynamic" */
+#define STAB_DYNAMIC 0
+#endif
 #define STAB_FLUID 0u
 #define STAB_DUMMY 2u
 
@@ -67,7 +70,7 @@ __kernel void stab_wall_pressure(const uint n, const struct grid g, __global con
       s.wsum > R(0.0) ? fmax(R(0.0), s.p / s.wsum + rho0 * dot(accel, xw - xm)) : R(0.0);
   if (!isfinite(pw)) flags_raise(flags, CLSPH_FLAG_NAN);
   p[i] = pw;
-  if (write_rhs) rhs[i] = d0 * pw;
+  if (write_rhs) rhs[i] = d0 * (pw - STAB_DYNAMIC * rho0 * dot(accel, xw)); /* P_w (dynamic) */
 }
 
 /* The gate's dummies (gate[i] != 0) translate by disp and move at v (the host integrates the
