@@ -116,7 +116,14 @@ def lobovsky_section(runs):
     rows = [s for s in runs if s["case"] == "dam_break"]
     if not rows:
         return []
-    rows.sort(key=lambda s: (s["scheme"], s["parameters"].get("n", 0)))
+
+    def variant(s):  # the gate, isph-stabilized's dynamic pressure form, the run's end time
+        p = s["parameters"]
+        v = [w for w, on in (("gate", p.get("gate", 0) == 1), ("dynamic p", p.get("dyn", 0) == 1))
+             if on]
+        v.append(f"to {p.get('t_end', 0):g} s")
+        return ", ".join(v)
+    rows.sort(key=lambda s: (s["scheme"], s["parameters"].get("n", 0), variant(s)))
 
     def f(m, k, fmt=".3g"):
         return format(m[k], fmt) if k in m else "–"
@@ -136,7 +143,8 @@ def lobovsky_section(runs):
         front = " / ".join(f(m, k, ".2f") for k in ("front_x_star_t1", "front_x_star_t1p5",
                                                      "front_x_star_t2"))
         err = f"{100 * m['impact_time_error']:+.1f}%" if "impact_time_error" in m else "–"
-        out.append(f"| {s['scheme']} ({s['precision']}) | {s['parameters'].get('n', 0):g} "
+        out.append(f"| {s['scheme']} ({s['precision']}; {variant(s)}) "
+                   f"| {s['parameters'].get('n', 0):g} "
                    f"| {s['status']} | {f(m, 'impact_t_star', '.3f')} | {err} "
                    f"| {f(m, 'impact_mean_ratio')} | {f(m, 'peak_ratio')} "
                    f"| {f(m, 'plateau_ratio')} | {f(m, 'plateau2_ratio')} | {f(m, 'rms_p_star')} "
@@ -148,7 +156,8 @@ def hydrostatic_section(runs):
     """Tanks at rest (cases/hydrostatic.lua, hydrostatic_shapes.lua): the pressure against
     ρ g (H − y) relative to ρ g H, averaged over the samples of each run's second half, per wall
     model: isph-stabilized's modified virtual marker and pseudo-Neumann walls (the stabilized ISPH
-    paper, sec 4.1: the pseudo-Neumann pressure low near the walls), isph-usaw's USAW walls."""
+    paper, sec 4.1: the pseudo-Neumann pressure low near the walls; "dynamic p": its pressure_form
+    = "dynamic"), isph-usaw's USAW walls."""
     rows = [s for s in runs if s["case"] in ("hydrostatic", "hydrostatic_shapes")
             and s["scheme"] in ("isph-stabilized", "isph-usaw")]
     if not rows:
@@ -157,8 +166,10 @@ def hydrostatic_section(runs):
     def walls(s):
         if s["scheme"] == "isph-usaw":
             return "USAW"
-        return ("pseudo-Neumann" if s["parameters"].get("neumann", 1) == 0
-                else "modified virtual marker")
+        w = ("pseudo-Neumann" if s["parameters"].get("neumann", 1) == 0
+             else "modified virtual marker")
+        # pressure_form = "dynamic": the pressure equation solved for p − ρ0 g·x
+        return w + (", dynamic p" if s["parameters"].get("dyn", 0) == 1 else "")
 
     def shape(s):
         if s["case"] == "hydrostatic":

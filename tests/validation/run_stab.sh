@@ -22,11 +22,16 @@ for dr in 0.01 0.005; do
   run tank_dr${dr}_stab_pseudo hydrostatic stab=1 neumann=0 depth=0.2 width=0.2 dr=$dr t_end=2
   run tank_dr${dr}_isph_usaw hydrostatic depth=0.2 width=0.2 dr=$dr t_end=2
 done
+# pressure_form = "dynamic" (the pressure equation solved for p − ρ0 g·x) on the same tanks
+for dr in 0.01 0.005; do
+  run tank_dr${dr}_stab_dynamic hydrostatic stab=1 dyn=1 depth=0.2 width=0.2 dr=$dr t_end=2
+done
 # The shaped floors (S fig 4 in 2-D) at dr = 0.005, 2 s
 for shape in 1 2; do
   run shapes${shape}_stab_neumann hydrostatic_shapes shape=$shape t_end=2
   run shapes${shape}_stab_pseudo hydrostatic_shapes shape=$shape neumann=0 t_end=2
   run shapes${shape}_isph_usaw hydrostatic_shapes shape=$shape stab=0 t_end=2
+  run shapes${shape}_stab_dynamic hydrostatic_shapes shape=$shape dyn=1 t_end=2
 done
 # The Lobovsky dam break (S sec 4.2) to t = 1.1 s (t* = 6.3): isph-usaw and wcsph-riemann at
 # n = 40 and 80, isph-stabilized with and without the gate at n = 40
@@ -42,6 +47,9 @@ for n in 40 80; do
   run lobovsky_n${n}_stab_t0.72 dam_break stab=1 n=$n t_end=0.72
   run lobovsky_n${n}_stab_gate_t0.72 dam_break stab=1 gate=1 n=$n t_end=0.72
 done
+# the same at n = 40 with pressure_form = "dynamic"
+run lobovsky_n40_stab_dynamic_t0.72 dam_break stab=1 dyn=1 n=40 t_end=0.72
+run lobovsky_n40_stab_dynamic_gate_t0.72 dam_break stab=1 dyn=1 gate=1 n=40 t_end=0.72
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_isph_stabilized.md
 python3 tests/validation/lobovsky_chart.py tests/validation/lobovsky_sensor1 \
   "isph-stabilized (n 40)=$out/lobovsky_n40_stab" \
