@@ -1061,34 +1061,34 @@ clsph_cli_test(stab_alpha_range ARGS info ${CMAKE_SOURCE_DIR}/cases/hydrostatic.
                REGEX "hydrostatic.lua:[0-9]+: isph-stabilized option alpha = 1.5 is out of range: the relaxation coefficient")
 set(bad_stab ${CASE_DIR}/bad_stab.lua)
 clsph_cli_test(stab_alpha_text ARGS info ${bad_stab} --set what=1 RC 2
-               REGEX "bad_stab.lua:18: isph-stabilized option alpha must be a number from 0 to 1, not \"small\"")
+               REGEX "bad_stab.lua:20: isph-stabilized option alpha must be a number from 0 to 1, not \"small\"")
 clsph_cli_test(stab_bad_wall_pressure ARGS info ${bad_stab} --set what=2 RC 2
-               REGEX "bad_stab.lua:18: isph-stabilized option wall_pressure must be one of \"pseudo_neumann\", \"neumann\", not \"dirichlet\"")
+               REGEX "bad_stab.lua:20: isph-stabilized option wall_pressure must be one of \"pseudo_neumann\", \"neumann\", not \"dirichlet\"")
 clsph_cli_test(stab_slip_twice ARGS info ${bad_stab} --set what=3 RC 2
-               REGEX "bad_stab.lua:18: .*give wall_velocity or slip_ratio, not both")
+               REGEX "bad_stab.lua:20: .*give wall_velocity or slip_ratio, not both")
 clsph_cli_test(stab_surface_threshold ARGS info ${bad_stab} --set what=4 RC 2
-               REGEX "bad_stab.lua:18: isph-stabilized option surface_threshold = 1.2 is out of range")
+               REGEX "bad_stab.lua:20: isph-stabilized option surface_threshold = 1.2 is out of range")
 clsph_cli_test(stab_bad_wall_velocity ARGS info ${bad_stab} --set what=5 RC 2
-               REGEX "bad_stab.lua:18: isph-stabilized option wall_velocity must be one of \"no_slip\", \"slip\", not \"sticky\"")
+               REGEX "bad_stab.lua:20: isph-stabilized option wall_velocity must be one of \"no_slip\", \"slip\", not \"sticky\"")
 clsph_cli_test(stab_wall_layers ARGS info ${bad_stab} --set what=6 RC 2
                REGEX "bad_stab.lua: isph-stabilized: wall_layers = 1 puts dummies .* wall_layers >= 2")
 clsph_cli_test(stab_thin_wall ARGS info ${bad_stab} --set what=7 RC 2
-               REGEX "bad_stab.lua:22: wall \\(group 'plate'\\) is too thin for the virtual markers: .* make it at least 0.38 m thick")
+               REGEX "bad_stab.lua:29: wall \\(group 'plate'\\) is too thin for the virtual markers: .* make it at least 0.38 m thick")
 clsph_cli_test(stab_marker_outside ARGS info ${bad_stab} --set what=8 RC 2
-               REGEX "bad_stab.lua:25: wall \\(group 'lid'\\): the virtual marker of the dummy at .* falls at .*, outside the domain")
+               REGEX "bad_stab.lua:32: wall \\(group 'lid'\\): the virtual marker of the dummy at .* falls at .*, outside the domain")
 # a scene without a gate builds no gate field; the dam break with one does
 clsph_cli_test(stab_no_gate_field ARGS info ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua --set stab=1
                RC 0 REGEX "fields: pos .* dirichlet" NOT_REGEX " gate \\(")
 clsph_cli_test(stab_gate_field ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua --set stab=1
                --set gate=1 RC 0 REGEX "fields: pos .* gate \\(4 B\\)")
 clsph_cli_test(stab_gate_group ARGS info ${bad_stab} --set what=9 RC 2
-               REGEX "bad_stab.lua:18: isph-stabilized option gate = \"door\": no wall has that group \\(groups: walls\\)")
+               REGEX "bad_stab.lua:20: isph-stabilized option gate = \"door\": no wall has that group \\(groups: walls\\)")
 clsph_cli_test(stab_gate_alone ARGS info ${bad_stab} --set what=10 RC 2
-               REGEX "bad_stab.lua:18: isph-stabilized option gate_speed needs gate = ")
+               REGEX "bad_stab.lua:20: isph-stabilized option gate_speed needs gate = ")
 clsph_cli_test(stab_gate_order ARGS info ${bad_stab} --set what=11 RC 2
-               REGEX "bad_stab.lua:18: isph-stabilized option gate_stop = 0.2 s must come after gate_start = 0.5 s")
+               REGEX "bad_stab.lua:20: isph-stabilized option gate_stop = 0.2 s must come after gate_start = 0.5 s")
 clsph_cli_test(stab_gate_travel ARGS info ${bad_stab} --set what=12 RC 2
-               REGEX "bad_stab.lua:20: isph-stabilized: the gate \\(group 'walls'\\) leaves the domain: after its lift of 10 m")
+               REGEX "bad_stab.lua:26: isph-stabilized: the gate \\(group 'walls'\\) leaves the domain: after its lift of 10 m")
 clsph_cli_test(stab_sections ARGS info ${CASE_DIR}/bad_open_scheme.lua --set usaw=2 RC 2
                REGEX "bad_open_scheme.lua: isph-stabilized has no inflow or outflow sections")
 # The paper's tank (S sec 4.1: 0.2 m of water, 0.2 m wide, dr = 0.01 m), from the hydrostatic
@@ -1216,6 +1216,8 @@ clsph_run_test(run_stab_shapes_pit_dynamic ${CMAKE_SOURCE_DIR}/cases/hydrostatic
 clsph_cli_test(stab_dynamic_pseudo ARGS info ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua --set stab=1
                --set dyn=1 --set neumann=0 RC 2
                REGEX "hydrostatic.lua:[0-9]+: isph-stabilized option pressure_form = \"dynamic\" needs wall_pressure = \"neumann\"")
+clsph_cli_test(stab_dynamic_periodic ARGS info ${bad_stab} --set what=14 RC 2
+               REGEX "bad_stab.lua:20: isph-stabilized option pressure_form = \"dynamic\" cannot run with gravity or a body force along the periodic x axis")
 clsph_cli_test(stab_bad_pressure_form ARGS info ${bad_stab} --set what=13 RC 2
                REGEX "bad_stab.lua:[0-9]+: isph-stabilized option pressure_form must be one of \"total\", \"dynamic\", not \"split\"")
 # The Lobovsky dam break (cases/dam_break.lua), n = 20, to t = 0.42 s (253 steps, 9.1 BiCGStab

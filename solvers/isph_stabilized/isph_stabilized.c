@@ -202,6 +202,13 @@ static enum clsph_status read_options(const struct sim *sim, struct stab *b)
               "\"neumann\" (the modified virtual marker): the pseudo-Neumann walls' pressure is "
               "mapped from the last step's and does not hold the hydrostatic part exactly",
               sc->case_path, sc->scheme_line);
+  /* P = p − ρ0 a·x jumps by ρ0 a·L across a periodic axis along which a pushes */
+  for (int a = 0; a < 2 && b->dynamic; ++a)
+    CLSPH_CHECK(!sc->periodic[a] || sc->gravity[a] + sc->body_force[a] == 0.0, CLSPH_E_INPUT,
+                "%s:%d: isph-stabilized option pressure_form = \"dynamic\" cannot run with gravity "
+                "or a body force along the periodic %c axis (%g m/s²): its unknown p − ρ0 a·x "
+                "would jump across the period",
+                sc->case_path, sc->scheme_line, "xy"[a], sc -> gravity[a] + sc -> body_force[a]);
   /* the gate */
   const struct scene_option *go = option(sc, "gate");
   static const char *const gate_keys[] = {"gate_speed", "gate_start", "gate_stop"};
