@@ -1244,7 +1244,7 @@ clsph_run_test(run_dam_break_stab_dynamic ${CMAKE_SOURCE_DIR}/cases/dam_break.lu
 # after the impact 0.39 and 0.26 of the experiment's (the ISPH impact is a sharp peak and a trough,
 # where the weakly-compressible scheme rings; its test holds 0.75); the plateau over t* 3-4 1.20
 # and 1.18 (1.06 and 1.16 before the last rounding changes: the flow after the impact is chaotic);
-# no particle behind a wall. The same run to t = 1.1 s crosses the downstream corner at 0.64 s
+# no particle behind a wall. The same run to t = 1.1 s clusters at 1.04 s
 # (tests/validation/RESULTS_isph_stabilized.md). Bounds: the impact time
 # within 2.5% of the measured, the peak and mean as the riemann test's with the mean's floor at
 # 0.15, the plateau within 30%. In float this run once ran Δt down to a pressure of −9e9 Pa at
