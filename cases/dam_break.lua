@@ -65,6 +65,9 @@ end
 if gate == 1 and stab ~= 1 then
   error("dam_break: gate = 1 needs stab = 1 (isph-stabilized moves the gate)")
 end
+if dyn == 1 and stab ~= 1 then
+  error("dam_break: dyn = 1 needs stab = 1 (isph-stabilized's pressure_form)")
+end
 
 local g, H, L, tank, top, rho = 9.81, 0.3, 0.6, 1.61, 1.0, 997
 local dr = H / n

@@ -33,6 +33,9 @@ for k, v in pairs({ stab = stab, neumann = neumann, slip = slip, direct = direct
                     recompute = recompute, start_p = start_p, dyn = dyn }) do
   if v ~= 0 and v ~= 1 then error(("hydrostatic: %s must be 0 or 1, not %g"):format(k, v)) end
 end
+if dyn == 1 and stab ~= 1 then
+  error("hydrostatic: dyn = 1 needs stab = 1 (isph-stabilized's pressure_form)")
+end
 
 local g = 9.81
 domain { 0, 0, width, 1.5 * depth }

@@ -29,6 +29,9 @@ param { dr = 0.005, t_end = 1, shape = 1, clear = 0.3, stab = 1, neumann = 1, al
 for k, v in pairs({ stab = stab, neumann = neumann, scan = scan, dyn = dyn }) do
   if v ~= 0 and v ~= 1 then error(("hydrostatic_shapes: %s must be 0 or 1, not %g"):format(k, v)) end
 end
+if dyn == 1 and stab ~= 1 then
+  error("hydrostatic_shapes: dyn = 1 needs stab = 1 (isph-stabilized's pressure_form)")
+end
 if shape ~= 1 and shape ~= 2 then
   error(("hydrostatic_shapes: shape must be 1 (the semicircular bump) or 2 (the pyramid and the " ..
          "pit), not %g"):format(shape))

@@ -1218,6 +1218,13 @@ clsph_cli_test(stab_dynamic_pseudo ARGS info ${CMAKE_SOURCE_DIR}/cases/hydrostat
                REGEX "hydrostatic.lua:[0-9]+: isph-stabilized option pressure_form = \"dynamic\" needs wall_pressure = \"neumann\"")
 clsph_cli_test(stab_dynamic_periodic ARGS info ${bad_stab} --set what=14 RC 2
                REGEX "bad_stab.lua:20: isph-stabilized option pressure_form = \"dynamic\" cannot run with gravity or a body force along the periodic x axis")
+# the cases' dyn parameter is isph-stabilized's: with another scheme it is refused, not ignored
+clsph_cli_test(case_dyn_without_stab ARGS info ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
+               --set dyn=1 RC 2 REGEX "hydrostatic: dyn = 1 needs stab = 1")
+clsph_cli_test(case_dyn_without_stab_dam_break ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
+               --set dyn=1 --set riemann=1 RC 2 REGEX "dam_break: dyn = 1 needs stab = 1")
+clsph_cli_test(case_dyn_without_stab_shapes ARGS info ${CMAKE_SOURCE_DIR}/cases/hydrostatic_shapes.lua
+               --set dyn=1 --set stab=0 RC 2 REGEX "hydrostatic_shapes: dyn = 1 needs stab = 1")
 clsph_cli_test(stab_bad_pressure_form ARGS info ${bad_stab} --set what=13 RC 2
                REGEX "bad_stab.lua:[0-9]+: isph-stabilized option pressure_form must be one of \"total\", \"dynamic\", not \"split\"")
 # The Lobovsky dam break (cases/dam_break.lua), n = 20, to t = 0.42 s (253 steps, 9.1 BiCGStab
