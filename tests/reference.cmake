@@ -34,3 +34,15 @@ channel1d_cli_test(channel1d_cli_rows_nan ARGS --rows nan RC 2
                    REGEX "--rows must be a whole number from 1 to 1e7, not nan")
 channel1d_cli_test(channel1d_cli_cells_fraction ARGS --cells 20.5 RC 2
                    REGEX "--cells must be a whole number from 1 to 1e7, not 20.5")
+
+# The kernel sums' ∂u/∂y on the 1-D solution laid on a run's rows (RESULTS_rans.md: what puts the
+# channel's u_τ over the 1-D solver's), tests/validation/channel_ke_gradient_bias.py: at N_f = 40
+# the production of rows 2 on is 8.5% over the model's and the third row's gradient 6.3% over the
+# exact one (deterministic: the Wendland sums on a lattice of the stored profile).
+if(Python3_Interpreter_FOUND)
+  clsph_add_test(channel_ke_gradient_bias LABELS unit COMMAND ${CMAKE_COMMAND}
+                 "-DCMD=${Python3_EXECUTABLE}|${CMAKE_SOURCE_DIR}/tests/validation/channel_ke_gradient_bias.py|${CMAKE_SOURCE_DIR}/tests/data|40"
+                 -DRC=0 "-DREGEX=# N_f = 40: production over rows 2 on 1\\.084[0-9] of the model's"
+                 "-DREGEX2=40,3,0\\.1474,1\\.06[23][0-9],1\\.129[0-9]" "-DENV="
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect.cmake)
+endif()
