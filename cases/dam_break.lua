@@ -55,10 +55,11 @@
 -- column behind a gate at x = L (0.5 m tall, three dummy layers thick) that lifts 0.4 m at
 -- gate_speed from t = 0 (S sec 4.2 and the refdata's secondary source: 4.53 m/s), as the
 -- experiment's; gate_lift (a metric) is how far its lowest dummy rose. checkpoint: s between
--- checkpoints (0: none). dyn = 1: isph-stabilized's pressure_form = "dynamic".
+-- checkpoints (0: none). dyn = 1: isph-stabilized's pressure_form = "dynamic"; shift = C > 0 its
+-- particle shifting (option shifting).
 param { n = 20, t_end = 0.4, wcsph = 0, riemann = 0, every = 0.001, cfl = 1,
         tvf = 2, ard = 0, stab = 0, neumann = 1, alpha = 0.01, gate = 0, gate_speed = 4.53,
-        checkpoint = 0, dyn = 0 }
+        checkpoint = 0, dyn = 0, shift = 0 }
 for k, v in pairs({ stab = stab, neumann = neumann, gate = gate, dyn = dyn }) do
   if v ~= 0 and v ~= 1 then error(("dam_break: %s must be 0 or 1, not %g"):format(k, v)) end
 end
@@ -67,6 +68,12 @@ if gate == 1 and stab ~= 1 then
 end
 if dyn == 1 and stab ~= 1 then
   error("dam_break: dyn = 1 needs stab = 1 (isph-stabilized's pressure_form)")
+end
+if shift ~= 0 and stab ~= 1 then
+  error("dam_break: shift needs stab = 1 (isph-stabilized's particle shifting)")
+end
+if shift < 0 then
+  error(("dam_break: shift must be 0 (off) or a shifting coefficient C > 0, not %g"):format(shift))
 end
 
 local g, H, L, tank, top, rho = 9.81, 0.3, 0.6, 1.61, 1.0, 997
@@ -80,7 +87,8 @@ if stab == 1 then
            wall_pressure = neumann == 1 and "neumann" or "pseudo_neumann",
            gate = gate == 1 and "gate" or nil, gate_speed = gate == 1 and gate_speed or nil,
            gate_stop = gate == 1 and 0.4 / gate_speed or nil,
-           pressure_form = dyn == 1 and "dynamic" or "total" }
+           pressure_form = dyn == 1 and "dynamic" or "total",
+           shifting = shift > 0 and shift or nil }
 elseif riemann == 1 then
   scheme { "wcsph-riemann", sound_speed = 10 * U, ard = ard,
            transport_velocity = ({"off", "full", "limited"})[tvf + 1] }

@@ -18,14 +18,14 @@
 -- application, layers the dummy layers (wall_layers); the paper's tank is --set stab=1
 -- depth=0.2 width=0.2 dr=0.01; it starts from ρ g (H − z) (start_p = 0: from p = 0), cfl scales
 -- the time step, dyn = 1 its pressure_form = "dynamic" (the pressure equation solved for
--- p − ρ0 g·x).
+-- p − ρ0 g·x), shift = C > 0 its particle shifting (option shifting).
 -- bottom_error is the largest |p − ρ g (H − z)| / (ρ g H) over the fluid particles within 3 dr of
 -- the floor, bottom_bias its signed mean: measured on the particles, because an interpolation next
 -- to the floor is one-sided and biased by about ρ g dr/2 by itself. bottom_error_avg and
 -- bottom_bias_avg are their means over the samples (40 a run) of the run's second half.
 param { dr = 0.02, t_end = 5, depth = 1, width = 1, surface_offset = 0.5, wcsph = 0, dynamic = 1,
         riemann = 0, tvf = 2, wallp = 0, stab = 0, neumann = 1, alpha = 0.01, slip = 0,
-        direct = 0, recompute = 0, layers = 3, start_p = 1, cfl = 1, dyn = 0 }
+        direct = 0, recompute = 0, layers = 3, start_p = 1, cfl = 1, dyn = 0, shift = 0 }
 if wallp ~= 0 and wallp ~= 1 then
   error(("hydrostatic: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
 end
@@ -35,6 +35,12 @@ for k, v in pairs({ stab = stab, neumann = neumann, slip = slip, direct = direct
 end
 if dyn == 1 and stab ~= 1 then
   error("hydrostatic: dyn = 1 needs stab = 1 (isph-stabilized's pressure_form)")
+end
+if shift ~= 0 and stab ~= 1 then
+  error("hydrostatic: shift needs stab = 1 (isph-stabilized's particle shifting)")
+end
+if shift < 0 then
+  error(("hydrostatic: shift must be 0 (off) or a shifting coefficient C > 0, not %g"):format(shift))
 end
 
 local g = 9.81
@@ -46,7 +52,8 @@ if stab == 1 then -- stabilized ISPH, virtual-marker dummy walls
            wall_velocity = slip == 1 and "slip" or "no_slip",
            solver = direct == 1 and "direct" or "bicgstab",
            solver_apply = recompute == 1 and "recompute" or "stored", wall_layers = layers,
-           pressure_form = dyn == 1 and "dynamic" or "total" }
+           pressure_form = dyn == 1 and "dynamic" or "total",
+           shifting = shift > 0 and shift or nil }
 elseif riemann == 1 then -- Riemann WCSPH, c0 = 10 √(2 g H) (the default from the depth)
   scheme { "wcsph-riemann", transport_velocity = ({"off", "full", "limited"})[tvf + 1],
            wall_pressure = wallp == 1 and "gradient" or "mirror" }

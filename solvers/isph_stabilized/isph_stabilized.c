@@ -32,7 +32,8 @@
  * must be empty too, for walls that cut the lattice; predict.cl), pressure_form ("total", the
  * paper's symmetric gradient of the pressure, the default, or "dynamic": the pressure equation
  * solved for p − ρ0 a·x, the hydrostatic part exact; project.cl, with the modified virtual marker
- * only), wall_layers (checked against the
+ * only), shifting (C, 0 off: particle shifting after the motion, not the paper's; shift.cl),
+ * wall_layers (checked against the
  * support the markers need) and the pressure solver's. The gate (options gate, a wall group,
  * gate_speed, gate_start, gate_stop): that group's dummies lift against gravity from gate_start to
  * gate_stop (gate_step), and the modified virtual marker carries their acceleration, f = g − a_W
@@ -62,6 +63,7 @@ struct stab {
   double beta_fs; /* free surface where s* / σ0 < β_fs */
   cl_uint scan;   /* 1: and where the scan region is empty (surface_detection = "scan") */
   int dynamic;    /* pressure_form = "dynamic": the pressure equation's unknown is p − ρ0 a·x */
+  double c_shift; /* particle shifting's C (shift.cl; 0: off, the paper's) */
   double beta_s;  /* slip ratio: 0 no-slip, 1 free slip (S eq 13) */
   double sigma0;  /* Σ dr² W over the full lattice support, in the build's precision */
   double umax;    /* largest fluid speed at the last max_dt, m/s */
@@ -72,9 +74,10 @@ struct stab {
   double gate_speed, gate_start, gate_stop, gate_dir[2];
   double v_prev[2]; /* the gate's velocity over the last step (persisted) */
   real2 a_gate;     /* its acceleration over this step */
-  int f_p, f_fs, f_rhostar, f_dist, f_normal, f_uwall, f_ustar, f_div, f_rhs, f_dir, f_acc, f_gate;
+  int f_p, f_fs, f_rhostar, f_dist, f_normal, f_uwall, f_ustar, f_div, f_rhs, f_dir, f_acc, f_gate,
+      f_pshift;
   cl_kernel k_lattice, k_wall_vel, k_wall_p, k_predict, k_source, k_project, k_move, k_diag0,
-      k_shift, k_count, k_coeffs, k_apply, k_diag, k_neumann, k_wall_move;
+      k_shift, k_count, k_coeffs, k_apply, k_diag, k_neumann, k_wall_move, k_pshift, k_papply;
   cl_mem d_sums; /* the lattice sums (2 reals) */
 };
 
@@ -88,21 +91,13 @@ static const char *const sources[] = {"common/blas1.cl",
                                       "isph_stabilized/ppe.cl",
                                       "isph_stabilized/predict.cl",
                                       "isph_stabilized/project.cl",
+                                      "isph_stabilized/shift.cl",
                                       NULL};
-static const char *const options[] = {"alpha",
-                                      "wall_pressure",
-                                      "wall_velocity",
-                                      "slip_ratio",
-                                      "surface_threshold",
-                                      "surface_detection",
-                                      "pressure_form",
-                                      "wall_layers",
-                                      "gate",
-                                      "gate_speed",
-                                      "gate_start",
-                                      "gate_stop",
-                                      PSOLVE_OPTION_NAMES,
-                                      NULL};
+static const char *const options[] = {"alpha",         "wall_pressure",     "wall_velocity",
+                                      "slip_ratio",    "surface_threshold", "surface_detection",
+                                      "pressure_form", "shifting",          "wall_layers",
+                                      "gate",          "gate_speed",        "gate_start",
+                                      "gate_stop",     PSOLVE_OPTION_NAMES, NULL};
 
 static const struct scene_option *option(const struct scene *s, const char *key)
 {
@@ -192,6 +187,9 @@ static enum clsph_status read_options(const struct sim *sim, struct stab *b)
   int scan = 0;
   CLSPH_TRY(option_choice(sc, "surface_detection", detect_names, 0, &scan));
   b->scan = (cl_uint)scan;
+  b->c_shift = 0.0;
+  CLSPH_TRY(option_number(sc, "shifting", 0.0, 2.0, "the particle shifting coefficient C",
+                          " (0 off, the paper's; δr = −C h² Σ V ∇W)", &b->c_shift));
   static const char *const form_names[] = {"total", "dynamic", NULL};
   CLSPH_TRY(option_choice(sc, "pressure_form", form_names, 0, &b->dynamic));
   /* measured: the pseudo-Neumann walls' Dirichlet pressure, mapped from the last step's, does not
@@ -606,6 +604,10 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
     if (st != CLSPH_OK) goto done;
     pset_describe(ps, b->f_gate, PF_UINT, 0, 0);
   }
+  if (b->c_shift > 0.0) {
+    CLSPH_TRY(pset_add(ps, sim->dev, "shift", 2 * sizeof(real), NULL, &b->f_pshift));
+    pset_describe(ps, b->f_pshift, PF_REAL, 2, 0);
+  }
   CLSPH_TRY(pset_add(ps, sim->dev, "dirichlet", sizeof(cl_uint), NULL, &b->f_dir));
   pset_describe(ps, b->f_dir, PF_UINT, 0, 0);
   pset_describe(ps, b->f_dist, PF_REAL, 0, 0);
@@ -622,7 +624,8 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
             {&b->k_diag0, "stab_lattice_diag"},   {&b->k_count, "stab_ppe_count"},
             {&b->k_coeffs, "stab_ppe_coeffs"},    {&b->k_apply, "stab_ppe_apply"},
             {&b->k_diag, "stab_ppe_diag"},        {&b->k_neumann, "stab_wall_neumann"},
-            {&b->k_wall_move, "stab_wall_move"}};
+            {&b->k_wall_move, "stab_wall_move"},  {&b->k_pshift, "stab_particle_shift"},
+            {&b->k_papply, "stab_apply_shift"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
   CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &b->popt, &b->ps));
@@ -780,6 +783,17 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
                      KARG(vel), KARG(dist), KARG(normal), KARG(rdt), KARG(band), KARG(pos),
                      KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_move, n, NULL));
+  if (b->c_shift > 0.0) { /* shifting (shift.cl): the offsets first, then the moves */
+    const real h = (real)sim->sm.h, c_h2 = (real)b->c_shift * h * h, dr = (real)sc->dr;
+    cl_mem shift = pset_mem(ps, b->f_pshift);
+    CLSPH_TRY(KERN_SET(b->k_pshift, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
+                       KARG(kind), KARG(pos), KARG(vol), KARG(fs), KARG(dist), KARG(normal),
+                       KARG(c_h2), KARG(dr), KARG(shift)));
+    CLSPH_TRY(kern_launch(sim->dev, b->k_pshift, n, NULL));
+    CLSPH_TRY(
+        KERN_SET(b->k_papply, KARG(n), KARG(sim->grid.geom), KARG(kind), KARG(shift), KARG(pos)));
+    CLSPH_TRY(kern_launch(sim->dev, b->k_papply, n, NULL));
+  }
 done:
   return st;
 }
@@ -837,7 +851,8 @@ static void stab_destroy(void *state)
   if (b == NULL) return;
   cl_kernel ks[] = {b->k_move,     b->k_project, b->k_source,  b->k_predict,   b->k_wall_p,
                     b->k_wall_vel, b->k_lattice, b->k_diag0,   b->k_count,     b->k_coeffs,
-                    b->k_apply,    b->k_diag,    b->k_neumann, b->k_wall_move, b->k_shift};
+                    b->k_apply,    b->k_diag,    b->k_neumann, b->k_wall_move, b->k_shift,
+                    b->k_pshift,   b->k_papply};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (ks[k] != NULL) clReleaseKernel(ks[k]);
   kern_release(&b->d_sums);

@@ -151,10 +151,12 @@ def lobovsky_section(runs):
     if not rows:
         return []
 
-    def variant(s):  # the gate, isph-stabilized's dynamic pressure form, the run's end time
+    def variant(s):  # the gate, isph-stabilized's dynamic pressure form, shifting, the end time
         p = s["parameters"]
         v = [w for w, on in (("gate", p.get("gate", 0) == 1), ("dynamic p", p.get("dyn", 0) == 1))
              if on]
+        if p.get("shift", 0) > 0:
+            v.append(f"shifting {p['shift']:g}")
         v.append(f"to {p.get('t_end', 0):g} s")
         return ", ".join(v)
     rows.sort(key=lambda s: (s["scheme"], s["parameters"].get("n", 0), variant(s)))

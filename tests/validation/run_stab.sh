@@ -50,6 +50,9 @@ done
 # the same at n = 40 with pressure_form = "dynamic"
 run lobovsky_n40_stab_dynamic_t0.72 dam_break stab=1 dyn=1 n=40 t_end=0.72
 run lobovsky_n40_stab_dynamic_gate_t0.72 dam_break stab=1 dyn=1 gate=1 n=40 t_end=0.72
+# particle shifting (shifting = 0.5, not the paper's) to t = 1.1 s, with and without the gate
+run lobovsky_n40_stab_shift dam_break stab=1 n=40 t_end=1.1 shift=0.5
+run lobovsky_n40_stab_shift_gate dam_break stab=1 gate=1 n=40 t_end=1.1 shift=0.5
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_isph_stabilized.md
 python3 tests/validation/lobovsky_chart.py tests/validation/lobovsky_sensor1 \
   "isph-stabilized (n 40)=$out/lobovsky_n40_stab" \
