@@ -72,7 +72,7 @@ end
 if shift ~= 0 and stab ~= 1 then
   error("dam_break: shift needs stab = 1 (isph-stabilized's particle shifting)")
 end
-if shift < 0 then
+if not (shift >= 0) then
   error(("dam_break: shift must be 0 (off) or a shifting coefficient C > 0, not %g"):format(shift))
 end
 

@@ -39,7 +39,7 @@ end
 if shift ~= 0 and stab ~= 1 then
   error("hydrostatic: shift needs stab = 1 (isph-stabilized's particle shifting)")
 end
-if shift < 0 then
+if not (shift >= 0) then
   error(("hydrostatic: shift must be 0 (off) or a shifting coefficient C > 0, not %g"):format(shift))
 end
 
