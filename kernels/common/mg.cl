@@ -92,9 +92,15 @@ int mg_neighbour(const int4 n, const int4 a, const int o, const int R, int4 *b)
 
 /* ---- set-up, once per solve ---- */
 
-/* agg[i]: the cell of unknown i, or MG_NONE for a row without off-diagonal entries. */
+/* The levels' stencils, damped inverse diagonals and vectors lie one after the other in one buffer
+ * each (mg.c): a level is its cell counts, radius and offsets into them. The coarse block
+ * (mg_block) reads the levels it handles from info[], MG_INFO ints a level. */
+#define MG_INFO 8 /* nx, ny, nz, cells, R, S offset, vector offset, unused */
+
+/* agg[i]: the cell of unknown i, or MG_NONE for a row without off-diagonal entries; cell[i]: the
+ * cell of unknown i. */
 __kernel void mg_aggregate(const uint ncells, __global const uint *start, __global const uint *row,
-                           __global const real *val, __global uint *agg)
+                           __global const real *val, __global uint *agg, __global uint *cell)
 {
   const uint c = get_global_id(0);
   if (c >= ncells) return;
@@ -102,42 +108,67 @@ __kernel void mg_aggregate(const uint ncells, __global const uint *start, __glob
     int coupled = 0;
     for (uint k = row[i] + 1; k < row[i + 1]; ++k) coupled |= val[k] != R(0.0);
     agg[i] = coupled ? c : MG_NONE;
+    cell[i] = c;
   }
 }
 
-/* Level 1: S = Pᵀ (A + ε diag A) P from the stored rows (csr.cl), one cell per work-item. */
-__kernel void mg_galerkin_csr(const int4 nc, __global const uint *start, __global const uint *row,
-                              __global const uint *col, __global const real *val,
-                              __global const uint *agg, const real eps, __global real *S)
+/* AP = (A + ε diag A) P, fine rows against level-1 cells: row i holds MG_W1 slots, the one of
+ * offset o (from i's own cell) at AP[i MG_W1 + o] with its cell in APc (MG_NONE: none). A
+ * coupling beyond the stencil (a particle that moved after the binning) goes to i's own cell: the
+ * way up then applies a slightly different (still fixed) preconditioner. */
+__kernel void mg_ap_csr(const uint n, const int4 nc, __global const uint *row,
+                        __global const uint *col, __global const real *val,
+                        __global const uint *agg, __global const uint *cell, const real eps,
+                        __global real *AP, __global uint *APc)
 {
-  const uint c = get_global_id(0);
-  if (c >= (uint)nc.w) return;
+  const uint i = get_global_id(0);
+  if (i >= n) return;
   const int centre = MG_W1 / 2;
   real acc[MG_W1];
   for (int o = 0; o < MG_W1; ++o) acc[o] = R(0.0);
-  const int4 a = mg_coords(nc, c);
+  const int4 a = mg_coords(nc, cell[i]);
+  if (agg[i] != MG_NONE) acc[centre] += eps * val[row[i]];
+  for (uint k = row[i]; k < row[i + 1]; ++k) {
+    const uint J = agg[col[k]];
+    if (J == MG_NONE) continue;
+    const int o = mg_offset(nc, a, mg_coords(nc, J), MG_R1);
+    acc[o < 0 ? centre : o] += val[k];
+  }
+  for (int o = 0; o < MG_W1; ++o) {
+    int4 b;
+    const int in = acc[o] != R(0.0) && mg_neighbour(nc, a, o, MG_R1, &b);
+    AP[(size_t)i * MG_W1 + o] = in ? acc[o] : R(0.0);
+    APc[(size_t)i * MG_W1 + o] = in ? mg_id(nc, b) : MG_NONE;
+  }
+}
+
+/* Level 1: S = Pᵀ (A + ε diag A) P = Pᵀ AP, one cell per work-item: the sum of the AP rows of its
+ * aggregated unknowns (whose slots are offsets from this cell). */
+__kernel void mg_galerkin_ap(const uint ncells, __global const uint *start,
+                             __global const uint *agg, __global const real *AP, __global real *S)
+{
+  const uint c = get_global_id(0);
+  if (c >= ncells) return;
+  real acc[MG_W1];
+  for (int o = 0; o < MG_W1; ++o) acc[o] = R(0.0);
   for (uint i = start[c]; i < start[c + 1]; ++i) {
     if (agg[i] == MG_NONE) continue;
-    acc[centre] += eps * val[row[i]];
-    for (uint k = row[i]; k < row[i + 1]; ++k) {
-      const uint J = agg[col[k]];
-      if (J == MG_NONE) continue;
-      const int o = mg_offset(nc, a, mg_coords(nc, J), MG_R1);
-      acc[o < 0 ? centre : o] += val[k];
-    }
+    for (int o = 0; o < MG_W1; ++o) acc[o] += AP[(size_t)i * MG_W1 + o];
   }
   for (int o = 0; o < MG_W1; ++o) S[(size_t)c * MG_W1 + o] = acc[o];
 }
 
-/* Level l + 1 from level l (radius Rf): the 2 x 2 (x 2) children of each coarse cell. */
-__kernel void mg_galerkin(const int4 nf, const int Rf, __global const real *Sf, const int4 nc,
-                          __global real *Sc)
+/* Level l + 1 (stencil at S + sc) from level l (radius Rf, stencil at S + sf): the 2 x 2 (x 2)
+ * children of each coarse cell. */
+__kernel void mg_galerkin(const int4 nf, const int Rf, const uint sf, const int4 nc, const uint sc,
+                          __global real *S)
 {
   const uint K = get_global_id(0);
   if (K >= (uint)nc.w) return;
   const int wf = 2 * Rf + 1;
   const int Wf = DIM == 2 ? wf * wf : wf * wf * wf;
   const int centre = MG_WC / 2;
+  __global const real *Sf = S + sf;
   real acc[MG_WC];
   for (int o = 0; o < MG_WC; ++o) acc[o] = R(0.0);
   const int4 k = mg_coords(nc, K);
@@ -153,136 +184,17 @@ __kernel void mg_galerkin(const int4 nf, const int Rf, __global const real *Sf, 
       acc[oc < 0 ? centre : oc] += v;
     }
   }
-  for (int o = 0; o < MG_WC; ++o) Sc[(size_t)K * MG_WC + o] = acc[o];
+  for (int o = 0; o < MG_WC; ++o) S[sc + (size_t)K * MG_WC + o] = acc[o];
 }
 
-/* dw = ω / diag (0 on an empty cell) */
-__kernel void mg_weights(const uint n, const int W, __global const real *S, const real omega,
-                         __global real *dw)
+/* dw = ω / diag (0 on an empty cell), a level's stencil at S + so, its vectors at dw + vo */
+__kernel void mg_weights(const uint n, const int W, const uint so, __global const real *S,
+                         const real omega, const uint vo, __global real *dw)
 {
   const uint I = get_global_id(0);
   if (I >= n) return;
-  const real d = S[(size_t)I * W + W / 2];
-  dw[I] = d != R(0.0) ? omega / d : R(0.0);
-}
-
-/* ---- the cycle ---- */
-
-/* y = (A x)_I on a stencil level (radius R) */
-real mg_stencil_row(const int4 nl, const int R, __global const real *S, __global const real *x,
-                    const uint I)
-{
-  const int w = 2 * R + 1;
-  const int W = DIM == 2 ? w * w : w * w * w;
-  const int4 a = mg_coords(nl, I);
-  real s = R(0.0);
-  for (int o = 0; o < W; ++o) {
-    const real v = S[(size_t)I * W + o];
-    int4 b;
-    if (v != R(0.0) && mg_neighbour(nl, a, o, R, &b)) s += v * x[mg_id(nl, b)];
-  }
-  return s;
-}
-
-/* ((A + ε diag A) x)_i from the stored rows */
-real mg_csr_row(__global const uint *row, __global const uint *col, __global const real *val,
-                const real eps, __global const real *x, const uint i)
-{
-  real s = eps * val[row[i]] * x[i];
-  for (uint k = row[i]; k < row[i + 1]; ++k) s += val[k] * x[col[k]];
-  return s;
-}
-
-/* r = b − A x, fine level */
-__kernel void mg_residual_csr(const uint n, __global const uint *row, __global const uint *col,
-                              __global const real *val, const real eps, __global const real *b,
-                              __global const real *x, __global real *r)
-{
-  const uint i = get_global_id(0);
-  if (i >= n) return;
-  r[i] = b[i] - mg_csr_row(row, col, val, eps, x, i);
-}
-
-/* y = x + dw (b − A x): a damped Jacobi sweep, fine level */
-__kernel void mg_jacobi_csr(const uint n, __global const uint *row, __global const uint *col,
-                            __global const real *val, const real eps, __global const real *dw,
-                            __global const real *b, __global const real *x, __global real *y)
-{
-  const uint i = get_global_id(0);
-  if (i >= n) return;
-  y[i] = x[i] + dw[i] * (b[i] - mg_csr_row(row, col, val, eps, x, i));
-}
-
-/* r = b − A x, stencil level */
-__kernel void mg_residual(const int4 nl, const int R, __global const real *S,
-                          __global const real *b, __global const real *x, __global real *r)
-{
-  const uint I = get_global_id(0);
-  if (I >= (uint)nl.w) return;
-  r[I] = b[I] - mg_stencil_row(nl, R, S, x, I);
-}
-
-/* y = x + dw (b − A x), stencil level */
-__kernel void mg_jacobi(const int4 nl, const int R, __global const real *S, __global const real *dw,
-                        __global const real *b, __global const real *x, __global real *y)
-{
-  const uint I = get_global_id(0);
-  if (I >= (uint)nl.w) return;
-  y[I] = x[I] + dw[I] * (b[I] - mg_stencil_row(nl, R, S, x, I));
-}
-
-/* Level 1 right-hand side: rc = Pᵀ r (the sum over each cell's aggregated unknowns) */
-__kernel void mg_restrict_csr(const uint ncells, __global const uint *start,
-                              __global const uint *agg, __global const real *r, __global real *rc)
-{
-  const uint c = get_global_id(0);
-  if (c >= ncells) return;
-  real s = R(0.0);
-  for (uint i = start[c]; i < start[c + 1]; ++i)
-    if (agg[i] != MG_NONE) s += r[i];
-  rc[c] = s;
-}
-
-/* Level l + 1 right-hand side: the sum over the children */
-__kernel void mg_restrict(const int4 nf, __global const real *r, const int4 nc, __global real *rc)
-{
-  const uint K = get_global_id(0);
-  if (K >= (uint)nc.w) return;
-  const int4 k = mg_coords(nc, K);
-  real s = R(0.0);
-  for (int ch = 0; ch < MG_CHILDREN; ++ch) {
-    const int4 I = 2 * k + (int4)(ch & 1, (ch >> 1) & 1, (ch >> 2) & 1, 0);
-    if (I.x < nf.x && I.y < nf.y && I.z < nf.z) s += r[mg_id(nf, I)];
-  }
-  rc[K] = s;
-}
-
-/* x += P xc, fine level */
-__kernel void mg_prolong_csr(const uint n, __global const uint *agg, __global const real *xc,
-                             __global real *x)
-{
-  const uint i = get_global_id(0);
-  if (i >= n) return;
-  if (agg[i] != MG_NONE) x[i] += MG_OVER * xc[agg[i]];
-}
-
-/* x += P xc, stencil level */
-__kernel void mg_prolong(const int4 nf, __global real *x, const int4 nc, __global const real *xc)
-{
-  const uint I = get_global_id(0);
-  if (I >= (uint)nf.w) return;
-  x[I] += MG_OVER * xc[mg_id(nc, mg_coords(nf, I) / 2)];
-}
-
-/* y = M r on the coarsest level, M its inverse (dense, row-major, set up on the host) */
-__kernel void mg_dense(const uint m, __global const real *M, __global const real *r,
-                       __global real *y)
-{
-  const uint i = get_global_id(0);
-  if (i >= m) return;
-  real s = R(0.0);
-  for (uint j = 0; j < m; ++j) s += M[(size_t)i * m + j] * r[j];
-  y[i] = s;
+  const real d = S[so + (size_t)I * W + W / 2];
+  dw[vo + I] = d != R(0.0) ? omega / d : R(0.0);
 }
 
 /* dw = ω dinv */
@@ -291,4 +203,188 @@ __kernel void mg_damp(const uint n, const real omega, __global const real *dinv,
   const uint i = get_global_id(0);
   if (i >= n) return;
   dw[i] = omega * dinv[i];
+}
+
+/* ---- the cycle ----
+ * A V(1,1) cycle from zero: down each level, one damped-Jacobi sweep from zero (t = dw b) and
+ * the restricted residual Pᵀ (b − A t); the coarsest solved; up each level, u = t + P x_coarse
+ * (over-corrected by MG_OVER) and one sweep u + dw (b − A u), written as
+ *   u + dw (res − MG_OVER (A P) x_coarse),   res = b − A t kept from the way down,
+ * so that the way up reads the coarse solution, not a prolonged vector. A stencil level's res is
+ * its x until the way up overwrites it; the fine level keeps AP (mg_ap_csr). The stencils'
+ * neighbours (nb), their parents (pnb) and each cell's parent (par) are tables made with the
+ * levels (mg.c). The kernel that makes a level's b makes its t. Launches: the fine t (mg_scale)
+ * and res (mg_down_csr), for the levels above MG_BLOCK cells the restriction and one launch a
+ * level each way, the small levels in one work-group (mg_block), the fine level up. */
+
+/* t = dw ∘ r, fine level */
+__kernel void mg_scale(const uint n, __global const real *dw, __global const real *r,
+                       __global real *t)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  t[i] = dw[i] * r[i];
+}
+
+/* Fine level down: res = r − (A + ε diag A) t */
+__kernel void mg_down_csr(const uint n, __global const uint *row, __global const uint *col,
+                          __global const real *val, const real eps, __global const real *t,
+                          __global const real *r, __global real *res)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  real s = eps * val[row[i]] * t[i];
+  for (uint k = row[i]; k < row[i + 1]; ++k) s += val[k] * t[col[k]];
+  res[i] = r[i] - s;
+}
+
+/* Level-1 b and t of cell c: Σ res over its aggregated unknowns, times dw */
+void mg_restrict_cell(__global const uint *start, __global const uint *agg,
+                      __global const real *res, __global const real *cdw, __global real *b,
+                      __global real *t, const uint c)
+{
+  real s = R(0.0);
+  for (uint i = start[c]; i < start[c + 1]; ++i)
+    if (agg[i] != MG_NONE) s += res[i];
+  b[c] = s;
+  t[c] = cdw[c] * s;
+}
+
+__kernel void mg_restrict_csr(const uint ncells, __global const uint *start,
+                              __global const uint *agg, __global const real *res,
+                              __global const real *cdw, __global real *b, __global real *t)
+{
+  const uint c = get_global_id(0);
+  if (c >= ncells) return;
+  mg_restrict_cell(start, agg, res, cdw, b, t, c);
+}
+
+/* Fine level up: z = t + MG_OVER x1(agg) + dw (res − MG_OVER AP x1) */
+__kernel void mg_up_csr(const uint n, __global const uint *agg, __global const real *AP,
+                        __global const uint *APc, __global const real *dw, __global const real *t,
+                        __global const real *res, __global const real *x1, __global real *z)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  real s = R(0.0);
+  for (int o = 0; o < MG_W1; ++o) {
+    const uint c = APc[(size_t)i * MG_W1 + o];
+    if (c != MG_NONE) s += AP[(size_t)i * MG_W1 + o] * x1[c];
+  }
+  const uint g = agg[i];
+  const real u = t[i] + (g != MG_NONE ? MG_OVER * x1[g] : R(0.0));
+  z[i] = u + dw[i] * (res[i] - MG_OVER * s);
+}
+
+/* Coarse cell K (cells nc, vectors at co): its b (the sum of its children's res, which go to x
+ * of level l at fo) and t. Level l: cells nf, W entries a row, stencil and tables at sf. */
+void mg_down_cell(const int4 nf, const int W, const uint sf, const uint fo, const int4 nc,
+                  const uint co, __global const real *S, __global const uint *nb,
+                  __global const real *dw, __global real *b, __global real *t, __global real *x,
+                  const uint K)
+{
+  const int4 k = mg_coords(nc, K);
+  real sum = R(0.0);
+  for (int ch = 0; ch < MG_CHILDREN; ++ch) {
+    const int4 I = 2 * k + (int4)(ch & 1, (ch >> 1) & 1, (ch >> 2) & 1, 0);
+    if (I.x >= nf.x || I.y >= nf.y || I.z >= nf.z) continue;
+    const uint id = mg_id(nf, I);
+    const size_t r0 = sf + (size_t)id * W;
+    real s = R(0.0);
+    for (int o = 0; o < W; ++o) {
+      const uint J = nb[r0 + o];
+      if (J != MG_NONE) s += S[r0 + o] * t[fo + J];
+    }
+    const real res = b[fo + id] - s;
+    x[fo + id] = res;
+    sum += res;
+  }
+  b[co + K] = sum;
+  t[co + K] = dw[co + K] * sum;
+}
+
+/* Cell I of level l (W entries a row, stencil and tables at so, vectors at vo; the coarser
+ * level's at co) on the way up: x = t + MG_OVER x_c(par) + dw (res − MG_OVER Σ S x_c(pnb)),
+ * res being x from the way down */
+void mg_up_cell(const int W, const uint so, const uint vo, const uint co, __global const real *S,
+                __global const uint *pnb, __global const uint *par, __global const real *dw,
+                __global const real *t, __global real *x, const uint I)
+{
+  const size_t r0 = so + (size_t)I * W;
+  real s = R(0.0);
+  for (int o = 0; o < W; ++o) {
+    const uint P = pnb[r0 + o];
+    if (P != MG_NONE) s += S[r0 + o] * x[co + P];
+  }
+  const uint J = vo + I;
+  x[J] = t[J] + MG_OVER * x[co + par[J]] + dw[J] * (x[J] - MG_OVER * s);
+}
+
+/* One stencil level down, one coarse cell per work-item */
+__kernel void mg_down(const int4 nf, const int W, const uint sf, const uint fo, const int4 nc,
+                      const uint co, __global const real *S, __global const uint *nb,
+                      __global const real *dw, __global real *b, __global real *t, __global real *x)
+{
+  const uint K = get_global_id(0);
+  if (K >= (uint)nc.w) return;
+  mg_down_cell(nf, W, sf, fo, nc, co, S, nb, dw, b, t, x, K);
+}
+
+/* One stencil level up, one cell per work-item */
+__kernel void mg_up(const uint cells, const int W, const uint so, const uint vo, const uint co,
+                    __global const real *S, __global const uint *pnb, __global const uint *par,
+                    __global const real *dw, __global const real *t, __global real *x)
+{
+  const uint I = get_global_id(0);
+  if (I >= cells) return;
+  mg_up_cell(W, so, vo, co, S, pnb, par, dw, t, x, I);
+}
+
+int4 mg_info_n(__global const int *info, const int l)
+{
+  return (int4)(info[MG_INFO * l], info[MG_INFO * l + 1], info[MG_INFO * l + 2],
+                info[MG_INFO * l + 3]);
+}
+
+/* Levels l0 .. L in one work-group: (l0 = 1) level 1's b and t restricted from the fine res;
+ * down to L; the coarsest by its dense inverse M (m x m, row-major); up to l0. Global memory
+ * between the phases is ordered by the work-group's barriers. info: per level nx, ny, nz, cells,
+ * W, stencil offset, vector offset. */
+__kernel void mg_block(const int l0, const int L, __global const int *info, const uint m,
+                       __global const real *M, __global const real *S, __global const uint *nb,
+                       __global const uint *pnb, __global const uint *par, __global const real *dw,
+                       __global real *b, __global real *t, __global real *x,
+                       __global const uint *start, __global const uint *agg,
+                       __global const real *res)
+{
+  const uint lid = get_local_id(0), ls = get_local_size(0);
+  if (l0 == 1) {
+    const uint ncells = (uint)info[MG_INFO + 3];
+    for (uint c = lid; c < ncells; c += ls) mg_restrict_cell(start, agg, res, dw, b, t, c);
+    barrier(CLK_GLOBAL_MEM_FENCE);
+  }
+  for (int l = l0; l < L; ++l) {
+    const int4 nf = mg_info_n(info, l), nc = mg_info_n(info, l + 1);
+    const int W = info[MG_INFO * l + 4];
+    const uint sf = (uint)info[MG_INFO * l + 5], fo = (uint)info[MG_INFO * l + 6];
+    const uint co = (uint)info[MG_INFO * (l + 1) + 6];
+    for (uint K = lid; K < (uint)nc.w; K += ls)
+      mg_down_cell(nf, W, sf, fo, nc, co, S, nb, dw, b, t, x, K);
+    barrier(CLK_GLOBAL_MEM_FENCE);
+  }
+  const uint cL = (uint)info[MG_INFO * L + 6];
+  for (uint i = lid; i < m; i += ls) {
+    real s = R(0.0);
+    for (uint j = 0; j < m; ++j) s += M[(size_t)i * m + j] * b[cL + j];
+    x[cL + i] = s;
+  }
+  barrier(CLK_GLOBAL_MEM_FENCE);
+  for (int l = L - 1; l >= l0; --l) {
+    const uint cells = (uint)info[MG_INFO * l + 3];
+    const int W = info[MG_INFO * l + 4];
+    const uint so = (uint)info[MG_INFO * l + 5], vo = (uint)info[MG_INFO * l + 6];
+    const uint co = (uint)info[MG_INFO * (l + 1) + 6];
+    for (uint I = lid; I < cells; I += ls) mg_up_cell(W, so, vo, co, S, pnb, par, dw, t, x, I);
+    barrier(CLK_GLOBAL_MEM_FENCE);
+  }
 }

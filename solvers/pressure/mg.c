@@ -24,26 +24,30 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
     cl_kernel *k;
     const char *name;
   } ks[] = {{&mg.k_aggregate, "mg_aggregate"},
-            {&mg.k_galerkin_csr, "mg_galerkin_csr"},
+            {&mg.k_ap_csr, "mg_ap_csr"},
+            {&mg.k_restrict_csr, "mg_restrict_csr"},
+            {&mg.k_galerkin_ap, "mg_galerkin_ap"},
             {&mg.k_galerkin, "mg_galerkin"},
             {&mg.k_weights, "mg_weights"},
             {&mg.k_damp, "mg_damp"},
-            {&mg.k_scale, "blas1_scale"},
-            {&mg.k_residual_csr, "mg_residual_csr"},
-            {&mg.k_jacobi_csr, "mg_jacobi_csr"},
-            {&mg.k_residual, "mg_residual"},
-            {&mg.k_jacobi, "mg_jacobi"},
-            {&mg.k_restrict_csr, "mg_restrict_csr"},
-            {&mg.k_restrict, "mg_restrict"},
-            {&mg.k_prolong_csr, "mg_prolong_csr"},
-            {&mg.k_prolong, "mg_prolong"},
-            {&mg.k_dense, "mg_dense"}};
+            {&mg.k_scale, "mg_scale"},
+            {&mg.k_down_csr, "mg_down_csr"},
+            {&mg.k_up_csr, "mg_up_csr"},
+            {&mg.k_down, "mg_down"},
+            {&mg.k_up, "mg_up"},
+            {&mg.k_block, "mg_block"}};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i)
     CLSPH_TRY(prog_kernel(prog, ks[i].name, ks[i].k));
+  /* the block's work-group: as wide as the kernel allows, at most 256 items */
+  size_t wg = 0;
+  CLSPH_CL_TRY(clGetKernelWorkGroupInfo(mg.k_block, dev->id, CL_KERNEL_WORK_GROUP_SIZE, sizeof wg,
+                                        &wg, NULL));
+  mg.block_wg = wg < 256 ? (wg > 0 ? wg : 1) : 256;
   CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(cl_uint), NULL, &mg.d_agg, "multigrid aggregates"));
-  cl_mem *vs[] = {&mg.d_dw, &mg.d_res, &mg.d_t};
-  for (size_t i = 0; i < sizeof vs / sizeof *vs; ++i)
-    CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(real), NULL, vs[i], "multigrid vector"));
+  CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(cl_uint), NULL, &mg.d_cell, "multigrid cells"));
+  CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(real), NULL, &mg.d_dw, "multigrid vector"));
+  CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(real), NULL, &mg.d_res, "multigrid vector"));
+  CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(real), NULL, &mg.d_t, "multigrid vector"));
   *out = mg;
   memset(&mg, 0, sizeof mg);
 done:
@@ -53,12 +57,9 @@ done:
 
 static void release_levels(struct mg *mg)
 {
-  for (int l = 1; l <= mg->nlevels; ++l) {
-    struct mg_level *v = &mg->lv[l];
-    cl_mem *ms[] = {&v->S, &v->dw, &v->b, &v->x, &v->t};
-    for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
-  }
-  kern_release(&mg->d_M);
+  cl_mem *ms[] = {&mg->d_S,   &mg->d_nb, &mg->d_pnb,  &mg->d_par, &mg->d_cdw, &mg->d_b,
+                  &mg->d_t_c, &mg->d_x,  &mg->d_info, &mg->d_M,   &mg->d_AP,  &mg->d_APc};
+  for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
   free(mg->h_S);
   free(mg->h_A);
   free(mg->h_M);
@@ -69,14 +70,76 @@ static void release_levels(struct mg *mg)
   mg->grid = NULL;
 }
 
+/* Cell a + offset o of a level's stencil (radius R), wrapped on a periodic axis: its id, or
+ * MG_NONE outside the grid (mg_neighbour in mg.cl). */
+static cl_uint stencil_cell(const struct mg_level *v, const int a[3], int o, const int periodic[3])
+{
+  const int w = 2 * v->R + 1;
+  const int off[3] = {o % w - v->R, (o / w) % w - v->R, v->W > w * w ? o / (w * w) - v->R : 0};
+  int b[3];
+  for (int ax = 0; ax < 3; ++ax) {
+    const int n = v->n.s[ax];
+    b[ax] = a[ax] + off[ax];
+    if (b[ax] >= 0 && b[ax] < n) continue;
+    if (!periodic[ax]) return MG_NONE;
+    b[ax] = ((b[ax] % n) + n) % n;
+  }
+  return (cl_uint)(b[0] + v->n.s[0] * (b[1] + v->n.s[1] * b[2]));
+}
+
+/* The stencils' neighbour cells (nb), their parents on the next level (pnb) and each cell's parent
+ * (par), for levels 1 .. nlevels laid out as d_S (so entries) and the vectors (vo). */
+static enum clsph_status tables(struct mg *mg, const struct grid *g, size_t so, size_t vo)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_uint *nb = malloc(so * sizeof *nb), *pnb = malloc(so * sizeof *pnb);
+  cl_uint *par = malloc(vo * sizeof *par);
+  const int periodic[3] = {g->spec.periodic[0], g->spec.periodic[1],
+                           g->spec.dim == 3 ? g->spec.periodic[2] : 0};
+  CLSPH_CHECK(nb && pnb && par, CLSPH_E_NOMEM, "out of memory for the multigrid tables");
+  for (int l = 1; l <= mg->nlevels; ++l) {
+    const struct mg_level *v = &mg->lv[l], *c = l < mg->nlevels ? &mg->lv[l + 1] : NULL;
+    const int *n = v->n.s;
+    for (int I = 0; I < n[3]; ++I) {
+      const int a[3] = {I % n[0], (I / n[0]) % n[1], I / (n[0] * n[1])};
+      par[v->vo + (size_t)I] =
+          c ? (cl_uint)(a[0] / 2 + c->n.s[0] * (a[1] / 2 + c->n.s[1] * (a[2] / 2))) : MG_NONE;
+      for (int o = 0; o < v->W; ++o) {
+        const size_t k = v->so + (size_t)I * (size_t)v->W + (size_t)o;
+        const cl_uint J = stencil_cell(v, a, o, periodic);
+        nb[k] = J;
+        pnb[k] = J;
+        if (J == MG_NONE || !c) {
+          pnb[k] = MG_NONE;
+          continue;
+        }
+        const int b[3] = {(int)J % n[0], ((int)J / n[0]) % n[1], (int)J / (n[0] * n[1])};
+        pnb[k] = (cl_uint)(b[0] / 2 + c->n.s[0] * (b[1] / 2 + c->n.s[1] * (b[2] / 2)));
+      }
+    }
+  }
+  CLSPH_TRY(kern_buffer(mg->dev, so * sizeof *nb, nb, &mg->d_nb, "multigrid tables"));
+  CLSPH_TRY(kern_buffer(mg->dev, so * sizeof *pnb, pnb, &mg->d_pnb, "multigrid tables"));
+  CLSPH_TRY(kern_buffer(mg->dev, vo * sizeof *par, par, &mg->d_par, "multigrid tables"));
+done:
+  free(par);
+  free(pnb);
+  free(nb);
+  return st;
+}
+
 /* The levels of a grid: its cells, then halved along every axis of more than one cell until at
- * most MG_COARSEST cells are left. */
+ * most MG_COARSEST cells are left; their stencils and vectors one after the other. */
 static enum clsph_status size_levels(struct mg *mg, const struct grid *g)
 {
   enum clsph_status st = CLSPH_OK;
   const int dim = g->spec.dim, sub = g->spec.sub > 0 ? g->spec.sub : GRID_SUB_DEFAULT;
+  cl_int info[(MG_MAX_LEVELS + 1) * MG_INFO];
   release_levels(mg);
+  memset(info, 0, sizeof info);
   int n[3] = {g->n[0], g->n[1], dim == 3 ? g->n[2] : 1};
+  size_t so = 0, vo = 0;
+  mg->l0 = 0;
   for (int l = 1;; ++l) {
     CLSPH_CHECK(l <= MG_MAX_LEVELS, CLSPH_E_INPUT, "multigrid: more than %d levels", MG_MAX_LEVELS);
     struct mg_level *v = &mg->lv[l];
@@ -86,15 +149,30 @@ static enum clsph_status size_levels(struct mg *mg, const struct grid *g)
     v->W = dim == 2 ? w * w : w * w * w;
     for (int a = 0; a < 3; ++a) v->n.s[a] = n[a];
     v->n.s[3] = (cl_int)cells;
+    v->so = so;
+    v->vo = vo;
+    so += cells * (size_t)v->W;
+    vo += cells;
+    const cl_int row[MG_INFO] = {n[0], n[1],          n[2],          (cl_int)cells,
+                                 v->W, (cl_int)v->so, (cl_int)v->vo, 0};
+    memcpy(info + MG_INFO * l, row, sizeof row);
+    if (mg->l0 == 0 && cells <= MG_BLOCK) mg->l0 = l;
     mg->nlevels = l;
-    CLSPH_TRY(kern_buffer(mg->dev, cells * (size_t)v->W * sizeof(real), NULL, &v->S,
-                          "multigrid stencil"));
-    cl_mem *vs[] = {&v->dw, &v->b, &v->x, &v->t};
-    for (size_t i = 0; i < sizeof vs / sizeof *vs; ++i)
-      CLSPH_TRY(kern_buffer(mg->dev, cells * sizeof(real), NULL, vs[i], "multigrid vector"));
     if (cells <= MG_COARSEST || (n[0] == 1 && n[1] == 1 && n[2] == 1)) break;
     for (int a = 0; a < 3; ++a) n[a] = (n[a] + 1) / 2;
   }
+  CLSPH_CHECK(so < 0x7fffffffu, CLSPH_E_INPUT, "multigrid: %zu stencil entries are too many", so);
+  if (mg->l0 == 0) mg->l0 = mg->nlevels;
+  CLSPH_TRY(kern_buffer(mg->dev, so * sizeof(real), NULL, &mg->d_S, "multigrid stencils"));
+  CLSPH_TRY(tables(mg, g, so, vo));
+  cl_mem *vs[] = {&mg->d_cdw, &mg->d_b, &mg->d_t_c, &mg->d_x};
+  for (size_t i = 0; i < sizeof vs / sizeof *vs; ++i)
+    CLSPH_TRY(kern_buffer(mg->dev, vo * sizeof(real), NULL, vs[i], "multigrid vectors"));
+  CLSPH_TRY(kern_buffer(mg->dev, sizeof info, info, &mg->d_info, "multigrid levels"));
+  CLSPH_TRY(kern_buffer(mg->dev, mg->cap * (size_t)mg->lv[1].W * sizeof(real), NULL, &mg->d_AP,
+                        "multigrid fine-to-coarse operator"));
+  CLSPH_TRY(kern_buffer(mg->dev, mg->cap * (size_t)mg->lv[1].W * sizeof(cl_uint), NULL, &mg->d_APc,
+                        "multigrid fine-to-coarse operator"));
   const struct mg_level *c = &mg->lv[mg->nlevels];
   mg->m = (size_t)c->n.s[3];
   CLSPH_TRY(kern_buffer(mg->dev, mg->m * mg->m * sizeof(real), NULL, &mg->d_M,
@@ -161,7 +239,8 @@ static enum clsph_status coarsest(struct mg *mg)
   const size_t m = mg->m;
   const int W = c->W;
   double *dense = NULL, *inv = NULL;
-  CLSPH_TRY(kern_read(mg->dev, c->S, m * (size_t)W * sizeof(real), mg->h_S));
+  CLSPH_TRY(
+      kern_read_at(mg->dev, mg->d_S, c->so * sizeof(real), m * (size_t)W * sizeof(real), mg->h_S));
   for (size_t k = 0; k < m * (size_t)W; ++k)
     CLSPH_CHECK(isfinite((double)mg->h_S[k]), CLSPH_E_BLOWUP,
                 "pressure solve: the operator has a non-finite coefficient (multigrid set-up)");
@@ -231,26 +310,32 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
   const real e = (real)eps, omega = (real)mg->omega;
   /* fine level: aggregates, damped inverse diagonal */
   CLSPH_TRY(KERN_SET(mg->k_aggregate, KARG(ncells), KARG(g->d_start), KARG(row), KARG(val),
-                     KARG(mg->d_agg)));
+                     KARG(mg->d_agg), KARG(mg->d_cell)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_aggregate, ncells, NULL));
+  CLSPH_TRY(KERN_SET(mg->k_ap_csr, KARG(nn), KARG(mg->lv[1].n), KARG(row), KARG(col), KARG(val),
+                     KARG(mg->d_agg), KARG(mg->d_cell), KARG(e), KARG(mg->d_AP), KARG(mg->d_APc)));
+  CLSPH_TRY(kern_launch(mg->dev, mg->k_ap_csr, n, NULL));
   CLSPH_TRY(KERN_SET(mg->k_damp, KARG(nn), KARG(omega), KARG(dinv), KARG(mg->d_dw)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_damp, n, NULL));
   /* Galerkin operators, level by level */
   struct mg_level *v = &mg->lv[1];
-  CLSPH_TRY(KERN_SET(mg->k_galerkin_csr, KARG(v->n), KARG(g->d_start), KARG(row), KARG(col),
-                     KARG(val), KARG(mg->d_agg), KARG(e), KARG(v->S)));
-  CLSPH_TRY(kern_launch(mg->dev, mg->k_galerkin_csr, ncells, NULL));
+  CLSPH_TRY(KERN_SET(mg->k_galerkin_ap, KARG(ncells), KARG(g->d_start), KARG(mg->d_agg),
+                     KARG(mg->d_AP), KARG(mg->d_S)));
+  CLSPH_TRY(kern_launch(mg->dev, mg->k_galerkin_ap, ncells, NULL));
   for (int l = 1; l <= mg->nlevels; ++l) {
     v = &mg->lv[l];
-    const cl_uint cells = (cl_uint)v->n.s[3];
+    const cl_uint cells = (cl_uint)v->n.s[3], so = (cl_uint)v->so, vo = (cl_uint)v->vo;
     const cl_int W = v->W;
     if (l > 1) {
       const struct mg_level *f = &mg->lv[l - 1];
       const cl_int Rf = f->R;
-      CLSPH_TRY(KERN_SET(mg->k_galerkin, KARG(f->n), KARG(Rf), KARG(f->S), KARG(v->n), KARG(v->S)));
+      const cl_uint sf = (cl_uint)f->so;
+      CLSPH_TRY(KERN_SET(mg->k_galerkin, KARG(f->n), KARG(Rf), KARG(sf), KARG(v->n), KARG(so),
+                         KARG(mg->d_S)));
       CLSPH_TRY(kern_launch(mg->dev, mg->k_galerkin, cells, NULL));
     }
-    CLSPH_TRY(KERN_SET(mg->k_weights, KARG(cells), KARG(W), KARG(v->S), KARG(omega), KARG(v->dw)));
+    CLSPH_TRY(KERN_SET(mg->k_weights, KARG(cells), KARG(W), KARG(so), KARG(mg->d_S), KARG(omega),
+                       KARG(vo), KARG(mg->d_cdw)));
     CLSPH_TRY(kern_launch(mg->dev, mg->k_weights, cells, NULL));
   }
   CLSPH_TRY(coarsest(mg));
@@ -258,70 +343,57 @@ done:
   return st;
 }
 
-/* x = dw ∘ b */
-static enum clsph_status scale(struct mg *mg, cl_uint n, cl_mem x, cl_mem dw, cl_mem b)
-{
-  enum clsph_status st = CLSPH_OK;
-  CLSPH_TRY(KERN_SET(mg->k_scale, KARG(n), KARG(x), KARG(dw), KARG(b)));
-  CLSPH_TRY(kern_launch(mg->dev, mg->k_scale, n, NULL));
-done:
-  return st;
-}
-
-/* The V(1,1) cycle: down the levels, one damped-Jacobi sweep from zero and the restricted
- * residual; the coarsest solved; up the levels, the prolonged correction and one sweep. */
+/* The V(1,1) cycle (mg.cl): the fine level down, the stencil levels above the block down, the
+ * block (the small levels down, the coarsest, up again), the levels above it up, the fine level
+ * up: 3 launches, and 1 + 2 (l0 − 1) more where level 1 has more than MG_BLOCK cells. */
 enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem val, double eps,
                            cl_mem r, cl_mem z)
 {
   enum clsph_status st = CLSPH_OK;
   const cl_uint nn = (cl_uint)n, ncells = (cl_uint)mg->grid->ncells;
   const real e = (real)eps;
-  const int L = mg->nlevels;
-  /* fine level down */
-  CLSPH_TRY(scale(mg, nn, mg->d_t, mg->d_dw, r));
-  CLSPH_TRY(KERN_SET(mg->k_residual_csr, KARG(nn), KARG(row), KARG(col), KARG(val), KARG(e),
-                     KARG(r), KARG(mg->d_t), KARG(mg->d_res)));
-  CLSPH_TRY(kern_launch(mg->dev, mg->k_residual_csr, n, NULL));
-  CLSPH_TRY(KERN_SET(mg->k_restrict_csr, KARG(ncells), KARG(mg->grid->d_start), KARG(mg->d_agg),
-                     KARG(mg->d_res), KARG(mg->lv[1].b)));
-  CLSPH_TRY(kern_launch(mg->dev, mg->k_restrict_csr, ncells, NULL));
-  /* coarse levels down */
-  for (int l = 1; l < L; ++l) {
-    struct mg_level *v = &mg->lv[l], *c = &mg->lv[l + 1];
-    const cl_uint cells = (cl_uint)v->n.s[3];
-    const cl_int R = v->R;
-    CLSPH_TRY(scale(mg, cells, v->t, v->dw, v->b));
-    CLSPH_TRY(KERN_SET(mg->k_residual, KARG(v->n), KARG(R), KARG(v->S), KARG(v->b), KARG(v->t),
-                       KARG(v->x)));
-    CLSPH_TRY(kern_launch(mg->dev, mg->k_residual, cells, NULL));
-    CLSPH_TRY(KERN_SET(mg->k_restrict, KARG(v->n), KARG(v->x), KARG(c->n), KARG(c->b)));
-    CLSPH_TRY(kern_launch(mg->dev, mg->k_restrict, (size_t)c->n.s[3], NULL));
+  const int L = mg->nlevels, l0 = mg->l0;
+  CLSPH_TRY(KERN_SET(mg->k_scale, KARG(nn), KARG(mg->d_dw), KARG(r), KARG(mg->d_t)));
+  CLSPH_TRY(kern_launch(mg->dev, mg->k_scale, n, NULL));
+  CLSPH_TRY(KERN_SET(mg->k_down_csr, KARG(nn), KARG(row), KARG(col), KARG(val), KARG(e),
+                     KARG(mg->d_t), KARG(r), KARG(mg->d_res)));
+  CLSPH_TRY(kern_launch(mg->dev, mg->k_down_csr, n, NULL));
+  if (l0 > 1) { /* level 1 (offset 0) outside the block: its b and t here */
+    CLSPH_TRY(KERN_SET(mg->k_restrict_csr, KARG(ncells), KARG(mg->grid->d_start), KARG(mg->d_agg),
+                       KARG(mg->d_res), KARG(mg->d_cdw), KARG(mg->d_b), KARG(mg->d_t_c)));
+    CLSPH_TRY(kern_launch(mg->dev, mg->k_restrict_csr, ncells, NULL));
   }
-  /* coarsest */
+  for (int l = 1; l < l0; ++l) { /* large stencil levels down */
+    const struct mg_level *f = &mg->lv[l], *c = &mg->lv[l + 1];
+    const cl_int W = f->W;
+    const cl_uint sf = (cl_uint)f->so, fo = (cl_uint)f->vo, co = (cl_uint)c->vo;
+    CLSPH_TRY(KERN_SET(mg->k_down, KARG(f->n), KARG(W), KARG(sf), KARG(fo), KARG(c->n), KARG(co),
+                       KARG(mg->d_S), KARG(mg->d_nb), KARG(mg->d_cdw), KARG(mg->d_b),
+                       KARG(mg->d_t_c), KARG(mg->d_x)));
+    CLSPH_TRY(kern_launch(mg->dev, mg->k_down, (size_t)c->n.s[3], NULL));
+  }
   {
-    const struct mg_level *c = &mg->lv[L];
+    const cl_int bl0 = l0, bL = L;
     const cl_uint m = (cl_uint)mg->m;
-    CLSPH_TRY(KERN_SET(mg->k_dense, KARG(m), KARG(mg->d_M), KARG(c->b), KARG(c->x)));
-    CLSPH_TRY(kern_launch(mg->dev, mg->k_dense, m, NULL));
+    CLSPH_TRY(KERN_SET(mg->k_block, KARG(bl0), KARG(bL), KARG(mg->d_info), KARG(m), KARG(mg->d_M),
+                       KARG(mg->d_S), KARG(mg->d_nb), KARG(mg->d_pnb), KARG(mg->d_par),
+                       KARG(mg->d_cdw), KARG(mg->d_b), KARG(mg->d_t_c), KARG(mg->d_x),
+                       KARG(mg->grid->d_start), KARG(mg->d_agg), KARG(mg->d_res)));
+    CLSPH_TRY(kern_launch_wg(mg->dev, mg->k_block, mg->block_wg, mg->block_wg, NULL));
   }
-  /* coarse levels up: t += P x_{l+1}, then x_l = t + dw (b − A t) */
-  for (int l = L - 1; l >= 1; --l) {
-    struct mg_level *v = &mg->lv[l], *c = &mg->lv[l + 1];
+  for (int l = l0 - 1; l >= 1; --l) { /* large stencil levels up */
+    const struct mg_level *v = &mg->lv[l], *c = &mg->lv[l + 1];
     const cl_uint cells = (cl_uint)v->n.s[3];
-    const cl_int R = v->R;
-    CLSPH_TRY(KERN_SET(mg->k_prolong, KARG(v->n), KARG(v->t), KARG(c->n), KARG(c->x)));
-    CLSPH_TRY(kern_launch(mg->dev, mg->k_prolong, cells, NULL));
-    CLSPH_TRY(KERN_SET(mg->k_jacobi, KARG(v->n), KARG(R), KARG(v->S), KARG(v->dw), KARG(v->b),
-                       KARG(v->t), KARG(v->x)));
-    CLSPH_TRY(kern_launch(mg->dev, mg->k_jacobi, cells, NULL));
+    const cl_int W = v->W;
+    const cl_uint so = (cl_uint)v->so, vo = (cl_uint)v->vo, co = (cl_uint)c->vo;
+    CLSPH_TRY(KERN_SET(mg->k_up, KARG(cells), KARG(W), KARG(so), KARG(vo), KARG(co), KARG(mg->d_S),
+                       KARG(mg->d_pnb), KARG(mg->d_par), KARG(mg->d_cdw), KARG(mg->d_t_c),
+                       KARG(mg->d_x)));
+    CLSPH_TRY(kern_launch(mg->dev, mg->k_up, cells, NULL));
   }
-  /* fine level up */
-  CLSPH_TRY(
-      KERN_SET(mg->k_prolong_csr, KARG(nn), KARG(mg->d_agg), KARG(mg->lv[1].x), KARG(mg->d_t)));
-  CLSPH_TRY(kern_launch(mg->dev, mg->k_prolong_csr, n, NULL));
-  CLSPH_TRY(KERN_SET(mg->k_jacobi_csr, KARG(nn), KARG(row), KARG(col), KARG(val), KARG(e),
-                     KARG(mg->d_dw), KARG(r), KARG(mg->d_t), KARG(z)));
-  CLSPH_TRY(kern_launch(mg->dev, mg->k_jacobi_csr, n, NULL));
+  CLSPH_TRY(KERN_SET(mg->k_up_csr, KARG(nn), KARG(mg->d_agg), KARG(mg->d_AP), KARG(mg->d_APc),
+                     KARG(mg->d_dw), KARG(mg->d_t), KARG(mg->d_res), KARG(mg->d_x), KARG(z)));
+  CLSPH_TRY(kern_launch(mg->dev, mg->k_up_csr, n, NULL));
 done:
   return st;
 }
@@ -329,14 +401,14 @@ done:
 void mg_destroy(struct mg *mg)
 {
   release_levels(mg);
-  cl_kernel *ks[] = {
-      &mg->k_aggregate,    &mg->k_galerkin_csr, &mg->k_galerkin,    &mg->k_weights,  &mg->k_damp,
-      &mg->k_scale,        &mg->k_residual_csr, &mg->k_jacobi_csr,  &mg->k_residual, &mg->k_jacobi,
-      &mg->k_restrict_csr, &mg->k_restrict,     &mg->k_prolong_csr, &mg->k_prolong,  &mg->k_dense};
+  cl_kernel *ks[] = {&mg->k_aggregate, &mg->k_ap_csr,  &mg->k_restrict_csr, &mg->k_galerkin_ap,
+                     &mg->k_galerkin,  &mg->k_weights, &mg->k_damp,         &mg->k_scale,
+                     &mg->k_down_csr,  &mg->k_up_csr,  &mg->k_down,         &mg->k_up,
+                     &mg->k_block};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {
     if (*ks[i] != NULL) clReleaseKernel(*ks[i]);
     *ks[i] = NULL;
   }
-  cl_mem *ms[] = {&mg->d_agg, &mg->d_dw, &mg->d_res, &mg->d_t};
+  cl_mem *ms[] = {&mg->d_agg, &mg->d_cell, &mg->d_dw, &mg->d_res, &mg->d_t};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
 }

@@ -1,10 +1,10 @@
 /* mg.h: the aggregation multigrid preconditioner of the pressure solve (kernels/common/mg.cl):
  * geometric aggregates (the neighbour-grid cells, then blocks of 2 x 2 (x 2) cells), Galerkin
  * coarse operators built on the device once per solve, one damped-Jacobi sweep before and after
- * each coarse correction (a V(1,1) cycle), and the coarsest level (at most MG_COARSEST cells)
- * solved exactly by a dense inverse computed on the host. Used through psolve (precond =
- * "multigrid"); it needs the stored rows (csr.cl) and unknowns that are particles sorted by a
- * grid (struct psolve_op's grid). */
+ * each coarse correction (a V(1,1) cycle, one launch a level and the small levels in one), and the
+ * coarsest level (at most MG_COARSEST cells) solved exactly by a dense inverse computed on the
+ * host. Used through psolve (precond = "multigrid"); it needs the stored rows (csr.cl) and unknowns
+ * that are particles sorted by a grid (struct psolve_op's grid). */
 #ifndef CLSPH_MG_H
 #define CLSPH_MG_H
 
@@ -17,28 +17,41 @@
  * device at every solve. 64 against 256: 8.1 iterations per step instead of 6.9 on the 60²
  * cavity, in less time. */
 #define MG_COARSEST 64
+/* Coarse levels of at most MG_BLOCK cells run in one work-group launch (mg_block) */
+#define MG_BLOCK 4096
+#define MG_INFO  8           /* ints a level in the block's table (MG_INFO in mg.cl) */
+#define MG_NONE  0xffffffffu /* no cell (MG_NONE in mg.cl) */
 
 struct mg_level {
-  cl_int4 n;      /* cells per axis, .s[3] = total */
-  int R, W;       /* stencil radius and width */
-  cl_mem S, dw;   /* stencil coefficients (n.s[3] x W), damped inverse diagonal */
-  cl_mem b, x, t; /* right-hand side, solution, pre-smoothed iterate */
+  cl_int4 n; /* cells per axis, .s[3] = total */
+  int R, W;  /* stencil radius and width */
+  size_t so; /* offset of its stencil (n.s[3] x W reals) in d_S */
+  size_t vo; /* offset of its vectors (n.s[3] reals) in d_cdw, d_b, d_x */
 };
 
 struct mg {
   const struct dev *dev;
   double omega; /* Jacobi damping */
-  cl_kernel k_aggregate, k_galerkin_csr, k_galerkin, k_weights, k_damp, k_scale, k_residual_csr,
-      k_jacobi_csr, k_residual, k_jacobi, k_restrict_csr, k_restrict, k_prolong_csr, k_prolong,
-      k_dense;
-  size_t cap;                     /* fine unknowns the buffers hold */
-  cl_mem d_agg, d_dw, d_res, d_t; /* fine level: aggregate, ω/diag, residual, pre-smoothed */
-  const struct grid *grid;        /* the grid the levels were sized for */
-  int nlevels;                    /* coarse levels 1 .. nlevels (lv[0] unused) */
+  cl_kernel k_aggregate, k_ap_csr, k_galerkin_ap, k_galerkin, k_weights, k_damp, k_scale,
+      k_down_csr, k_restrict_csr, k_up_csr, k_down, k_up, k_block;
+  size_t block_wg;         /* work-group size of mg_block */
+  size_t cap;              /* fine unknowns the buffers hold */
+  cl_mem d_agg, d_cell;    /* fine level: aggregate (or none), cell of each unknown */
+  cl_mem d_dw, d_t, d_res; /* fine level: ω/diag, first sweep, residual after it */
+  cl_mem d_AP, d_APc;      /* fine rows of (A + ε diag A) P against level-1 cells, their cells */
+  const struct grid *grid; /* the grid the levels were sized for */
+  int nlevels;             /* coarse levels 1 .. nlevels (lv[0] unused) */
+  int l0;                  /* the first level of the single-work-group block */
   struct mg_level lv[MG_MAX_LEVELS + 1];
-  size_t m;   /* unknowns of the coarsest level */
-  cl_mem d_M; /* its dense inverse */
-  real *h_S;  /* host copies for the coarsest inverse */
+  cl_mem d_S;                    /* every coarse level's stencil */
+  cl_mem d_nb, d_pnb;            /* every stencil entry's cell and that cell's parent (as d_S) */
+  cl_mem d_par;                  /* every coarse cell's parent (as the vectors) */
+  cl_mem d_cdw, d_b, d_t_c, d_x; /* every coarse level's ω/diag, right-hand side, first
+                                  * sweep, solution */
+  cl_mem d_info;                 /* the block's level table */
+  size_t m;                      /* unknowns of the coarsest level */
+  cl_mem d_M;                    /* its dense inverse */
+  real *h_S;                     /* host copies for the coarsest inverse */
   double *h_A;
   real *h_M;
   int warned_singular; /* the singular-coarsest warning was given */

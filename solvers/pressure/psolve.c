@@ -144,11 +144,15 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
                         &ps.d_block, "csr scan blocks"));
   if (opt->precond == PSOLVE_MULTIGRID) CLSPH_TRY(mg_create(dev, prog, ps.cap, &ps.mg));
   /* what the first solve allocates: the stored operator (a quarter more than its nonzeros,
-   * store()) and the multigrid's coarse operators (cell stencils, about 3 reals a particle) */
+   * store()) and the multigrid's levels: the coarse stencils (about 3 reals a particle) and the
+   * fine rows of A P against the level-1 cells (a value and a cell for each of (2 GRID_SUB + 1)^d
+   * cells: about half a row of the operator) */
   const double rows = opt->row_estimate > 0.0 ? opt->row_estimate : 50.0;
   if (opt->apply == PSOLVE_STORED)
     ps.reserved += 1.25 * (double)ps.cap * rows * (double)(sizeof(cl_uint) + sizeof(real));
-  if (opt->precond == PSOLVE_MULTIGRID) ps.reserved += 3.0 * (double)ps.cap * sizeof(real);
+  if (opt->precond == PSOLVE_MULTIGRID)
+    ps.reserved += (double)ps.cap *
+                   (3.0 * sizeof(real) + 0.5 * rows * (double)(sizeof(cl_uint) + sizeof(real)));
   kern_reserve(ps.reserved);
   ps.h_partial = malloc(2 * 64 * sizeof *ps.h_partial);
   CLSPH_CHECK(ps.h_partial != NULL, CLSPH_E_NOMEM, "out of memory");
