@@ -219,8 +219,9 @@ __kernel void mg_damp(const uint n, const real omega, __global const real *dinv,
 
 /* t = dw ∘ r, fine level */
 __kernel void mg_scale(const uint n, __global const real *dw, __global const real *r,
-                       __global real *t)
+                       __global real *t, const uint kit, __global const kreal *st)
 {
+  if (kr_over(st, kit)) return;
   const uint i = get_global_id(0);
   if (i >= n) return;
   t[i] = dw[i] * r[i];
@@ -229,8 +230,10 @@ __kernel void mg_scale(const uint n, __global const real *dw, __global const rea
 /* Fine level down: res = r − (A + ε diag A) t */
 __kernel void mg_down_csr(const uint n, __global const uint *row, __global const uint *col,
                           __global const real *val, const real eps, __global const real *t,
-                          __global const real *r, __global real *res)
+                          __global const real *r, __global real *res, const uint kit,
+                          __global const kreal *st)
 {
+  if (kr_over(st, kit)) return;
   const uint i = get_global_id(0);
   if (i >= n) return;
   real s = eps * val[row[i]] * t[i];
@@ -252,8 +255,10 @@ void mg_restrict_cell(__global const uint *start, __global const uint *agg,
 
 __kernel void mg_restrict_csr(const uint ncells, __global const uint *start,
                               __global const uint *agg, __global const real *res,
-                              __global const real *cdw, __global real *b, __global real *t)
+                              __global const real *cdw, __global real *b, __global real *t,
+                              const uint kit, __global const kreal *st)
 {
+  if (kr_over(st, kit)) return;
   const uint c = get_global_id(0);
   if (c >= ncells) return;
   mg_restrict_cell(start, agg, res, cdw, b, t, c);
@@ -262,8 +267,10 @@ __kernel void mg_restrict_csr(const uint ncells, __global const uint *start,
 /* Fine level up: z = t + MG_OVER x1(agg) + dw (res − MG_OVER AP x1) */
 __kernel void mg_up_csr(const uint n, __global const uint *agg, __global const real *AP,
                         __global const uint *APc, __global const real *dw, __global const real *t,
-                        __global const real *res, __global const real *x1, __global real *z)
+                        __global const real *res, __global const real *x1, __global real *z,
+                        const uint kit, __global const kreal *st)
 {
+  if (kr_over(st, kit)) return;
   const uint i = get_global_id(0);
   if (i >= n) return;
   real s = R(0.0);
@@ -323,8 +330,10 @@ void mg_up_cell(const int W, const uint so, const uint vo, const uint co, __glob
 /* One stencil level down, one coarse cell per work-item */
 __kernel void mg_down(const int4 nf, const int W, const uint sf, const uint fo, const int4 nc,
                       const uint co, __global const real *S, __global const uint *nb,
-                      __global const real *dw, __global real *b, __global real *t, __global real *x)
+                      __global const real *dw, __global real *b, __global real *t, __global real *x,
+                      const uint kit, __global const kreal *st)
 {
+  if (kr_over(st, kit)) return;
   const uint K = get_global_id(0);
   if (K >= (uint)nc.w) return;
   mg_down_cell(nf, W, sf, fo, nc, co, S, nb, dw, b, t, x, K);
@@ -333,8 +342,10 @@ __kernel void mg_down(const int4 nf, const int W, const uint sf, const uint fo, 
 /* One stencil level up, one cell per work-item */
 __kernel void mg_up(const uint cells, const int W, const uint so, const uint vo, const uint co,
                     __global const real *S, __global const uint *pnb, __global const uint *par,
-                    __global const real *dw, __global const real *t, __global real *x)
+                    __global const real *dw, __global const real *t, __global real *x,
+                    const uint kit, __global const kreal *st)
 {
+  if (kr_over(st, kit)) return;
   const uint I = get_global_id(0);
   if (I >= cells) return;
   mg_up_cell(W, so, vo, co, S, pnb, par, dw, t, x, I);
@@ -355,8 +366,9 @@ __kernel void mg_block(const int l0, const int L, __global const int *info, cons
                        __global const uint *pnb, __global const uint *par, __global const real *dw,
                        __global real *b, __global real *t, __global real *x,
                        __global const uint *start, __global const uint *agg,
-                       __global const real *res)
+                       __global const real *res, const uint kit, __global const kreal *st)
 {
+  if (kr_over(st, kit)) return;
   const uint lid = get_local_id(0), ls = get_local_size(0);
   if (l0 == 1) {
     const uint ncells = (uint)info[MG_INFO + 3];

@@ -66,6 +66,7 @@ struct rot {
 
 static const char *const sources[] = {OPEN_SOURCES,
                                       "common/blas1.cl",
+                                      "common/krylov.cl",
                                       "common/csr.cl",
                                       "common/mg.cl",
                                       "common/poisson.cl",

@@ -82,6 +82,7 @@ struct stab {
 };
 
 static const char *const sources[] = {"common/blas1.cl",
+                                      "common/krylov.cl",
                                       "common/csr.cl",
                                       "common/mg.cl",
                                       "common/poisson.cl",

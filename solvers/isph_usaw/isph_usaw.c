@@ -39,13 +39,12 @@ struct isph {
   double acc;       /* largest particle acceleration of the last step, m/s² */
 };
 
-static const char *const sources[] = {"common/blas1.cl",    "common/csr.cl",
-                                      "common/mg.cl",       "common/poisson.cl",
-                                      "usaw/gamma.cl",      "usaw/common.cl",
-                                      "usaw/wall_force.cl", "isph_usaw/move.cl",
-                                      "usaw/viscous.cl",    "isph_usaw/free_surface.cl",
-                                      "isph_usaw/ppe.cl",   "isph_usaw/project.cl",
-                                      "isph_usaw/shift.cl", NULL};
+static const char *const sources[] = {
+    "common/blas1.cl",      "common/krylov.cl",          "common/csr.cl",
+    "common/mg.cl",         "common/poisson.cl",         "usaw/gamma.cl",
+    "usaw/common.cl",       "usaw/wall_force.cl",        "isph_usaw/move.cl",
+    "usaw/viscous.cl",      "isph_usaw/free_surface.cl", "isph_usaw/ppe.cl",
+    "isph_usaw/project.cl", "isph_usaw/shift.cl",        NULL};
 static const char *const options[] = {"shifting",
                                       "pressure_gradient",
                                       "free_surface_offset",

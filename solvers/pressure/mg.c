@@ -347,20 +347,24 @@ done:
  * block (the small levels down, the coarsest, up again), the levels above it up, the fine level
  * up: 3 launches, and 1 + 2 (l0 − 1) more where level 1 has more than MG_BLOCK cells. */
 enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem val, double eps,
-                           cl_mem r, cl_mem z)
+                           cl_mem r, cl_mem z, cl_mem state, cl_uint k, int have_t)
 {
   enum clsph_status st = CLSPH_OK;
   const cl_uint nn = (cl_uint)n, ncells = (cl_uint)mg->grid->ncells;
   const real e = (real)eps;
   const int L = mg->nlevels, l0 = mg->l0;
-  CLSPH_TRY(KERN_SET(mg->k_scale, KARG(nn), KARG(mg->d_dw), KARG(r), KARG(mg->d_t)));
-  CLSPH_TRY(kern_launch(mg->dev, mg->k_scale, n, NULL));
+  if (!have_t) { /* t = dw ∘ r, unless the kernel that made r made it */
+    CLSPH_TRY(KERN_SET(mg->k_scale, KARG(nn), KARG(mg->d_dw), KARG(r), KARG(mg->d_t), KARG(k),
+                       KARG(state)));
+    CLSPH_TRY(kern_launch(mg->dev, mg->k_scale, n, NULL));
+  }
   CLSPH_TRY(KERN_SET(mg->k_down_csr, KARG(nn), KARG(row), KARG(col), KARG(val), KARG(e),
-                     KARG(mg->d_t), KARG(r), KARG(mg->d_res)));
+                     KARG(mg->d_t), KARG(r), KARG(mg->d_res), KARG(k), KARG(state)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_down_csr, n, NULL));
   if (l0 > 1) { /* level 1 (offset 0) outside the block: its b and t here */
     CLSPH_TRY(KERN_SET(mg->k_restrict_csr, KARG(ncells), KARG(mg->grid->d_start), KARG(mg->d_agg),
-                       KARG(mg->d_res), KARG(mg->d_cdw), KARG(mg->d_b), KARG(mg->d_t_c)));
+                       KARG(mg->d_res), KARG(mg->d_cdw), KARG(mg->d_b), KARG(mg->d_t_c), KARG(k),
+                       KARG(state)));
     CLSPH_TRY(kern_launch(mg->dev, mg->k_restrict_csr, ncells, NULL));
   }
   for (int l = 1; l < l0; ++l) { /* large stencil levels down */
@@ -369,7 +373,7 @@ enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_m
     const cl_uint sf = (cl_uint)f->so, fo = (cl_uint)f->vo, co = (cl_uint)c->vo;
     CLSPH_TRY(KERN_SET(mg->k_down, KARG(f->n), KARG(W), KARG(sf), KARG(fo), KARG(c->n), KARG(co),
                        KARG(mg->d_S), KARG(mg->d_nb), KARG(mg->d_cdw), KARG(mg->d_b),
-                       KARG(mg->d_t_c), KARG(mg->d_x)));
+                       KARG(mg->d_t_c), KARG(mg->d_x), KARG(k), KARG(state)));
     CLSPH_TRY(kern_launch(mg->dev, mg->k_down, (size_t)c->n.s[3], NULL));
   }
   {
@@ -378,7 +382,8 @@ enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_m
     CLSPH_TRY(KERN_SET(mg->k_block, KARG(bl0), KARG(bL), KARG(mg->d_info), KARG(m), KARG(mg->d_M),
                        KARG(mg->d_S), KARG(mg->d_nb), KARG(mg->d_pnb), KARG(mg->d_par),
                        KARG(mg->d_cdw), KARG(mg->d_b), KARG(mg->d_t_c), KARG(mg->d_x),
-                       KARG(mg->grid->d_start), KARG(mg->d_agg), KARG(mg->d_res)));
+                       KARG(mg->grid->d_start), KARG(mg->d_agg), KARG(mg->d_res), KARG(k),
+                       KARG(state)));
     CLSPH_TRY(kern_launch_wg(mg->dev, mg->k_block, mg->block_wg, mg->block_wg, NULL));
   }
   for (int l = l0 - 1; l >= 1; --l) { /* large stencil levels up */
@@ -388,11 +393,12 @@ enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_m
     const cl_uint so = (cl_uint)v->so, vo = (cl_uint)v->vo, co = (cl_uint)c->vo;
     CLSPH_TRY(KERN_SET(mg->k_up, KARG(cells), KARG(W), KARG(so), KARG(vo), KARG(co), KARG(mg->d_S),
                        KARG(mg->d_pnb), KARG(mg->d_par), KARG(mg->d_cdw), KARG(mg->d_t_c),
-                       KARG(mg->d_x)));
+                       KARG(mg->d_x), KARG(k), KARG(state)));
     CLSPH_TRY(kern_launch(mg->dev, mg->k_up, cells, NULL));
   }
   CLSPH_TRY(KERN_SET(mg->k_up_csr, KARG(nn), KARG(mg->d_agg), KARG(mg->d_AP), KARG(mg->d_APc),
-                     KARG(mg->d_dw), KARG(mg->d_t), KARG(mg->d_res), KARG(mg->d_x), KARG(z)));
+                     KARG(mg->d_dw), KARG(mg->d_t), KARG(mg->d_res), KARG(mg->d_x), KARG(z),
+                     KARG(k), KARG(state)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_up_csr, n, NULL));
 done:
   return st;

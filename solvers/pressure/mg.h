@@ -64,9 +64,11 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
  *  sorted by g: A + eps diag(A), dinv its inverse diagonal. */
 enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem row, cl_mem col,
                            cl_mem val, double eps, cl_mem dinv);
-/** @brief z = M⁻¹ r: one V(1,1) cycle from z = 0. */
+/** @brief z = M⁻¹ r: one V(1,1) cycle from z = 0, as part of Krylov iteration k whose state is
+ *  `state` (krylov.cl: the kernels do nothing once the solve ended before k). have_t: the kernel
+ *  that made r also made d_t = d_dw ∘ r (the first sweep from zero). */
 enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem val, double eps,
-                           cl_mem r, cl_mem z);
+                           cl_mem r, cl_mem z, cl_mem state, cl_uint k, int have_t);
 /** @brief Release (safe on a zeroed struct). */
 void mg_destroy(struct mg *mg);
 

@@ -1,6 +1,6 @@
 /* psolve.c: preconditioned BiCGStab on the device (van der Vorst 1992, right preconditioning),
  * with the operator applied matrix-free or from coefficients stored once per solve. The loop
- * reads like the algorithm; each line is one device operation.
+ * reads like the algorithm; each line is one device operation (krylov.cl).
  *
  *   r = b − A x,  r0 = r,  ρ = α = ω = 1,  v = p = 0
  *   repeat:  ρ' = (r0, r);          β = (ρ'/ρ)(α/ω)
@@ -8,7 +8,13 @@
  *            s = r − α v            (stop if ||s|| small: x += α p̂)
  *            ŝ = M⁻¹ s;   t = A ŝ;   ω = (t, s) / (t, t)
  *            x += α p̂ + ω ŝ;   r = s − ω t   (stop if ||r|| small)
- * A vanishing ρ' or ω (breakdown) restarts from the current residual. */
+ * A vanishing ρ' or ω (breakdown) restarts from the current residual.
+ *
+ * The scalars never come to the host: the kernels that need them add up the dot products'
+ * partial sums themselves, and a small state vector on the device says when and why the solve
+ * ended. The host enqueues a batch of iterations (as many as the last solve needed, and two
+ * more), reads the state once, and enqueues more only when the batch fell short; the iterations
+ * past the end return at once. */
 #include "psolve.h"
 
 #include <math.h>
@@ -113,19 +119,22 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
   struct {
     cl_kernel *k;
     const char *name;
-  } ks[] = {{&ps.k_dot, "blas1_dot"},
-            {&ps.k_dot2, "blas1_dot2"},
-            {&ps.k_sum, "blas1_sum"},
+  } ks[] = {{&ps.k_dot, "kr_dot"},
+            {&ps.k_dot_ts, "kr_dot_ts"},
+            {&ps.k_residual, "kr_residual"},
+            {&ps.k_shift, "kr_shift"},
+            {&ps.k_start, "kr_start"},
+            {&ps.k_begin, "kr_begin"},
+            {&ps.k_s, "kr_s"},
+            {&ps.k_end, "kr_end_iteration"},
+            {&ps.k_restart, "kr_restart"},
+            {&ps.k_total, "kr_total"},
+            {&ps.k_spmv, "kr_spmv"},
+            {&ps.k_scale, "kr_scale"},
+            {&ps.k_sweep, "kr_sweep"},
             {&ps.k_axpy, "blas1_axpy"},
-            {&ps.k_waxpy, "blas1_waxpy"},
-            {&ps.k_axpbypz, "blas1_axpbypz"},
-            {&ps.k_p, "blas1_bicgstab_p"},
-            {&ps.k_scale, "blas1_scale"},
-            {&ps.k_sweep, "blas1_jacobi_sweep"},
             {&ps.k_add_diag, "blas1_add_diag"},
-            {&ps.k_shift, "blas1_shift"},
             {&ps.k_invert, "blas1_invert"},
-            {&ps.k_spmv, "csr_spmv"},
             {&ps.k_csr_diag, "csr_diag"},
             {&ps.k_scan_blocks, "grid_scan_blocks"},
             {&ps.k_scan_top, "grid_scan_top"},
@@ -136,7 +145,14 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
                   &ps.d_ph, &ps.d_sh, &ps.d_q, &ps.d_dinv, &ps.d_diag, &ps.d_b};
   for (size_t i = 0; i < sizeof vs / sizeof *vs; ++i)
     CLSPH_TRY(kern_buffer(dev, ps.cap * sizeof(real), NULL, vs[i], "solver vector"));
-  CLSPH_TRY(kern_buffer(dev, 2 * 64 * sizeof(real), NULL, &ps.d_partial, "solver partial sums"));
+  CLSPH_TRY(kern_buffer(dev, PSOLVE_SETS * 64 * sizeof(real), NULL, &ps.d_partial,
+                        "solver partial sums"));
+  /* the state is in double where the device has it (kreal in krylov.cl); zero: ended at
+   * iteration 0, so that the first solve's start runs */
+  const double state0[PSOLVE_STATE] = {0};
+  ps.state_double = CLSPH_DOUBLE || dev->fp64;
+  CLSPH_TRY(kern_buffer(dev, sizeof state0, state0, &ps.d_state, "solver state"));
+  ps.last_its = 8;
   CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &ps.d_flags, "solver flags"));
   CLSPH_TRY(kern_buffer(dev, (ps.cap + 1) * sizeof(cl_uint), NULL, &ps.d_row, "csr rows"));
   CLSPH_TRY(kern_buffer(dev, (ps.cap + 1) * sizeof(cl_uint), NULL, &ps.d_count, "csr counts"));
@@ -154,8 +170,6 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
     ps.reserved += (double)ps.cap *
                    (3.0 * sizeof(real) + 0.5 * rows * (double)(sizeof(cl_uint) + sizeof(real)));
   kern_reserve(ps.reserved);
-  ps.h_partial = malloc(2 * 64 * sizeof *ps.h_partial);
-  CLSPH_CHECK(ps.h_partial != NULL, CLSPH_E_NOMEM, "out of memory");
   *out = ps;
   memset(&ps, 0, sizeof ps);
 done:
@@ -163,57 +177,52 @@ done:
   return st;
 }
 
-/* ---- device reductions and vector operations ---- */
+/* ---- device operations ---- */
 
-static enum clsph_status reduce(struct psolve *ps, cl_kernel k, int per_group, double *out)
-{
-  enum clsph_status st = CLSPH_OK;
-  real part[128];
-  size_t global = (size_t)ps->ngroups * PSOLVE_WG;
-  CLSPH_CHECK(per_group <= 2, CLSPH_E_INPUT, "reduce: at most two sums");
-  CLSPH_TRY(kern_launch_wg(ps->dev, k, global, PSOLVE_WG, NULL));
-  CLSPH_TRY(
-      kern_read(ps->dev, ps->d_partial, (size_t)(per_group * ps->ngroups) * sizeof(real), part));
-  for (int c = 0; c < per_group; ++c) {
-    double s = 0.0;
-    for (int g = 0; g < ps->ngroups; ++g) s += (double)part[per_group * g + c];
-    out[c] = s;
-  }
-done:
-  return st;
-}
-
-static enum clsph_status dot(struct psolve *ps, cl_uint n, cl_mem x, cl_mem y, double *out)
-{
-  enum clsph_status st = CLSPH_OK;
-  CLSPH_TRY(KERN_SET(ps->k_dot, KARG(n), KARG(x), KARG(y), KARG(ps->d_partial)));
-  CLSPH_TRY(reduce(ps, ps->k_dot, 1, out));
-done:
-  return st;
-}
-
-static enum clsph_status dot2(struct psolve *ps, cl_uint n, cl_mem a, cl_mem b, cl_mem c, cl_mem d,
-                              double out[2])
-{
-  enum clsph_status st = CLSPH_OK;
-  CLSPH_TRY(KERN_SET(ps->k_dot2, KARG(n), KARG(a), KARG(b), KARG(c), KARG(d), KARG(ps->d_partial)));
-  CLSPH_TRY(reduce(ps, ps->k_dot2, 2, out));
-done:
-  return st;
-}
+/* State slots and reasons (krylov.cl) */
+#define KR_DONE          0
+#define KR_REASON        1
+#define KR_RNORM         2
+#define KR_DIAG          6
+#define KR_RESTART_RHO   10
+#define KR_RESTART_OMEGA 11
+#define KR_RHO_SET       2 /* partial sums of (r0, r) */
+#define KR_BB_SET        0 /* partial sums of (b, b) */
 
 static enum clsph_status launch(struct psolve *ps, cl_kernel k, cl_uint n)
 {
   return kern_launch(ps->dev, k, n, NULL);
 }
 
-/* w = x + a y */
-static enum clsph_status waxpy(struct psolve *ps, cl_uint n, cl_mem w, cl_mem x, double a, cl_mem y)
+/* a kernel over the reductions' fixed work-groups (grid-stride loops) */
+static enum clsph_status launch_groups(struct psolve *ps, cl_kernel k)
+{
+  return kern_launch_wg(ps->dev, k, (size_t)ps->ngroups * PSOLVE_WG, PSOLVE_WG, NULL);
+}
+
+/* The iteration's state (krylov.cl), in double or in float as the device keeps it */
+static enum clsph_status read_state(struct psolve *ps, double *out)
 {
   enum clsph_status st = CLSPH_OK;
-  real ra = (real)a;
-  CLSPH_TRY(KERN_SET(ps->k_waxpy, KARG(n), KARG(w), KARG(x), KARG(ra), KARG(y)));
-  CLSPH_TRY(launch(ps, ps->k_waxpy, n));
+  if (ps->state_double) {
+    CLSPH_TRY(kern_read(ps->dev, ps->d_state, PSOLVE_STATE * sizeof(double), out));
+  } else {
+    float f[PSOLVE_STATE];
+    CLSPH_TRY(kern_read(ps->dev, ps->d_state, sizeof f, f));
+    for (int i = 0; i < PSOLVE_STATE; ++i) out[i] = (double)f[i];
+  }
+done:
+  return st;
+}
+
+/* partial sums of (x, y) into set `set`, in iteration k */
+static enum clsph_status dot(struct psolve *ps, cl_uint n, cl_uint k, cl_mem x, cl_mem y,
+                             cl_uint set)
+{
+  enum clsph_status st = CLSPH_OK;
+  CLSPH_TRY(KERN_SET(ps->k_dot, KARG(n), KARG(k), KARG(ps->d_state), KARG(x), KARG(y), KARG(set),
+                     KARG(ps->d_partial)));
+  CLSPH_TRY(launch_groups(ps, ps->k_dot));
 done:
   return st;
 }
@@ -223,22 +232,15 @@ static enum clsph_status copy(struct psolve *ps, cl_mem dst, cl_mem src, cl_uint
   return kern_copy(ps->dev, dst, src, n * sizeof(real));
 }
 
-static enum clsph_status zero(struct psolve *ps, cl_mem x, cl_uint n)
-{
-  const real z = 0;
-  return kern_fill(ps->dev, x, &z, sizeof z, n * sizeof(real));
-}
-
-/* Subtract the mean of x (PSOLVE_MEAN). */
-static enum clsph_status remove_mean(struct psolve *ps, cl_uint n, cl_mem x)
+/* dst = src − mean(src) (PSOLVE_MEAN), on the device */
+static enum clsph_status remove_mean(struct psolve *ps, cl_uint n, cl_mem src, cl_mem dst)
 {
   enum clsph_status st = CLSPH_OK;
-  double sum = 0.0;
-  CLSPH_TRY(KERN_SET(ps->k_sum, KARG(n), KARG(x), KARG(ps->d_partial)));
-  CLSPH_TRY(reduce(ps, ps->k_sum, 1, &sum));
-  real c = (real)(sum / n);
-  CLSPH_TRY(KERN_SET(ps->k_shift, KARG(n), KARG(x), KARG(c)));
-  CLSPH_TRY(launch(ps, ps->k_shift, n));
+  const cl_uint ng = (cl_uint)ps->ngroups;
+  CLSPH_TRY(KERN_SET(ps->k_total, KARG(n), KARG(src), KARG(ps->d_partial)));
+  CLSPH_TRY(launch_groups(ps, ps->k_total));
+  CLSPH_TRY(KERN_SET(ps->k_shift, KARG(n), KARG(ps->d_partial), KARG(ng), KARG(src), KARG(dst)));
+  CLSPH_TRY(launch_groups(ps, ps->k_shift));
 done:
   return st;
 }
@@ -274,27 +276,29 @@ done:
   return st;
 }
 
-/* y = A x, stored or recomputed, plus the reinforcement of a singular system. */
-static enum clsph_status apply(struct psolve *ps, const struct psolve_op *op, cl_mem x, cl_mem y)
+/* y = A x (A + ε diag A for a reinforced singular system), stored or recomputed, in iteration k
+ * (the stored product returns at once after the end of the solve). */
+static enum clsph_status apply(struct psolve *ps, const struct psolve_op *op, cl_mem x, cl_mem y,
+                               cl_uint k)
 {
   enum clsph_status st = CLSPH_OK;
   cl_uint n = (cl_uint)op->n;
   struct kern_timer *t = &ps->t_apply;
+  const real e = (real)(ps->opt.singular == PSOLVE_REINFORCE ? ps->opt.reinforce : 0.0);
   if (ps->opt.apply == PSOLVE_STORED) {
-    CLSPH_TRY(KERN_SET(ps->k_spmv, KARG(n), KARG(ps->d_row), KARG(ps->d_col), KARG(ps->d_val),
-                       KARG(x), KARG(y)));
+    CLSPH_TRY(KERN_SET(ps->k_spmv, KARG(n), KARG(k), KARG(ps->d_state), KARG(ps->d_row),
+                       KARG(ps->d_col), KARG(ps->d_val), KARG(e), KARG(x), KARG(y)));
     CLSPH_TRY(kern_launch(ps->dev, ps->k_spmv, n, t));
-  } else {
-    double t0 = t->on ? now() : 0.0;
-    CLSPH_TRY(op->apply(op->ctx, x, y));
-    if (t->on) {
-      CLSPH_TRY(kern_finish(ps->dev));
-      t->seconds += now() - t0;
-      t->launches += 1;
-    }
+    goto done;
+  }
+  double t0 = t->on ? now() : 0.0;
+  CLSPH_TRY(op->apply(op->ctx, x, y));
+  if (t->on) {
+    CLSPH_TRY(kern_finish(ps->dev));
+    t->seconds += now() - t0;
+    t->launches += 1;
   }
   if (ps->opt.singular == PSOLVE_REINFORCE) { /* y += ε diag(A) x */
-    real e = (real)ps->opt.reinforce;
     CLSPH_TRY(KERN_SET(ps->k_add_diag, KARG(n), KARG(y), KARG(e), KARG(ps->d_diag), KARG(x)));
     CLSPH_TRY(launch(ps, ps->k_add_diag, n));
   }
@@ -308,10 +312,10 @@ static double reinforcement(const struct psolve *ps)
   return ps->opt.singular == PSOLVE_REINFORCE ? ps->opt.reinforce : 0.0;
 }
 
-/* z = M⁻¹ r: none, multigrid, Jacobi, or Jacobi followed by sweeps toward A z = r (scratch: A z).
- */
+/* z = M⁻¹ r in iteration k: none, multigrid, Jacobi, or Jacobi followed by sweeps toward A z = r
+ * (scratch: A z). */
 static enum clsph_status precond(struct psolve *ps, const struct psolve_op *op, cl_mem r, cl_mem z,
-                                 cl_mem scratch)
+                                 cl_mem scratch, cl_uint k, int have_t)
 {
   enum clsph_status st = CLSPH_OK;
   cl_uint n = (cl_uint)op->n;
@@ -320,15 +324,18 @@ static enum clsph_status precond(struct psolve *ps, const struct psolve_op *op, 
     goto done;
   }
   if (ps->opt.precond == PSOLVE_MULTIGRID) {
-    CLSPH_TRY(mg_apply(&ps->mg, op->n, ps->d_row, ps->d_col, ps->d_val, reinforcement(ps), r, z));
+    CLSPH_TRY(mg_apply(&ps->mg, op->n, ps->d_row, ps->d_col, ps->d_val, reinforcement(ps), r, z,
+                       ps->d_state, k, have_t));
     goto done;
   }
-  CLSPH_TRY(KERN_SET(ps->k_scale, KARG(n), KARG(z), KARG(ps->d_dinv), KARG(r)));
+  CLSPH_TRY(KERN_SET(ps->k_scale, KARG(n), KARG(k), KARG(ps->d_state), KARG(z), KARG(ps->d_dinv),
+                     KARG(r)));
   CLSPH_TRY(launch(ps, ps->k_scale, n));
   if (ps->opt.precond == PSOLVE_JACOBI_SWEEPS) {
-    for (int k = 0; k < ps->opt.sweeps; ++k) { /* z <- z + D⁻¹ (r − A z) */
-      CLSPH_TRY(apply(ps, op, z, scratch));
-      CLSPH_TRY(KERN_SET(ps->k_sweep, KARG(n), KARG(z), KARG(ps->d_dinv), KARG(r), KARG(scratch)));
+    for (int s = 0; s < ps->opt.sweeps; ++s) { /* z <- z + D⁻¹ (r − A z) */
+      CLSPH_TRY(apply(ps, op, z, scratch, k));
+      CLSPH_TRY(KERN_SET(ps->k_sweep, KARG(n), KARG(k), KARG(ps->d_state), KARG(z),
+                         KARG(ps->d_dinv), KARG(r), KARG(scratch)));
       CLSPH_TRY(launch(ps, ps->k_sweep, n));
     }
   }
@@ -341,7 +348,7 @@ done:
 static enum clsph_status diagonal(struct psolve *ps, const struct psolve_op *op)
 {
   enum clsph_status st = CLSPH_OK;
-  cl_uint n = (cl_uint)op->n, flags = 0;
+  cl_uint n = (cl_uint)op->n;
   const cl_uint zero = 0;
   if (ps->opt.apply == PSOLVE_STORED) {
     CLSPH_TRY(
@@ -358,146 +365,128 @@ static enum clsph_status diagonal(struct psolve *ps, const struct psolve_op *op)
   }
   CLSPH_TRY(kern_fill(ps->dev, ps->d_flags, &zero, sizeof zero, sizeof zero));
   CLSPH_TRY(KERN_SET(ps->k_invert, KARG(n), KARG(ps->d_dinv), KARG(ps->d_flags)));
-  CLSPH_TRY(launch(ps, ps->k_invert, n));
-  CLSPH_TRY(kern_read(ps->dev, ps->d_flags, sizeof flags, &flags));
-  CLSPH_CHECK(flags == 0, CLSPH_E_BLOWUP,
-              "%s solve: the operator has a zero or non-finite diagonal entry", ps->opt.name);
+  CLSPH_TRY(launch(ps, ps->k_invert, n)); /* the flag reaches the host with the solve's state */
 done:
   return st;
 }
 
 /* ---- the solve ---- */
 
-static int finite(double v)
+/* Enqueue iteration k (krylov.cl): its kernels return at once once the solve has ended. */
+static enum clsph_status iteration(struct psolve *ps, const struct psolve_op *op, cl_uint k,
+                                   cl_mem x, real tiny)
 {
-  return isfinite(v);
+  enum clsph_status st = CLSPH_OK;
+  const cl_uint n = (cl_uint)op->n, ng = (cl_uint)ps->ngroups, update = 0;
+  const real noise = REAL_EPS; /* (r0, r) below noise ||r0|| ||r||: a breakdown (krylov.cl) */
+  /* with the multigrid, the kernels that make p and s also make its first sweep dw ∘ p, dw ∘ s */
+  const cl_uint scale = ps->opt.precond == PSOLVE_MULTIGRID;
+  cl_mem dw = scale ? ps->mg.d_dw : ps->d_q, t = scale ? ps->mg.d_t : ps->d_q;
+  CLSPH_TRY(KERN_SET(ps->k_begin, KARG(n), KARG(k), KARG(ng), KARG(update), KARG(ps->d_state),
+                     KARG(ps->d_partial), KARG(ps->d_p), KARG(ps->d_r), KARG(ps->d_v), KARG(noise),
+                     KARG(scale), KARG(dw), KARG(t)));
+  CLSPH_TRY(launch_groups(ps, ps->k_begin));                    /* ρ', β, p */
+  CLSPH_TRY(precond(ps, op, ps->d_p, ps->d_ph, ps->d_q, k, 1)); /* p̂ <- M⁻¹ p */
+  CLSPH_TRY(apply(ps, op, ps->d_ph, ps->d_v, k));               /* v <- A p̂ */
+  CLSPH_TRY(dot(ps, n, k, ps->d_r0, ps->d_v, 3));               /* (r0, v) */
+  CLSPH_TRY(KERN_SET(ps->k_s, KARG(n), KARG(k), KARG(ng), KARG(ps->d_state), KARG(ps->d_partial),
+                     KARG(ps->d_r), KARG(ps->d_v), KARG(ps->d_s), KARG(scale), KARG(dw), KARG(t)));
+  CLSPH_TRY(launch_groups(ps, ps->k_s));                        /* α, s = r − α v, (s, s) */
+  CLSPH_TRY(precond(ps, op, ps->d_s, ps->d_sh, ps->d_q, k, 1)); /* ŝ <- M⁻¹ s */
+  CLSPH_TRY(apply(ps, op, ps->d_sh, ps->d_t, k));               /* t <- A ŝ */
+  CLSPH_TRY(KERN_SET(ps->k_dot_ts, KARG(n), KARG(k), KARG(ps->d_state), KARG(ps->d_t),
+                     KARG(ps->d_s), KARG(ps->d_partial)));
+  CLSPH_TRY(launch_groups(ps, ps->k_dot_ts)); /* (t, s), (t, t) */
+  CLSPH_TRY(KERN_SET(ps->k_end, KARG(n), KARG(k), KARG(ng), KARG(tiny), KARG(ps->d_state),
+                     KARG(ps->d_partial), KARG(x), KARG(ps->d_ph), KARG(ps->d_sh), KARG(ps->d_r),
+                     KARG(ps->d_s), KARG(ps->d_t), KARG(ps->d_r0)));
+  CLSPH_TRY(launch_groups(ps, ps->k_end)); /* ω, x, r, (r, r), (r0, r) */
+done:
+  return st;
 }
 
 static enum clsph_status bicgstab(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
                                   struct psolve_result *res)
 {
   enum clsph_status st = CLSPH_OK;
-  const cl_uint n = (cl_uint)op->n;
-  const double tiny = 1e3 * REAL_EPS * REAL_EPS;
-  double bb = 0.0, rr = 0.0, d2[2];
-  double rho = 1.0, alpha = 1.0, omega = 1.0;
+  const cl_uint n = (cl_uint)op->n, ng = (cl_uint)ps->ngroups;
+  const real tiny = (real)(1e3 * REAL_EPS * REAL_EPS), rtol = (real)ps->opt.rtol,
+             atol = (real)ps->opt.atol;
+  double state[PSOLVE_STATE];
   int restarted_at = -1;
-
-  /* b (mean-free for a consistent singular system) and its norm */
-  CLSPH_TRY(copy(ps, ps->d_b, b, n));
-  if (ps->opt.singular == PSOLVE_MEAN) CLSPH_TRY(remove_mean(ps, n, ps->d_b));
-  CLSPH_TRY(dot(ps, n, ps->d_b, ps->d_b, &bb));
-  const double bnorm = sqrt(bb);
   res->its = 0;
   res->restarts = 0;
-  if (!finite(bnorm)) {
-    res->reason = PSOLVE_DIVERGED_NANORINF;
-    goto done;
-  }
-  if (bnorm == 0.0) { /* A x = 0: x = 0 */
-    CLSPH_TRY(zero(ps, x, n));
-    res->rnorm = 0.0;
-    res->reason = PSOLVE_CONVERGED_ATOL;
-    goto done;
-  }
-  const double stop = fmax(ps->opt.rtol * bnorm, ps->opt.atol);
-  /* r = b − A x (x: the initial guess); r0 = r */
-  CLSPH_TRY(apply(ps, op, x, ps->d_q));
-  CLSPH_TRY(waxpy(ps, n, ps->d_r, ps->d_b, -1.0, ps->d_q));
-  CLSPH_TRY(dot(ps, n, ps->d_r, ps->d_r, &rr));
-  res->rnorm = sqrt(rr) / bnorm;
-  if (sqrt(rr) <= stop) {
-    res->reason = sqrt(rr) <= ps->opt.atol ? PSOLVE_CONVERGED_ATOL : PSOLVE_CONVERGED_RTOL;
-    goto done;
-  }
-  CLSPH_TRY(copy(ps, ps->d_r0, ps->d_r, n));
-  CLSPH_TRY(zero(ps, ps->d_p, n));
-  CLSPH_TRY(zero(ps, ps->d_v, n));
-  double r0norm = sqrt(rr);
-  res->reason = PSOLVE_DIVERGED_ITS;
-  for (int it = 1; it <= ps->opt.max_it; ++it) {
-    res->its = it;
-    double rho_new = 0.0;
-    CLSPH_TRY(dot(ps, n, ps->d_r0, ps->d_r, &rho_new)); /* ρ' = (r0, r) */
-    if (!finite(rho_new)) {
-      res->reason = PSOLVE_DIVERGED_NANORINF;
-      goto done;
-    }
-    if (fabs(rho_new) <= tiny * r0norm * sqrt(rr)) { /* breakdown: restart with r0 = r */
-      if (restarted_at == it - 1) {
-        res->reason = PSOLVE_DIVERGED_BREAKDOWN;
-        goto done;
+  /* b (mean-free for a consistent singular system), r = b − A x (x: the initial guess), r0 = r */
+  if (ps->opt.singular == PSOLVE_MEAN)
+    CLSPH_TRY(remove_mean(ps, n, b, ps->d_b));
+  else
+    CLSPH_TRY(copy(ps, ps->d_b, b, n));
+  CLSPH_TRY(dot(ps, n, 0, ps->d_b, ps->d_b, KR_BB_SET));
+  CLSPH_TRY(apply(ps, op, x, ps->d_q, 0));
+  CLSPH_TRY(KERN_SET(ps->k_residual, KARG(n), KARG(ps->d_b), KARG(ps->d_q), KARG(ps->d_r),
+                     KARG(ps->d_partial)));
+  CLSPH_TRY(launch_groups(ps, ps->k_residual));
+  CLSPH_TRY(KERN_SET(ps->k_start, KARG(n), KARG(ng), KARG(rtol), KARG(atol), KARG(ps->d_flags),
+                     KARG(ps->d_state), KARG(ps->d_partial), KARG(x), KARG(ps->d_r), KARG(ps->d_r0),
+                     KARG(ps->d_p), KARG(ps->d_v)));
+  CLSPH_TRY(launch_groups(ps, ps->k_start));
+  /* batches: as many iterations as the last solve took and two more, then a quarter of that */
+  const int max_it = ps->opt.max_it;
+  const int recompute = ps->opt.apply == PSOLVE_RECOMPUTE; /* its kernels have no early exit */
+  int next = 1, batch = recompute ? ps->last_its : ps->last_its + 2;
+  for (;;) {
+    const int last = next + batch - 1 < max_it ? next + batch - 1 : max_it;
+    for (int k = next; k <= last; ++k) CLSPH_TRY(iteration(ps, op, (cl_uint)k, x, tiny));
+    const cl_uint check = 1, after = (cl_uint)last + 1, noscale = 0;
+    CLSPH_TRY(KERN_SET(ps->k_begin, KARG(n), KARG(after), KARG(ng), KARG(check), KARG(ps->d_state),
+                       KARG(ps->d_partial), KARG(ps->d_p), KARG(ps->d_r), KARG(ps->d_v), KARG(tiny),
+                       KARG(noscale), KARG(ps->d_q), KARG(ps->d_q)));
+    CLSPH_TRY(launch_groups(ps, ps->k_begin)); /* the last residual's test */
+    CLSPH_TRY(read_state(ps, state));
+    CLSPH_CHECK(state[KR_DIAG] == 0, CLSPH_E_BLOWUP,
+                "%s solve: the operator has a zero or non-finite diagonal entry", ps->opt.name);
+    const double done_at = (double)state[KR_DONE];
+    const int reason = (int)state[KR_REASON];
+    res->rnorm = (double)state[KR_RNORM];
+    if (done_at > (double)max_it) { /* still running */
+      res->its = last;
+      if (last >= max_it) {
+        res->reason = PSOLVE_DIVERGED_ITS;
+        break;
       }
-      restarted_at = it;
-      ++res->restarts;
-      CLSPH_TRY(copy(ps, ps->d_r0, ps->d_r, n));
-      CLSPH_TRY(zero(ps, ps->d_p, n));
-      CLSPH_TRY(zero(ps, ps->d_v, n));
-      r0norm = sqrt(rr);
-      rho = alpha = omega = 1.0;
-      rho_new = rr;
-    }
-    double beta = (rho_new / rho) * (alpha / omega);
-    real rb = (real)beta, ro = (real)omega; /* p <- r + β (p − ω v) */
-    CLSPH_TRY(KERN_SET(ps->k_p, KARG(n), KARG(ps->d_p), KARG(ps->d_r), KARG(rb), KARG(ro),
-                       KARG(ps->d_v)));
-    CLSPH_TRY(launch(ps, ps->k_p, n));
-    CLSPH_TRY(precond(ps, op, ps->d_p, ps->d_ph, ps->d_q)); /* p̂ <- M⁻¹ p */
-    CLSPH_TRY(apply(ps, op, ps->d_ph, ps->d_v));            /* v <- A p̂ */
-    double r0v = 0.0;
-    CLSPH_TRY(dot(ps, n, ps->d_r0, ps->d_v, &r0v));
-    if (!finite(r0v) || r0v == 0.0) {
-      res->reason = finite(r0v) ? PSOLVE_DIVERGED_BREAKDOWN : PSOLVE_DIVERGED_NANORINF;
-      goto done;
-    }
-    alpha = rho_new / r0v;                                      /* α <- ρ' / (r0, v) */
-    CLSPH_TRY(waxpy(ps, n, ps->d_s, ps->d_r, -alpha, ps->d_v)); /* s <- r − α v */
-    double ss = 0.0;
-    CLSPH_TRY(dot(ps, n, ps->d_s, ps->d_s, &ss));
-    if (sqrt(ss) <= stop) { /* x <- x + α p̂ */
-      real ra = (real)alpha;
-      CLSPH_TRY(KERN_SET(ps->k_axpy, KARG(n), KARG(ra), KARG(ps->d_ph), KARG(x)));
-      CLSPH_TRY(launch(ps, ps->k_axpy, n));
-      res->rnorm = sqrt(ss) / bnorm;
-      res->reason = PSOLVE_CONVERGED_RTOL;
-      goto done;
-    }
-    CLSPH_TRY(precond(ps, op, ps->d_s, ps->d_sh, ps->d_q)); /* ŝ <- M⁻¹ s */
-    CLSPH_TRY(apply(ps, op, ps->d_sh, ps->d_t));            /* t <- A ŝ */
-    CLSPH_TRY(dot2(ps, n, ps->d_t, ps->d_s, ps->d_t, ps->d_t, d2));
-    if (!finite(d2[0]) || !finite(d2[1])) {
-      res->reason = PSOLVE_DIVERGED_NANORINF;
-      goto done;
-    }
-    omega = d2[1] > 0.0 ? d2[0] / d2[1] : 0.0; /* ω <- (t, s) / (t, t) */
-    real ra = (real)alpha, rw = (real)omega;   /* x <- x + α p̂ + ω ŝ */
-    CLSPH_TRY(KERN_SET(ps->k_axpbypz, KARG(n), KARG(x), KARG(ra), KARG(ps->d_ph), KARG(rw),
-                       KARG(ps->d_sh)));
-    CLSPH_TRY(launch(ps, ps->k_axpbypz, n));
-    CLSPH_TRY(waxpy(ps, n, ps->d_r, ps->d_s, -omega, ps->d_t)); /* r <- s − ω t */
-    CLSPH_TRY(dot(ps, n, ps->d_r, ps->d_r, &rr));
-    res->rnorm = sqrt(rr) / bnorm;
-    if (!finite(rr)) {
-      res->reason = PSOLVE_DIVERGED_NANORINF;
-      goto done;
-    }
-    if (sqrt(rr) <= stop) {
-      res->reason = sqrt(rr) <= ps->opt.atol ? PSOLVE_CONVERGED_ATOL : PSOLVE_CONVERGED_RTOL;
-      goto done;
-    }
-    if (fabs(omega) <= tiny) { /* ω breakdown: the next iteration restarts */
-      rho = alpha = omega = 1.0;
-      CLSPH_TRY(copy(ps, ps->d_r0, ps->d_r, n));
-      CLSPH_TRY(zero(ps, ps->d_p, n));
-      CLSPH_TRY(zero(ps, ps->d_v, n));
-      r0norm = sqrt(rr);
-      ++res->restarts;
+      next = last + 1;
+      batch = recompute ? 1 : (ps->last_its / 4 > 2 ? ps->last_its / 4 : 2);
       continue;
     }
-    rho = rho_new;
+    const int k = (int)done_at;
+    res->its = k;
+    if (reason == KR_RESTART_RHO || reason == KR_RESTART_OMEGA) {
+      /* a vanishing ρ' restarts iteration k (twice in a row: give up), a vanishing ω the next */
+      const int rho = reason == KR_RESTART_RHO;
+      if (rho && restarted_at == k - 1) {
+        res->reason = PSOLVE_DIVERGED_BREAKDOWN;
+        break;
+      }
+      if (rho) restarted_at = k;
+      ++res->restarts;
+      const cl_uint slot = (cl_uint)(rho ? k - 1 : k);
+      CLSPH_TRY(KERN_SET(ps->k_restart, KARG(n), KARG(slot), KARG(ps->d_state), KARG(ps->d_partial),
+                         KARG(ps->d_r), KARG(ps->d_r0), KARG(ps->d_p), KARG(ps->d_v)));
+      CLSPH_TRY(launch_groups(ps, ps->k_restart));
+      next = rho ? k : k + 1;
+      batch = recompute ? 1 : ps->last_its + 2;
+      if (next > max_it) {
+        res->reason = PSOLVE_DIVERGED_ITS;
+        break;
+      }
+      continue;
+    }
+    res->reason = (enum psolve_reason)reason;
+    break;
   }
+  if (res->reason > 0 && res->its > 0) ps->last_its = res->its;
 done:
-  if (st == CLSPH_OK && ps->opt.singular == PSOLVE_MEAN) st = remove_mean(ps, n, x);
+  if (st == CLSPH_OK && ps->opt.singular == PSOLVE_MEAN) st = remove_mean(ps, n, x, x);
   return st;
 }
 
@@ -543,6 +532,8 @@ static enum clsph_status solve(struct psolve *ps, const struct psolve_op *op, cl
                          reinforcement(ps), ps->d_dinv));
   }
   CLSPH_TRY(bicgstab(ps, op, b, x, res));
+  log_debug("%s solve: %s, %d iterations, residual %.3g", ps->opt.name, reason_str(res->reason),
+            res->its, res->rnorm);
   if (res->reason > 0) {
     ps->failures = 0;
   } else {
@@ -629,23 +620,22 @@ done:
 
 void psolve_destroy(struct psolve *ps)
 {
-  cl_kernel *ks[] = {&ps->k_dot,       &ps->k_dot2,     &ps->k_sum,         &ps->k_axpy,
-                     &ps->k_waxpy,     &ps->k_axpbypz,  &ps->k_p,           &ps->k_scale,
-                     &ps->k_sweep,     &ps->k_add_diag, &ps->k_shift,       &ps->k_invert,
-                     &ps->k_spmv,      &ps->k_csr_diag, &ps->k_scan_blocks, &ps->k_scan_top,
-                     &ps->k_scan_apply};
+  cl_kernel *ks[] = {&ps->k_dot,      &ps->k_dot_ts,      &ps->k_residual, &ps->k_shift,
+                     &ps->k_start,    &ps->k_begin,       &ps->k_s,        &ps->k_end,
+                     &ps->k_restart,  &ps->k_total,       &ps->k_spmv,     &ps->k_scale,
+                     &ps->k_sweep,    &ps->k_axpy,        &ps->k_add_diag, &ps->k_invert,
+                     &ps->k_csr_diag, &ps->k_scan_blocks, &ps->k_scan_top, &ps->k_scan_apply};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {
     if (*ks[i] != NULL) clReleaseKernel(*ks[i]);
     *ks[i] = NULL;
   }
+  kern_release(&ps->d_state);
   cl_mem *ms[] = {&ps->d_r,    &ps->d_r0,  &ps->d_p,       &ps->d_v,     &ps->d_s,
                   &ps->d_t,    &ps->d_ph,  &ps->d_sh,      &ps->d_q,     &ps->d_dinv,
                   &ps->d_diag, &ps->d_b,   &ps->d_partial, &ps->d_flags, &ps->d_row,
                   &ps->d_col,  &ps->d_val, &ps->d_count,   &ps->d_block};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
   mg_destroy(&ps->mg);
-  free(ps->h_partial);
-  ps->h_partial = NULL;
   kern_reserve(-ps->reserved);
   ps->reserved = 0.0;
 }

@@ -2,7 +2,8 @@
  * the solver is a matrix-free preconditioned BiCGStab (van der Vorst 1992) whose operator is a
  * kernel launch over neighbours, either recomputing the kernel terms at every application or
  * applying coefficients stored once per step in a CSR layout; dot products are device reductions
- * and a few scalars per iteration come back to the host. UMFPACK (SuiteSparse) on the same
+ * whose scalars stay on the device, and one small state vector comes back per batch of
+ * iterations. UMFPACK (SuiteSparse) on the same
  * operator, assembled on the host, is the reference and the "direct" solver of small scenes. */
 #ifndef CLSPH_PSOLVE_H
 #define CLSPH_PSOLVE_H
@@ -77,14 +78,17 @@ struct psolve {
   struct psolve_options opt;
   size_t cap;   /* vector length the buffers hold */
   int failures; /* consecutive non-converged solves */
-  cl_kernel k_dot, k_dot2, k_sum, k_axpy, k_waxpy, k_axpbypz, k_p, k_scale, k_sweep, k_add_diag,
-      k_shift, k_invert, k_spmv, k_csr_diag, k_scan_blocks, k_scan_top, k_scan_apply;
+  cl_kernel k_dot, k_dot_ts, k_residual, k_shift, k_start, k_begin, k_s, k_end, k_restart, k_total,
+      k_spmv, k_scale, k_sweep, k_axpy, k_add_diag, k_invert, k_csr_diag, k_scan_blocks, k_scan_top,
+      k_scan_apply;
   cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags;
+  cl_mem d_state;                               /* the iteration's state (krylov.cl) */
   cl_mem d_row, d_col, d_val, d_count, d_block; /* stored layout */
   size_t nnz_cap;
-  double reserved; /* bytes announced for the stored operator and the multigrid levels */
-  int ngroups;     /* work-groups of the reductions */
-  double *h_partial;
+  double reserved;  /* bytes announced for the stored operator and the multigrid levels */
+  int ngroups;      /* work-groups of the reductions */
+  int last_its;     /* iterations of the last converged solve: the next one's first batch */
+  int state_double; /* the device keeps the state in double (krylov.cl's kreal) */
   struct kern_timer t_apply; /* device time of operator applications (benchmarks) */
   struct mg mg;              /* the multigrid preconditioner (PSOLVE_MULTIGRID) */
 };
@@ -126,6 +130,8 @@ enum clsph_status psolve_direct(struct psolve *ps, const struct psolve_op *op, c
 void psolve_destroy(struct psolve *ps);
 
 /** Kernel sources the solver needs after the neighbour sources (GRID_SOURCES). */
-#define PSOLVE_SOURCES "common/blas1.cl", "common/csr.cl", "common/mg.cl"
+#define PSOLVE_SOURCES "common/blas1.cl", "common/krylov.cl", "common/csr.cl", "common/mg.cl"
+#define PSOLVE_SETS    8  /* partial-sum sets of the dot products (krylov.cl) */
+#define PSOLVE_STATE   16 /* reals of the iteration's state (krylov.cl) */
 
 #endif /* CLSPH_PSOLVE_H */

@@ -8,6 +8,10 @@
  *     fixed: BiCGStab converges and equals UMFPACK up to a constant.
  *   - An iteration limit gives a non-converged result with its residual, repeated failures stop
  *     the run, and a NaN right-hand side is reported as such.
+ *   - The solve's traffic: a solve with the operator of the last one (multigrid, 40/side, level 1
+ *     in one work-group) reads from the device once and launches at most 5 + 13 (its + 2)
+ *     kernels (krylov.cl, mg.cl: 13 a BiCGStab iteration, the batch two past the last solve's
+ *     count); it gives the same iterations and solution as the first.
  * Float builds solve to rtol 1e-6 and compare at 2e-5: the Laplacian's condition number
  * (~ (L/dr)²/π² ≈ 160 at 40 per side) times the float round-off (1.2e-7) of its entries and sums.
  */
@@ -250,6 +254,70 @@ done:
   pproblem_destroy(&pp);
 }
 
+/* kernel launches and blocking reads recorded by the device's profile */
+static void traffic(struct kern_profile *p, long *launches, long *reads)
+{
+  struct kern_profile_entry *e = NULL;
+  size_t n = 0;
+  double secs = 0.0;
+  *launches = *reads = 0;
+  if (kern_profile_stop(p) || kern_profile_entries(p, &e, &n, &secs)) return;
+  for (size_t i = 0; i < n; ++i) {
+    if (strcmp(e[i].name, "(read)") == 0)
+      *reads += e[i].launches;
+    else if (e[i].name[0] != '(')
+      *launches += e[i].launches;
+  }
+  free(e);
+}
+
+static void check_traffic(struct dev *dev)
+{
+  struct pproblem pp;
+  struct psolve ps;
+  struct psolve_options o;
+  struct psolve_result first, again;
+  struct pproblem_spec spec = {.side = 40, .seed = 7};
+  const real z = 0;
+  double *x1 = NULL, *x2 = NULL;
+  memset(&pp, 0, sizeof pp);
+  memset(&ps, 0, sizeof ps);
+  options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_MULTIGRID, PSOLVE_REGULAR);
+  if (pproblem_create(dev, &spec, &pp) || !(x1 = calloc(pp.n, sizeof *x1)) ||
+      !(x2 = calloc(pp.n, sizeof *x2)) || kern_profile_create(dev) ||
+      psolve_create(dev, pp.prog, pp.n, &o, &ps)) {
+    TC_CHECK(0, "traffic: set-up");
+    goto done;
+  }
+  cl_mem b = pset_mem(&pp.ps, pp.f_b), x = pset_mem(&pp.ps, pp.f_x);
+  long launches = 0, reads = 0;
+  if (kern_fill(dev, x, &z, sizeof z, pp.n * sizeof(real)) ||
+      psolve_solve(&ps, &pp.po.op, b, x, &first) || pproblem_read(&pp, x, x1) ||
+      kern_fill(dev, x, &z, sizeof z, pp.n * sizeof(real)))
+    goto fail;
+  kern_profile_start(dev->profile);
+  if (psolve_solve_again(&ps, &pp.po.op, b, x, &again)) goto fail;
+  traffic(dev->profile, &launches, &reads);
+  if (pproblem_read(&pp, x, x2)) goto fail;
+  TC_CHECK(first.reason > 0 && again.reason > 0 && again.its == first.its,
+           "traffic: the same iterations again (%d, %d)", first.its, again.its);
+  TC_NEAR(rel_diff(x2, x1, pp.n, 0), 0.0, CLSPH_DOUBLE ? 1e-12 : 1e-5,
+          "traffic: the same solution again");
+  TC_CHECK(reads == 1, "traffic: one blocking read a solve (%ld)", reads);
+  TC_CHECK(launches <= 5 + 13 * (again.its + 2), "traffic: %ld launches for %d iterations",
+           launches, again.its);
+  printf("traffic, multigrid 40/side: %d its, %ld launches, %ld blocking reads a solve\n",
+         again.its, launches, reads);
+  goto done;
+fail:
+  TC_CHECK(0, "traffic: the solves run");
+done:
+  psolve_destroy(&ps);
+  pproblem_destroy(&pp);
+  free(x1);
+  free(x2);
+}
+
 int main(void)
 {
   struct dev dev;
@@ -264,6 +332,7 @@ int main(void)
   check_dirichlet(&dev, 32, 0.3, 1, &ej);
   check_singular(&dev);
   check_failures(&dev);
+  check_traffic(&dev);
   dev_close(&dev);
   return tc_finish("test_psolve");
 }

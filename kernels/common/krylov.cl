@@ -1,0 +1,433 @@
+/* krylov.cl: the BiCGStab iteration with its scalars on the device (solvers/pressure/psolve.c).
+ *
+ * The host enqueues a batch of iterations without waiting and reads back one small state vector
+ * when the batch is done. Every dot product leaves BLAS1 partial sums (blas1.cl: a fixed number
+ * of work-groups, so the sum's order, hence its value, is the same on every run) in one of the
+ * sets of `part`; the kernel that needs the scalar adds that set up again, in the same order, in
+ * the first item of each work-group. α, β, ω and ρ live in two slots of the state (iteration k
+ * writes slot k mod 2 and reads slot (k − 1) mod 2), and every kernel of iteration k returns at
+ * once when the state says the solve ended before k, so that the iterations enqueued past the
+ * end cost a launch each and nothing else.
+ *
+ * State (KR_*): the iteration at which the solve ended (KR_BIG while it runs), why (KR_REASON:
+ * the psolve_reason codes, or KR_RESTART_RHO / KR_RESTART_OMEGA for the host to restart), the
+ * last relative residual, the absolute stopping tolerance, ||b||, ||r0|| of the shadow residual
+ * (−1: take ||r|| at the next iteration's start), a flag raised by the diagonal's inversion, and
+ * atol. */
+/* The state and the scalars are kept in double wherever the device has it, also in float builds:
+ * the old host loop did its scalar arithmetic in double, and in float the singular test system
+ * (test_psolve, mean fixed, multigrid) took 37 iterations with float scalars against 11. */
+#ifdef cl_khr_fp64
+#pragma OPENCL EXTENSION cl_khr_fp64 : enable
+typedef double kreal;
+#define KR(x) x
+#else
+typedef float kreal;
+#define KR(x) x##f
+#endif
+
+#define KR_DONE    0
+#define KR_REASON  1
+#define KR_RNORM   2
+#define KR_STOP    3
+#define KR_BNORM   4
+#define KR_R0NORM  5
+#define KR_DIAG    6
+#define KR_ATOL    7
+#define KR_SLOT(k) (8 + 4 * ((k)&1)) /* ρ, α, ω of iteration k */
+#define KR_BIG     KR(1e30)
+
+#define KR_RESTART_RHO   10
+#define KR_RESTART_OMEGA 11
+
+/* Partial-sum sets (BLAS1_GROUPS partial sums each) */
+#define KR_BB  0 /* (b, b) */
+#define KR_RR  1 /* (r, r) */
+#define KR_RHO 2 /* (r0, r) */
+#define KR_R0V 3 /* (r0, v) */
+#define KR_SS  4 /* (s, s) */
+#define KR_TS  5 /* (t, s) */
+#define KR_TT  6 /* (t, t) */
+#define KR_SUM 7 /* Σ x */
+
+#ifndef BLAS1_GROUPS
+#define BLAS1_GROUPS 64
+#endif
+
+/* The sum of a set's partial sums, compensated (Kahan): in float the plain sum of 64 partials
+ * loses about 64 ulps, and the singular system's mean, taken from such a sum, left it
+ * inconsistent by that much (33 iterations and 8.5e-5 off UMFPACK instead of 4 and 1e-6). */
+kreal kr_sum(__global const real *part, const uint set, const uint ngroups)
+{
+  kreal s = KR(0.0), c = KR(0.0);
+  for (uint g = 0; g < ngroups; ++g) {
+    const kreal y = (kreal)part[set * BLAS1_GROUPS + g] - c;
+    const kreal t = s + y;
+    c = (t - s) - y;
+    s = t;
+  }
+  return s;
+}
+
+/* 1 when the solve ended before iteration k (every item of a work-group agrees) */
+int kr_over(__global const kreal *st, const uint k)
+{
+  return st[KR_DONE] < (kreal)k;
+}
+
+/* End the solve at iteration k (first item of group 0 only) */
+void kr_end(__global kreal *st, const uint k, const int reason, const kreal rnorm)
+{
+  st[KR_DONE] = (kreal)k;
+  st[KR_REASON] = (kreal)reason;
+  st[KR_RNORM] = rnorm;
+}
+
+/* Both sums of one pass: the first set in s, the second in t (local, BLAS1_WG each) */
+void kr_group_sum2(__local real *s, __local real *t, __global real *part, const uint set_s,
+                   const uint set_t)
+{
+  const uint l = get_local_id(0), g = get_group_id(0);
+  for (uint w = BLAS1_WG / 2; w > 0; w >>= 1) {
+    barrier(CLK_LOCAL_MEM_FENCE);
+    if (l < w) {
+      s[l] += s[l + w];
+      t[l] += t[l + w];
+    }
+  }
+  if (l == 0) {
+    part[set_s * BLAS1_GROUPS + g] = s[0];
+    part[set_t * BLAS1_GROUPS + g] = t[0];
+  }
+}
+
+/* partial set `set` of (x, y) */
+__kernel void kr_dot(const uint n, const uint k, __global const kreal *st, __global const real *x,
+                     __global const real *y, const uint set, __global real *part)
+{
+  __local real s[BLAS1_WG];
+  if (kr_over(st, k)) return;
+  real acc = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) acc += x[i] * y[i];
+  s[get_local_id(0)] = acc;
+  blas1_group_sum(s, part + set * BLAS1_GROUPS, get_group_id(0));
+}
+
+/* sets KR_TS, KR_TT: (t, s) and (t, t) */
+__kernel void kr_dot_ts(const uint n, const uint k, __global const kreal *st,
+                        __global const real *t, __global const real *s, __global real *part)
+{
+  __local real a[BLAS1_WG], b[BLAS1_WG];
+  if (kr_over(st, k)) return;
+  real acc = R(0.0), acc2 = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    acc += t[i] * s[i];
+    acc2 += t[i] * t[i];
+  }
+  a[get_local_id(0)] = acc;
+  b[get_local_id(0)] = acc2;
+  kr_group_sum2(a, b, part, KR_TS, KR_TT);
+}
+
+/* r = b − q, with (r, r) into sets KR_RR and KR_RHO (r0 will be r) */
+__kernel void kr_residual(const uint n, __global const real *b, __global const real *q,
+                          __global real *r, __global real *part)
+{
+  __local real s[BLAS1_WG], t[BLAS1_WG];
+  real acc = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    const real v = b[i] - q[i];
+    r[i] = v;
+    acc += v * v;
+  }
+  s[get_local_id(0)] = acc;
+  t[get_local_id(0)] = acc;
+  kr_group_sum2(s, t, part, KR_RR, KR_RHO);
+}
+
+/* dst = src − mean, the mean from set KR_SUM (a consistent singular system's b and x) */
+__kernel void kr_shift(const uint n, __global const real *part, const uint ngroups,
+                       __global const real *src, __global real *dst)
+{
+  __local real c;
+  if (get_local_id(0) == 0) c = (real)(kr_sum(part, KR_SUM, ngroups) / (kreal)n);
+  barrier(CLK_LOCAL_MEM_FENCE);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) dst[i] = src[i] - c;
+}
+
+/* Start: ||b|| (set KR_BB) and ||r|| (set KR_RR) decide whether there is anything to do; if so,
+ * r0 = r, p = v = 0, ρ = α = ω = 1. */
+__kernel void kr_start(const uint n, const uint ngroups, const real rtol, const real atol,
+                       __global const uint *flags, __global kreal *st, __global const real *part,
+                       __global real *x, __global const real *r, __global real *r0,
+                       __global real *p, __global real *v)
+{
+  __local int what; /* 0 iterate, 1 x = 0, 2 nothing */
+  const int first = get_global_id(0) == 0;
+  if (get_local_id(0) == 0) {
+    const kreal bnorm = sqrt(kr_sum(part, KR_BB, ngroups));
+    const kreal rn = sqrt(kr_sum(part, KR_RR, ngroups));
+    const kreal stop = fmax((kreal)rtol * bnorm, (kreal)atol);
+    what = 0;
+    if (!isfinite(bnorm)) {
+      what = 2;
+      if (first) kr_end(st, 0, -3, KR(0.0));
+    } else if (bnorm == KR(0.0)) { /* A x = 0: x = 0 */
+      what = 1;
+      if (first) kr_end(st, 0, 2, KR(0.0));
+    } else if (rn <= stop) {
+      what = 2;
+      if (first) kr_end(st, 0, rn <= (kreal)atol ? 2 : 1, rn / bnorm);
+    } else if (first) {
+      st[KR_DONE] = KR_BIG;
+      st[KR_REASON] = KR(0.0);
+      st[KR_RNORM] = rn / bnorm;
+    }
+    if (first) {
+      st[KR_ATOL] = atol;
+      st[KR_DIAG] = flags[0] != 0u ? KR(1.0) : KR(0.0);
+      st[KR_STOP] = stop;
+      st[KR_BNORM] = bnorm;
+      st[KR_R0NORM] = rn;
+      st[KR_SLOT(0)] = st[KR_SLOT(0) + 1] = st[KR_SLOT(0) + 2] = KR(1.0);
+    }
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+  if (what == 2) return;
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    if (what == 1) {
+      x[i] = R(0.0);
+    } else {
+      r0[i] = r[i];
+      p[i] = R(0.0);
+      v[i] = R(0.0);
+    }
+  }
+}
+
+/* Iteration k begins: the residual of k − 1 (sets KR_RR, KR_RHO) ends the solve if it is small
+ * or not finite; else ρ' = (r0, r), β = (ρ'/ρ)(α/ω) and p = r + β (p − ω v), and with `scale`
+ * t = dw ∘ p for the multigrid. check = 1: the test alone (after the last iteration of a batch).
+ * ρ' below noise ||r0|| ||r|| (noise: the precision's epsilon) is the dot product's rounding
+ * alone: a breakdown, restarted from r. A smaller bound let a hydrostatic tank's second solve go
+ * on with ρ' 16 orders under ρ, and the next α (7e15) ruin x while the recursive residual
+ * converged. Here and in kr_s the loop is written twice rather than storing t under `if (scale)`:
+ * PoCL 5 (LLVM 15) compiled that conditional store to writes past n (valgrind: 8 bytes past p). */
+__kernel void kr_begin(const uint n, const uint k, const uint ngroups, const uint check,
+                       __global kreal *st, __global const real *part, __global real *p,
+                       __global const real *r, __global const real *v, const real noise,
+                       const uint scale, __global const real *dw, __global real *t)
+{
+  __local real beta, omega; /* for the vectors, rounded as the scalars of a host loop were */
+  __local int go;
+  if (kr_over(st, k)) return;
+  const int first = get_global_id(0) == 0;
+  if (get_local_id(0) == 0) {
+    const kreal rr = kr_sum(part, KR_RR, ngroups), rho = kr_sum(part, KR_RHO, ngroups);
+    const kreal bnorm = st[KR_BNORM], stop = st[KR_STOP], rn = sqrt(rr);
+    go = 0;
+    if (!isfinite(rr)) {
+      if (first) kr_end(st, k - 1, -3, rn / bnorm);
+    } else if (rn <= stop) {
+      if (first) kr_end(st, k - 1, rn <= st[KR_ATOL] ? 2 : 1, rn / bnorm);
+    } else if (check) {
+      if (first) st[KR_RNORM] = rn / bnorm;
+    } else if (!isfinite(rho)) {
+      if (first) kr_end(st, k, -3, rn / bnorm);
+    } else if (fabs(rho) <= (kreal)noise * (st[KR_R0NORM] < KR(0.0) ? rn : st[KR_R0NORM]) * rn) {
+      if (first) kr_end(st, k, KR_RESTART_RHO, rn / bnorm); /* breakdown: the host restarts */
+    } else {
+      const uint o = KR_SLOT(k - 1);
+      beta = (real)((rho / st[o]) * (st[o + 1] / st[o + 2]));
+      omega = (real)st[o + 2];
+      go = 1;
+      if (first) {
+        st[KR_SLOT(k)] = rho;
+        st[KR_RNORM] = rn / bnorm;
+        if (st[KR_R0NORM] < KR(0.0)) st[KR_R0NORM] = rn;
+      }
+    }
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+  if (!go) return;
+  if (scale) { /* and the multigrid's first sweep (mg.cl) */
+    for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+      const real w = r[i] + beta * (p[i] - omega * v[i]);
+      p[i] = w;
+      t[i] = dw[i] * w;
+    }
+  } else {
+    for (uint i = get_global_id(0); i < n; i += get_global_size(0))
+      p[i] = r[i] + beta * (p[i] - omega * v[i]);
+  }
+}
+
+/* α = ρ' / (r0, v) (set KR_R0V); s = r − α v with (s, s) into set KR_SS, and with `scale`
+ * t = dw ∘ s for the multigrid */
+__kernel void kr_s(const uint n, const uint k, const uint ngroups, __global kreal *st,
+                   __global real *part, __global const real *r, __global const real *v,
+                   __global real *s, const uint scale, __global const real *dw, __global real *t)
+{
+  __local real a[BLAS1_WG];
+  __local real alpha;
+  __local int go;
+  if (kr_over(st, k)) return;
+  const int first = get_global_id(0) == 0;
+  if (get_local_id(0) == 0) {
+    const kreal r0v = kr_sum(part, KR_R0V, ngroups);
+    go = 0;
+    if (!isfinite(r0v)) {
+      if (first) kr_end(st, k, -3, st[KR_RNORM]);
+    } else if (r0v == KR(0.0)) {
+      if (first) kr_end(st, k, -2, st[KR_RNORM]);
+    } else {
+      const kreal a = st[KR_SLOT(k)] / r0v;
+      alpha = (real)a;
+      go = 1;
+      if (first) st[KR_SLOT(k) + 1] = a;
+    }
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+  if (!go) return;
+  real acc = R(0.0);
+  if (scale) { /* and the multigrid's first sweep (mg.cl) */
+    for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+      const real w = r[i] - alpha * v[i];
+      s[i] = w;
+      t[i] = dw[i] * w;
+      acc += w * w;
+    }
+  } else {
+    for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+      const real w = r[i] - alpha * v[i];
+      s[i] = w;
+      acc += w * w;
+    }
+  }
+  a[get_local_id(0)] = acc;
+  blas1_group_sum(a, part + KR_SS * BLAS1_GROUPS, get_group_id(0));
+}
+
+/* The end of iteration k: if ||s|| is small, x += α p̂ and the solve ends; else ω = (t, s)/(t, t),
+ * x += α p̂ + ω ŝ, r = s − ω t with (r, r) and (r0, r) into sets KR_RR and KR_RHO; a vanishing
+ * ω asks the host for a restart. */
+__kernel void kr_end_iteration(const uint n, const uint k, const uint ngroups, const real tiny,
+                               __global kreal *st, __global real *part, __global real *x,
+                               __global const real *ph, __global const real *sh, __global real *r,
+                               __global const real *s, __global const real *t,
+                               __global const real *r0)
+{
+  __local real a[BLAS1_WG], b[BLAS1_WG];
+  __local real alpha, omega;
+  __local int mode; /* 0 nothing, 1 x += α p̂, 2 the full update */
+  if (kr_over(st, k)) return;
+  const int first = get_global_id(0) == 0;
+  if (get_local_id(0) == 0) {
+    const kreal bnorm = st[KR_BNORM], sn = sqrt(kr_sum(part, KR_SS, ngroups));
+    alpha = (real)st[KR_SLOT(k) + 1];
+    if (sn <= st[KR_STOP]) {
+      mode = 1;
+      if (first) kr_end(st, k, 1, sn / bnorm);
+    } else {
+      const kreal ts = kr_sum(part, KR_TS, ngroups), tt = kr_sum(part, KR_TT, ngroups);
+      if (!isfinite(ts) || !isfinite(tt)) {
+        mode = 0;
+        if (first) kr_end(st, k, -3, st[KR_RNORM]);
+      } else {
+        mode = 2;
+        const kreal w = tt > KR(0.0) ? ts / tt : KR(0.0);
+        omega = (real)w;
+        if (first) {
+          st[KR_SLOT(k) + 2] = w;
+          if (fabs(w) <= (kreal)tiny) kr_end(st, k, KR_RESTART_OMEGA, st[KR_RNORM]);
+        }
+      }
+    }
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+  if (mode == 0) return;
+  if (mode == 1) {
+    for (uint i = get_global_id(0); i < n; i += get_global_size(0)) x[i] += alpha * ph[i];
+    return;
+  }
+  real acc = R(0.0), acc2 = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    x[i] += alpha * ph[i] + omega * sh[i];
+    const real w = s[i] - omega * t[i];
+    r[i] = w;
+    acc += w * w;
+    acc2 += r0[i] * w;
+  }
+  a[get_local_id(0)] = acc;
+  b[get_local_id(0)] = acc2;
+  kr_group_sum2(a, b, part, KR_RR, KR_RHO);
+}
+
+/* A restart after a breakdown at iteration k (the host saw it): r0 = r, p = v = 0, the slot that
+ * iteration `slot` reads set to ρ = α = ω = 1, (r0, r) = (r, r) into set KR_RHO, ||r0|| taken at
+ * the next start, and the solve running again. */
+__kernel void kr_restart(const uint n, const uint slot, __global kreal *st, __global real *part,
+                         __global const real *r, __global real *r0, __global real *p,
+                         __global real *v)
+{
+  __local real a[BLAS1_WG];
+  if (get_global_id(0) == 0) {
+    st[KR_SLOT(slot)] = st[KR_SLOT(slot) + 1] = st[KR_SLOT(slot) + 2] = KR(1.0);
+    st[KR_R0NORM] = KR(-1.0);
+    st[KR_DONE] = KR_BIG;
+    st[KR_REASON] = KR(0.0);
+  }
+  real acc = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    r0[i] = r[i];
+    p[i] = R(0.0);
+    v[i] = R(0.0);
+    acc += r[i] * r[i];
+  }
+  a[get_local_id(0)] = acc;
+  blas1_group_sum(a, part + KR_RHO * BLAS1_GROUPS, get_group_id(0));
+}
+
+/* Σ x into set KR_SUM */
+__kernel void kr_total(const uint n, __global const real *x, __global real *part)
+{
+  __local real s[BLAS1_WG];
+  real acc = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) acc += x[i];
+  s[get_local_id(0)] = acc;
+  blas1_group_sum(s, part + KR_SUM * BLAS1_GROUPS, get_group_id(0));
+}
+
+/* y = (A + ε diag A) x from the stored rows (csr.cl layout, diagonal first), in iteration k */
+__kernel void kr_spmv(const uint n, const uint k, __global const kreal *st,
+                      __global const uint *row, __global const uint *col, __global const real *val,
+                      const real eps, __global const real *x, __global real *y)
+{
+  if (kr_over(st, k)) return;
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  const uint end = row[i + 1];
+  real s = eps * val[row[i]] * x[i];
+  for (uint m = row[i]; m < end; ++m) s += val[m] * x[col[m]];
+  y[i] = s;
+}
+
+/* y = d ∘ x (Jacobi), in iteration k */
+__kernel void kr_scale(const uint n, const uint k, __global const kreal *st, __global real *y,
+                       __global const real *d, __global const real *x)
+{
+  if (kr_over(st, k)) return;
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  y[i] = d[i] * x[i];
+}
+
+/* z += d ∘ (r − q) (a Jacobi sweep toward A z = r, q = A z), in iteration k */
+__kernel void kr_sweep(const uint n, const uint k, __global const kreal *st, __global real *z,
+                       __global const real *d, __global const real *r, __global const real *q)
+{
+  if (kr_over(st, k)) return;
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  z[i] += d[i] * (r[i] - q[i]);
+}
