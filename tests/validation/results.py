@@ -416,18 +416,18 @@ def wall(s, f=".1f"):
 
 
 def profile_section(runs):
-    """Runs made with --profile: the device time of the pressure solve (the csr_* and blas1_*
+    """Runs made with --profile: the device time of the pressure solve (the csr_*, blas1_*, kr_*
     kernels) and of the largest other kernels, as shares of the wall time."""
     rows = [s for s in runs if s.get("profile")]
     if not rows:
         return []
     out = ["", "## Where the time goes (runs made with `--profile`)", "",
-           "| run | particles | steps profiled | wall s | s per step | pressure solve (csr_*, blas1_*, mg_*) "
+           "| run | particles | steps profiled | wall s | s per step | pressure solve (csr_*, blas1_*, kr_*, mg_*) "
            "| solver its mean | launches per step | largest other kernels |",
            "|---|---|---|---|---|---|---|---|---|"]
     for s in rows:
         prof, secs, n = s["profile"], s["wall_seconds"], max(steps_run(s), 1)
-        solver = ("csr_", "blas1_", "mg_")
+        solver = ("csr_", "blas1_", "kr_", "mg_")
         solve = sum(k["seconds"] for k in prof["kernels"] if k["name"].startswith(solver))
         others = sorted((k for k in prof["kernels"] if not k["name"].startswith(solver)),
                         key=lambda k: -k["seconds"])[:3]
