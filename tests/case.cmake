@@ -463,6 +463,16 @@ clsph_cli_test(case_no_walls ARGS info ${CASE_DIR}/bad_no_walls.lua RC 2
 clsph_failure_test(health_solver ${CASE_DIR}/solver_starved.lua solver
                    "the pressure solve failed at step 10,"
                    MESSAGE "the pressure solve failed 10 times in a row .*: stopping; the scheme options solver_rtol, solver_max_it and solver_precond")
+# Solver options that no solve can meet are refused before the run, naming the option: a
+# tolerance below 4 ε of the build's precision, not a number, 1, and no iteration at all.
+clsph_cli_test(solver_rtol_below_eps ARGS info ${CASE_DIR}/bad_solver.lua --set what=1 RC 2
+               REGEX "solver_rtol = 1e-20 is below what a (double|float) build can reach \\(4 ε = [0-9.e-]+\\).*bad_solver.lua: in scheme option solver_rtol")
+clsph_cli_test(solver_rtol_nan ARGS info ${CASE_DIR}/bad_solver.lua --set what=2 RC 2
+               REGEX "solver_rtol must be in \\(0, 1\\).*bad_solver.lua: in scheme option solver_rtol")
+clsph_cli_test(solver_max_it_zero ARGS info ${CASE_DIR}/bad_solver.lua --set what=3 RC 2
+               REGEX "solver_max_it must be 1 to 1e6.*bad_solver.lua: in scheme option solver_max_it")
+clsph_cli_test(solver_rtol_one ARGS info ${CASE_DIR}/bad_solver.lua --set what=4 RC 2
+               REGEX "solver_rtol must be in \\(0, 1\\).*bad_solver.lua: in scheme option solver_rtol")
 # Healthy runs that the clustering check lets through with the default checks: flows that press
 # particles together as they should, and reach their end (health.* bounds read summary.json's
 # health block). Both came within the old limit, 0.5 dr, and were stopped there.

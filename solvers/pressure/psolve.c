@@ -90,6 +90,11 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
     o->reinforce = number;
   } else if (strcmp(key, "rtol") == 0) {
     CLSPH_CHECK(number > 0 && number < 1, CLSPH_E_INPUT, "solver_rtol must be in (0, 1)");
+    /* the residual's own rounding is about ε ‖b‖: below a few ε the solve stalls to solver_max_it
+     * (or stops on a recursive residual that the true one does not follow) */
+    CLSPH_CHECK(number >= 4.0 * REAL_EPS, CLSPH_E_INPUT,
+                "solver_rtol = %g is below what a %s build can reach (4 ε = %.2g)", number,
+                CLSPH_DOUBLE ? "double" : "float", 4.0 * REAL_EPS);
     o->rtol = number;
   } else if (strcmp(key, "atol") == 0) {
     CLSPH_CHECK(number >= 0, CLSPH_E_INPUT, "solver_atol must not be negative");

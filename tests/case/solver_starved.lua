@@ -5,7 +5,7 @@ param { n = 10, t_end = 1 }
 
 domain { 0, 0, 1, 1 }
 particles { dr = 1 / n }
-scheme { "isph-usaw", solver_max_it = 1, solver_rtol = 1e-12 }
+scheme { "isph-usaw", solver_max_it = 1, solver_rtol = 1e-6 }
 fluid { density = 1, viscosity = 0.01 }
 box_wall { 0, 0, 1, 1, lid_velocity = {1, 0} }
 fill { 0, 0, 1, 1 }
