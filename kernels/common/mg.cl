@@ -213,19 +213,10 @@ __kernel void mg_damp(const uint n, const real omega, __global const real *dinv,
  * so that the way up reads the coarse solution, not a prolonged vector. A stencil level's res is
  * its x until the way up overwrites it; the fine level keeps AP (mg_ap_csr). The stencils'
  * neighbours (nb), their parents (pnb) and each cell's parent (par) are tables made with the
- * levels (mg.c). The kernel that makes a level's b makes its t. Launches: the fine t (mg_scale)
- * and res (mg_down_csr), for the levels above MG_BLOCK cells the restriction and one launch a
- * level each way, the small levels in one work-group (mg_block), the fine level up. */
-
-/* t = dw ∘ r, fine level */
-__kernel void mg_scale(const uint n, __global const real *dw, __global const real *r,
-                       __global real *t, const uint kit, __global const kreal *st)
-{
-  if (kr_over(st, kit)) return;
-  const uint i = get_global_id(0);
-  if (i >= n) return;
-  t[i] = dw[i] * r[i];
-}
+ * levels (mg.c). The kernel that makes a level's b makes its t. Launches: the fine res
+ * (mg_down_csr; the fine t = dw ∘ r comes with r, from krylov.cl's kr_begin and kr_s), for the
+ * levels above MG_BLOCK cells the restriction and one launch a level each way, the small levels in
+ * one work-group (mg_block), the fine level up. */
 
 /* Fine level down: res = r − (A + ε diag A) t */
 __kernel void mg_down_csr(const uint n, __global const uint *row, __global const uint *col,

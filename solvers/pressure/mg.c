@@ -30,7 +30,6 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
             {&mg.k_galerkin, "mg_galerkin"},
             {&mg.k_weights, "mg_weights"},
             {&mg.k_damp, "mg_damp"},
-            {&mg.k_scale, "mg_scale"},
             {&mg.k_down_csr, "mg_down_csr"},
             {&mg.k_up_csr, "mg_up_csr"},
             {&mg.k_down, "mg_down"},
@@ -347,17 +346,13 @@ done:
  * block (the small levels down, the coarsest, up again), the levels above it up, the fine level
  * up: 3 launches, and 1 + 2 (l0 − 1) more where level 1 has more than MG_BLOCK cells. */
 enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem val, double eps,
-                           cl_mem r, cl_mem z, cl_mem state, cl_uint k, int have_t)
+                           cl_mem r, cl_mem z, cl_mem state, cl_uint k)
 {
   enum clsph_status st = CLSPH_OK;
   const cl_uint nn = (cl_uint)n, ncells = (cl_uint)mg->grid->ncells;
   const real e = (real)eps;
   const int L = mg->nlevels, l0 = mg->l0;
-  if (!have_t) { /* t = dw ∘ r, unless the kernel that made r made it */
-    CLSPH_TRY(KERN_SET(mg->k_scale, KARG(nn), KARG(mg->d_dw), KARG(r), KARG(mg->d_t), KARG(k),
-                       KARG(state)));
-    CLSPH_TRY(kern_launch(mg->dev, mg->k_scale, n, NULL));
-  }
+  /* the fine t = dw ∘ r (the first sweep from zero) came with r (kr_begin, kr_s) */
   CLSPH_TRY(KERN_SET(mg->k_down_csr, KARG(nn), KARG(row), KARG(col), KARG(val), KARG(e),
                      KARG(mg->d_t), KARG(r), KARG(mg->d_res), KARG(k), KARG(state)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_down_csr, n, NULL));
@@ -408,9 +403,8 @@ void mg_destroy(struct mg *mg)
 {
   release_levels(mg);
   cl_kernel *ks[] = {&mg->k_aggregate, &mg->k_ap_csr,  &mg->k_restrict_csr, &mg->k_galerkin_ap,
-                     &mg->k_galerkin,  &mg->k_weights, &mg->k_damp,         &mg->k_scale,
-                     &mg->k_down_csr,  &mg->k_up_csr,  &mg->k_down,         &mg->k_up,
-                     &mg->k_block};
+                     &mg->k_galerkin,  &mg->k_weights, &mg->k_damp,         &mg->k_down_csr,
+                     &mg->k_up_csr,    &mg->k_down,    &mg->k_up,           &mg->k_block};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {
     if (*ks[i] != NULL) clReleaseKernel(*ks[i]);
     *ks[i] = NULL;

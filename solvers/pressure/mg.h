@@ -32,8 +32,8 @@ struct mg_level {
 struct mg {
   const struct dev *dev;
   double omega; /* Jacobi damping */
-  cl_kernel k_aggregate, k_ap_csr, k_galerkin_ap, k_galerkin, k_weights, k_damp, k_scale,
-      k_down_csr, k_restrict_csr, k_up_csr, k_down, k_up, k_block;
+  cl_kernel k_aggregate, k_ap_csr, k_galerkin_ap, k_galerkin, k_weights, k_damp, k_down_csr,
+      k_restrict_csr, k_up_csr, k_down, k_up, k_block;
   size_t block_wg;         /* work-group size of mg_block */
   size_t cap;              /* fine unknowns the buffers hold */
   cl_mem d_agg, d_cell;    /* fine level: aggregate (or none), cell of each unknown */
@@ -65,10 +65,10 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
 enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem row, cl_mem col,
                            cl_mem val, double eps, cl_mem dinv);
 /** @brief z = M⁻¹ r: one V(1,1) cycle from z = 0, as part of Krylov iteration k whose state is
- *  `state` (krylov.cl: the kernels do nothing once the solve ended before k). have_t: the kernel
- *  that made r also made d_t = d_dw ∘ r (the first sweep from zero). */
+ *  `state` (krylov.cl: the kernels do nothing once the solve ended before k). The kernel that
+ *  made r has made d_t = d_dw ∘ r, the first sweep from zero. */
 enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem val, double eps,
-                           cl_mem r, cl_mem z, cl_mem state, cl_uint k, int have_t);
+                           cl_mem r, cl_mem z, cl_mem state, cl_uint k);
 /** @brief Release (safe on a zeroed struct). */
 void mg_destroy(struct mg *mg);
 

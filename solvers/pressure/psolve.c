@@ -320,7 +320,7 @@ static double reinforcement(const struct psolve *ps)
 /* z = M⁻¹ r in iteration k: none, multigrid, Jacobi, or Jacobi followed by sweeps toward A z = r
  * (scratch: A z). */
 static enum clsph_status precond(struct psolve *ps, const struct psolve_op *op, cl_mem r, cl_mem z,
-                                 cl_mem scratch, cl_uint k, int have_t)
+                                 cl_mem scratch, cl_uint k)
 {
   enum clsph_status st = CLSPH_OK;
   cl_uint n = (cl_uint)op->n;
@@ -330,7 +330,7 @@ static enum clsph_status precond(struct psolve *ps, const struct psolve_op *op, 
   }
   if (ps->opt.precond == PSOLVE_MULTIGRID) {
     CLSPH_TRY(mg_apply(&ps->mg, op->n, ps->d_row, ps->d_col, ps->d_val, reinforcement(ps), r, z,
-                       ps->d_state, k, have_t));
+                       ps->d_state, k));
     goto done;
   }
   CLSPH_TRY(KERN_SET(ps->k_scale, KARG(n), KARG(k), KARG(ps->d_state), KARG(z), KARG(ps->d_dinv),
@@ -390,15 +390,15 @@ static enum clsph_status iteration(struct psolve *ps, const struct psolve_op *op
   CLSPH_TRY(KERN_SET(ps->k_begin, KARG(n), KARG(k), KARG(ng), KARG(update), KARG(ps->d_state),
                      KARG(ps->d_partial), KARG(ps->d_p), KARG(ps->d_r), KARG(ps->d_v), KARG(noise),
                      KARG(scale), KARG(dw), KARG(t)));
-  CLSPH_TRY(launch_groups(ps, ps->k_begin));                    /* ρ', β, p */
-  CLSPH_TRY(precond(ps, op, ps->d_p, ps->d_ph, ps->d_q, k, 1)); /* p̂ <- M⁻¹ p */
-  CLSPH_TRY(apply(ps, op, ps->d_ph, ps->d_v, k));               /* v <- A p̂ */
-  CLSPH_TRY(dot(ps, n, k, ps->d_r0, ps->d_v, 3));               /* (r0, v) */
+  CLSPH_TRY(launch_groups(ps, ps->k_begin));                 /* ρ', β, p */
+  CLSPH_TRY(precond(ps, op, ps->d_p, ps->d_ph, ps->d_q, k)); /* p̂ <- M⁻¹ p */
+  CLSPH_TRY(apply(ps, op, ps->d_ph, ps->d_v, k));            /* v <- A p̂ */
+  CLSPH_TRY(dot(ps, n, k, ps->d_r0, ps->d_v, 3));            /* (r0, v) */
   CLSPH_TRY(KERN_SET(ps->k_s, KARG(n), KARG(k), KARG(ng), KARG(ps->d_state), KARG(ps->d_partial),
                      KARG(ps->d_r), KARG(ps->d_v), KARG(ps->d_s), KARG(scale), KARG(dw), KARG(t)));
-  CLSPH_TRY(launch_groups(ps, ps->k_s));                        /* α, s = r − α v, (s, s) */
-  CLSPH_TRY(precond(ps, op, ps->d_s, ps->d_sh, ps->d_q, k, 1)); /* ŝ <- M⁻¹ s */
-  CLSPH_TRY(apply(ps, op, ps->d_sh, ps->d_t, k));               /* t <- A ŝ */
+  CLSPH_TRY(launch_groups(ps, ps->k_s));                     /* α, s = r − α v, (s, s) */
+  CLSPH_TRY(precond(ps, op, ps->d_s, ps->d_sh, ps->d_q, k)); /* ŝ <- M⁻¹ s */
+  CLSPH_TRY(apply(ps, op, ps->d_sh, ps->d_t, k));            /* t <- A ŝ */
   CLSPH_TRY(KERN_SET(ps->k_dot_ts, KARG(n), KARG(k), KARG(ps->d_state), KARG(ps->d_t),
                      KARG(ps->d_s), KARG(ps->d_partial)));
   CLSPH_TRY(launch_groups(ps, ps->k_dot_ts)); /* (t, s), (t, t) */
