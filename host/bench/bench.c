@@ -100,7 +100,7 @@ static enum clsph_status bench_size(const struct dev *dev, const struct cli *cli
   pset_init(&ps, n, n);
   CLSPH_TRY(smoothing_make(SMOOTHING_WENDLAND_C2, 2, 2.0 * dr, &sm));
   struct grid_spec spec = {
-      .dim = 2, .lo = {0, 0, 0}, .hi = {side * dr, side * dr, 0}, .support = sm.support};
+      .dim = 2, .lo = {0, 0, 0}, .hi = {side * dr, side * dr, 0}, .support = sm.support, .sm = sm};
   for (int k = 0; k < 2; ++k) {
     CLSPH_TRY(ops_build(dev, &spec, &sm, k, &prog[k]));
     CLSPH_TRY(ops_create(prog[k], k, &ops[k]));

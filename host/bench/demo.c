@@ -149,7 +149,8 @@ enum clsph_status demo_run(const struct cli *cli)
   const double lo[3] = {0, 0, 0};
   CLSPH_TRY(lattice_make(2, cells, dr, lo, 0.2, 1, 2024, &lat));
   CLSPH_TRY(smoothing_make(SMOOTHING_WENDLAND_C2, 2, 2.0 * dr, &sm));
-  struct grid_spec spec = {.dim = 2, .lo = {0, 0, 0}, .hi = {1, 1, 0}, .support = sm.support};
+  struct grid_spec spec = {
+      .dim = 2, .lo = {0, 0, 0}, .hi = {1, 1, 0}, .support = sm.support, .sm = sm};
 
   printf("clsph demo: %zu particles on the unit square, spacing %g, jittered by 0.2 dr and "
          "shuffled\n",

@@ -45,6 +45,7 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
                          .lo = {0, -ghost * pp.dr},
                          .hi = {1, 1 + ghost * pp.dr},
                          .support = pp.sm.support,
+                         .sm = pp.sm,
                          .periodic = {1, spec->singular}};
   CLSPH_TRY(grid_define(&gs, &o));
   CLSPH_TRY(smoothing_define(&pp.sm, &o));

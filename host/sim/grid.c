@@ -64,6 +64,11 @@ static enum clsph_status size_cells(const struct grid_spec *spec, struct grid *g
     g->geom.n.s[a] = n[a];
   }
   g->geom.n.s[3] = (cl_int)total;
+  CLSPH_CHECK(spec->sm.h > 0.0 && spec->sm.support <= spec->support, CLSPH_E_INPUT,
+              "grid: the smoothing function (h = %g, support %g) is missing or reaches past the "
+              "search radius %g",
+              spec->sm.h, spec->sm.support, spec->support);
+  g->geom.sm = smoothing_dev(&spec->sm);
   for (int a = 0; a < 3; ++a) g->n[a] = n[a];
   g->ncells = (size_t)total;
 done:

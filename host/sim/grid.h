@@ -3,17 +3,22 @@
 #ifndef CLSPH_GRID_H
 #define CLSPH_GRID_H
 
+#include <stddef.h>
+
 #include "kern.h"
 #include "prog.h"
+#include "smoothing.h"
 
 /** What the user asks for: a box, the support radius, periodic axes. */
 struct grid_spec {
-  int dim;         /* 2 or 3 */
-  double lo[3];    /* lower corner, m */
-  double hi[3];    /* upper corner, m (the period of a periodic axis is hi − lo) */
-  double support;  /* support radius of the smoothing function, m */
-  int periodic[3]; /* 1 for a periodic axis */
-  int sub;         /* cells per support radius (0: GRID_SUB_DEFAULT) */
+  int dim;             /* 2 or 3 */
+  double lo[3];        /* lower corner, m */
+  double hi[3];        /* upper corner, m (the period of a periodic axis is hi − lo) */
+  double support;      /* support radius of the smoothing function, m */
+  int periodic[3];     /* 1 for a periodic axis */
+  int sub;             /* cells per support radius (0: GRID_SUB_DEFAULT) */
+  struct smoothing sm; /* the function the neighbour kernels evaluate (its support may be less than
+                          the search radius above, which can carry a skin) */
 };
 
 /** Cells per support radius: 2 visits 5 x 5 cells of side ≥ support/2 (about 100 candidates per
@@ -22,11 +27,16 @@ struct grid_spec {
 
 /** Device view of the grid, passed by value to every neighbour kernel (struct grid in grid.cl). */
 struct grid_dev {
-  real4 lo;       /* lower corner */
-  real4 inv_cell; /* 1 / cell side per axis */
-  real4 len;      /* grid length per axis */
-  cl_int4 n;      /* cells per axis; .s[3] = total cells */
+  real4 lo;             /* lower corner */
+  real4 inv_cell;       /* 1 / cell side per axis */
+  real4 len;            /* grid length per axis */
+  struct smooth_dev sm; /* the smoothing function's constants */
+  cl_int4 n;            /* cells per axis; .s[3] = total cells */
 };
+/* The kernels' struct grid lays out the same: sm (4 reals) sits on a real4 boundary. */
+_Static_assert(offsetof(struct grid_dev, sm) == 3 * sizeof(real4) &&
+                   offsetof(struct grid_dev, n) == 4 * sizeof(real4),
+               "struct grid_dev must match struct grid in kernels/common/grid.cl");
 
 /** Kernel sources every neighbour program starts with, in order. */
 #define GRID_SOURCES "common/real.h", "common/flags.h", "common/smoothing.h", "common/grid.cl"

@@ -258,6 +258,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
               scene->case_path, sim.geom.has_rho0, sim.scheme->name);
   /* the cell grid: the domain, with room for wall and section layers on non-periodic axes */
   sim.gspec.dim = 2;
+  sim.gspec.sm = sim.sm;
   sim.gspec.support = sim.sm.support * (1.0 + sim.scheme->support_skin * fmax(scene->cfl, 1.0));
   double margin = (layers + 4) * scene->dr + sim.sm.support;
   for (int a = 0; a < 2; ++a) {

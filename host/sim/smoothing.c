@@ -77,13 +77,16 @@ done:
   return st;
 }
 
+struct smooth_dev smoothing_dev(const struct smoothing *s)
+{
+  struct smooth_dev d = {.inv_h = (real)(1.0 / s->h),
+                         .alpha = (real)s->alpha,
+                         .support = (real)s->support,
+                         .support2 = (real)(s->support * s->support)};
+  return d;
+}
+
 enum clsph_status smoothing_define(const struct smoothing *s, struct prog_opts *o)
 {
-  enum clsph_status st = CLSPH_OK;
-  CLSPH_TRY(prog_opts_define_int(o, "SMOOTHING", (long)s->kind));
-  CLSPH_TRY(prog_opts_define_real(o, "SMOOTH_INV_H", 1.0 / s->h));
-  CLSPH_TRY(prog_opts_define_real(o, "SMOOTH_ALPHA", s->alpha));
-  CLSPH_TRY(prog_opts_define_real(o, "SMOOTH_SUPPORT", s->support));
-done:
-  return st;
+  return prog_opts_define_int(o, "SMOOTHING", (long)s->kind);
 }

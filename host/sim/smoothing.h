@@ -1,5 +1,7 @@
-/* smoothing.h: choice of smoothing function and its constants, computed on the host in double and
- * handed to the kernels as -D switches (kernels/common/smoothing.h has the formulas). */
+/* smoothing.h: choice of smoothing function and its constants, computed on the host in double.
+ * The kernels (kernels/common/smoothing.h has the formulas) get the function as a -D switch and the
+ * constants at run time, in struct smooth_dev, so that one program build serves every smoothing
+ * length. */
 #ifndef CLSPH_SMOOTHING_H
 #define CLSPH_SMOOTHING_H
 
@@ -20,6 +22,15 @@ struct smoothing {
   double support; /* radius of the support, m */
 };
 
+/** Device view of the constants in the build's precision (struct smooth in
+ *  kernels/common/smoothing.h): it rides in struct grid_dev, or goes alone as a kernel argument. */
+struct smooth_dev {
+  real inv_h;    /* 1/h */
+  real alpha;    /* normalisation divided by h^dim */
+  real support;  /* radius of the support */
+  real support2; /* support² */
+};
+
 /** @brief Kind from its name ("wendland", "cubic_spline", "gaussian"); an unknown name lists them.
  */
 enum clsph_status smoothing_kind_from_name(const char *name, enum smoothing_kind *out);
@@ -30,7 +41,9 @@ double smoothing_qmax(enum smoothing_kind kind);
 /** @brief Constants of `kind` in `dim` dimensions with smoothing length h > 0. */
 enum clsph_status smoothing_make(enum smoothing_kind kind, int dim, double h,
                                  struct smoothing *out);
-/** @brief Add SMOOTHING, SMOOTH_INV_H, SMOOTH_ALPHA, SMOOTH_SUPPORT to the build options. */
+/** @brief The device view of s. */
+struct smooth_dev smoothing_dev(const struct smoothing *s);
+/** @brief Add SMOOTHING (the function, not its length) to the build options. */
 enum clsph_status smoothing_define(const struct smoothing *s, struct prog_opts *o);
 
 #endif /* CLSPH_SMOOTHING_H */

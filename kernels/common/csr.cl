@@ -16,7 +16,7 @@ __kernel void csr_count(const uint n, const struct grid g, __global const uint *
   uint j;
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
-    if (dot(r, r) < SMOOTH_SUPPORT2 && j != i) ++c;
+    if (dot(r, r) < g.sm.support2 && j != i) ++c;
   }
   count[i] = c;
 }

@@ -13,10 +13,11 @@
  * lie in [lo, lo + len) (the time integration wraps them). */
 
 struct grid {
-  real4 lo;       /* lower corner of the cell grid; .w unused */
-  real4 inv_cell; /* 1 / cell side per axis; .w unused */
-  real4 len;      /* grid length per axis (the period of a periodic axis); .w unused */
-  int4 n;         /* cells per axis (1 on unused axes); .w = total number of cells */
+  real4 lo;         /* lower corner of the cell grid; .w unused */
+  real4 inv_cell;   /* 1 / cell side per axis; .w unused */
+  real4 len;        /* grid length per axis (the period of a periodic axis); .w unused */
+  struct smooth sm; /* the smoothing function's constants (smoothing.h): they ride with the grid */
+  int4 n;           /* cells per axis (1 on unused axes); .w = total number of cells */
 };
 
 #ifndef PERIODIC_X
@@ -96,7 +97,7 @@ int grid_wrap_axis(int *c, int n, int periodic, real len, real *shift)
  *   }
  * It visits every particle j (i itself included) in the cells within GRID_SUB cells of i's cell
  * (cells have a side of at least support / GRID_SUB); callers test the distance against
- * SMOOTH_SUPPORT. Particles are sorted by cell and cells are numbered x fastest, so the
+ * the support radius. Particles are sorted by cell and cells are numbered x fastest, so the
  * 2 GRID_SUB + 1 cells of a row along x are one contiguous range of particles: the loop runs over
  * rows (strips), not cells. A row that wraps around a periodic x boundary is two ranges with
  * different image shifts. */

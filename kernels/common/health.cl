@@ -14,14 +14,14 @@ __kernel void health_sums(const uint n, const struct grid g, __global const uint
 {
   __local real s[REDUCE_WG];
   const uint l = get_local_id(0), grp = get_group_id(0);
-  real e = R(0.0), v = R(0.0), c = R(0.0), m = R(0.0), dmin = SMOOTH_SUPPORT;
+  real e = R(0.0), v = R(0.0), c = R(0.0), m = R(0.0), dmin = g.sm.support;
   for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
     if (kind[i] != 0u) continue;
     const realv x = pos[i];
     e += vol[i] * dot(vel[i], vel[i]);
     v += vol[i];
     m += R(1.0);
-    real d2 = SMOOTH_SUPPORT2;
+    real d2 = g.sm.support2;
     struct neigh_iter it;
     neigh_begin(&it, &g, x);
     uint j;

@@ -6,17 +6,17 @@
  *   out[0] = Σ_k W(|x_k|) dr², itself included: sigma0, the kernel sum of a full support;
  *   out[1] = −Σ_k F(|x_k|) x_k² dr²: lambda, what the viscous sum 2 Σ V F (v_i − v_j) makes of
  *            ∇²(x²/2) = 1 (wcsph_riemann/advection.cl divides by it). */
-__kernel void lattice_sums(const real dr, __global real *out)
+__kernel void lattice_sums(const struct smooth sm, const real dr, __global real *out)
 {
   if (get_global_id(0) != 0) return;
-  const int m = (int)ceil(SMOOTH_SUPPORT / dr) + 1;
+  const int m = (int)ceil(sm.support / dr) + 1;
   real s = R(0.0), l = R(0.0);
   for (int a = -m; a <= m; ++a)
     for (int b = -m; b <= m; ++b) {
       const real r = dr * sqrt((real)(a * a + b * b));
-      if (r >= SMOOTH_SUPPORT) continue;
-      s += smoothing_w(r);
-      if (a != 0 || b != 0) l -= smoothing_f(r) * (real)(a * a) * dr * dr;
+      if (r >= sm.support) continue;
+      s += smoothing_w(sm, r);
+      if (a != 0 || b != 0) l -= smoothing_f(sm, r) * (real)(a * a) * dr * dr;
     }
   out[0] = s * dr * dr;
   out[1] = l * dr * dr;

@@ -35,8 +35,8 @@ struct marker_sums marker_shepard(const struct grid *g, __global const uint *cel
     if (kind[j] == MARKER_DUMMY) continue;
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
-    real w = vol[j] * smoothing_w(sqrt(r2));
+    if (r2 >= g->sm.support2) continue;
+    real w = vol[j] * smoothing_w(g->sm, sqrt(r2));
     m.wsum += w;
     if (what & MARKER_VEL) m.u += w * vel[j];
     if (what & MARKER_P) m.p += w * p[j];

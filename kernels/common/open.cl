@@ -108,7 +108,7 @@ uint open_nearest_fluid(const struct grid *g, __global const uint *cell_start,
     const realv xj = pos[j] + it.shift;
     const realv r = at - xj;
     const real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || r2 >= best || dot(xj - s->a, s->n) < hmin) continue;
+    if (r2 >= g->sm.support2 || r2 >= best || dot(xj - s->a, s->n) < hmin) continue;
     best = r2;
     m = j;
   }

@@ -108,8 +108,8 @@ __kernel void op_correction(OP_ARGS, __global realm *L_out)
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    m += mat_moment(vol[j] * smoothing_f(sqrt(r2)), r);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    m += mat_moment(vol[j] * smoothing_f(g.sm, sqrt(r2)), r);
   }
   L_out[i] = mat_inverse_or_identity(m);
 }
@@ -126,8 +126,8 @@ __kernel void op_shepard(OP_ARGS, __global real *out)
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
-    s += vol[j] * smoothing_w(sqrt(r2));
+    if (r2 >= g.sm.support2) continue;
+    s += vol[j] * smoothing_w(g.sm, sqrt(r2));
   }
   out[i] = s;
 }
@@ -144,8 +144,8 @@ __kernel void op_interp(OP_ARGS, __global const real *a, __global real *out)
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
-    s += vol[j] * a[j] * smoothing_w(sqrt(r2));
+    if (r2 >= g.sm.support2) continue;
+    s += vol[j] * a[j] * smoothing_w(g.sm, sqrt(r2));
   }
   out[i] = s;
 }
@@ -164,8 +164,8 @@ __kernel void op_grad_sym(OP_ARGS, __global const real *a, __global realv *out)
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    s += vol[j] * (a[j] - a_i) * op_grad_w(L_i, smoothing_f(sqrt(r2)), r);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    s += vol[j] * (a[j] - a_i) * op_grad_w(L_i, smoothing_f(g.sm, sqrt(r2)), r);
   }
   out[i] = s;
 }
@@ -186,8 +186,8 @@ __kernel void op_grad_antisym(OP_ARGS, __global const real *a, __global realv *o
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    realv gw = smoothing_f(sqrt(r2)) * r;
+    if (r2 >= g.sm.support2 || j == i) continue;
+    realv gw = smoothing_f(g.sm, sqrt(r2)) * r;
 #if KGC
     s += vol[j] * (a_i * mat_apply(L[j], gw) + a[j] * mat_apply(L_i, gw));
 #else
@@ -211,8 +211,8 @@ __kernel void op_div(OP_ARGS, __global const realv *u, __global real *out)
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    s += vol[j] * dot(u[j] - u_i, op_grad_w(L_i, smoothing_f(sqrt(r2)), r));
+    if (r2 >= g.sm.support2 || j == i) continue;
+    s += vol[j] * dot(u[j] - u_i, op_grad_w(L_i, smoothing_f(g.sm, sqrt(r2)), r));
   }
   out[i] = s;
 }
@@ -231,9 +231,9 @@ __kernel void op_lap(OP_ARGS, __global const real *a, __global real *out)
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    real rgw = dot(r, op_grad_w(L_i, smoothing_f(sqrt(r2)), r));
-    s += R(2.0) * vol[j] * (a_i - a[j]) * rgw / (r2 + SMOOTH_ETA2);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    real rgw = dot(r, op_grad_w(L_i, smoothing_f(g.sm, sqrt(r2)), r));
+    s += R(2.0) * vol[j] * (a_i - a[j]) * rgw / (r2 + smooth_eta2(g.sm));
   }
   out[i] = s;
 }

@@ -7,9 +7,10 @@
  * Three entry points share one pair term: poisson_apply (recomputes the kernel terms at every
  * application), poisson_coeffs (writes them once into the CSR layout of csr.cl) and
  * poisson_diag (the diagonal, for Jacobi). With KGC the matrix is not symmetric. */
-real poisson_pair(realm L_i, real vol_j, realv r, real r2)
+real poisson_pair(const struct smooth sm, realm L_i, real vol_j, realv r, real r2)
 {
-  return R(2.0) * vol_j * dot(r, op_grad_w(L_i, smoothing_f(sqrt(r2)), r)) / (r2 + SMOOTH_ETA2);
+  return R(2.0) * vol_j * dot(r, op_grad_w(L_i, smoothing_f(sm, sqrt(r2)), r)) /
+         (r2 + smooth_eta2(sm));
 }
 
 __kernel void poisson_apply(OP_ARGS, __global const uint *dirichlet, __global const real *x,
@@ -31,8 +32,8 @@ __kernel void poisson_apply(OP_ARGS, __global const uint *dirichlet, __global co
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    s += poisson_pair(L_i, vol[j], r, r2) * (x_i - x[j]);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    s += poisson_pair(g.sm, L_i, vol[j], r, r2) * (x_i - x[j]);
   }
   y[i] = s;
 }
@@ -53,8 +54,8 @@ __kernel void poisson_coeffs(OP_ARGS, __global const uint *dirichlet, __global c
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    real c = fixed ? R(0.0) : poisson_pair(L_i, vol[j], r, r2);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    real c = fixed ? R(0.0) : poisson_pair(g.sm, L_i, vol[j], r, r2);
     diag += c;
     col[k] = j;
     val[k] = -c;
@@ -81,8 +82,8 @@ __kernel void poisson_diag(OP_ARGS, __global const uint *dirichlet, __global rea
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    s += poisson_pair(L_i, vol[j], r, r2);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    s += poisson_pair(g.sm, L_i, vol[j], r, r2);
   }
   d[i] = s;
 }

@@ -27,8 +27,8 @@ __kernel void probe_sample(const uint np, __global const realv *at, const struct
     if (kind[j] > 1u) continue; /* fluid and USAW vertex particles carry the fields */
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
-    real w = vol[j] * smoothing_w(sqrt(r2));
+    if (r2 >= g.sm.support2) continue;
+    real w = vol[j] * smoothing_w(g.sm, sqrt(r2));
     wsum += w;
     for (uint c = 0; c < ncomp && c < 4u; ++c) s[c] += w * field[j * ncomp + c];
   }

@@ -1,10 +1,9 @@
 /* smoothing.h: the smoothing function W(r) and F(r) = (1/r) dW/dr, so that
  * ∇_i W_ij = F(|r_ij|) r_ij with r_ij = r_i − r_j.
- * Switches (host/sim/smoothing.c computes the constants in double):
- *   SMOOTHING       SMOOTHING_WENDLAND_C2 | SMOOTHING_CUBIC_SPLINE | SMOOTHING_GAUSSIAN
- *   SMOOTH_INV_H    1/h
- *   SMOOTH_ALPHA    normalisation divided by h^DIM
- *   SMOOTH_SUPPORT  radius of the support (2h, 2h, 3h)
+ * The build fixes only the function (SMOOTHING_WENDLAND_C2 | SMOOTHING_CUBIC_SPLINE |
+ * SMOOTHING_GAUSSIAN); the smoothing length arrives at run time in struct smooth, which
+ * host/sim/smoothing.c fills in double and struct grid (grid.cl) carries to every neighbour
+ * kernel, so one program build serves every resolution.
  * Wendland C2: W = α/h^d (1 − q/2)^4 (1 + 2q), q ≤ 2 (Leroy et al. 2014 eq 1; α_2D = 7/4π).
  * Cubic spline: W = α/h^d [1 − 3q²/2 + 3q³/4] for q < 1, α/h^d (2 − q)³/4 for 1 ≤ q < 2
  *   (Monaghan 1992; α_2D = 10/7π).
@@ -14,47 +13,57 @@
 #define SMOOTHING_CUBIC_SPLINE 2
 #define SMOOTHING_GAUSSIAN     3
 
-#define SMOOTH_SUPPORT2 (SMOOTH_SUPPORT * SMOOTH_SUPPORT)
+/* Four reals, so that the layout is the same on the host (struct smooth_dev, smoothing.h there)
+ * in either precision. */
+struct smooth {
+  real inv_h;    /* 1/h */
+  real alpha;    /* normalisation divided by h^DIM */
+  real support;  /* radius of the support (2h, 2h, 3h) */
+  real support2; /* support² */
+};
+
 /* Regularisation of 1/r² in Laplacians, η² = 1e-4 h². Morris et al. (1997) used 0.01 h², which
  * biases the nearest neighbours (r = h/2 at h = 2δr) by 4%; Leroy et al. (eq 10) and Hosseini &
  * Feng (eq 29) use none. 1e-4 h² keeps coincident particles finite at a 0.04% bias. */
-#define SMOOTH_ETA2 (R(1e-4) / (SMOOTH_INV_H * SMOOTH_INV_H))
-
-/* Both functions cut at r >= SMOOTH_SUPPORT exactly (not at a rounded q), like the neighbour loops.
- */
-real smoothing_w(real r)
+real smooth_eta2(const struct smooth sm)
 {
-  if (r >= SMOOTH_SUPPORT) return R(0.0);
-  real q = r * SMOOTH_INV_H;
+  return R(1e-4) / (sm.inv_h * sm.inv_h);
+}
+
+/* Both functions cut at r >= sm.support exactly (not at a rounded q), like the neighbour loops. */
+real smoothing_w(const struct smooth sm, real r)
+{
+  if (r >= sm.support) return R(0.0);
+  real q = r * sm.inv_h;
 #if SMOOTHING == SMOOTHING_WENDLAND_C2
   real t = fmax(R(1.0) - R(0.5) * q, R(0.0));
   real t2 = t * t;
-  return SMOOTH_ALPHA * t2 * t2 * (R(1.0) + R(2.0) * q);
+  return sm.alpha * t2 * t2 * (R(1.0) + R(2.0) * q);
 #elif SMOOTHING == SMOOTHING_CUBIC_SPLINE
-  if (q < R(1.0)) return SMOOTH_ALPHA * (R(1.0) - R(1.5) * q * q + R(0.75) * q * q * q);
+  if (q < R(1.0)) return sm.alpha * (R(1.0) - R(1.5) * q * q + R(0.75) * q * q * q);
   real t = fmax(R(2.0) - q, R(0.0));
-  return SMOOTH_ALPHA * R(0.25) * t * t * t;
+  return sm.alpha * R(0.25) * t * t * t;
 #elif SMOOTHING == SMOOTHING_GAUSSIAN
-  return SMOOTH_ALPHA * fmax(exp(-q * q) - R(1.2340980408667956e-4), R(0.0));
+  return sm.alpha * fmax(exp(-q * q) - R(1.2340980408667956e-4), R(0.0));
 #else
 #error "unknown SMOOTHING"
 #endif
 }
 
-real smoothing_f(real r)
+real smoothing_f(const struct smooth sm, real r)
 {
-  if (r >= SMOOTH_SUPPORT) return R(0.0);
-  real q = r * SMOOTH_INV_H;
-  const real ih2 = SMOOTH_INV_H * SMOOTH_INV_H;
+  if (r >= sm.support) return R(0.0);
+  real q = r * sm.inv_h;
+  const real ih2 = sm.inv_h * sm.inv_h;
 #if SMOOTHING == SMOOTHING_WENDLAND_C2
   /* dW/dq = −5 α q (1 − q/2)³ */
   real t = fmax(R(1.0) - R(0.5) * q, R(0.0));
-  return R(-5.0) * SMOOTH_ALPHA * t * t * t * ih2;
+  return R(-5.0) * sm.alpha * t * t * t * ih2;
 #elif SMOOTHING == SMOOTHING_CUBIC_SPLINE
-  if (q < R(1.0)) return SMOOTH_ALPHA * (R(-3.0) + R(2.25) * q) * ih2;
+  if (q < R(1.0)) return sm.alpha * (R(-3.0) + R(2.25) * q) * ih2;
   real t = fmax(R(2.0) - q, R(0.0));
-  return R(-0.75) * SMOOTH_ALPHA * t * t / q * ih2;
+  return R(-0.75) * sm.alpha * t * t / q * ih2;
 #elif SMOOTHING == SMOOTHING_GAUSSIAN
-  return R(-2.0) * SMOOTH_ALPHA * exp(-q * q) * ih2;
+  return R(-2.0) * sm.alpha * exp(-q * q) * ih2;
 #endif
 }

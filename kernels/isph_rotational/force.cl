@@ -22,7 +22,7 @@ __kernel void rot_surface_sample(const uint ns, __global const realv *xs, __glob
   const uint k = get_global_id(0);
   if (k >= ns) return;
   const realv x = xs[k], u_w = uw[k];
-  const real inv_h = SMOOTH_INV_H;
+  const real inv_h = g.sm.inv_h;
   real sw = R(0.0), sp = R(0.0);
   real M[5][7]; /* normal equations of the fit, with the two right-hand sides (u_x, u_y) */
   for (int a = 0; a < 5; ++a)
@@ -34,8 +34,8 @@ __kernel void rot_surface_sample(const uint ns, __global const realv *xs, __glob
     if (kind[j] != ROT_FLUID && kind[j] != ROT_DUMMY) continue;
     const realv d = pos[j] + it.shift - x;
     const real r2 = dot(d, d);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
-    const real w = vol[j] * smoothing_w(sqrt(r2));
+    if (r2 >= g.sm.support2) continue;
+    const real w = vol[j] * smoothing_w(g.sm, sqrt(r2));
     sw += w;
     sp += w * p[j];
     if (kind[j] != ROT_FLUID) continue;

@@ -109,9 +109,9 @@ __kernel void rot_open_pressure(OP_ARGS, __global const uint *kind, __global con
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = xm - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == m) continue;
-    realv gw = op_grad_w(L_m, smoothing_f(sqrt(r2)), r);
-    lap += R(2.0) * vol[j] * dot(r, gw) / (r2 + SMOOTH_ETA2) * (u_m - vel[j]); /* eq 28 */
+    if (r2 >= g.sm.support2 || j == m) continue;
+    realv gw = op_grad_w(L_m, smoothing_f(g.sm, sqrt(r2)), r);
+    lap += R(2.0) * vol[j] * dot(r, gw) / (r2 + smooth_eta2(g.sm)) * (u_m - vel[j]); /* eq 28 */
   }
   const struct open_section s = open_section_load(sec, section[i]);
   const real dh = dot(pos[i] - xm, s.n);

@@ -37,8 +37,8 @@ __kernel void rot_ppe_apply(OP_ARGS, __global const uint *kind, __global const u
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    s += poisson_pair(L_i, vol[j], r, r2) * (x_i - ROT_COEF(j) * x[mirror[j]]);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    s += poisson_pair(g.sm, L_i, vol[j], r, r2) * (x_i - ROT_COEF(j) * x[mirror[j]]);
   }
   y[i] = s;
 }
@@ -60,10 +60,10 @@ __kernel void rot_ppe_coeffs(OP_ARGS, __global const uint *kind, __global const 
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    if (r2 >= g.sm.support2 || j == i) continue;
     const uint c = mirror[j];
     const real c_j = ROT_COEF(j);
-    real a = fixed ? R(0.0) : poisson_pair(L_i, vol[j], r, r2);
+    real a = fixed ? R(0.0) : poisson_pair(g.sm, L_i, vol[j], r, r2);
     if (c == i) { /* x_i − c_j x_i: on the diagonal */
       diag += a * (R(1.0) - c_j);
       a = R(0.0);
@@ -96,14 +96,14 @@ __kernel void rot_ppe_diag(OP_ARGS, __global const uint *kind, __global const ui
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    if (r2 >= g.sm.support2 || j == i) continue;
     if (mirror[j] == i) {
 #if OPEN_SECTIONS
-      s += poisson_pair(L_i, vol[j], r, r2) * (R(1.0) - coef[j]);
+      s += poisson_pair(g.sm, L_i, vol[j], r, r2) * (R(1.0) - coef[j]);
 #endif
       continue;
     }
-    s += poisson_pair(L_i, vol[j], r, r2);
+    s += poisson_pair(g.sm, L_i, vol[j], r, r2);
   }
   d[i] = s;
 }

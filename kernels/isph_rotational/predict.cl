@@ -39,9 +39,9 @@ __kernel void rot_predict(OP_ARGS, __global const uint *kind, __global const rea
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    realv gw = op_grad_w(L_i, smoothing_f(sqrt(r2)), r);
-    lap += R(2.0) * vol[j] * dot(r, gw) / (r2 + SMOOTH_ETA2) * (u_i - vel[j]);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    realv gw = op_grad_w(L_i, smoothing_f(g.sm, sqrt(r2)), r);
+    lap += R(2.0) * vol[j] * dot(r, gw) / (r2 + smooth_eta2(g.sm)) * (u_i - vel[j]);
 #if ROT_ROTATIONAL
     gp += vol[j] * (p[j] - p_i) * gw;
 #endif
@@ -70,8 +70,8 @@ __kernel void rot_source(OP_ARGS, __global const uint *kind, __global const real
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    s += vol[j] * dot(ustar[j] - u_i, op_grad_w(L_i, smoothing_f(sqrt(r2)), r));
+    if (r2 >= g.sm.support2 || j == i) continue;
+    s += vol[j] * dot(ustar[j] - u_i, op_grad_w(L_i, smoothing_f(g.sm, sqrt(r2)), r));
   }
   div[i] = s;
   rhs[i] = scale * s;

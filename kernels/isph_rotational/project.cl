@@ -24,8 +24,8 @@ __kernel void rot_project(OP_ARGS, __global const uint *kind, __global const rea
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    gf += vol[j] * (phi[j] - f_i) * op_grad_w(L_i, smoothing_f(sqrt(r2)), r);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    gf += vol[j] * (phi[j] - f_i) * op_grad_w(L_i, smoothing_f(g.sm, sqrt(r2)), r);
   }
   const realv u = ustar[i] - coef * gf;
 #if ROT_ROTATIONAL
@@ -68,8 +68,8 @@ __kernel void rot_move(const uint n, const struct grid g, __global const uint *c
       if (kind[j] != ROT_FLUID) continue;
       realv r = x - (pos[j] + it.shift);
       real r2 = dot(r, r);
-      if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-      du += vol[j] * (vel[j] - u_i) * smoothing_w(sqrt(r2));
+      if (r2 >= g.sm.support2 || j == i) continue;
+      du += vol[j] * (vel[j] - u_i) * smoothing_w(g.sm, sqrt(r2));
     }
   }
   x += dt * (u_i + xsph * du);

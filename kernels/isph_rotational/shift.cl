@@ -23,7 +23,7 @@ __kernel void rot_shift(const uint n, const struct grid g, __global const uint *
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    if (r2 >= g.sm.support2 || j == i) continue;
     rbar += sqrt(r2);
     cnt += R(1.0);
   }
@@ -33,7 +33,7 @@ __kernel void rot_shift(const uint n, const struct grid g, __global const uint *
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    if (r2 >= g.sm.support2 || j == i) continue;
     rs += rbar * rbar / r2 * r / sqrt(r2);
   }
   const realv d = c_alpha * rs;
@@ -42,8 +42,8 @@ __kernel void rot_shift(const uint n, const struct grid g, __global const uint *
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    du += vol[j] * (vel[j] - u_i) * (smoothing_f(sqrt(r2)) * dot(r, d));
+    if (r2 >= g.sm.support2 || j == i) continue;
+    du += vol[j] * (vel[j] - u_i) * (smoothing_f(g.sm, sqrt(r2)) * dot(r, d));
   }
   shift[i] = d;
   vel_out[i] = u_i + du;

@@ -44,7 +44,7 @@ __kernel void rot_visc_count(const uint n, const struct grid g, __global const u
     while (neigh_next(&it, &g, cell_start, &j)) {
       if (fluid ? j == i : kind[j] == ROT_DUMMY) continue;
       realv r = at - (pos[j] + it.shift);
-      if (dot(r, r) < SMOOTH_SUPPORT2) ++c;
+      if (dot(r, r) < g.sm.support2) ++c;
     }
   }
 #if OPEN_SECTIONS
@@ -76,8 +76,8 @@ __kernel void rot_visc_coeffs(OP_ARGS, __global const uint *kind, __global const
     while (neigh_next(&it, &g, cell_start, &j)) {
       realv r = xi - (pos[j] + it.shift);
       real r2 = dot(r, r);
-      if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-      const real a = -kappa * poisson_pair(L_i, vol[j], r, r2); /* −κ P_ij, eq 28 */
+      if (r2 >= g.sm.support2 || j == i) continue;
+      const real a = -kappa * poisson_pair(g.sm, L_i, vol[j], r, r2); /* −κ P_ij, eq 28 */
       diag += a;
       col[k] = j;
       val[k] = -a;
@@ -97,8 +97,8 @@ __kernel void rot_visc_coeffs(OP_ARGS, __global const uint *kind, __global const
       if (kind[j] == ROT_DUMMY) continue;
       realv r = img - (pos[j] + it.shift);
       real r2 = dot(r, r);
-      if (r2 >= SMOOTH_SUPPORT2) continue;
-      const real w = vol[j] * smoothing_w(sqrt(r2));
+      if (r2 >= g.sm.support2) continue;
+      const real w = vol[j] * smoothing_w(g.sm, sqrt(r2));
       wsum += w;
       col[k] = j;
       val[k] = w; /* normalised below */

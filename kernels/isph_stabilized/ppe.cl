@@ -34,10 +34,10 @@
  * A row is Dirichlet where dirichlet[i] != 0: predict.cl sets it for the free surface and for
  * every dummy, stab_wall_neumann clears it for the dummies the modified virtual marker solves. */
 /* d0 = Σ_{k≠0} 2 dr² F(r_k) r_k²/(r_k² + η²) over the lattice of spacing dr (one work-item) */
-__kernel void stab_lattice_diag(const real dr, __global real *out)
+__kernel void stab_lattice_diag(const struct smooth sm, const real dr, __global real *out)
 {
   if (get_global_id(0) != 0) return;
-  const int m = (int)ceil(SMOOTH_SUPPORT / dr) + 1;
+  const int m = (int)ceil(sm.support / dr) + 1;
   const realm I = mat_identity();
   real s = R(0.0);
   for (int a = -m; a <= m; ++a)
@@ -47,8 +47,8 @@ __kernel void stab_lattice_diag(const real dr, __global real *out)
       r.x = dr * (real)a;
       r.y = dr * (real)b;
       const real r2 = dot(r, r);
-      if (r2 >= SMOOTH_SUPPORT2) continue;
-      s += poisson_pair(I, dr * dr, r, r2);
+      if (r2 >= sm.support2) continue;
+      s += poisson_pair(sm, I, dr * dr, r, r2);
     }
   out[0] = s;
 }
@@ -82,7 +82,7 @@ __kernel void stab_ppe_count(OP_ARGS, __global const uint *kind, __global const 
   while (neigh_next(&it, &g, cell_start, &j)) {
     if (j == i || (dummy && kind[j] != STAB_FLUID)) continue;
     realv r = x - (pos[j] + it.shift);
-    if (dot(r, r) < SMOOTH_SUPPORT2) ++c;
+    if (dot(r, r) < g.sm.support2) ++c;
   }
   count[i] = c;
 }
@@ -113,12 +113,12 @@ __kernel void stab_ppe_coeffs(OP_ARGS, __global const uint *kind, __global const
     if (j == i || (dummy && kind[j] != STAB_FLUID)) continue;
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
+    if (r2 >= g.sm.support2) continue;
     real c;
     if (dummy)
-      c = scale * vol[j] * smoothing_w(sqrt(r2));
+      c = scale * vol[j] * smoothing_w(g.sm, sqrt(r2));
     else {
-      const real a = poisson_pair(mat_identity(), vol[j], r, r2);
+      const real a = poisson_pair(g.sm, mat_identity(), vol[j], r, r2);
       diag += a;
       c = -a;
     }
@@ -151,13 +151,13 @@ __kernel void stab_ppe_apply(OP_ARGS, __global const uint *kind, __global const 
     if (j == i || (dummy && kind[j] != STAB_FLUID)) continue;
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
+    if (r2 >= g.sm.support2) continue;
     if (dummy) {
-      const real w = vol[j] * smoothing_w(sqrt(r2));
+      const real w = vol[j] * smoothing_w(g.sm, sqrt(r2));
       ws += w;
       s += w * x[j];
     } else
-      s += poisson_pair(mat_identity(), vol[j], r, r2) * (x_i - x[j]);
+      s += poisson_pair(g.sm, mat_identity(), vol[j], r, r2) * (x_i - x[j]);
   }
   y[i] = dummy ? d0 * (x_i - s / ws) : s;
 }
@@ -180,8 +180,8 @@ __kernel void stab_ppe_diag(OP_ARGS, __global const uint *kind, __global const u
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    s += poisson_pair(mat_identity(), vol[j], r, r2);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    s += poisson_pair(g.sm, mat_identity(), vol[j], r, r2);
   }
   d[i] = s;
 }
@@ -217,8 +217,8 @@ __kernel void stab_wall_neumann(const uint n, const struct grid g, __global cons
     const realv xj = pos[j] + it.shift;
     realv r = xv - xj;
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
-    const real w = vol[j] * smoothing_w(sqrt(r2));
+    if (r2 >= g.sm.support2) continue;
+    const real w = vol[j] * smoothing_w(g.sm, sqrt(r2));
     ws += w;
     s += w * dot(f - STAB_DYNAMIC * force, xw - xj); /* P_w − P_k: (f − a)·(x_w − x_k) */
     /* the approach: (u_j − u_W)·n < 0 */
@@ -231,7 +231,7 @@ __kernel void stab_wall_neumann(const uint n, const struct grid g, __global cons
   neigh_begin(&it, &g, xw);
   while (!seen && neigh_next(&it, &g, cell_start, &j)) {
     realv r = xw - (pos[j] + it.shift);
-    seen = kind[j] == STAB_FLUID && dot(r, r) < SMOOTH_SUPPORT2;
+    seen = kind[j] == STAB_FLUID && dot(r, r) < g.sm.support2;
   }
   const int lagged = wet && !seen;
   const int fixed = !wet || lagged;

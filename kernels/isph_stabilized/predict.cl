@@ -52,8 +52,8 @@ __kernel void stab_predict(OP_ARGS, __global const uint *kind, __global const re
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    lap += poisson_pair(L_i, vol[j], r, r2) * (u_i - vel[j]);
+    if (r2 >= g.sm.support2 || j == i) continue;
+    lap += poisson_pair(g.sm, L_i, vol[j], r, r2) * (u_i - vel[j]);
   }
   const realv u = u_i + dt * (nu * lap + accel);
   if (!all(isfinite(u))) flags_raise(flags, CLSPH_FLAG_NAN);
@@ -80,7 +80,7 @@ uint stab_scan_empty(uint i, realv xs, realv gss, const struct grid *gg,
   const real gl = length(gss);
   if (!(gl > R(0.0))) return 1u;
   const realv nrm = -gss / gl;
-  const real h = R(1.0) / SMOOTH_INV_H;
+  const real h = R(1.0) / gg->sm.inv_h;
   const realv t = xs + h * nrm;
   struct neigh_iter it;
   neigh_begin(&it, gg, pos[i]);
@@ -90,7 +90,7 @@ uint stab_scan_empty(uint i, realv xs, realv gss, const struct grid *gg,
     const realv xj = stab_xstar(j, pos, kind, ustar, wall_vel, dt) + it.shift;
     const realv rj = xj - xs, rt = xj - t;
     const real r2 = dot(rj, rj);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
+    if (r2 >= gg->sm.support2) continue;
     if (r2 >= R(2.0) * h * h) {
       if (dot(rt, rt) < h * h) return 0u;
     } else if (fabs(nrm.x * rj.y - nrm.y * rj.x) + fabs(dot(nrm, rt)) < h) {
@@ -130,12 +130,12 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv rs = xs - (stab_xstar(j, pos, kind, ustar, wall_vel, dt) + it.shift);
     const real rsl = sqrt(dot(rs, rs));
-    s += vol[j] * smoothing_w(rsl); /* j == i included: W(0) */
-    if (j != i && rsl < SMOOTH_SUPPORT) gss += vol[j] * smoothing_f(rsl) * rs;
+    s += vol[j] * smoothing_w(g.sm, rsl); /* j == i included: W(0) */
+    if (j != i && rsl < g.sm.support) gss += vol[j] * smoothing_f(g.sm, rsl) * rs;
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
-    const realv gw = smoothing_f(sqrt(r2)) * r;
+    if (r2 >= g.sm.support2 || j == i) continue;
+    const realv gw = smoothing_f(g.sm, sqrt(r2)) * r;
     d += vol[j] * dot(ustar[j] - u_i, gw);
     gs += vol[j] * gw;
   }

@@ -35,7 +35,7 @@ __kernel void stab_project(OP_ARGS, __global const uint *kind, __global const re
   if (i >= n || kind[i] != STAB_FLUID) return;
   const realv x = pos[i];
   const real p_i = p[i];
-  const real rc = R(2.0) / (R(3.0) * SMOOTH_INV_H);
+  const real rc = R(2.0) / (R(3.0) * g.sm.inv_h);
   struct neigh_iter it;
   uint j;
 #if STAB_DYNAMIC
@@ -46,7 +46,7 @@ __kernel void stab_project(OP_ARGS, __global const uint *kind, __global const re
     neigh_begin(&it, &g, x);
     while (neigh_next(&it, &g, cell_start, &j)) {
       realv r = x - (pos[j] + it.shift);
-      if (dot(r, r) >= SMOOTH_SUPPORT2) continue;
+      if (dot(r, r) >= g.sm.support2) continue;
       e = fmax(e, -(p[j] - p_i + dot(rho_a, r)));
     }
   }
@@ -58,12 +58,14 @@ __kernel void stab_project(OP_ARGS, __global const uint *kind, __global const re
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i) continue;
+    if (r2 >= g.sm.support2 || j == i) continue;
     const real rr = sqrt(r2);
-    const real f = rr < rc ? smoothing_f(rc) * rc / fmax(rr, R(1e-6) * rc) : smoothing_f(rr);
+    const real f =
+        rr < rc ? smoothing_f(g.sm, rc) * rc / fmax(rr, R(1e-6) * rc) : smoothing_f(g.sm, rr);
 #if STAB_DYNAMIC
     gp += vol[j] * (p[j] - p_i + dot(rho_a, r) + R(2.0) * e) * f * r;
-    if (rr < rc) gp += vol[j] * R(2.0) * fmax(R(0.0), fmax(p_i, p[j])) * (f - smoothing_f(rr)) * r;
+    if (rr < rc)
+      gp += vol[j] * R(2.0) * fmax(R(0.0), fmax(p_i, p[j])) * (f - smoothing_f(g.sm, rr)) * r;
 #else
     gp += vol[j] * (p_i + p[j]) * f * r;
 #endif

@@ -21,7 +21,7 @@ __kernel void stab_particle_shift(const uint n, const struct grid g,
   shift[i] = (realv)(R(0.0));
   if (kind[i] != STAB_FLUID || free_surface[i]) return;
   const realv x = pos[i];
-  const real near2 = R(0.25) * SMOOTH_SUPPORT2; /* h² for the cubic spline's support 2h */
+  const real near2 = R(0.25) * g.sm.support2; /* h² for the cubic spline's support 2h */
   realv gc = (realv)(R(0.0)), wn = (realv)(R(0.0));
   real wbest = dr * dr; /* a wall point within dr: the nearest one's normal */
   struct neigh_iter it;
@@ -31,9 +31,9 @@ __kernel void stab_particle_shift(const uint n, const struct grid g,
     if (j == i) continue;
     const realv r = x - (pos[j] + it.shift);
     const real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2) continue;
+    if (r2 >= g.sm.support2) continue;
     if (kind[j] == STAB_FLUID && free_surface[j] && r2 < near2) return;
-    gc += vol[j] * smoothing_f(sqrt(r2)) * r;
+    gc += vol[j] * smoothing_f(g.sm, sqrt(r2)) * r;
     if (kind[j] != STAB_FLUID) {
       const realv q = x - (pos[j] + it.shift + dist[j] * normal[j]);
       const real q2 = dot(q, q);

@@ -29,9 +29,9 @@
 #endif
 /* Eq 39 with the departures above: a point at distance dist from the wall (or vertex) that
  * closes on it by `closing` in one step. */
-int isph_impact(real dist, real closing)
+int isph_impact(const struct smooth sm, real dist, real closing)
 {
-  return dist - closing < SMOOTH_SUPPORT / R(8.0) && closing * ISPH_IMPACT_STEPS > dist;
+  return dist - closing < sm.support / R(8.0) && closing * ISPH_IMPACT_STEPS > dist;
 }
 
 __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
@@ -56,16 +56,16 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
-    d -= vol[j] * smoothing_f(sqrt(r2)) * r2; /* r_ab·∇w_ab = F r² */
-    if (kind[j] == ISPH_FLUID) wet += vol[j] * smoothing_w(sqrt(r2));
-    gf += vol[j] * smoothing_f(sqrt(r2)) * r;
+    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
+    d -= vol[j] * smoothing_f(g.sm, sqrt(r2)) * r2; /* r_ab·∇w_ab = F r² */
+    if (kind[j] == ISPH_FLUID) wet += vol[j] * smoothing_w(g.sm, sqrt(r2));
+    gf += vol[j] * smoothing_f(g.sm, sqrt(r2)) * r;
   }
   neigh_begin(&it, &g_seg, x);
   uint s;
   while (neigh_next(&it, &g_seg, seg_start, &s)) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
-    const realv gg = usaw_grad_gamma_seg(x, a, b, seg_n[s]);
+    const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
     d += dot(x - R(0.5) * (a + b), gg);
     gw += gg;
     if (kind[i] == ISPH_FLUID) { /* eq 39 against the nearest point of the segment */
@@ -73,7 +73,7 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
       const realv c = a + clamp(dot(x - a, t) / dot(t, t), R(0.0), R(1.0)) * t;
       const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]); /* wall velocity */
       const real dist = length(x - c);
-      if (dist > R(0.0) && isph_impact(dist, -dt * dot(u - us, x - c) / dist)) hitting = 1;
+      if (dist > R(0.0) && isph_impact(g.sm, dist, -dt * dot(u - us, x - c) / dist)) hitting = 1;
     }
   }
   d /= gam[i];

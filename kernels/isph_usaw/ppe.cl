@@ -41,14 +41,14 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
-    div -= vol[j] * smoothing_f(sqrt(r2)) * dot(us - ustar[j], r);
+    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
+    div -= vol[j] * smoothing_f(g.sm, sqrt(r2)) * dot(us - ustar[j], r);
   }
   neigh_begin(&it, &g_seg, x);
   uint s;
   while (neigh_next(&it, &g_seg, seg_start, &s)) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
-    const realv gg = usaw_grad_gamma_seg(x, a, b, seg_n[s]);
+    const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
     const uint v1 = inv[seg_v1[s]], v2 = inv[seg_v2[s]];
     div += dot(us - R(0.5) * (ustar[v1] + ustar[v2]), gg);
     wall += dot(R(0.5) * (visc[v1] + visc[v2]), gg);
@@ -85,7 +85,7 @@ __kernel void isph_no_tension(USAW_PART_ARGS, USAW_SEG_ARGS, __global const uint
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ISPH_FLUID || free_surface[i] || p[i] >= R(0.0)) return;
   const realv x = pos[i];
-  const real near2 = R(0.25) * SMOOTH_SUPPORT2; /* (h q_max / 2)² */
+  const real near2 = R(0.25) * g.sm.support2; /* (h q_max / 2)² */
   int near_surface = 0;
   struct neigh_iter it;
   neigh_begin(&it, &g, x);

@@ -57,16 +57,16 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
+    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
     wet += kind[j] == ISPH_FLUID;
 #if ISPH_GRAD_SYM
-    const realv gw = vol[j] * smoothing_f(sqrt(r2)) * r;
+    const realv gw = vol[j] * smoothing_f(g.sm, sqrt(r2)) * r;
     grad -= (pa - p[j]) * gw;
     mx -= r.x * gw;
     my -= r.y * gw;
     near_air |= kind[j] == ISPH_FLUID && free_surface[j];
 #else
-    grad += vol[j] * (pa + p[j]) * smoothing_f(sqrt(r2)) * r;
+    grad += vol[j] * (pa + p[j]) * smoothing_f(g.sm, sqrt(r2)) * r;
 #endif
   }
   neigh_begin(&it, &g_seg, x);
@@ -92,7 +92,7 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     if (free_flow) ps = fmax(ps, pa);
 #endif
 #if ISPH_GRAD_SYM
-    const realv gs = usaw_grad_gamma_seg(x, a, b, seg_n[s]);
+    const realv gs = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
     grad += (pa - ps) * gs;
     if (!above) { /* a segment above the water line adds nothing to G−{P} */
       const realv rs = x - R(0.5) * (a + b);
@@ -100,7 +100,7 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
       my += rs.y * gs;
     }
 #else
-    grad -= (pa + ps) * usaw_grad_gamma_seg(x, a, b, seg_n[s]);
+    grad -= (pa + ps) * usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
 #endif
   }
 #if ISPH_GRAD_SYM
@@ -134,8 +134,8 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
    * there must show (the cavity's stability map). */
   if (stop_at_walls)
     u_new = usaw_wall_guard(x, u_new, dt,
-                            SMOOTH_SUPPORT / (free_surface[i] || wet == 0u ? R(8.0) : R(16.0)),
-                            g_seg, seg_start, seg_a, seg_b, seg_n, seg_v1, seg_v2, inv, vel, 1);
+                            g.sm.support / (free_surface[i] || wet == 0u ? R(8.0) : R(16.0)), g_seg,
+                            seg_start, seg_a, seg_b, seg_n, seg_v1, seg_v2, inv, vel, 1);
   acc[i] = (u_new - vel[i]) / dt; /* the particle's acceleration, for the force bound (49) */
   vel[i] = u_new;
 }

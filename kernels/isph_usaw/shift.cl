@@ -22,8 +22,8 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   shift[i] = (realv)(R(0.0));
   vel_out[i] = u;
   if (kind[i] != ISPH_FLUID) return;
-  const real near2 = R(0.25) * SMOOTH_SUPPORT2; /* (h q_max / 2)² */
-  const real cd = USAW_COLLIDE * dr0;           /* collision distance */
+  const real near2 = R(0.25) * g.sm.support2; /* (h q_max / 2)² */
+  const real cd = USAW_COLLIDE * dr0;         /* collision distance */
   realv gc = (realv)(R(0.0));
   realv cx = (realv)(R(0.0)), cu = (realv)(R(0.0)); /* collisions: move and velocity change */
   int near_surface = 0;
@@ -33,10 +33,10 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || kind[j] > ISPH_VERTEX) continue;
+    if (r2 >= g.sm.support2 || kind[j] > ISPH_VERTEX) continue;
     near_surface |= free_surface[j] && r2 < near2; /* near the free surface: no shift */
     if (j == i) continue;
-    gc += vol[j] * smoothing_f(sqrt(r2)) * r;
+    gc += vol[j] * smoothing_f(g.sm, sqrt(r2)) * r;
     if (guard && kind[j] == ISPH_FLUID && r2 < cd * cd) {
       const real len = sqrt(r2);
       const realv e = usaw_pair_dir(r, len, dr0, id[i], id[j]);
@@ -49,7 +49,7 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   if (lcx > R(0.5) * cd) cx *= R(0.5) * cd / lcx;
   if (near_surface) {
     if (guard) { /* collisions only */
-      const realv m = usaw_wall_guard(x, cx, R(1.0), SMOOTH_SUPPORT / R(16.0), g_seg, seg_start,
+      const realv m = usaw_wall_guard(x, cx, R(1.0), g.sm.support / R(16.0), g_seg, seg_start,
                                       seg_a, seg_b, seg_n, seg_v1, seg_v2, inv, vel, 0);
       shift[i] = m;
       vel_out[i] = u + cu;
@@ -59,8 +59,8 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   neigh_begin(&it, &g_seg, x);
   uint s;
   while (neigh_next(&it, &g_seg, seg_start, &s))
-    gc -= usaw_grad_gamma_seg(x, seg_a[s] + it.shift, seg_b[s] + it.shift, seg_n[s]);
-  const real h = R(1.0) / SMOOTH_INV_H;
+    gc -= usaw_grad_gamma_seg(g.sm, x, seg_a[s] + it.shift, seg_b[s] + it.shift, seg_n[s]);
+  const real h = R(1.0) / g.sm.inv_h;
   realv dr = -c_shift * h * h * gc / gam[i];
   /* at most ISPH_SHIFT_MAX h per step: in a sparse region next to a wall (a jet running up a
    * slope) |G{1}| reaches 1/h and eq 35 moved a particle by 0.7 h in one step, through the wall */
@@ -71,7 +71,7 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
    * the wedge case's apex, where the fluid leaves the corner, the shift carried particles that
    * slid up the slope around the corner and 0.1-0.2 δr into it */
   if (guard)
-    dr = usaw_wall_guard(x, dr, R(1.0), SMOOTH_SUPPORT / R(16.0), g_seg, seg_start, seg_a, seg_b,
+    dr = usaw_wall_guard(x, dr, R(1.0), g.sm.support / R(16.0), g_seg, seg_start, seg_a, seg_b,
                          seg_n, seg_v1, seg_v2, inv, vel, 0);
   shift[i] = dr;
 #if ISPH_SHIFT_VCORR
@@ -81,14 +81,14 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
-    du -= vol[j] * (u - vel[j]) * (smoothing_f(sqrt(r2)) * dot(r, dr));
+    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
+    du -= vol[j] * (u - vel[j]) * (smoothing_f(g.sm, sqrt(r2)) * dot(r, dr));
   }
   neigh_begin(&it, &g_seg, x);
   while (neigh_next(&it, &g_seg, seg_start, &s)) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
-    du += (u - us) * dot(usaw_grad_gamma_seg(x, a, b, seg_n[s]), dr);
+    du += (u - us) * dot(usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]), dr);
   }
   vel_out[i] = u + du / gam[i] + cu;
 #else

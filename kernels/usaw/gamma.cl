@@ -42,9 +42,9 @@ real usaw_psi(real q, real z)
 }
 
 /* γ̃_as of the segment a→b (normal n into the fluid) seen from x (eqs 58-60, 62). */
-real usaw_gamma_seg(realv x, realv a, realv b, realv n)
+real usaw_gamma_seg(const struct smooth sm, realv x, realv a, realv b, realv n)
 {
-  const real inv_h = SMOOTH_INV_H;
+  const real inv_h = sm.inv_h;
   realv t = b - a;
   const real len = length(t);
   t /= len;
@@ -60,7 +60,7 @@ real usaw_gamma_seg(realv x, realv a, realv b, realv n)
 }
 
 /* ∇γ_as = n ∫ w over the part of the segment inside the support (eq 6), Gauss-Legendre. */
-realv usaw_grad_gamma_seg(realv x, realv a, realv b, realv n)
+realv usaw_grad_gamma_seg(const struct smooth sm, realv x, realv a, realv b, realv n)
 {
   const real gx[8] = {R(-0.9602898564975363), R(-0.7966664774136267), R(-0.5255324099163290),
                       R(-0.1834346424956498), R(0.1834346424956498),  R(0.5255324099163290),
@@ -72,7 +72,7 @@ realv usaw_grad_gamma_seg(realv x, realv a, realv b, realv n)
   const real len = length(t);
   t /= len;
   const real d = dot(x - a, n);
-  const real reach2 = SMOOTH_SUPPORT2 - d * d;
+  const real reach2 = sm.support2 - d * d;
   if (reach2 <= R(0.0)) return (realv)(R(0.0));
   const real reach = sqrt(reach2), yfoot = dot(x - a, t); /* foot at a + yfoot t */
   const real lo = fmax(R(0.0), yfoot - reach), hi = fmin(len, yfoot + reach);
@@ -81,7 +81,7 @@ realv usaw_grad_gamma_seg(realv x, realv a, realv b, realv n)
   for (int k = 0; k < USAW_GL; ++k) {
     real y = R(0.5) * (lo + hi) + R(0.5) * (hi - lo) * gx[k];
     real dy = y - yfoot;
-    s += gw[k] * smoothing_w(sqrt(d * d + dy * dy));
+    s += gw[k] * smoothing_w(sm, sqrt(d * d + dy * dy));
   }
   return R(0.5) * (hi - lo) * s * n;
 }
@@ -112,8 +112,8 @@ __kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const u
   uint s;
   while (neigh_next(&it, &g_seg, seg_start, &s)) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, nn = seg_n[s];
-    g -= usaw_gamma_seg(x, a, b, nn);
-    gg += usaw_grad_gamma_seg(x, a, b, nn);
+    g -= usaw_gamma_seg(g_seg.sm, x, a, b, nn);
+    gg += usaw_grad_gamma_seg(g_seg.sm, x, a, b, nn);
     const realv t = b - a;
     const real u = clamp(dot(x - a, t) / dot(t, t), R(0.0), R(1.0));
     const realv c = u <= R(0.0) ? a : (u >= R(1.0) ? b : a + u * t); /* corners bit-exact */

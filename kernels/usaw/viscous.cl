@@ -21,14 +21,14 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
-    lap += R(2.0) * vol[j] * smoothing_f(sqrt(r2)) * (u - vel[j]); /* r·∇w / r² = F */
+    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
+    lap += R(2.0) * vol[j] * smoothing_f(g.sm, sqrt(r2)) * (u - vel[j]); /* r·∇w / r² = F */
   }
   neigh_begin(&it, &g_seg, x);
   uint s;
   while (neigh_next(&it, &g_seg, seg_start, &s)) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, nn = seg_n[s];
-    const realv gg = usaw_grad_gamma_seg(x, a, b, nn);
+    const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, nn);
     const real ggn = length(gg);
     if (ggn == R(0.0)) continue;
     const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);

@@ -18,8 +18,8 @@ __kernel void usaw_vertex_strain(USAW_PART_ARGS, USAW_SEG_ARGS, __global const r
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
-    const realv gw = smoothing_f(sqrt(r2)) * r, du = u - vel[j];
+    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
+    const realv gw = smoothing_f(g.sm, sqrt(r2)) * r, du = u - vel[j];
     gx -= vol[j] * du.x * gw;
     gy -= vol[j] * du.y * gw;
   }
@@ -27,7 +27,7 @@ __kernel void usaw_vertex_strain(USAW_PART_ARGS, USAW_SEG_ARGS, __global const r
   uint s;
   while (neigh_next(&it, &g_seg, seg_start, &s)) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
-    const realv gg = usaw_grad_gamma_seg(x, a, b, seg_n[s]);
+    const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
     const realv du = u - R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
     gx += du.x * gg;
     gy += du.y * gg;

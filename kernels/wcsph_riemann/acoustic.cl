@@ -139,7 +139,7 @@ realv wcr_pressure_gradient(realv x, real pi, const struct grid *g, __global con
     const uint j = row[k];
     if (kind[j] == WCR_DUMMY) continue;
     const realv r = wcr_sep(x, pos[j], g);
-    const real f = smoothing_f(sqrt(dot(r, r))) * vol[j];
+    const real f = smoothing_f(g->sm, sqrt(dot(r, r))) * vol[j];
     real pj = p[j];
 #if WCR_TURB
     pj += R(2.0) / R(3.0) * rho[j] * tk[j];
@@ -201,7 +201,7 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
     const uint j = row[k];
     const realv r = wcr_sep(x, pos[j], &g);
     const real r2 = dot(r, r), rr = sqrt(r2);
-    const real f = smoothing_f(rr) * vol[j];
+    const real f = smoothing_f(g.sm, rr) * vol[j];
     const uint kj = kind[j], wall = kj == WCR_DUMMY;
     realv vj;
     real pj;
@@ -296,7 +296,7 @@ __kernel void wcr_continuity(const uint n, const struct grid g, __global const r
     const uint j = row[k];
     const realv r = wcr_sep(x, pos[j], &g);
     const real rr = sqrt(dot(r, r));
-    const real f = smoothing_f(rr) * vol[j];
+    const real f = smoothing_f(g.sm, rr) * vol[j];
     const uint kj = kind[j];
     realv vj;
     real pj;

@@ -85,7 +85,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
     const uint j = row[k];
     const realv r = wcr_sep(x, pos[j], &g);
     const real r2 = dot(r, r);
-    const real f = smoothing_f(sqrt(r2)) * vol[j];
+    const real f = smoothing_f(g.sm, sqrt(r2)) * vol[j];
     const uint kj = kind[j];
     if (kj != WCR_DUMMY) smin = fmin(smin, sigma[j]);
 #if WCR_TURB
@@ -103,7 +103,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
     res += f * wcr_apply(bi + bj, r); /* (B_i + B_j) ∇W V */
 #if WCR_ARD
     const realv vij = vi - (kj == WCR_DUMMY ? R(2.0) * vel[j] - vi : vel[j]);
-    const real u = -dot(vij, r) * rsqrt(fmax(r2, REAL_EPS * SMOOTH_SUPPORT2));
+    const real u = -dot(vij, r) * rsqrt(fmax(r2, REAL_EPS * g.sm.support2));
     const real beta = fmin(WCR_ETA * fmax(u, R(0.0)), c0);
     if (R(0.5) * rho0 * beta * h > mij) count += R(1.0);
 #else

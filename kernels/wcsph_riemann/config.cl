@@ -155,7 +155,7 @@ __kernel void wcr_config(const uint n, const struct grid g, __global const uint 
     return;
   }
   const realv x = pos[i];
-  real axx = R(0.0), axy = R(0.0), ayy = R(0.0), s = smoothing_w(R(0.0)), dmin = INFINITY;
+  real axx = R(0.0), axy = R(0.0), ayy = R(0.0), s = smoothing_w(g.sm, R(0.0)), dmin = INFINITY;
   uint c = 0u;
   __global uint *row = nlist + (size_t)i * WCR_MAXN;
   struct neigh_iter it;
@@ -167,12 +167,12 @@ __kernel void wcr_config(const uint n, const struct grid g, __global const uint 
     if (r2 >= rlist2 || j == i || kind[j] == WCR_PARKED) continue;
     if (c < WCR_MAXN) row[c] = j;
     ++c;
-    if (r2 >= SMOOTH_SUPPORT2) continue;
-    const real rr = sqrt(r2), vj = vol[j], f = smoothing_f(rr) * vj;
+    if (r2 >= g.sm.support2) continue;
+    const real rr = sqrt(r2), vj = vol[j], f = smoothing_f(g.sm, rr) * vj;
     axx -= f * r.x * r.x; /* −Σ r ⊗ ∇W V (eq 20) */
     axy -= f * r.x * r.y;
     ayy -= f * r.y * r.y;
-    s += smoothing_w(rr);
+    s += smoothing_w(g.sm, rr);
     if (kind[j] == WCR_DUMMY) dmin = fmin(dmin, rr);
   }
   if (c > WCR_MAXN) {

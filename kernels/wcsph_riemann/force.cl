@@ -59,7 +59,7 @@ __kernel void wcr_wall_force(
     if (kj != WCR_DUMMY || wall[j] >= nmask || mask[wall[j]] == 0u) continue;
     const realv r = wcr_sep(x, pos[j], &g);
     const real rr = sqrt(dot(r, r));
-    const real f = smoothing_f(rr) * vol[j];
+    const real f = smoothing_f(g.sm, rr) * vol[j];
 #if WCR_TURB
     const realv nw = wall_normal[j];
     const realv vij = R(2.0) * dot(vi - vel[j], nw) * nw;

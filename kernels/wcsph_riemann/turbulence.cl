@@ -71,7 +71,7 @@ __kernel void wcr_turb_wall(const uint n, const struct grid g, __global const re
     const uint j = row[m];
     if (kind[j] != WCR_DUMMY) continue;
     const realv r = wcr_sep(x, pos[j], &g);
-    const real w = smoothing_w(sqrt(dot(r, r)));
+    const real w = smoothing_w(g.sm, sqrt(dot(r, r)));
     nsum += w * wall_normal[j];
     vw += w * vel[j];
     wsum += w;
@@ -124,7 +124,7 @@ __kernel void wcr_turb_transport(const uint n, const struct grid g, __global con
     const uint j = row[m];
     if (kind[j] == WCR_DUMMY) continue;
     const realv r = wcr_sep(x, pos[j], &g);
-    const real f = smoothing_f(sqrt(dot(r, r))) * vol[j];
+    const real f = smoothing_f(g.sm, sqrt(dot(r, r))) * vol[j];
     axx -= f * r.x * r.x;
     axy -= f * r.x * r.y;
     ayy -= f * r.y * r.y;
@@ -138,7 +138,7 @@ __kernel void wcr_turb_transport(const uint n, const struct grid g, __global con
     const uint kj = kind[j];
     if (kj == WCR_DUMMY) continue;
     const realv r = wcr_sep(x, pos[j], &g);
-    const real f = smoothing_f(sqrt(dot(r, r))) * vol[j];
+    const real f = smoothing_f(g.sm, sqrt(dot(r, r))) * vol[j];
     realv vij = vi - vel[j];
     const real dj = wall_dist[j];
     const real4 fr = frame[j];

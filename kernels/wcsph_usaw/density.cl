@@ -29,8 +29,8 @@ __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const rea
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] != ISPH_FLUID) continue;
-    real rr = sqrt(r2), f = smoothing_f(rr);
+    if (r2 >= g.sm.support2 || j == i || kind[j] != ISPH_FLUID) continue;
+    real rr = sqrt(r2), f = smoothing_f(g.sm, rr);
     div += vol[j] * f * dot(u - vel[j], r);
     /* the hydrostatic part of the density difference is not diffused: ρ_H,a − ρ_H,b = ρ0 g·r/c0²
      * (g·r_ab = |g| (z_b − z_a)) */
@@ -41,7 +41,7 @@ __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const rea
   while (neigh_next(&it, &g_seg, seg_start, &s)) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
-    div -= dot(u - us, usaw_grad_gamma_seg(x, a, b, seg_n[s]));
+    div -= dot(u - us, usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]));
   }
   drho[i] = (ra * div + c0 * diff) / gam[i];
 }
@@ -59,8 +59,8 @@ __kernel void wcsph_vertex_pressure(USAW_PART_ARGS, __global const real *rho, co
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || kind[j] != ISPH_FLUID) continue;
-    real w = vol[j] * smoothing_w(sqrt(r2));
+    if (r2 >= g.sm.support2 || kind[j] != ISPH_FLUID) continue;
+    real w = vol[j] * smoothing_w(g.sm, sqrt(r2));
     s += w * (p[j] + rho[j] * dot(gravity, r)); /* r = r_v − r_b */
     ws += w;
   }

@@ -33,9 +33,9 @@ __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
-    if (r2 >= SMOOTH_SUPPORT2 || j == i || kind[j] > ISPH_VERTEX) continue;
+    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
     const real pb = p[j] - rho0 * dot(gravity, pos[j] + it.shift) - p_ref;
-    grad += vol[j] * (pa + pb) * smoothing_f(sqrt(r2)) * r;
+    grad += vol[j] * (pa + pb) * smoothing_f(g.sm, sqrt(r2)) * r;
     if (guard && kind[j] == ISPH_FLUID && r2 < cd * cd) {
       const realv e = usaw_pair_dir(r, sqrt(r2), dr0, id[i], id[j]);
       const real vn = dot(ustar[i] - ustar[j], e);
@@ -48,7 +48,7 @@ __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const real ps = R(0.5) * (p[inv[seg_v1[s]]] + p[inv[seg_v2[s]]]) -
                     rho0 * dot(gravity, R(0.5) * (a + b)) - p_ref;
-    grad -= (pa + ps) * usaw_grad_gamma_seg(x, a, b, seg_n[s]);
+    grad -= (pa + ps) * usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
   }
   realv u = ustar[i] + cu - dt / rho[i] * (grad / gam[i] + rho0 * gravity);
   /* In scenes with gravity, isph-usaw's wall guard (usaw/common.cl; our departure from the
@@ -59,7 +59,7 @@ __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv
    * Collisions of the predicted velocities u* (cu above) ended the clumping that stopped the run
    * next, at 0.67 s (pairs 0.03 δr apart). */
   if (guard)
-    u = usaw_wall_guard(x, u, dt, SMOOTH_SUPPORT / R(16.0), g_seg, seg_start, seg_a, seg_b, seg_n,
+    u = usaw_wall_guard(x, u, dt, g.sm.support / R(16.0), g_seg, seg_start, seg_a, seg_b, seg_n,
                         seg_v1, seg_v2, inv, vel, 1);
   vel[i] = u;
 }

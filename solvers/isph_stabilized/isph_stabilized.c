@@ -633,12 +633,13 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
   /* σ0: the kernel sum of a full support on the lattice, on the device (common/lattice.cl) */
   real sums[2];
   const real dr = (real)sc->dr;
+  const struct smooth_dev smd = smoothing_dev(&sim->sm);
   CLSPH_TRY(kern_buffer(sim->dev, sizeof sums, NULL, &b->d_sums, "lattice sums"));
-  CLSPH_TRY(KERN_SET(b->k_lattice, KARG(dr), KARG(b->d_sums)));
+  CLSPH_TRY(KERN_SET(b->k_lattice, KARG(smd), KARG(dr), KARG(b->d_sums)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_lattice, 1, NULL));
   CLSPH_TRY(kern_read(sim->dev, b->d_sums, sizeof sums, sums));
   b->sigma0 = (double)sums[0];
-  CLSPH_TRY(KERN_SET(b->k_diag0, KARG(dr), KARG(b->d_sums)));
+  CLSPH_TRY(KERN_SET(b->k_diag0, KARG(smd), KARG(dr), KARG(b->d_sums)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_diag0, 1, NULL));
   CLSPH_TRY(kern_read(sim->dev, b->d_sums, sizeof sums, sums));
   b->d0 = (double)sums[0]; /* negative: the Morris diagonal of a full support */

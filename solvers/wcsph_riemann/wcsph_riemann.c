@@ -468,7 +468,8 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
     CLSPH_TRY(prog_kernel(sim->prog, names[k], ks[k]));
   /* sigma0: the kernel sum of a full support on the lattice */
   const real dr = (real)sc->dr;
-  CLSPH_TRY(KERN_SET(w->k_lattice, KARG(dr), KARG(w->d_partial)));
+  const struct smooth_dev smd = smoothing_dev(&sim->sm);
+  CLSPH_TRY(KERN_SET(w->k_lattice, KARG(smd), KARG(dr), KARG(w->d_partial)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_lattice, 1, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_partial, 2 * sizeof(real), w->h_partial));
   w->sigma0 = (double)w->h_partial[0];

@@ -13,7 +13,7 @@ __kernel void test_neigh_list(const uint n, const struct grid g, __global const 
   uint j;
   while (neigh_next(&it, &g, cell_start, &j)) {
     realv r = x - (pos[j] + it.shift);
-    if (dot(r, r) >= SMOOTH_SUPPORT2) continue;
+    if (dot(r, r) >= g.sm.support2) continue;
     if (c < maxn) list[i * maxn + c] = j;
     ++c;
   }

@@ -90,6 +90,7 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
   spec.sub = c->sub;
   if (smoothing_make(SMOOTHING_WENDLAND_C2, c->dim, c->h, &sm) != CLSPH_OK) goto fail;
   spec.support = sm.support;
+  spec.sm = sm;
   if (grid_define(&spec, &o) || smoothing_define(&sm, &o) ||
       prog_build_extra(dev, sources, "tests/cl/neighbours_test.cl", src, &o, &prog) ||
       prog_kernel(prog, "test_neigh_list", &k) || grid_create(dev, prog, &spec, n, &g))

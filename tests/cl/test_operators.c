@@ -182,7 +182,7 @@ static void check_regular(const struct dev *dev, enum smoothing_kind kind)
     TC_CHECK(0, "%s: set-up", name);
     goto done;
   }
-  struct grid_spec spec = {.dim = 2, .hi = {1, 1, 0}, .support = sm.support};
+  struct grid_spec spec = {.dim = 2, .hi = {1, 1, 0}, .support = sm.support, .sm = sm};
   for (int k = 0; k < 2; ++k)
     if (!run_ops(dev, &lat, &spec, &sm, k, &r[k])) {
       TC_CHECK(0, "%s: operators run (kgc %d)", name, k);
@@ -257,7 +257,7 @@ static void check_jittered(const struct dev *dev)
     goto done;
   }
   struct grid_spec spec = {
-      .dim = 2, .lo = {-dr, -dr, 0}, .hi = {1 + dr, 1 + dr, 0}, .support = sm.support};
+      .dim = 2, .lo = {-dr, -dr, 0}, .hi = {1 + dr, 1 + dr, 0}, .support = sm.support, .sm = sm};
   for (int k = 0; k < 2; ++k)
     if (!run_ops(dev, &lat, &spec, &sm, k, &r[k])) {
       TC_CHECK(0, "jittered: operators run (kgc %d)", k);
@@ -303,7 +303,8 @@ static void check_periodic(const struct dev *dev)
     TC_CHECK(0, "periodic: set-up");
     goto done;
   }
-  struct grid_spec spec = {.dim = 2, .hi = {1, 1, 0}, .support = sm.support, .periodic = {1, 1}};
+  struct grid_spec spec = {
+      .dim = 2, .hi = {1, 1, 0}, .support = sm.support, .sm = sm, .periodic = {1, 1}};
   if (!run_ops(dev, &lat, &spec, &sm, 0, &r)) {
     TC_CHECK(0, "periodic: operators run");
     goto done;
@@ -335,8 +336,11 @@ static void check_3d(const struct dev *dev)
     TC_CHECK(0, "3-D: set-up");
     goto done;
   }
-  struct grid_spec spec = {
-      .dim = 3, .lo = {-dr, -dr, -dr}, .hi = {1 + dr, 1 + dr, 1 + dr}, .support = sm.support};
+  struct grid_spec spec = {.dim = 3,
+                           .lo = {-dr, -dr, -dr},
+                           .hi = {1 + dr, 1 + dr, 1 + dr},
+                           .support = sm.support,
+                           .sm = sm};
   for (int k = 0; k < 2; ++k)
     if (!run_ops(dev, &lat, &spec, &sm, k, &r[k])) {
       TC_CHECK(0, "3-D: operators run (kgc %d)", k);

@@ -38,8 +38,8 @@ static void gauss_legendre(int n, double *x, double *w)
 }
 
 /* Evaluate W and dW/dr at m radii on the device. */
-static enum clsph_status eval(const struct dev *dev, cl_kernel k, size_t m, const double *r,
-                              double *w, double *dwdr)
+static enum clsph_status eval(const struct dev *dev, cl_kernel k, const struct smoothing *sm,
+                              size_t m, const double *r, double *w, double *dwdr)
 {
   enum clsph_status st = CLSPH_OK;
   cl_mem d_r = NULL, d_w = NULL, d_d = NULL;
@@ -50,7 +50,8 @@ static enum clsph_status eval(const struct dev *dev, cl_kernel k, size_t m, cons
   CLSPH_TRY(kern_buffer(dev, m * sizeof(real), NULL, &d_w, "w"));
   CLSPH_TRY(kern_buffer(dev, m * sizeof(real), NULL, &d_d, "dwdr"));
   cl_uint n = (cl_uint)m;
-  CLSPH_TRY(KERN_SET(k, KARG(n), KARG(d_r), KARG(d_w), KARG(d_d)));
+  const struct smooth_dev smd = smoothing_dev(sm);
+  CLSPH_TRY(KERN_SET(k, KARG(smd), KARG(n), KARG(d_r), KARG(d_w), KARG(d_d)));
   CLSPH_TRY(kern_launch(dev, k, m, NULL));
   CLSPH_TRY(kern_read(dev, d_w, m * sizeof(real), buf + m));
   CLSPH_TRY(kern_read(dev, d_d, m * sizeof(real), buf + 2 * m));
@@ -95,7 +96,7 @@ static void check_one(const struct dev *dev, const char *test_src, enum smoothin
   gauss_legendre(GL_N, gx, gw);
   for (int p = 0; p < panels; ++p)
     for (int i = 0; i < GL_N; ++i) r[p * GL_N + i] = h * (p + 0.5 * (gx[i] + 1.0));
-  if (eval(dev, k, m, r, w, d) != CLSPH_OK) {
+  if (eval(dev, k, &sm, m, r, w, d) != CLSPH_OK) {
     TC_CHECK(0, "%s %dD: evaluation runs", name, dim);
     goto done;
   }
@@ -122,7 +123,7 @@ static void check_one(const struct dev *dev, const char *test_src, enum smoothin
     fr[FD_N + i] = x + delta;
     fr[2 * FD_N + i] = x - delta;
   }
-  if (eval(dev, k, 3 * FD_N, fr, fw, fd) != CLSPH_OK) {
+  if (eval(dev, k, &sm, 3 * FD_N, fr, fw, fd) != CLSPH_OK) {
     TC_CHECK(0, "%s %dD: evaluation runs", name, dim);
     goto done;
   }
@@ -142,7 +143,7 @@ static void check_one(const struct dev *dev, const char *test_src, enum smoothin
 
   /* compact support: W and its gradient vanish from the support radius on */
   for (int i = 0; i < FD_N; ++i) fr[i] = sm.support * (1.0 + 0.5 * i / FD_N);
-  if (eval(dev, k, FD_N, fr, fw, fd) != CLSPH_OK) {
+  if (eval(dev, k, &sm, FD_N, fr, fw, fd) != CLSPH_OK) {
     TC_CHECK(0, "%s %dD: evaluation runs", name, dim);
     goto done;
   }

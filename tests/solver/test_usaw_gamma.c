@@ -140,6 +140,7 @@ int main(void)
     return 1;
   }
   box.support = sm.support;
+  box.sm = sm;
 
   /* a straight wall y = 0 from x = −0.2 to 0.2, fluid above */
   for (int s = 0; s < NSEG; ++s) {
