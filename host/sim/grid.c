@@ -140,13 +140,26 @@ done:
   return st;
 }
 
-enum clsph_status grid_gather(struct grid *g, const struct dev *dev, size_t n, size_t words,
-                              cl_mem src, cl_mem dst)
+enum clsph_status grid_gather(struct grid *g, const struct dev *dev, size_t n, int count,
+                              const size_t *words, const cl_mem *src, const cl_mem *dst)
 {
   enum clsph_status st = CLSPH_OK;
-  cl_uint np = (cl_uint)n, w = (cl_uint)words;
-  CLSPH_TRY(KERN_SET(g->k_gather, KARG(np), KARG(w), KARG(g->d_perm), KARG(src), KARG(dst)));
-  CLSPH_TRY(kern_launch(dev, g->k_gather, n * words, &g->t_gather));
+  CLSPH_ASSERT(count > 0 && count <= GRID_GATHER_FIELDS);
+  cl_uint np = (cl_uint)n;
+  cl_uint8 w;
+  memset(&w, 0, sizeof w);
+  /* an unused slot copies 0 words; it still needs a valid buffer */
+  cl_mem s[GRID_GATHER_FIELDS], d[GRID_GATHER_FIELDS];
+  for (int f = 0; f < GRID_GATHER_FIELDS; ++f) {
+    w.s[f] = f < count ? (cl_uint)words[f] : 0u;
+    s[f] = f < count ? src[f] : g->d_perm;
+    d[f] = f < count ? dst[f] : g->d_perm;
+  }
+  CLSPH_TRY(KERN_SET(g->k_gather, KARG(np), KARG(g->d_perm), KARG(w), KARG(s[0]), KARG(d[0]),
+                     KARG(s[1]), KARG(d[1]), KARG(s[2]), KARG(d[2]), KARG(s[3]), KARG(d[3]),
+                     KARG(s[4]), KARG(d[4]), KARG(s[5]), KARG(d[5]), KARG(s[6]), KARG(d[6]),
+                     KARG(s[7]), KARG(d[7])));
+  CLSPH_TRY(kern_launch(dev, g->k_gather, n, &g->t_gather));
 done:
   return st;
 }

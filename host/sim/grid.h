@@ -67,9 +67,12 @@ enum clsph_status grid_create(const struct dev *dev, cl_program prog, const stru
  *  outside a non-periodic axis are clamped into the edge cell and raise CLSPH_FLAG_ESCAPED. */
 enum clsph_status grid_sort(struct grid *g, const struct dev *dev, size_t n, cl_mem d_pos,
                             cl_mem d_flags);
-/** @brief dst[k] = src[perm[k]] for a field of `words` 32-bit words per particle. */
-enum clsph_status grid_gather(struct grid *g, const struct dev *dev, size_t n, size_t words,
-                              cl_mem src, cl_mem dst);
+/** Fields one grid_gather launch reorders. */
+#define GRID_GATHER_FIELDS 8
+/** @brief dst[f][k] = src[f][perm[k]] for `count` <= GRID_GATHER_FIELDS fields, field f of
+ *  words[f] 32-bit words per particle, in one launch. */
+enum clsph_status grid_gather(struct grid *g, const struct dev *dev, size_t n, int count,
+                              const size_t *words, const cl_mem *src, const cl_mem *dst);
 /** @brief Switch per-stage device timing on or off (and reset it). */
 void grid_timing(struct grid *g, int on);
 /** @brief Release kernels and buffers. Safe on a zeroed struct. */

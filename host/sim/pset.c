@@ -34,10 +34,10 @@ enum clsph_status pset_add(struct pset *ps, const struct dev *dev, const char *n
     CLSPH_TRY(kern_write(dev, f->d, ps->n * elem, init));
   else
     CLSPH_TRY(kern_fill(dev, f->d, &zero, sizeof zero, ps->cap * elem));
-  /* a spare buffer for each element size, used by the reordering */
+  /* spare buffers for the reordering: one per field of this size, up to PSET_SPARES_PER_SIZE */
   int have = 0;
-  for (int s = 0; s < ps->nscratch; ++s) have |= ps->scratch_elem[s] == elem;
-  if (!have) {
+  for (int s = 0; s < ps->nscratch; ++s) have += ps->scratch_elem[s] == elem;
+  if (have < PSET_SPARES_PER_SIZE) {
     CLSPH_TRY(kern_buffer(dev, ps->cap * elem, NULL, &ps->scratch[ps->nscratch], "reorder spare"));
     ps->scratch_elem[ps->nscratch++] = elem;
   }
@@ -69,17 +69,37 @@ cl_mem pset_mem(const struct pset *ps, int index)
   return ps->f[index].d;
 }
 
+/* Batches of consecutive fields, each gathered into a spare of its size that no other field of
+ * the batch takes, GRID_GATHER_FIELDS to a launch (3 launches for isph-usaw's 19 fields). */
 enum clsph_status pset_reorder(struct pset *ps, struct grid *g, const struct dev *dev)
 {
   enum clsph_status st = CLSPH_OK;
-  for (int k = 0; k < ps->nfields; ++k) {
-    struct pfield *f = &ps->f[k];
-    int s = 0;
-    while (ps->scratch_elem[s] != f->elem) ++s;
-    CLSPH_TRY(grid_gather(g, dev, ps->n, f->elem / 4, f->d, ps->scratch[s]));
-    cl_mem old = f->d; /* the gathered copy becomes the field; the old buffer the spare */
-    f->d = ps->scratch[s];
-    ps->scratch[s] = old;
+  int k = 0;
+  while (k < ps->nfields) {
+    int field[GRID_GATHER_FIELDS], spare[GRID_GATHER_FIELDS], taken[PSET_MAX_FIELDS] = {0};
+    size_t words[GRID_GATHER_FIELDS];
+    cl_mem src[GRID_GATHER_FIELDS], dst[GRID_GATHER_FIELDS];
+    int count = 0;
+    for (; k < ps->nfields && count < GRID_GATHER_FIELDS; ++k) {
+      const struct pfield *f = &ps->f[k];
+      int s = 0;
+      while (s < ps->nscratch && (ps->scratch_elem[s] != f->elem || taken[s])) ++s;
+      if (s == ps->nscratch) break; /* every spare of this size is taken: the next batch */
+      taken[s] = 1;
+      field[count] = k;
+      spare[count] = s;
+      words[count] = f->elem / 4;
+      src[count] = f->d;
+      dst[count] = ps->scratch[s];
+      ++count;
+    }
+    CLSPH_TRY(grid_gather(g, dev, ps->n, count, words, src, dst));
+    for (int c = 0; c < count; ++c) { /* the gathered copy becomes the field; the old its spare */
+      struct pfield *f = &ps->f[field[c]];
+      cl_mem old = f->d;
+      f->d = ps->scratch[spare[c]];
+      ps->scratch[spare[c]] = old;
+    }
   }
 done:
   return st;

@@ -7,6 +7,9 @@
 #include "grid.h"
 
 #define PSET_MAX_FIELDS 32
+/** Spare buffers per element size: the reordering gathers up to this many fields of one size in a
+ *  launch (grid_gather takes GRID_GATHER_FIELDS of any sizes). */
+#define PSET_SPARES_PER_SIZE 4
 
 /** Element type of a field, for output. */
 enum pfield_type { PF_REAL = 0, PF_UINT, PF_INT };
@@ -25,7 +28,7 @@ struct pset {
   size_t n, cap; /* particles, and the buffers' capacity */
   int nfields;
   struct pfield f[PSET_MAX_FIELDS];
-  cl_mem scratch[PSET_MAX_FIELDS]; /* one spare buffer per distinct element size */
+  cl_mem scratch[PSET_MAX_FIELDS]; /* spare buffers: PSET_SPARES_PER_SIZE at most per size */
   size_t scratch_elem[PSET_MAX_FIELDS];
   int nscratch;
 };

@@ -7,7 +7,7 @@
  *   grid_scatter      perm[new] = old
  *   grid_order_cells  sorts each cell's slice of perm by old index, so the result does not
  *                     depend on the order the atomics ran in (bit-for-bit reproducible runs)
- *   grid_gather       applies perm to any field (dst[new] = src[perm[new]])
+ *   grid_gather       applies perm to up to 8 fields at once (dst[new] = src[perm[new]])
  * Periodic axes (-D PERIODIC_X/Y/Z=1) wrap cells and shift the image: r_ij = r_i − (r_j + shift).
  * A periodic axis needs at least 2 GRID_SUB + 1 cells (the host checks), and positions on it must
  * lie in [lo, lo + len) (the time integration wraps them). */
@@ -286,14 +286,30 @@ __kernel void grid_order_cells(const uint ncells, __global const uint *start, __
   }
 }
 
-/* Reorder a field of `words` 32-bit words per particle: dst[k] = src[perm[k]]. */
-__kernel void grid_gather(const uint n, const uint words, __global const uint *perm,
-                          __global const uint *src, __global uint *dst)
+/* Reorder up to GRID_GATHER_FIELDS fields in one launch, field f of words.sf 32-bit words per
+ * particle: df[i] = sf[perm[i]]; a slot with 0 words is unused. */
+#define GRID_GATHER_ONE(w, s, d)                                                                   \
+  for (uint c = 0; c < (w); ++c) (d)[i * (w) + c] = (s)[k * (w) + c]
+
+__kernel void grid_gather(const uint n, __global const uint *perm, const uint8 words,
+                          __global const uint *s0, __global uint *d0, __global const uint *s1,
+                          __global uint *d1, __global const uint *s2, __global uint *d2,
+                          __global const uint *s3, __global uint *d3, __global const uint *s4,
+                          __global uint *d4, __global const uint *s5, __global uint *d5,
+                          __global const uint *s6, __global uint *d6, __global const uint *s7,
+                          __global uint *d7)
 {
-  const uint k = get_global_id(0);
-  if (k >= n * words) return;
-  const uint i = k / words, w = k - i * words;
-  dst[k] = src[perm[i] * words + w];
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  const uint k = perm[i];
+  GRID_GATHER_ONE(words.s0, s0, d0);
+  GRID_GATHER_ONE(words.s1, s1, d1);
+  GRID_GATHER_ONE(words.s2, s2, d2);
+  GRID_GATHER_ONE(words.s3, s3, d3);
+  GRID_GATHER_ONE(words.s4, s4, d4);
+  GRID_GATHER_ONE(words.s5, s5, d5);
+  GRID_GATHER_ONE(words.s6, s6, d6);
+  GRID_GATHER_ONE(words.s7, s7, d7);
 }
 
 /* inv[id[k]] = k: where the particle of each original index is now (after a reorder). */
