@@ -55,8 +55,16 @@ real usaw_gamma_seg(const struct smooth sm, realv x, realv a, realv b, realv n)
   if (q0 < R(1e-9)) return R(0.25) * (usaw_sign(yb) - usaw_sign(ya)); /* eq 62 */
   const real za = fmin(R(0.5) * sqrt(q0 * q0 + ya * ya * inv_h * inv_h), R(1.0));
   const real zb = fmin(R(0.5) * sqrt(q0 * q0 + yb * yb * inv_h * inv_h), R(1.0));
+  const real sa = usaw_sign(ya), sb = usaw_sign(yb);
+  /* Both ends at the edge of the support (ζ = 1) on one side of the foot: the segment lies
+   * outside it and its two terms cancel exactly; most segments the cell loop visits are such.
+   * Equal ζ on both sides (the segment spans the support): one ψ. Both give the same bits. */
+  if (za == zb) {
+    if (sa == sb) return R(0.0);
+    return usaw_sign(d) / (R(4.0) * R(3.14159265358979323846)) * ((sb - sa) * usaw_psi(q0, zb));
+  }
   return usaw_sign(d) / (R(4.0) * R(3.14159265358979323846)) *
-         (usaw_sign(yb) * usaw_psi(q0, zb) - usaw_sign(ya) * usaw_psi(q0, za));
+         (sb * usaw_psi(q0, zb) - sa * usaw_psi(q0, za));
 }
 
 /* ∇γ_as = n ∫ w over the part of the segment inside the support (eq 6), Gauss-Legendre. */
