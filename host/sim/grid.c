@@ -136,6 +136,7 @@ enum clsph_status grid_sort(struct grid *g, const struct dev *dev, size_t n, cl_
   CLSPH_TRY(kern_launch(dev, g->k_scatter, n, &g->t_scatter));
   CLSPH_TRY(KERN_SET(g->k_order, KARG(ncells), KARG(g->d_start), KARG(g->d_perm)));
   CLSPH_TRY(kern_launch(dev, g->k_order, g->ncells, &g->t_order));
+  g->sorted = n;
 done:
   return st;
 }

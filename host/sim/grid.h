@@ -46,6 +46,7 @@ struct grid {
   struct grid_dev geom;
   int n[3];      /* cells per axis */
   size_t ncells; /* total cells */
+  size_t sorted; /* particles the last grid_sort binned (the start table's total) */
   size_t cap;    /* particles the per-particle buffers hold */
   cl_kernel k_bin, k_scan_blocks, k_scan_top, k_scan_apply, k_scatter, k_order, k_gather;
   cl_mem d_count; /* ncells + 1 counts */

@@ -298,12 +298,10 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
                            cl_mem val, double eps, cl_mem dinv)
 {
   enum clsph_status st = CLSPH_OK;
-  cl_uint total = 0;
   CLSPH_CHECK(n <= mg->cap, CLSPH_E_INPUT, "multigrid: %zu unknowns exceed %zu", n, mg->cap);
-  CLSPH_TRY(kern_read_at(mg->dev, g->d_start, g->ncells * sizeof(cl_uint), sizeof total, &total));
-  CLSPH_CHECK(total == n, CLSPH_E_INPUT,
-              "multigrid: the operator has %zu unknowns but its grid sorts %u particles", n,
-              (unsigned)total);
+  CLSPH_CHECK(g->sorted == n, CLSPH_E_INPUT,
+              "multigrid: the operator has %zu unknowns but its grid sorts %zu particles", n,
+              g->sorted);
   if (mg->grid != g || mg->lv[1].n.s[3] != (cl_int)g->ncells) CLSPH_TRY(size_levels(mg, g));
   const cl_uint ncells = (cl_uint)g->ncells, nn = (cl_uint)n;
   const real e = (real)eps, omega = (real)mg->omega;
