@@ -273,6 +273,28 @@ def read_csv(path):
         return list(csv.DictReader(f))
 
 
+def read_peers(study, metric, folder=os.path.join(ROOT, "tests", "data")):
+    """Other codes' measured figures for a study (FOLDER/peers_STUDY.csv, '#' lines are its
+    citation), the rows of the study's metric: drawn as points on the cost chart."""
+    path = os.path.join(folder, f"peers_{study}.csv")
+    if not os.path.exists(path):
+        return None, []
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    need = ("code", "version", "scheme", "threads", "resolution", "value", "wall_seconds",
+            "metric", "error")
+    for k, r in enumerate(rows, 2):
+        missing = [c for c in need if not r.get(c)]
+        if missing:
+            raise StudyError(f"{path}: row {k} lacks {', '.join(missing)}")
+        for c in ("wall_seconds", "error"):
+            try:
+                float(r[c])
+            except ValueError:
+                raise StudyError(f"{path}: row {k}: {c} '{r[c]}' is not a number")
+    return path, [r for r in rows if r["metric"] == metric]
+
+
 def draw_accuracy(study, csv_path, opts):
     """Both charts and the orders, from the CSV alone."""
     rows = read_csv(csv_path)
@@ -317,8 +339,27 @@ set ylabel '{esc(metric)} (error against the reference)'
         plots.append(f"'{esc(csv_path)}' every ::1 using {sel(name, 'wall_seconds')}:"
                      f"{cols['error']}:('{esc(res_name)}='.strcol({cols['value']})) with labels "
                      f"offset 0.8,0.8 font ',9' tc lt {k + 1} notitle")
+    peers_path, peers = read_peers(study, metric)
+    groups = []
+    for r in peers:
+        title = f"{r['code']} {r['version']} {r['scheme']}, {r['threads']} threads (measured)"
+        if title not in [g[0] for g in groups]:
+            groups.append((title, []))
+        next(g for g in groups if g[0] == title)[1].append(r)
+    for k, (title, pts) in enumerate(groups):
+        data = "\n".join(f"{r['wall_seconds']},{r['error']},{r['resolution']}={r['value']}"
+                         for r in pts)
+        block = f"$peer{k}"
+        common += f"{block} << EOD\n{data}\nEOD\n"
+        plots.append(f"{block} using 1:2 with points pt 5 ps 1.6 lc rgb 'black' "
+                     f"title '{esc(title)}'")
+        plots.append(f"{block} using 1:2:3 with labels offset 0.8,-0.8 font ',9' notitle")
+    if peers:
+        print(f"  peers: {len(peers)} measured figure(s) from {os.path.relpath(peers_path, ROOT)}")
     gnuplot(common + f"""
 set output '{esc(base)}_cost.png'
+{"set key top right box opaque" if peers else ""}
+{"set offsets graph 0.02, graph 0.02, graph 0.06, graph 0.06" if peers else ""}
 set title '{esc(case)}: error against cost ({esc(study)})'
 set xlabel 'wall-clock seconds'
 plot {', '.join(plots)}

@@ -24,6 +24,32 @@ def png_size(path):
     return struct.unpack(">II", head[16:24])
 
 
+def peers(out):
+    """The peer figures: the cavity's file parses (2 rows of u, 1 of v), a row without its error
+    is refused with the file and row named."""
+    sys.path.insert(0, HERE)
+    import harness
+    failures = []
+    _, u = harness.read_peers("cavity_re100", "u_rms_vs_ghia")
+    _, v = harness.read_peers("cavity_re100", "v_rms_vs_ghia")
+    print(f"peers of cavity_re100: {len(u)} u rows, {len(v)} v rows")
+    if len(u) != 2 or len(v) != 1 or any(float(r["error"]) <= 0 for r in u + v):
+        failures.append("tests/data/peers_cavity_re100.csv: not 2 u rows and 1 v row with errors")
+    bad = os.path.join(out, "peers_bad.csv")
+    with open(bad, "w") as f:
+        f.write("# a row without its error\n"
+                "code,version,scheme,threads,resolution,value,wall_seconds,metric,error\n"
+                "X,1,Y,2,n,30,10,u_rms_vs_ghia,\n")
+    try:
+        harness.read_peers("bad", "u_rms_vs_ghia", out)
+        failures.append("a peer row without its error was accepted")
+    except harness.StudyError as e:
+        print(f"refused as expected: {e}")
+        if "row 2 lacks error" not in str(e):
+            failures.append(f"the refusal does not name the row and column: {e}")
+    return failures
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
@@ -69,6 +95,7 @@ def main():
                 failures.append(f"{chart} is too small to hold a chart")
         except (OSError, ValueError) as e:
             failures.append(str(e))
+    failures += peers(out)
     for f in failures:
         print("FAIL:", f)
     if not failures:
