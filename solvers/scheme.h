@@ -36,11 +36,14 @@ struct scheme_ops {
                                   * them while the fluid is compressed (0: none) */
   const char *const *turbulence; /* the turbulence models (scene turbulence { model }) it has,
                                   * NULL-terminated; NULL: none */
+  int sorts_first;               /* 1: its step moves the particles and sorts them before it
+                                  * looks for a neighbour, so the loop does not sort before it */
   /** -D switches of the scheme's kernels (NULL: none). */
   enum clsph_status (*define)(const struct sim *sim, struct prog_opts *o);
   /** Add the scheme's particle fields and kernels; called after the common fields exist. */
   enum clsph_status (*create)(struct sim *sim, void **state);
-  /** Advance by dt (the particles are sorted by cell and the cell table is current). */
+  /** Advance by dt (the particles are sorted by cell and the cell table is current, unless
+   *  sorts_first). */
   enum clsph_status (*step)(struct sim *sim, void *state, double dt);
   /** Largest stable time step now, s (before the case's cfl factor). */
   enum clsph_status (*max_dt)(struct sim *sim, void *state, double *dt);

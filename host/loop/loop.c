@@ -289,7 +289,7 @@ enum clsph_status loop_run(struct sim *sim, const struct loop_options *opt,
   while (sim->time < sim->scene->t_end && interrupt_signal() == 0) {
     double dt = 0.0, target = 0.0;
     int lands = 0;
-    CLSPH_TRY(sim_sort(sim));
+    if (!sim->scheme->sorts_first) CLSPH_TRY(sim_sort(sim));
     CLSPH_TRY(step_length(sim, &dt, &target, &lands));
     if (sim->scene->flow.on) CLSPH_TRY(sim_flow_control(sim, dt, o.flow));
     CLSPH_TRY(sim->scheme->step(sim, sim->state, dt));

@@ -468,6 +468,7 @@ const struct scheme_ops scheme_isph_usaw = {
     .smoothing = "wendland",
     .h_over_dr = 2.0,
     .fill_fields = SCHEME_FILL_PRESSURE,
+    .sorts_first = 1, /* the half move to r* comes first (step 1) */
     .options = options,
     .define = isph_define,
     .create = isph_create,
