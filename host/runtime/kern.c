@@ -429,6 +429,19 @@ done:
   return st;
 }
 
+enum clsph_status kern_read_nb(const struct dev *dev, cl_mem d, size_t bytes, void *h)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_event ev = NULL;
+  if (bytes == 0) goto done;
+  CLSPH_CL_TRY(
+      clEnqueueReadBuffer(dev->queue, d, CL_FALSE, 0, bytes, h, 0, NULL, profile_event(dev, &ev)));
+  CLSPH_TRY(profile_transfer(dev, "(read, queued)", &ev, 0));
+done:
+  if (ev != NULL) clReleaseEvent(ev);
+  return st;
+}
+
 enum clsph_status kern_read(const struct dev *dev, cl_mem d, size_t bytes, void *h)
 {
   return kern_read_at(dev, d, 0, bytes, h);

@@ -58,22 +58,38 @@ done:
 
 enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax)
 {
+  if (sim->speed_ready && kind == sim->speed_kind) { /* read at the end of the last step */
+    sim->speed_ready = 0;
+    *vmax = sim->speed;
+    return CLSPH_OK;
+  }
+  sim->speed_kind = kind; /* from now on the step-end read brings it along */
   return sim_max_norm(sim, pset_mem(&sim->ps, sim->f_vel), kind, vmax);
+}
+
+/* The largest norm's partials, one per work-group, into partial[at ...] (raises the NaN flag). */
+static enum clsph_status max_norm_launch(struct sim *sim, cl_mem d_vec, int kind, cl_mem partial,
+                                         size_t at, size_t groups)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_uint n = (cl_uint)sim->ps.n, first = (cl_uint)at;
+  cl_int only = kind;
+  cl_mem kd = pset_mem(&sim->ps, sim->f_kind);
+  CLSPH_TRY(KERN_SET(sim->k_max_speed, KARG(n), KARG(d_vec), KARG(kd), KARG(only), KARG(partial),
+                     KARG(first), KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_max_speed, groups * 64, 64, NULL));
+done:
+  return st;
 }
 
 enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *vmax)
 {
   enum clsph_status st = CLSPH_OK;
   real *part = NULL;
-  cl_uint n = (cl_uint)sim->ps.n;
-  cl_int only = kind;
   size_t groups = sim_reduce_groups(sim->ps.n);
-  cl_mem vel = d_vec, kd = pset_mem(&sim->ps, sim->f_kind);
   part = malloc(groups * sizeof *part);
   CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
-  CLSPH_TRY(KERN_SET(sim->k_max_speed, KARG(n), KARG(vel), KARG(kd), KARG(only),
-                     KARG(sim->d_partial), KARG(sim->d_flags)));
-  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_max_speed, groups * 64, 64, NULL));
+  CLSPH_TRY(max_norm_launch(sim, d_vec, kind, sim->d_partial, 0, groups));
   CLSPH_TRY(kern_read(sim->dev, sim->d_partial, groups * sizeof *part, part));
   double m = 0.0;
   for (size_t g = 0; g < groups; ++g) m = fmax(m, (double)part[g]);
@@ -81,6 +97,48 @@ enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *
 done:
   free(part);
   return st;
+}
+
+enum clsph_status sim_max_norm_deferred(struct sim *sim, cl_mem d_vec, int kind, double *dest)
+{
+  enum clsph_status st = CLSPH_OK;
+  const size_t groups = sim_reduce_groups(sim->ps.n);
+  CLSPH_CHECK(sim->ndeferred < SIM_DEFERRED, CLSPH_E_INPUT,
+              "more than %d step-end maxima in one step", SIM_DEFERRED);
+  /* slot k holds its partials from k groups on: the step-end read takes them all at once */
+  CLSPH_TRY(
+      max_norm_launch(sim, d_vec, kind, sim->d_deferred, (size_t)sim->ndeferred * groups, groups));
+  sim->deferred_to[sim->ndeferred++] = dest;
+done:
+  return st;
+}
+
+/* The deferred maxima and, when max_dt has asked for it, the largest speed: launched here, read
+ * with one non-blocking transfer that the flags' blocking read completes (sim_check_flags). */
+enum clsph_status sim_deferred_enqueue(struct sim *sim, size_t *groups)
+{
+  enum clsph_status st = CLSPH_OK;
+  *groups = sim_reduce_groups(sim->ps.n);
+  if (sim->speed_kind != SIM_KIND_UNSET)
+    CLSPH_TRY(
+        sim_max_norm_deferred(sim, pset_mem(&sim->ps, sim->f_vel), sim->speed_kind, &sim->speed));
+  if (sim->ndeferred > 0)
+    CLSPH_TRY(kern_read_nb(sim->dev, sim->d_deferred,
+                           (size_t)sim->ndeferred * *groups * sizeof(real), sim->h_deferred));
+done:
+  return st;
+}
+
+void sim_deferred_finish(struct sim *sim, size_t groups)
+{
+  for (int k = 0; k < sim->ndeferred; ++k) {
+    double m = 0.0;
+    for (size_t g = 0; g < groups; ++g)
+      m = fmax(m, (double)sim->h_deferred[(size_t)k * groups + g]);
+    *sim->deferred_to[k] = m;
+    if (sim->deferred_to[k] == &sim->speed) sim->speed_ready = 1;
+  }
+  sim->ndeferred = 0;
 }
 
 enum clsph_status sim_sample(struct sim *sim, int field, size_t np, const double *at, double *out)

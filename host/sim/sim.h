@@ -10,7 +10,12 @@
 #include "scene.h"
 #include "smoothing.h"
 
+#include <limits.h>
 #include <stdio.h>
+
+/** Maxima one step may leave for the step-end read (sim_max_norm_deferred, and the speed). */
+#define SIM_DEFERRED   4
+#define SIM_KIND_UNSET INT_MIN
 
 struct scheme_ops;
 
@@ -38,14 +43,23 @@ struct sim {
   cl_kernel k_probe;     /* interpolation at arbitrary points */
   cl_kernel k_max_speed; /* reduction */
   cl_mem d_partial;      /* per-work-group partial results of reductions */
-  cl_kernel k_count;     /* reduction: nonzero entries of a uint field */
-  cl_kernel k_domain;    /* fluid outside the domain's box (domain.c) */
-  cl_kernel k_invert;    /* inv[id[k]] = k */
-  cl_mem d_inv;          /* current index of each original particle index (after sim_sort) */
-  double body_force[2];  /* body force now, m/s²: the scene's, x under flow-rate control */
-  struct sim_flow flow;  /* flow-rate control state (scene->flow.on) */
-  cl_kernel k_slice;     /* reduction: x velocity and count of the fluid in the control slice */
-  double time, dt;       /* simulated time and last step, s */
+  /* maxima read with the flags at the end of the step (sim_check_flags), so that the host waits
+   * once there: the largest speed the next max_dt asks for, and sim_max_norm_deferred's */
+  cl_mem d_deferred; /* SIM_DEFERRED slots of sim_reduce_groups(cap) partials */
+  real *h_deferred;
+  double *deferred_to[SIM_DEFERRED]; /* where each launched slot's maximum goes */
+  int ndeferred;                     /* slots launched this step */
+  int speed_kind;  /* the kind sim_max_speed was last asked for (SIM_KIND_UNSET: never) */
+  int speed_ready; /* 1: speed is the step-end value for the next sim_max_speed(speed_kind) */
+  double speed;
+  cl_kernel k_count;    /* reduction: nonzero entries of a uint field */
+  cl_kernel k_domain;   /* fluid outside the domain's box (domain.c) */
+  cl_kernel k_invert;   /* inv[id[k]] = k */
+  cl_mem d_inv;         /* current index of each original particle index (after sim_sort) */
+  double body_force[2]; /* body force now, m/s²: the scene's, x under flow-rate control */
+  struct sim_flow flow; /* flow-rate control state (scene->flow.on) */
+  cl_kernel k_slice;    /* reduction: x velocity and count of the fluid in the control slice */
+  double time, dt;      /* simulated time and last step, s */
   /* what the case's sample(sim) returned at each sample (series.csv), a restart's rows too:
    * ncols named values per row after the time */
   struct sim_samples {
@@ -140,6 +154,14 @@ size_t sim_reduce_groups(size_t n);
 enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax);
 /** @brief Largest norm of a vector field (2 reals per particle) over one kind (−1: all). */
 enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *vmax);
+/** @brief The same maximum without waiting for it: *dest receives it at the step's end, when
+ *  sim_check_flags reads it with the flags (dest must outlive the step). */
+enum clsph_status sim_max_norm_deferred(struct sim *sim, cl_mem d_vec, int kind, double *dest);
+/** @brief (sim_check_flags) Launch the step-end speed and queue the read of every deferred
+ *  maximum; `groups` receives the partials per maximum. */
+enum clsph_status sim_deferred_enqueue(struct sim *sim, size_t *groups);
+/** @brief (sim_check_flags, after a blocking read) Hand each deferred maximum to its place. */
+void sim_deferred_finish(struct sim *sim, size_t groups);
 /** @brief Mean x velocity and count of the fluid particles with x0 <= x < x1 (modulo the period
  *  on a periodic x axis), reduced on the device. */
 enum clsph_status sim_slice_velocity(struct sim *sim, double x0, double x1, double *mean,

@@ -16,10 +16,11 @@ void reduce_local_max(__local real *s)
   barrier(CLK_LOCAL_MEM_FENCE);
 }
 
-/* Largest speed |v| over the particles of kind `kind` (all kinds when kind < 0); also raises
- * CLSPH_FLAG_NAN for a non-finite velocity. */
+/* Largest speed |v| over the particles of kind `kind` (all kinds when kind < 0), one partial per
+ * work-group from partial[at] on; also raises CLSPH_FLAG_NAN for a non-finite velocity. */
 __kernel void reduce_max_speed(const uint n, __global const realv *vel, __global const uint *kind,
-                               const int only, __global real *partial, __global uint *flags)
+                               const int only, __global real *partial, const uint at,
+                               __global uint *flags)
 {
   __local real s[REDUCE_WG];
   const uint l = get_local_id(0);
@@ -32,7 +33,7 @@ __kernel void reduce_max_speed(const uint n, __global const realv *vel, __global
   }
   s[l] = v;
   reduce_local_max(s);
-  if (l == 0) partial[get_group_id(0)] = s[0];
+  if (l == 0) partial[at + get_group_id(0)] = s[0];
 }
 
 /* Sum of a work-group's local values (tree). */

@@ -373,7 +373,8 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   cl_mem acc = pset_mem(ps, is->f_acc); /* the accelerations, kept for the next free surface */
   CLSPH_TRY(arg(is->k_project, &i, sizeof acc, &acc));
   CLSPH_TRY(kern_launch(sim->dev, is->k_project, ps->n, NULL));
-  CLSPH_TRY(sim_max_norm(sim, acc, 0, &is->acc)); /* largest |u̇_a| of the fluid (49) */
+  /* largest |u̇_a| of the fluid (49), for the next step's length: read at the step's end */
+  CLSPH_TRY(sim_max_norm_deferred(sim, acc, 0, &is->acc));
   CLSPH_TRY(half_move(sim, is, dt));
   /* 6. shifting at r̃ */
   if (is->c_shift > 0.0) {
