@@ -429,13 +429,14 @@ done:
   return st;
 }
 
-enum clsph_status kern_read_nb(const struct dev *dev, cl_mem d, size_t bytes, void *h)
+enum clsph_status kern_read_nb(const struct dev *dev, cl_mem d, size_t offset, size_t bytes,
+                               void *h)
 {
   enum clsph_status st = CLSPH_OK;
   cl_event ev = NULL;
   if (bytes == 0) goto done;
-  CLSPH_CL_TRY(
-      clEnqueueReadBuffer(dev->queue, d, CL_FALSE, 0, bytes, h, 0, NULL, profile_event(dev, &ev)));
+  CLSPH_CL_TRY(clEnqueueReadBuffer(dev->queue, d, CL_FALSE, offset, bytes, h, 0, NULL,
+                                   profile_event(dev, &ev)));
   CLSPH_TRY(profile_transfer(dev, "(read, queued)", &ev, 0));
 done:
   if (ev != NULL) clReleaseEvent(ev);

@@ -83,7 +83,8 @@ enum clsph_status kern_read_at(const struct dev *dev, cl_mem d, size_t offset, s
 /** @brief Non-blocking copy device -> host: h holds the data once a later blocking transfer or
  *  kern_finish has returned (the queue is in order). Several of them and one blocking read make
  *  one wait for the host instead of several. */
-enum clsph_status kern_read_nb(const struct dev *dev, cl_mem d, size_t bytes, void *h);
+enum clsph_status kern_read_nb(const struct dev *dev, cl_mem d, size_t offset, size_t bytes,
+                               void *h);
 /** @brief Blocking copy host -> device. */
 enum clsph_status kern_write(const struct dev *dev, cl_mem d, size_t bytes, const void *h);
 /** @brief Fill a buffer with a repeated pattern (e.g. zero). */

@@ -123,7 +123,7 @@ enum clsph_status sim_deferred_enqueue(struct sim *sim, size_t *groups)
     CLSPH_TRY(
         sim_max_norm_deferred(sim, pset_mem(&sim->ps, sim->f_vel), sim->speed_kind, &sim->speed));
   if (sim->ndeferred > 0)
-    CLSPH_TRY(kern_read_nb(sim->dev, sim->d_deferred,
+    CLSPH_TRY(kern_read_nb(sim->dev, sim->d_deferred, 0,
                            (size_t)sim->ndeferred * *groups * sizeof(real), sim->h_deferred));
 done:
   return st;

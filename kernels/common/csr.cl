@@ -21,6 +21,19 @@ __kernel void csr_count(const uint n, const struct grid g, __global const uint *
   count[i] = c;
 }
 
+/* After the scan, in one work-group: when the nonzeros row[n] pass the capacity of the stored
+ * operator, every row is emptied (so that the coefficient kernels, which write from row[i], stay
+ * in bounds, and nothing reads what they wrote) and flags[1] gets their number for the host,
+ * which grows the buffers and builds the operator again; else flags[1] = 0. */
+__kernel void csr_guard(const uint n, const uint cap, __global uint *row, __global uint *flags)
+{
+  const uint total = row[n];
+  barrier(CLK_GLOBAL_MEM_FENCE);
+  if (get_local_id(0) == 0) flags[1] = total > cap ? total : 0u;
+  if (total <= cap) return;
+  for (uint i = get_local_id(0); i <= n; i += get_local_size(0)) row[i] = 0u;
+}
+
 /* y <- A x */
 __kernel void csr_spmv(const uint n, __global const uint *row, __global const uint *col,
                        __global const real *val, __global const real *x, __global real *y)

@@ -114,7 +114,6 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
 {
   enum clsph_status st = CLSPH_OK;
   struct psolve ps;
-  const cl_uint zero = 0;
   memset(&ps, 0, sizeof ps);
   ps.dev = dev;
   ps.opt = *opt;
@@ -141,6 +140,7 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
             {&ps.k_add_diag, "blas1_add_diag"},
             {&ps.k_invert, "blas1_invert"},
             {&ps.k_csr_diag, "csr_diag"},
+            {&ps.k_guard, "csr_guard"},
             {&ps.k_scan_blocks, "grid_scan_blocks"},
             {&ps.k_scan_top, "grid_scan_top"},
             {&ps.k_scan_apply, "grid_scan_apply"}};
@@ -158,7 +158,8 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
   ps.state_double = CLSPH_DOUBLE || dev->fp64;
   CLSPH_TRY(kern_buffer(dev, sizeof state0, state0, &ps.d_state, "solver state"));
   ps.last_its = 8;
-  CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &ps.d_flags, "solver flags"));
+  const cl_uint zeros[2] = {0, 0}; /* a zero diagonal (blas1_invert), store()'s overflow */
+  CLSPH_TRY(kern_buffer(dev, sizeof zeros, zeros, &ps.d_flags, "solver flags"));
   CLSPH_TRY(kern_buffer(dev, (ps.cap + 1) * sizeof(cl_uint), NULL, &ps.d_row, "csr rows"));
   CLSPH_TRY(kern_buffer(dev, (ps.cap + 1) * sizeof(cl_uint), NULL, &ps.d_count, "csr counts"));
   CLSPH_TRY(kern_buffer(dev, ((ps.cap + 1) / PSOLVE_SCAN_BLOCK + 2) * sizeof(cl_uint), NULL,
@@ -252,8 +253,27 @@ done:
 
 /* ---- the operator ---- */
 
-/* Build the stored layout: counts, row starts (exclusive scan of the counts), coefficients. */
-static enum clsph_status store(struct psolve *ps, const struct psolve_op *op)
+/* The stored operator's buffers hold nnz nonzeros, a quarter more when they grow: particles move.
+ */
+static enum clsph_status grow(struct psolve *ps, size_t nnz)
+{
+  enum clsph_status st = CLSPH_OK;
+  if (nnz <= ps->nnz_cap) goto done;
+  kern_release(&ps->d_col);
+  kern_release(&ps->d_val);
+  ps->nnz_cap = nnz + nnz / 4 + 16;
+  CLSPH_TRY(kern_buffer(ps->dev, ps->nnz_cap * sizeof(cl_uint), NULL, &ps->d_col, "csr columns"));
+  CLSPH_TRY(kern_buffer(ps->dev, ps->nnz_cap * sizeof(real), NULL, &ps->d_val, "csr values"));
+done:
+  return st;
+}
+
+/* Build the stored layout: counts, row starts (exclusive scan of the counts), coefficients.
+ * The buffers grow to the nonzeros the host reads; `guarded` (set when the multigrid's set-up
+ * follows and the buffers exist) reads nothing: csr_guard empties every row when the nonzeros pass
+ * the capacity, so the coefficients stay in bounds, and leaves their number in d_flags[1], which
+ * solve() queues for the host and checks after the multigrid's set-up has waited for it. */
+static enum clsph_status store(struct psolve *ps, const struct psolve_op *op, int guarded)
 {
   enum clsph_status st = CLSPH_OK;
   const cl_uint zero = 0;
@@ -268,13 +288,15 @@ static enum clsph_status store(struct psolve *ps, const struct psolve_op *op)
   CLSPH_TRY(KERN_SET(ps->k_scan_apply, KARG(items), KARG(ps->d_count), KARG(ps->d_block),
                      KARG(ps->d_row)));
   CLSPH_TRY(kern_launch(ps->dev, ps->k_scan_apply, blocks, NULL));
-  CLSPH_TRY(kern_read_at(ps->dev, ps->d_row, op->n * sizeof(cl_uint), sizeof nnz, &nnz));
-  if (nnz > ps->nnz_cap) { /* grow by a quarter more than needed: particles move */
-    kern_release(&ps->d_col);
-    kern_release(&ps->d_val);
-    ps->nnz_cap = (size_t)nnz + nnz / 4 + 16;
-    CLSPH_TRY(kern_buffer(ps->dev, ps->nnz_cap * sizeof(cl_uint), NULL, &ps->d_col, "csr columns"));
-    CLSPH_TRY(kern_buffer(ps->dev, ps->nnz_cap * sizeof(real), NULL, &ps->d_val, "csr values"));
+  if (guarded && ps->nnz_cap > 0) {
+    const cl_uint n = (cl_uint)op->n, cap = (cl_uint)ps->nnz_cap;
+    CLSPH_TRY(KERN_SET(ps->k_guard, KARG(n), KARG(cap), KARG(ps->d_row), KARG(ps->d_flags)));
+    CLSPH_TRY(kern_launch_wg(ps->dev, ps->k_guard, PSOLVE_WG, PSOLVE_WG, NULL));
+    CLSPH_TRY(
+        kern_read_nb(ps->dev, ps->d_flags, sizeof(cl_uint), sizeof(cl_uint), &ps->h_overflow));
+  } else {
+    CLSPH_TRY(kern_read_at(ps->dev, ps->d_row, op->n * sizeof(cl_uint), sizeof nnz, &nnz));
+    CLSPH_TRY(grow(ps, nnz));
   }
   CLSPH_TRY(op->coefficients(op->ctx, ps->d_row, ps->d_col, ps->d_val));
 done:
@@ -529,12 +551,17 @@ static enum clsph_status solve(struct psolve *ps, const struct psolve_op *op, cl
               "%s solve: solver_precond = \"multigrid\" needs unknowns that are particles "
               "sorted by a grid, which this operator does not have",
               ps->opt.name);
-  if (set_up) {
-    if (ps->opt.apply == PSOLVE_STORED || multigrid) CLSPH_TRY(store(ps, op));
+  for (int pass = 0; set_up; ++pass) {
+    ps->h_overflow = 0;
+    if (ps->opt.apply == PSOLVE_STORED || multigrid) CLSPH_TRY(store(ps, op, multigrid && !pass));
     CLSPH_TRY(diagonal(ps, op));
     if (multigrid)
       CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val,
                          reinforcement(ps), ps->d_dinv));
+    if (ps->h_overflow == 0) break; /* the rows fitted (the set-up's last read brought the count) */
+    log_debug("%s solve: %u nonzeros pass the stored operator's %zu: growing, set-up again",
+              ps->opt.name, (unsigned)ps->h_overflow, ps->nnz_cap);
+    CLSPH_TRY(grow(ps, ps->h_overflow));
   }
   CLSPH_TRY(bicgstab(ps, op, b, x, res));
   log_debug("%s solve: %s, %d iterations, residual %.3g", ps->opt.name, reason_str(res->reason),
@@ -578,7 +605,7 @@ enum clsph_status psolve_assemble(struct psolve *ps, const struct psolve_op *op,
   size_t *rows = NULL;
   int *cols = NULL;
   double *vals = NULL;
-  CLSPH_TRY(store(ps, op));
+  CLSPH_TRY(store(ps, op, 0));
   r = malloc((n + 1) * sizeof *r);
   CLSPH_CHECK(r != NULL, CLSPH_E_NOMEM, "out of memory");
   CLSPH_TRY(kern_read(ps->dev, ps->d_row, (n + 1) * sizeof *r, r));

@@ -80,15 +80,17 @@ struct psolve {
   int failures; /* consecutive non-converged solves */
   cl_kernel k_dot, k_dot_ts, k_residual, k_shift, k_start, k_begin, k_s, k_end, k_restart, k_total,
       k_spmv, k_scale, k_sweep, k_axpy, k_add_diag, k_invert, k_csr_diag, k_scan_blocks, k_scan_top,
-      k_scan_apply;
+      k_scan_apply, k_guard;
   cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags;
   cl_mem d_state;                               /* the iteration's state (krylov.cl) */
   cl_mem d_row, d_col, d_val, d_count, d_block; /* stored layout */
   size_t nnz_cap;
-  double reserved;  /* bytes announced for the stored operator and the multigrid levels */
-  int ngroups;      /* work-groups of the reductions */
-  int last_its;     /* iterations of the last converged solve: the next one's first batch */
-  int state_double; /* the device keeps the state in double (krylov.cl's kreal) */
+  cl_uint h_overflow; /* the nonzeros of the last guarded store() when they passed nnz_cap, else 0
+                       * (queued read: valid once the multigrid's set-up has read its stencils) */
+  double reserved;    /* bytes announced for the stored operator and the multigrid levels */
+  int ngroups;        /* work-groups of the reductions */
+  int last_its;       /* iterations of the last converged solve: the next one's first batch */
+  int state_double;   /* the device keeps the state in double (krylov.cl's kreal) */
   struct kern_timer t_apply; /* device time of operator applications (benchmarks) */
   struct mg mg;              /* the multigrid preconditioner (PSOLVE_MULTIGRID) */
 };

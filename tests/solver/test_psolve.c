@@ -308,6 +308,36 @@ static void check_traffic(struct dev *dev)
            launches, again.its);
   printf("traffic, multigrid 40/side: %d its, %ld launches, %ld blocking reads a solve\n",
          again.its, launches, reads);
+  /* with its set-up: the stored operator's size comes with the multigrid's stencils (one read),
+   * then the iteration's state */
+  struct psolve_result setup, grown;
+  long setup_launches = 0, setup_reads = 0;
+  if (kern_fill(dev, x, &z, sizeof z, pp.n * sizeof(real))) goto fail;
+  kern_profile_start(dev->profile);
+  if (psolve_solve(&ps, &pp.po.op, b, x, &setup)) goto fail;
+  traffic(dev->profile, &setup_launches, &setup_reads);
+  if (pproblem_read(&pp, x, x2)) goto fail;
+  TC_CHECK(setup.reason > 0 && setup.its == first.its, "traffic: set-up again, %d iterations",
+           setup.its);
+  TC_NEAR(rel_diff(x2, x1, pp.n, 0), 0.0, CLSPH_DOUBLE ? 1e-12 : 1e-5,
+          "traffic: the same solution after a set-up");
+  TC_CHECK(setup_reads == 2, "traffic: two blocking reads a solve with its set-up (%ld)",
+           setup_reads);
+  printf("traffic, with the set-up: %ld launches, %ld blocking reads\n", setup_launches,
+         setup_reads);
+  /* the stored operator outgrows its buffers (capacity forced down): csr_guard empties the rows,
+   * the host grows them and builds the operator again, and the solve is the same */
+  const size_t nnz = ps.nnz_cap;
+  ps.nnz_cap = 16;
+  if (kern_fill(dev, x, &z, sizeof z, pp.n * sizeof(real)) ||
+      psolve_solve(&ps, &pp.po.op, b, x, &grown) || pproblem_read(&pp, x, x2))
+    goto fail;
+  TC_CHECK(grown.reason > 0 && grown.its == first.its && ps.nnz_cap >= nnz * 4 / 5,
+           "traffic: an overflowing operator grows (capacity %zu, was %zu) and solves in %d "
+           "iterations",
+           ps.nnz_cap, nnz, grown.its);
+  TC_NEAR(rel_diff(x2, x1, pp.n, 0), 0.0, CLSPH_DOUBLE ? 1e-12 : 1e-5,
+          "traffic: the same solution after growing");
   goto done;
 fail:
   TC_CHECK(0, "traffic: the solves run");
