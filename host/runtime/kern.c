@@ -461,6 +461,19 @@ done:
   return st;
 }
 
+enum clsph_status kern_write_nb(const struct dev *dev, cl_mem d, size_t bytes, const void *h)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_event ev = NULL;
+  if (bytes == 0) goto done;
+  CLSPH_CL_TRY(
+      clEnqueueWriteBuffer(dev->queue, d, CL_FALSE, 0, bytes, h, 0, NULL, profile_event(dev, &ev)));
+  CLSPH_TRY(profile_transfer(dev, "(write, queued)", &ev, 0));
+done:
+  if (ev != NULL) clReleaseEvent(ev);
+  return st;
+}
+
 enum clsph_status kern_fill(const struct dev *dev, cl_mem d, const void *pattern, size_t psize,
                             size_t bytes)
 {

@@ -87,6 +87,9 @@ enum clsph_status kern_read_nb(const struct dev *dev, cl_mem d, size_t offset, s
                                void *h);
 /** @brief Blocking copy host -> device. */
 enum clsph_status kern_write(const struct dev *dev, cl_mem d, size_t bytes, const void *h);
+/** @brief Non-blocking copy host -> device: h must stay as it is until a later blocking transfer
+ *  or kern_finish has returned. */
+enum clsph_status kern_write_nb(const struct dev *dev, cl_mem d, size_t bytes, const void *h);
 /** @brief Fill a buffer with a repeated pattern (e.g. zero). */
 enum clsph_status kern_fill(const struct dev *dev, cl_mem d, const void *pattern, size_t psize,
                             size_t bytes);

@@ -59,6 +59,8 @@ static void release_levels(struct mg *mg)
   cl_mem *ms[] = {&mg->d_S,   &mg->d_nb, &mg->d_pnb,  &mg->d_par, &mg->d_cdw, &mg->d_b,
                   &mg->d_t_c, &mg->d_x,  &mg->d_info, &mg->d_M,   &mg->d_AP,  &mg->d_APc};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
+  /* the queued write of the coarsest inverse reads h_M until it has run */
+  if (mg->h_M != NULL && mg->dev != NULL) (void)kern_finish(mg->dev);
   free(mg->h_S);
   free(mg->h_A);
   free(mg->h_M);
@@ -287,7 +289,8 @@ static enum clsph_status coarsest(struct mg *mg)
         inv[i * m + j] = i == j && mg->h_A[i * m + i] != 0.0 ? 1.0 / mg->h_A[i * m + i] : 0.0;
   }
   for (size_t k = 0; k < m * m; ++k) mg->h_M[k] = (real)inv[k];
-  CLSPH_TRY(kern_write(mg->dev, mg->d_M, m * m * sizeof(real), mg->h_M));
+  /* queued: h_M changes only at the next set-up, after its blocking read of the stencils */
+  CLSPH_TRY(kern_write_nb(mg->dev, mg->d_M, m * m * sizeof(real), mg->h_M));
 done:
   free(inv);
   free(dense);
