@@ -7,6 +7,18 @@
 #include "kern.h"
 #include "sim.h"
 
+enum clsph_status sim_count_queued(struct sim *sim, cl_mem d_field, real *part, size_t *groups)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_uint n = (cl_uint)sim->ps.n;
+  *groups = sim_reduce_groups(sim->ps.n);
+  CLSPH_TRY(KERN_SET(sim->k_count, KARG(n), KARG(d_field), KARG(sim->d_partial)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_count, *groups * 64, 64, NULL));
+  CLSPH_TRY(kern_read_nb(sim->dev, sim->d_partial, 0, *groups * sizeof *part, part));
+done:
+  return st;
+}
+
 enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count)
 {
   enum clsph_status st = CLSPH_OK;

@@ -20,7 +20,7 @@ static const char *const common_sources[] = {OPS_SOURCES, "common/reduce.cl", "c
 size_t sim_reduce_groups(size_t n)
 {
   size_t g = (n + 63) / 64;
-  return g < 1 ? 1 : (g > 64 ? 64 : g);
+  return g < 1 ? 1 : (g > SIM_REDUCE_MAX_GROUPS ? SIM_REDUCE_MAX_GROUPS : g);
 }
 
 /* ---- set-up ---- */

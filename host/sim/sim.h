@@ -14,8 +14,10 @@
 #include <stdio.h>
 
 /** Maxima one step may leave for the step-end read (sim_max_norm_deferred, and the speed). */
-#define SIM_DEFERRED   4
-#define SIM_KIND_UNSET INT_MIN
+#define SIM_DEFERRED 4
+/** Work-groups of a reduction at most (sim_reduce_groups). */
+#define SIM_REDUCE_MAX_GROUPS 64
+#define SIM_KIND_UNSET        INT_MIN
 
 struct scheme_ops;
 
@@ -157,6 +159,9 @@ enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *
 /** @brief The same maximum without waiting for it: *dest receives it at the step's end, when
  *  sim_check_flags reads it with the flags (dest must outlive the step). */
 enum clsph_status sim_max_norm_deferred(struct sim *sim, cl_mem d_vec, int kind, double *dest);
+/** @brief sim_count without waiting: part (SIM_REDUCE_MAX_GROUPS reals) receives `groups` partial
+ *  counts to add up once a later blocking transfer has returned. */
+enum clsph_status sim_count_queued(struct sim *sim, cl_mem d_field, real *part, size_t *groups);
 /** @brief (sim_check_flags) Launch the step-end speed and queue the read of every deferred
  *  maximum; `groups` receives the partials per maximum. */
 enum clsph_status sim_deferred_enqueue(struct sim *sim, size_t *groups);

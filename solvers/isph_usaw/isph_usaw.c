@@ -36,8 +36,14 @@ struct isph {
   double c_shift;   /* shifting coefficient (0: off) */
   double fs_offset; /* distance of the free surface beyond its particles, in dr */
   double u_wall;    /* largest wall speed, m/s */
-  double acc;       /* largest particle acceleration of the last step, m/s² */
+  /* carried from step to step, and over a restart (isph_persist): the largest particle
+   * acceleration of the last step, m/s² (the next step's length), and whether the last step had a
+   * free surface (1, 0; −1: not known yet), the guess for this one's pressure equation */
+  double carry[2];
+  real part[SIM_REDUCE_MAX_GROUPS]; /* the free-surface count's partials (queued read) */
 };
+#define ISPH_ACC  0
+#define ISPH_FREE 1
 
 static const char *const sources[] = {
     "common/blas1.cl",      "common/krylov.cl",          "common/csr.cl",
@@ -145,6 +151,7 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   const struct geom *geo = &sim->geom;
   real *theta = NULL;
   CLSPH_CHECK(is != NULL, CLSPH_E_NOMEM, "isph-usaw: out of memory");
+  is->carry[ISPH_FREE] = -1.0; /* the first step counts the free surface before its solve */
   CLSPH_CHECK(sim->sm.kind == SMOOTHING_WENDLAND_C2, CLSPH_E_INPUT,
               "%s: isph-usaw computes γ analytically for the Wendland C2 kernel only",
               sim->scene->case_path);
@@ -319,8 +326,17 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   cl_mem nrm = pset_mem(ps, is->f_normal);
   CLSPH_TRY(arg(is->k_free, &i, sizeof nrm, &nrm));
   CLSPH_TRY(kern_launch(sim->dev, is->k_free, ps->n, NULL));
+  /* A free surface makes the pressure equation regular; without one it is singular (reinforced).
+   * The count comes with the solve's first wait: the last step's answer is the guess, and a wrong
+   * one (a surface appeared or closed) solves again with the right form. */
   double nfree = 0.0;
-  CLSPH_TRY(sim_count(sim, fs, &nfree));
+  size_t groups = 0;
+  const int known = is->carry[ISPH_FREE] >= 0.0;
+  if (known)
+    CLSPH_TRY(sim_count_queued(sim, fs, is->part, &groups));
+  else
+    CLSPH_TRY(sim_count(sim, fs, &nfree));
+  const int guess = known ? is->carry[ISPH_FREE] > 0.0 : nfree > 0.0;
   /* 4. pressure equation: P = p̃ + ρgz, previous P as the initial guess */
   CLSPH_TRY(prefix(sim, is, is->k_rhs, &i));
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof ustar, &ustar));
@@ -336,10 +352,22 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof acc_last, &acc_last));
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof rhs, &rhs));
   CLSPH_TRY(kern_launch(sim->dev, is->k_rhs, ps->n, NULL));
-  is->ps.opt.singular = nfree > 0.0 ? is->popt.singular : PSOLVE_REINFORCE;
+  is->ps.opt.singular = guess ? is->popt.singular : PSOLVE_REINFORCE;
   poisson_op_bind(&is->po, &sim->grid, ps->n, pos, pset_mem(ps, sim->f_vol), NULL, fs);
   struct psolve_result res;
   CLSPH_TRY(psolve_solve(&is->ps, &is->po.op, rhs, P, &res));
+  if (known) { /* the solve has waited: the partial counts are here */
+    for (size_t g = 0; g < groups; ++g) nfree += (double)is->part[g];
+    if ((nfree > 0.0) != guess) {
+      log_debug("isph-usaw: step %ld: the free surface %s; the pressure equation again, %s",
+                sim->step, guess ? "is gone" : "is back", guess ? "reinforced" : "regular");
+      is->ps.opt.singular = nfree > 0.0 ? is->popt.singular : PSOLVE_REINFORCE;
+      const int its = res.its; /* the step reports both solves' iterations */
+      CLSPH_TRY(psolve_solve(&is->ps, &is->po.op, rhs, P, &res));
+      res.its += its;
+    }
+  }
+  is->carry[ISPH_FREE] = nfree > 0.0 ? 1.0 : 0.0;
   sim->solver_its = res.its;
   sim->solver_res = res.rnorm;
   cl_uint n = (cl_uint)ps->n;
@@ -374,7 +402,7 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_project, &i, sizeof acc, &acc));
   CLSPH_TRY(kern_launch(sim->dev, is->k_project, ps->n, NULL));
   /* largest |u̇_a| of the fluid (49), for the next step's length: read at the step's end */
-  CLSPH_TRY(sim_max_norm_deferred(sim, acc, 0, &is->acc));
+  CLSPH_TRY(sim_max_norm_deferred(sim, acc, 0, &is->carry[ISPH_ACC]));
   CLSPH_TRY(half_move(sim, is, dt));
   /* 6. shifting at r̃ */
   if (is->c_shift > 0.0) {
@@ -403,6 +431,14 @@ done:
   return st;
 }
 
+/* What one step hands the next (carry): a restart keeps it, so that it goes on bit for bit. */
+static double *isph_persist(void *state, int *count)
+{
+  struct isph *is = state;
+  *count = 2;
+  return is->carry;
+}
+
 static enum clsph_status isph_max_dt(struct sim *sim, void *state, double *dt)
 {
   enum clsph_status st = CLSPH_OK;
@@ -412,8 +448,8 @@ static enum clsph_status isph_max_dt(struct sim *sim, void *state, double *dt)
   double vmax = 0.0;
   CLSPH_TRY(sim_max_speed(sim, 0, &vmax));
   double uref = fmax(vmax, is->u_wall);
-  double a =
-      fmax(hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]), is->acc);
+  double a = fmax(hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]),
+                  is->carry[ISPH_ACC]);
   double d = HUGE_VAL;
   /* CFL (49): the paper's C_CFL = 0.2 lets particles cross the side wall of the lid-driven
    * cavity (Re 100, 20 and 30 particles per side, within 5 s); 0.1 keeps them in. The paper's
@@ -475,6 +511,7 @@ const struct scheme_ops scheme_isph_usaw = {
     .create = isph_create,
     .step = isph_step,
     .max_dt = isph_max_dt,
+    .persist = isph_persist,
     .wall_force = isph_wall_force,
     .destroy = isph_destroy,
 };
