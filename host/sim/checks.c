@@ -31,11 +31,10 @@ enum clsph_status sim_check_flags(struct sim *sim)
   enum clsph_status st = CLSPH_OK;
   cl_uint f[3] = {0, 0, 0};
   float depth = 0.0f; /* the deepest crossing of the step, m */
-  size_t groups = 0;
   /* the step-end maxima come with the flags: one wait */
-  CLSPH_TRY(sim_deferred_enqueue(sim, &groups));
+  CLSPH_TRY(sim_deferred_enqueue(sim));
   CLSPH_TRY(kern_read(sim->dev, sim->d_flags, sizeof f, f));
-  sim_deferred_finish(sim, groups);
+  sim_deferred_finish(sim);
   cl_uint flags = f[0];
   if (flags & 8u) { /* counted; fatal only when deeper than checks.wall_depth dr */
     memcpy(&depth, &f[2], sizeof depth);

@@ -114,12 +114,13 @@ done:
 enum clsph_status sim_max_norm_deferred(struct sim *sim, cl_mem d_vec, int kind, double *dest)
 {
   enum clsph_status st = CLSPH_OK;
-  const size_t groups = sim_reduce_groups(sim->ps.n);
+  const size_t groups = sim_reduce_groups(sim->ps.n); /* n as it is now: it may change later */
   CLSPH_CHECK(sim->ndeferred < SIM_DEFERRED, CLSPH_E_INPUT,
               "more than %d step-end maxima in one step", SIM_DEFERRED);
-  /* slot k holds its partials from k groups on: the step-end read takes them all at once */
-  CLSPH_TRY(
-      max_norm_launch(sim, d_vec, kind, sim->d_deferred, (size_t)sim->ndeferred * groups, groups));
+  /* slot k holds its partials from k SIM_REDUCE_MAX_GROUPS on: the step-end read takes them all */
+  CLSPH_TRY(max_norm_launch(sim, d_vec, kind, sim->d_deferred,
+                            (size_t)sim->ndeferred * SIM_REDUCE_MAX_GROUPS, groups));
+  sim->deferred_groups[sim->ndeferred] = groups;
   sim->deferred_to[sim->ndeferred++] = dest;
 done:
   return st;
@@ -127,26 +128,26 @@ done:
 
 /* The deferred maxima and, when max_dt has asked for it, the largest speed: launched here, read
  * with one non-blocking transfer that the flags' blocking read completes (sim_check_flags). */
-enum clsph_status sim_deferred_enqueue(struct sim *sim, size_t *groups)
+enum clsph_status sim_deferred_enqueue(struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
-  *groups = sim_reduce_groups(sim->ps.n);
   if (sim->speed_kind != SIM_KIND_UNSET)
     CLSPH_TRY(
         sim_max_norm_deferred(sim, pset_mem(&sim->ps, sim->f_vel), sim->speed_kind, &sim->speed));
   if (sim->ndeferred > 0)
     CLSPH_TRY(kern_read_nb(sim->dev, sim->d_deferred, 0,
-                           (size_t)sim->ndeferred * *groups * sizeof(real), sim->h_deferred));
+                           (size_t)sim->ndeferred * SIM_REDUCE_MAX_GROUPS * sizeof(real),
+                           sim->h_deferred));
 done:
   return st;
 }
 
-void sim_deferred_finish(struct sim *sim, size_t groups)
+void sim_deferred_finish(struct sim *sim)
 {
   for (int k = 0; k < sim->ndeferred; ++k) {
     double m = 0.0;
-    for (size_t g = 0; g < groups; ++g)
-      m = fmax(m, (double)sim->h_deferred[(size_t)k * groups + g]);
+    for (size_t g = 0; g < sim->deferred_groups[k]; ++g)
+      m = fmax(m, (double)sim->h_deferred[(size_t)k * SIM_REDUCE_MAX_GROUPS + g]);
     *sim->deferred_to[k] = m;
     if (sim->deferred_to[k] == &sim->speed) sim->speed_ready = 1;
   }

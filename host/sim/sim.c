@@ -301,9 +301,9 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(kern_buffer(dev, sim.ps.cap * sizeof(cl_uint), NULL, &sim.d_inv, "inverse index"));
   CLSPH_TRY(kern_buffer(dev, 2 * (sim_reduce_groups(sim.ps.cap) + 1) * sizeof(real), NULL,
                         &sim.d_partial, "reduction partials"));
-  CLSPH_TRY(kern_buffer(dev, SIM_DEFERRED * sim_reduce_groups(sim.ps.cap) * sizeof(real), NULL,
+  CLSPH_TRY(kern_buffer(dev, SIM_DEFERRED * SIM_REDUCE_MAX_GROUPS * sizeof(real), NULL,
                         &sim.d_deferred, "step-end partials"));
-  sim.h_deferred = malloc(SIM_DEFERRED * sim_reduce_groups(sim.ps.cap) * sizeof *sim.h_deferred);
+  sim.h_deferred = malloc(SIM_DEFERRED * SIM_REDUCE_MAX_GROUPS * sizeof *sim.h_deferred);
   CLSPH_CHECK(sim.h_deferred != NULL, CLSPH_E_NOMEM, "out of memory");
   sim.speed_kind = SIM_KIND_UNSET;
   sim.body_force[0] = scene->body_force[0];

@@ -47,10 +47,11 @@ struct sim {
   cl_mem d_partial;      /* per-work-group partial results of reductions */
   /* maxima read with the flags at the end of the step (sim_check_flags), so that the host waits
    * once there: the largest speed the next max_dt asks for, and sim_max_norm_deferred's */
-  cl_mem d_deferred; /* SIM_DEFERRED slots of sim_reduce_groups(cap) partials */
+  cl_mem d_deferred; /* SIM_DEFERRED slots of SIM_REDUCE_MAX_GROUPS partials */
   real *h_deferred;
-  double *deferred_to[SIM_DEFERRED]; /* where each launched slot's maximum goes */
-  int ndeferred;                     /* slots launched this step */
+  double *deferred_to[SIM_DEFERRED];    /* where each launched slot's maximum goes */
+  size_t deferred_groups[SIM_DEFERRED]; /* and how many partials it has */
+  int ndeferred;                        /* slots launched this step */
   int speed_kind;  /* the kind sim_max_speed was last asked for (SIM_KIND_UNSET: never) */
   int speed_ready; /* 1: speed is the step-end value for the next sim_max_speed(speed_kind) */
   double speed;
@@ -163,10 +164,10 @@ enum clsph_status sim_max_norm_deferred(struct sim *sim, cl_mem d_vec, int kind,
  *  counts to add up once a later blocking transfer has returned. */
 enum clsph_status sim_count_queued(struct sim *sim, cl_mem d_field, real *part, size_t *groups);
 /** @brief (sim_check_flags) Launch the step-end speed and queue the read of every deferred
- *  maximum; `groups` receives the partials per maximum. */
-enum clsph_status sim_deferred_enqueue(struct sim *sim, size_t *groups);
+ *  maximum. */
+enum clsph_status sim_deferred_enqueue(struct sim *sim);
 /** @brief (sim_check_flags, after a blocking read) Hand each deferred maximum to its place. */
-void sim_deferred_finish(struct sim *sim, size_t groups);
+void sim_deferred_finish(struct sim *sim);
 /** @brief Mean x velocity and count of the fluid particles with x0 <= x < x1 (modulo the period
  *  on a periodic x axis), reduced on the device. */
 enum clsph_status sim_slice_velocity(struct sim *sim, double x0, double x1, double *mean,
