@@ -415,63 +415,55 @@ done:
   return st;
 }
 
-enum clsph_status kern_read_at(const struct dev *dev, cl_mem d, size_t offset, size_t bytes,
-                               void *h)
+/* One transfer between the host and d, waited for (blocking) or queued. */
+static enum clsph_status transfer(const struct dev *dev, cl_mem d, int write, size_t offset,
+                                  size_t bytes, void *h, int blocking)
 {
   enum clsph_status st = CLSPH_OK;
   cl_event ev = NULL;
+  const cl_bool b = blocking ? CL_TRUE : CL_FALSE;
   if (bytes == 0) goto done;
-  CLSPH_CL_TRY(clEnqueueReadBuffer(dev->queue, d, CL_TRUE, offset, bytes, h, 0, NULL,
-                                   profile_event(dev, &ev)));
-  CLSPH_TRY(profile_transfer(dev, "(read)", &ev, 1));
+  if (write)
+    CLSPH_CL_TRY(
+        clEnqueueWriteBuffer(dev->queue, d, b, offset, bytes, h, 0, NULL, profile_event(dev, &ev)));
+  else
+    CLSPH_CL_TRY(
+        clEnqueueReadBuffer(dev->queue, d, b, offset, bytes, h, 0, NULL, profile_event(dev, &ev)));
+  CLSPH_TRY(profile_transfer(dev,
+                             write ? (blocking ? "(write)" : "(write, queued)")
+                                   : (blocking ? "(read)" : "(read, queued)"),
+                             &ev, blocking));
 done:
   if (ev != NULL) clReleaseEvent(ev);
   return st;
+}
+
+enum clsph_status kern_read_at(const struct dev *dev, cl_mem d, size_t offset, size_t bytes,
+                               void *h)
+{
+  return transfer(dev, d, 0, offset, bytes, h, 1);
 }
 
 enum clsph_status kern_read_nb(const struct dev *dev, cl_mem d, size_t offset, size_t bytes,
                                void *h)
 {
-  enum clsph_status st = CLSPH_OK;
-  cl_event ev = NULL;
-  if (bytes == 0) goto done;
-  CLSPH_CL_TRY(clEnqueueReadBuffer(dev->queue, d, CL_FALSE, offset, bytes, h, 0, NULL,
-                                   profile_event(dev, &ev)));
-  CLSPH_TRY(profile_transfer(dev, "(read, queued)", &ev, 0));
-done:
-  if (ev != NULL) clReleaseEvent(ev);
-  return st;
+  return transfer(dev, d, 0, offset, bytes, h, 0);
 }
 
 enum clsph_status kern_read(const struct dev *dev, cl_mem d, size_t bytes, void *h)
 {
-  return kern_read_at(dev, d, 0, bytes, h);
+  return transfer(dev, d, 0, 0, bytes, h, 1);
 }
 
+/* clEnqueueWriteBuffer takes a const pointer: the cast only shares transfer() with the reads */
 enum clsph_status kern_write(const struct dev *dev, cl_mem d, size_t bytes, const void *h)
 {
-  enum clsph_status st = CLSPH_OK;
-  cl_event ev = NULL;
-  if (bytes == 0) goto done;
-  CLSPH_CL_TRY(
-      clEnqueueWriteBuffer(dev->queue, d, CL_TRUE, 0, bytes, h, 0, NULL, profile_event(dev, &ev)));
-  CLSPH_TRY(profile_transfer(dev, "(write)", &ev, 1));
-done:
-  if (ev != NULL) clReleaseEvent(ev);
-  return st;
+  return transfer(dev, d, 1, 0, bytes, (void *)(size_t)h, 1);
 }
 
 enum clsph_status kern_write_nb(const struct dev *dev, cl_mem d, size_t bytes, const void *h)
 {
-  enum clsph_status st = CLSPH_OK;
-  cl_event ev = NULL;
-  if (bytes == 0) goto done;
-  CLSPH_CL_TRY(
-      clEnqueueWriteBuffer(dev->queue, d, CL_FALSE, 0, bytes, h, 0, NULL, profile_event(dev, &ev)));
-  CLSPH_TRY(profile_transfer(dev, "(write, queued)", &ev, 0));
-done:
-  if (ev != NULL) clReleaseEvent(ev);
-  return st;
+  return transfer(dev, d, 1, 0, bytes, (void *)(size_t)h, 0);
 }
 
 enum clsph_status kern_fill(const struct dev *dev, cl_mem d, const void *pattern, size_t psize,
