@@ -39,6 +39,7 @@ typedef float kreal;
 
 #define KR_RESTART_RHO   10
 #define KR_RESTART_OMEGA 11
+#define KR_CAPACITY      12 /* the stored operator outgrew its buffers (csr_guard) */
 
 /* Partial-sum sets (BLAS1_GROUPS partial sums each) */
 #define KR_BB  0 /* (b, b) */
@@ -169,7 +170,10 @@ __kernel void kr_start(const uint n, const uint ngroups, const real rtol, const 
     const kreal rn = sqrt(kr_sum(part, KR_RR, ngroups));
     const kreal stop = fmax((kreal)rtol * bnorm, (kreal)atol);
     what = 0;
-    if (!isfinite(bnorm)) {
+    if (flags[1] != 0u) { /* csr_guard: the operator did not fit; the host builds it again */
+      what = 2;
+      if (first) kr_end(st, 0, KR_CAPACITY, KR(0.0));
+    } else if (!isfinite(bnorm)) {
       what = 2;
       if (first) kr_end(st, 0, -3, KR(0.0));
     } else if (bnorm == KR(0.0)) { /* A x = 0: x = 0 */

@@ -12,7 +12,8 @@
  * and join no aggregate (P has a zero row there). A coupling that a moved particle stretches
  * beyond the stencil is lumped into the diagonal (row sums are kept). Empty cells are zero rows,
  * which the smoother leaves at zero (dinv = 0). Periodic axes wrap at every level. */
-#define MG_NONE 0xffffffffu
+#define MG_NONE      0xffffffffu
+#define MG_COARSE_WG 64 /* work-items of mg_coarsest at most (MG_COARSE_WG in mg.h) */
 
 #ifndef MG_OVER
 #define MG_OVER R(1.5)
@@ -390,4 +391,116 @@ __kernel void mg_block(const int l0, const int L, __global const int *info, cons
     for (uint I = lid; I < cells; I += ls) mg_up_cell(W, so, vo, co, S, pnb, par, dw, t, x, I);
     barrier(CLK_GLOBAL_MEM_FENCE);
   }
+}
+
+/* The coarsest level's dense inverse M = A⁻¹ (m ≤ MG_COARSEST cells), in one work-group, in
+ * kreal (double where the device has it; krylov.cl): A from the level's stencils (an empty cell
+ * is an identity row; periodic axes wrap), then Gauss-Jordan with partial pivoting, a pivot under
+ * 1e-12 (float builds 1e-5) of the largest entry counting as singular. A singular operator (pure
+ * Neumann, solved mean-free) is tried again with its diagonal scaled by 1 + 1e-6, then 1 + 1e-3:
+ * the preconditioner only has to be close to the inverse on the rest of the space. One that stays
+ * singular (a zero diagonal: rows that only copy a neighbour's value) gets Jacobi, and flag = 1
+ * for the host's warning. work holds a, b and inv (m² each); at most MG_COARSE_WG work-items. */
+__kernel void mg_coarsest(const int4 nc, const int R, const int W, const uint so, const uint m,
+                          __global const real *S, __global kreal *work, __global real *M,
+                          __global uint *flag)
+{
+#pragma OPENCL FP_CONTRACT OFF /* no fused multiply-adds: the same sums as the host's old loop */
+  __global kreal *a = work, *b = work + m * m, *inv = work + 2 * m * m;
+  __local kreal big_l[MG_COARSE_WG];
+  __local uint piv;
+  __local int ok;
+  const uint lid = get_local_id(0), L = get_local_size(0);
+  const int w = 2 * R + 1;
+  kreal big = KR(0.0);
+  for (uint I = lid; I < m; I += L) {
+    for (uint j = 0; j < m; ++j) a[I * m + j] = KR(0.0);
+    const int4 c = mg_coords(nc, I);
+    int empty = 1;
+    for (int o = 0; o < W; ++o) {
+      const kreal v = (kreal)S[so + I * (uint)W + (uint)o];
+      if (v == KR(0.0)) continue;
+      int4 d = (int4)(o % w - R, (o / w) % w - R, W > w * w ? o / (w * w) - R : 0, 0);
+      int4 t = c + d;
+      int inside = 1;
+      if (t.x < 0 || t.x >= nc.x) {
+        if (!PERIODIC_X) inside = 0;
+        t.x = ((t.x % nc.x) + nc.x) % nc.x;
+      }
+      if (t.y < 0 || t.y >= nc.y) {
+        if (!PERIODIC_Y) inside = 0;
+        t.y = ((t.y % nc.y) + nc.y) % nc.y;
+      }
+      if (t.z < 0 || t.z >= nc.z) {
+        if (!PERIODIC_Z) inside = 0;
+        t.z = ((t.z % nc.z) + nc.z) % nc.z;
+      }
+      if (!inside) continue;
+      a[I * m + mg_id(nc, t)] += v;
+      empty = 0;
+    }
+    if (empty) a[I * m + I] = KR(1.0);
+    for (uint j = 0; j < m; ++j) big = fmax(big, fabs(a[I * m + j]));
+  }
+  big_l[lid] = big;
+  barrier(CLK_LOCAL_MEM_FENCE | CLK_GLOBAL_MEM_FENCE);
+  big = KR(0.0);
+  for (uint k = 0; k < L; ++k) big = fmax(big, big_l[k]);
+  const kreal tol = (CLSPH_DOUBLE ? KR(1e-12) : KR(1e-5)) * big;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const kreal eps = attempt == 0 ? KR(0.0) : (attempt == 1 ? KR(1e-6) : KR(1e-3));
+    for (uint I = lid; I < m; I += L)
+      for (uint j = 0; j < m; ++j) {
+        b[I * m + j] = a[I * m + j] * (I == j ? KR(1.0) + eps : KR(1.0));
+        inv[I * m + j] = I == j ? KR(1.0) : KR(0.0);
+      }
+    if (lid == 0) ok = 1;
+    barrier(CLK_LOCAL_MEM_FENCE | CLK_GLOBAL_MEM_FENCE);
+    for (uint c = 0; c < m; ++c) {
+      if (lid == 0) {
+        uint p = c;
+        for (uint i = c + 1; i < m; ++i)
+          if (fabs(b[i * m + c]) > fabs(b[p * m + c])) p = i;
+        piv = p;
+        if (!(fabs(b[p * m + c]) > tol)) ok = 0;
+      }
+      barrier(CLK_LOCAL_MEM_FENCE | CLK_GLOBAL_MEM_FENCE);
+      if (!ok) break;
+      const uint p = piv;
+      if (p != c)
+        for (uint j = lid; j < m; j += L) {
+          kreal t = b[c * m + j];
+          b[c * m + j] = b[p * m + j];
+          b[p * m + j] = t;
+          t = inv[c * m + j];
+          inv[c * m + j] = inv[p * m + j];
+          inv[p * m + j] = t;
+        }
+      barrier(CLK_GLOBAL_MEM_FENCE);
+      const kreal d = KR(1.0) / b[c * m + c];
+      barrier(CLK_GLOBAL_MEM_FENCE);
+      for (uint j = lid; j < m; j += L) {
+        b[c * m + j] *= d;
+        inv[c * m + j] *= d;
+      }
+      barrier(CLK_GLOBAL_MEM_FENCE);
+      for (uint i = lid; i < m; i += L) {
+        const kreal f = b[i * m + c];
+        if (i == c || f == KR(0.0)) continue;
+        for (uint j = 0; j < m; ++j) {
+          b[i * m + j] -= f * b[c * m + j];
+          inv[i * m + j] -= f * inv[c * m + j];
+        }
+      }
+      barrier(CLK_GLOBAL_MEM_FENCE);
+    }
+    if (ok) break;
+    barrier(CLK_LOCAL_MEM_FENCE); /* every item has read ok before the next attempt resets it */
+  }
+  for (uint I = lid; I < m; I += L)
+    for (uint j = 0; j < m; ++j)
+      M[I * m + j] =
+          ok ? (real)inv[I * m + j]
+             : (I == j && a[I * m + I] != KR(0.0) ? (real)(KR(1.0) / a[I * m + I]) : R(0.0));
+  if (lid == 0) flag[0] = ok ? 0u : 1u;
 }

@@ -34,7 +34,8 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
             {&mg.k_up_csr, "mg_up_csr"},
             {&mg.k_down, "mg_down"},
             {&mg.k_up, "mg_up"},
-            {&mg.k_block, "mg_block"}};
+            {&mg.k_block, "mg_block"},
+            {&mg.k_coarsest, "mg_coarsest"}};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i)
     CLSPH_TRY(prog_kernel(prog, ks[i].name, ks[i].k));
   /* the block's work-group: as wide as the kernel allows, at most 256 items */
@@ -42,6 +43,11 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
   CLSPH_CL_TRY(clGetKernelWorkGroupInfo(mg.k_block, dev->id, CL_KERNEL_WORK_GROUP_SIZE, sizeof wg,
                                         &wg, NULL));
   mg.block_wg = wg < 256 ? (wg > 0 ? wg : 1) : 256;
+  CLSPH_CL_TRY(clGetKernelWorkGroupInfo(mg.k_coarsest, dev->id, CL_KERNEL_WORK_GROUP_SIZE,
+                                        sizeof wg, &wg, NULL));
+  mg.coarse_wg = wg < MG_COARSE_WG ? (wg > 0 ? wg : 1) : MG_COARSE_WG;
+  const cl_uint zero = 0;
+  CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &mg.d_flag, "multigrid coarsest flag"));
   CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(cl_uint), NULL, &mg.d_agg, "multigrid aggregates"));
   CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(cl_uint), NULL, &mg.d_cell, "multigrid cells"));
   CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(real), NULL, &mg.d_dw, "multigrid vector"));
@@ -56,17 +62,10 @@ done:
 
 static void release_levels(struct mg *mg)
 {
-  cl_mem *ms[] = {&mg->d_S,   &mg->d_nb, &mg->d_pnb,  &mg->d_par, &mg->d_cdw, &mg->d_b,
-                  &mg->d_t_c, &mg->d_x,  &mg->d_info, &mg->d_M,   &mg->d_AP,  &mg->d_APc};
+  cl_mem *ms[] = {&mg->d_S,  &mg->d_nb,  &mg->d_pnb,  &mg->d_par,  &mg->d_cdw,
+                  &mg->d_b,  &mg->d_t_c, &mg->d_x,    &mg->d_info, &mg->d_M,
+                  &mg->d_AP, &mg->d_APc, &mg->d_dense};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
-  /* the queued write of the coarsest inverse reads h_M until it has run */
-  if (mg->h_M != NULL && mg->dev != NULL) (void)kern_finish(mg->dev);
-  free(mg->h_S);
-  free(mg->h_A);
-  free(mg->h_M);
-  mg->h_S = NULL;
-  mg->h_A = NULL;
-  mg->h_M = NULL;
   mg->nlevels = 0;
   mg->grid = NULL;
 }
@@ -178,123 +177,39 @@ static enum clsph_status size_levels(struct mg *mg, const struct grid *g)
   mg->m = (size_t)c->n.s[3];
   CLSPH_TRY(kern_buffer(mg->dev, mg->m * mg->m * sizeof(real), NULL, &mg->d_M,
                         "multigrid coarsest inverse"));
-  mg->h_S = malloc(mg->m * (size_t)c->W * sizeof *mg->h_S);
-  mg->h_A = malloc(mg->m * mg->m * sizeof *mg->h_A);
-  mg->h_M = malloc(mg->m * mg->m * sizeof *mg->h_M);
-  CLSPH_CHECK(mg->h_S && mg->h_A && mg->h_M, CLSPH_E_NOMEM, "out of memory");
+  /* mg_coarsest's work in kreal: double where the device has it (krylov.cl) */
+  const size_t kr = CLSPH_DOUBLE || mg->dev->fp64 ? sizeof(double) : sizeof(float);
+  CLSPH_TRY(
+      kern_buffer(mg->dev, 3 * mg->m * mg->m * kr, NULL, &mg->d_dense, "multigrid coarsest work"));
   mg->grid = g;
 done:
   return st;
 }
 
-/* Gauss-Jordan inversion with partial pivoting of the m x m matrix a (destroyed) into inv;
- * 0 when a pivot vanishes relative to the largest entry: below 1e-12 in double builds and 1e-5
- * in float builds, whose coefficients carry rounding errors near 1e-7 (an inverse through such a
- * pivot amplifies the singular mode by 1e7 and the float solve diverged). */
-static int invert(double *a, double *inv, size_t m)
-{
-  double big = 0.0;
-  for (size_t k = 0; k < m * m; ++k) big = fmax(big, fabs(a[k]));
-  for (size_t i = 0; i < m; ++i)
-    for (size_t j = 0; j < m; ++j) inv[i * m + j] = i == j ? 1.0 : 0.0;
-  for (size_t c = 0; c < m; ++c) {
-    size_t p = c;
-    for (size_t i = c + 1; i < m; ++i)
-      if (fabs(a[i * m + c]) > fabs(a[p * m + c])) p = i;
-    if (!(fabs(a[p * m + c]) > (CLSPH_DOUBLE ? 1e-12 : 1e-5) * big)) return 0;
-    if (p != c) {
-      for (size_t j = 0; j < m; ++j) {
-        double t = a[c * m + j];
-        a[c * m + j] = a[p * m + j];
-        a[p * m + j] = t;
-        t = inv[c * m + j];
-        inv[c * m + j] = inv[p * m + j];
-        inv[p * m + j] = t;
-      }
-    }
-    const double d = 1.0 / a[c * m + c];
-    for (size_t j = 0; j < m; ++j) {
-      a[c * m + j] *= d;
-      inv[c * m + j] *= d;
-    }
-    for (size_t i = 0; i < m; ++i) {
-      const double f = a[i * m + c];
-      if (i == c || f == 0.0) continue;
-      for (size_t j = 0; j < m; ++j) {
-        a[i * m + j] -= f * a[c * m + j];
-        inv[i * m + j] -= f * inv[c * m + j];
-      }
-    }
-  }
-  return 1;
-}
-
-/* The coarsest level's dense inverse. An empty cell is an identity row. A singular operator
- * (pure Neumann, solved mean-free) gets a diagonal reinforcement of 1e-6 (then 1e-3): the
- * preconditioner only has to be close to the inverse on the rest of the space. One that stays
- * singular (a zero diagonal: rows that only copy a neighbour's value) gets Jacobi there. */
+/* The coarsest level's dense inverse, on the device (mg_coarsest in mg.cl: an empty cell is an
+ * identity row, a singular operator is reinforced, then Jacobi); its flag comes to the host with
+ * the solve's first wait (mg_report). */
 static enum clsph_status coarsest(struct mg *mg)
 {
   enum clsph_status st = CLSPH_OK;
   const struct mg_level *c = &mg->lv[mg->nlevels];
-  const size_t m = mg->m;
-  const int W = c->W;
-  double *dense = NULL, *inv = NULL;
-  CLSPH_TRY(
-      kern_read_at(mg->dev, mg->d_S, c->so * sizeof(real), m * (size_t)W * sizeof(real), mg->h_S));
-  for (size_t k = 0; k < m * (size_t)W; ++k)
-    CLSPH_CHECK(isfinite((double)mg->h_S[k]), CLSPH_E_BLOWUP,
-                "pressure solve: the operator has a non-finite coefficient (multigrid set-up)");
-  dense = malloc(m * m * sizeof *dense);
-  inv = malloc(m * m * sizeof *inv);
-  CLSPH_CHECK(dense && inv, CLSPH_E_NOMEM, "out of memory");
-  for (size_t k = 0; k < m * m; ++k) mg->h_A[k] = 0.0;
-  const int w = 2 * c->R + 1;
-  const int n[3] = {c->n.s[0], c->n.s[1], c->n.s[2]};
-  for (size_t I = 0; I < m; ++I) {
-    const int a[3] = {(int)(I % (size_t)n[0]), (int)((I / (size_t)n[0]) % (size_t)n[1]),
-                      (int)(I / ((size_t)n[0] * (size_t)n[1]))};
-    int empty = 1;
-    for (int o = 0; o < W; ++o) {
-      const double v = (double)mg->h_S[I * (size_t)W + o];
-      if (v == 0.0) continue;
-      const int off[3] = {o % w - c->R, (o / w) % w - c->R, W > w * w ? o / (w * w) - c->R : 0};
-      int b[3], inside = 1;
-      for (int ax = 0; ax < 3; ++ax) {
-        b[ax] = a[ax] + off[ax];
-        if (b[ax] >= 0 && b[ax] < n[ax]) continue;
-        if (!mg->grid->spec.periodic[ax]) inside = 0;
-        b[ax] = ((b[ax] % n[ax]) + n[ax]) % n[ax];
-      }
-      if (!inside) continue;
-      mg->h_A[I * m + ((size_t)b[0] + (size_t)n[0] * ((size_t)b[1] + (size_t)n[1] * b[2]))] += v;
-      empty = 0;
-    }
-    if (empty) mg->h_A[I * m + I] = 1.0;
-  }
-  int ok = 0;
-  for (int t = 0; t < 3 && !ok; ++t) {
-    const double eps = t == 0 ? 0.0 : t == 1 ? 1e-6 : 1e-3;
-    memcpy(dense, mg->h_A, m * m * sizeof *dense);
-    for (size_t I = 0; I < m; ++I) dense[I * m + I] *= 1.0 + eps;
-    ok = invert(dense, inv, m);
-  }
-  if (!ok) { /* a singular block (fluid cut off from every Dirichlet row): Jacobi there; the
-              * Krylov solve decides whether the system itself can be solved */
-    if (!mg->warned_singular)
-      log_warn("multigrid: the coarsest operator (%zu cells) is singular; Jacobi on that level", m);
-    mg->warned_singular = 1;
-    for (size_t i = 0; i < m; ++i)
-      for (size_t j = 0; j < m; ++j)
-        inv[i * m + j] = i == j && mg->h_A[i * m + i] != 0.0 ? 1.0 / mg->h_A[i * m + i] : 0.0;
-  }
-  for (size_t k = 0; k < m * m; ++k) mg->h_M[k] = (real)inv[k];
-  /* queued: h_M changes only at the next set-up, after its blocking read of the stencils */
-  CLSPH_TRY(kern_write_nb(mg->dev, mg->d_M, m * m * sizeof(real), mg->h_M));
+  const cl_uint so = (cl_uint)c->so, m = (cl_uint)mg->m;
+  CLSPH_TRY(KERN_SET(mg->k_coarsest, KARG(c->n), KARG(c->R), KARG(c->W), KARG(so), KARG(m),
+                     KARG(mg->d_S), KARG(mg->d_dense), KARG(mg->d_M), KARG(mg->d_flag)));
+  CLSPH_TRY(kern_launch_wg(mg->dev, mg->k_coarsest, mg->coarse_wg, mg->coarse_wg, NULL));
+  CLSPH_TRY(kern_read_nb(mg->dev, mg->d_flag, 0, sizeof mg->h_flag, &mg->h_flag));
 done:
-  free(inv);
-  free(dense);
   return st;
+}
+
+void mg_report(struct mg *mg)
+{
+  if (mg->h_flag != 0u && !mg->warned_singular) {
+    log_warn("multigrid: the coarsest operator (%zu cells) is singular; Jacobi on that level",
+             mg->m);
+    mg->warned_singular = 1;
+  }
+  mg->h_flag = 0u;
 }
 
 enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem row, cl_mem col,
@@ -405,11 +320,12 @@ void mg_destroy(struct mg *mg)
   release_levels(mg);
   cl_kernel *ks[] = {&mg->k_aggregate, &mg->k_ap_csr,  &mg->k_restrict_csr, &mg->k_galerkin_ap,
                      &mg->k_galerkin,  &mg->k_weights, &mg->k_damp,         &mg->k_down_csr,
-                     &mg->k_up_csr,    &mg->k_down,    &mg->k_up,           &mg->k_block};
+                     &mg->k_up_csr,    &mg->k_down,    &mg->k_up,           &mg->k_block,
+                     &mg->k_coarsest};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {
     if (*ks[i] != NULL) clReleaseKernel(*ks[i]);
     *ks[i] = NULL;
   }
-  cl_mem *ms[] = {&mg->d_agg, &mg->d_cell, &mg->d_dw, &mg->d_res, &mg->d_t};
+  cl_mem *ms[] = {&mg->d_agg, &mg->d_cell, &mg->d_dw, &mg->d_res, &mg->d_t, &mg->d_flag};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
 }

@@ -3,7 +3,7 @@
  * coarse operators built on the device once per solve, one damped-Jacobi sweep before and after
  * each coarse correction (a V(1,1) cycle, one launch a level and the small levels in one), and the
  * coarsest level (at most MG_COARSEST cells) solved exactly by a dense inverse computed on the
- * host. Used through psolve (precond = "multigrid"); it needs the stored rows (csr.cl) and unknowns
+ * device, in one work-group (mg_coarsest): the set-up waits for nothing. Used through psolve (precond = "multigrid"); it needs the stored rows (csr.cl) and unknowns
  * that are particles sorted by a grid (struct psolve_op's grid). */
 #ifndef CLSPH_MG_H
 #define CLSPH_MG_H
@@ -13,10 +13,11 @@
 #include "prog.h"
 
 #define MG_MAX_LEVELS 24
-/* The coarsest level has at most MG_COARSEST cells: its dense inverse (m² reals) goes to the
- * device at every solve. 64 against 256: 8.1 iterations per step instead of 6.9 on the 60²
- * cavity, in less time. */
-#define MG_COARSEST 64
+/* The coarsest level has at most MG_COARSEST cells: its dense inverse (m² reals) is computed at
+ * every solve, on the device in one work-group of at most MG_COARSE_WG items (mg_coarsest). 64
+ * against 256: 8.1 iterations per step instead of 6.9 on the 60² cavity, in less time. */
+#define MG_COARSEST  64
+#define MG_COARSE_WG 64 /* MG_COARSE_WG in mg.cl */
 /* Coarse levels of at most MG_BLOCK cells run in one work-group launch (mg_block) */
 #define MG_BLOCK 4096
 #define MG_INFO  8           /* ints a level in the block's table (MG_INFO in mg.cl) */
@@ -33,8 +34,9 @@ struct mg {
   const struct dev *dev;
   double omega; /* Jacobi damping */
   cl_kernel k_aggregate, k_ap_csr, k_galerkin_ap, k_galerkin, k_weights, k_damp, k_down_csr,
-      k_restrict_csr, k_up_csr, k_down, k_up, k_block;
+      k_restrict_csr, k_up_csr, k_down, k_up, k_block, k_coarsest;
   size_t block_wg;         /* work-group size of mg_block */
+  size_t coarse_wg;        /* and of mg_coarsest */
   size_t cap;              /* fine unknowns the buffers hold */
   cl_mem d_agg, d_cell;    /* fine level: aggregate (or none), cell of each unknown */
   cl_mem d_dw, d_t, d_res; /* fine level: ω/diag, first sweep, residual after it */
@@ -51,10 +53,10 @@ struct mg {
   cl_mem d_info;                 /* the block's level table */
   size_t m;                      /* unknowns of the coarsest level */
   cl_mem d_M;                    /* its dense inverse */
-  real *h_S;                     /* host copies for the coarsest inverse */
-  double *h_A;
-  real *h_M;
-  int warned_singular; /* the singular-coarsest warning was given */
+  cl_mem d_dense;                /* mg_coarsest's work: A, its copy and the inverse in kreal */
+  cl_mem d_flag;                 /* mg_coarsest: 1 when the coarsest operator stayed singular */
+  cl_uint h_flag;                /* its queued read (valid after the solve's first wait) */
+  int warned_singular;           /* the singular-coarsest warning was given */
 };
 
 /** @brief Kernels (from a program built with PSOLVE_SOURCES) and fine-level vectors for cap
@@ -64,6 +66,9 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
  *  sorted by g: A + eps diag(A), dinv its inverse diagonal. */
 enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem row, cl_mem col,
                            cl_mem val, double eps, cl_mem dinv);
+/** @brief After the solve's first blocking read: warn once when the last set-up found the coarsest
+ *  operator singular (its Jacobi fallback). */
+void mg_report(struct mg *mg);
 /** @brief z = M⁻¹ r: one V(1,1) cycle from z = 0, as part of Krylov iteration k whose state is
  *  `state` (krylov.cl: the kernels do nothing once the solve ended before k). The kernel that
  *  made r has made d_t = d_dw ∘ r, the first sweep from zero. */

@@ -192,6 +192,7 @@ done:
 #define KR_DIAG          6
 #define KR_RESTART_RHO   10
 #define KR_RESTART_OMEGA 11
+#define KR_CAPACITY      12
 #define KR_RHO_SET       2 /* partial sums of (r0, r) */
 #define KR_BB_SET        0 /* partial sums of (b, b) */
 
@@ -269,10 +270,11 @@ done:
 }
 
 /* Build the stored layout: counts, row starts (exclusive scan of the counts), coefficients.
- * The buffers grow to the nonzeros the host reads; `guarded` (set when the multigrid's set-up
- * follows and the buffers exist) reads nothing: csr_guard empties every row when the nonzeros pass
- * the capacity, so the coefficients stay in bounds, and leaves their number in d_flags[1], which
- * solve() queues for the host and checks after the multigrid's set-up has waited for it. */
+ * Unguarded, the host reads the nonzeros and the buffers grow to them. `guarded` (the multigrid
+ * solve's set-up, once the buffers exist) waits for nothing: csr_guard empties every row when the
+ * nonzeros pass the capacity, so that the coefficients stay in bounds, and leaves their number in
+ * d_flags[1], which stops the solve at its start (kr_start) and comes to the host with the solve's
+ * first wait; solve() then grows the buffers and builds and solves again. */
 static enum clsph_status store(struct psolve *ps, const struct psolve_op *op, int guarded)
 {
   enum clsph_status st = CLSPH_OK;
@@ -288,16 +290,17 @@ static enum clsph_status store(struct psolve *ps, const struct psolve_op *op, in
   CLSPH_TRY(KERN_SET(ps->k_scan_apply, KARG(items), KARG(ps->d_count), KARG(ps->d_block),
                      KARG(ps->d_row)));
   CLSPH_TRY(kern_launch(ps->dev, ps->k_scan_apply, blocks, NULL));
-  if (guarded && ps->nnz_cap > 0) {
-    const cl_uint n = (cl_uint)op->n, cap = (cl_uint)ps->nnz_cap;
-    CLSPH_TRY(KERN_SET(ps->k_guard, KARG(n), KARG(cap), KARG(ps->d_row), KARG(ps->d_flags)));
-    CLSPH_TRY(kern_launch_wg(ps->dev, ps->k_guard, PSOLVE_WG, PSOLVE_WG, NULL));
-    CLSPH_TRY(
-        kern_read_nb(ps->dev, ps->d_flags, sizeof(cl_uint), sizeof(cl_uint), &ps->h_overflow));
-  } else {
+  if (!guarded || ps->nnz_cap == 0) { /* the count, waited for; the buffers grow to it */
     CLSPH_TRY(kern_read_at(ps->dev, ps->d_row, op->n * sizeof(cl_uint), sizeof nnz, &nnz));
     CLSPH_TRY(grow(ps, nnz));
   }
+  /* d_flags[1]: 0 when the rows fit, else their count (then they are emptied) */
+  const cl_uint n = (cl_uint)op->n, cap = (cl_uint)ps->nnz_cap;
+  CLSPH_TRY(KERN_SET(ps->k_guard, KARG(n), KARG(cap), KARG(ps->d_row), KARG(ps->d_flags)));
+  CLSPH_TRY(kern_launch_wg(ps->dev, ps->k_guard, PSOLVE_WG, PSOLVE_WG, NULL));
+  if (guarded)
+    CLSPH_TRY(
+        kern_read_nb(ps->dev, ps->d_flags, sizeof(cl_uint), sizeof(cl_uint), &ps->h_overflow));
   CLSPH_TRY(op->coefficients(op->ctx, ps->d_row, ps->d_col, ps->d_val));
 done:
   return st;
@@ -470,6 +473,9 @@ static enum clsph_status bicgstab(struct psolve *ps, const struct psolve_op *op,
                        KARG(noscale), KARG(ps->d_q), KARG(ps->d_q)));
     CLSPH_TRY(launch_groups(ps, ps->k_begin)); /* the last residual's test */
     CLSPH_TRY(read_state(ps, state));
+    if (ps->opt.precond == PSOLVE_MULTIGRID) mg_report(&ps->mg);
+    if (ps->h_overflow != 0 || (int)state[KR_REASON] == KR_CAPACITY)
+      break; /* solve() grows the operator and solves again (x is as it was) */
     CLSPH_CHECK(state[KR_DIAG] == 0, CLSPH_E_BLOWUP,
                 "%s solve: the operator has a zero or non-finite diagonal entry", ps->opt.name);
     const double done_at = (double)state[KR_DONE];
@@ -551,19 +557,22 @@ static enum clsph_status solve(struct psolve *ps, const struct psolve_op *op, cl
               "%s solve: solver_precond = \"multigrid\" needs unknowns that are particles "
               "sorted by a grid, which this operator does not have",
               ps->opt.name);
-  for (int pass = 0; set_up; ++pass) {
-    ps->h_overflow = 0;
-    if (ps->opt.apply == PSOLVE_STORED || multigrid) CLSPH_TRY(store(ps, op, multigrid && !pass));
-    CLSPH_TRY(diagonal(ps, op));
-    if (multigrid)
-      CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val,
-                         reinforcement(ps), ps->d_dinv));
-    if (ps->h_overflow == 0) break; /* the rows fitted (the set-up's last read brought the count) */
-    log_debug("%s solve: %u nonzeros pass the stored operator's %zu: growing, set-up again",
+  for (int pass = 0;; ++pass) {
+    if (set_up) {
+      ps->h_overflow = 0;
+      if (ps->opt.apply == PSOLVE_STORED || multigrid) CLSPH_TRY(store(ps, op, multigrid && !pass));
+      CLSPH_TRY(diagonal(ps, op));
+      if (multigrid)
+        CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val,
+                           reinforcement(ps), ps->d_dinv));
+    }
+    CLSPH_TRY(bicgstab(ps, op, b, x, res));
+    if (ps->h_overflow == 0) break; /* the rows fitted (the solve's first wait brought the count) */
+    log_debug("%s solve: %u nonzeros pass the stored operator's %zu: growing, solving again",
               ps->opt.name, (unsigned)ps->h_overflow, ps->nnz_cap);
     CLSPH_TRY(grow(ps, ps->h_overflow));
+    set_up = 1;
   }
-  CLSPH_TRY(bicgstab(ps, op, b, x, res));
   log_debug("%s solve: %s, %d iterations, residual %.3g", ps->opt.name, reason_str(res->reason),
             res->its, res->rnorm);
   if (res->reason > 0) {
