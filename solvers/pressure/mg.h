@@ -3,8 +3,9 @@
  * coarse operators built on the device once per solve, one damped-Jacobi sweep before and after
  * each coarse correction (a V(1,1) cycle, one launch a level and the small levels in one), and the
  * coarsest level (at most MG_COARSEST cells) solved exactly by a dense inverse computed on the
- * device, in one work-group (mg_coarsest): the set-up waits for nothing. Used through psolve (precond = "multigrid"); it needs the stored rows (csr.cl) and unknowns
- * that are particles sorted by a grid (struct psolve_op's grid). */
+ * device, in one work-group (mg_coarsest): the set-up waits for nothing. Used through psolve
+ * (precond = "multigrid"); it needs the stored rows (csr.cl) and unknowns that are particles sorted
+ * by a grid (struct psolve_op's grid). */
 #ifndef CLSPH_MG_H
 #define CLSPH_MG_H
 
