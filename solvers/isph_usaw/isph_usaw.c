@@ -36,6 +36,7 @@ struct isph {
   double c_shift;   /* shifting coefficient (0: off) */
   double fs_offset; /* distance of the free surface beyond its particles, in dr */
   double u_wall;    /* largest wall speed, m/s */
+  double d_min;     /* smallest wall distance of the viscous wall term, m (usaw/viscous.cl) */
   /* carried from step to step, and over a restart (isph_persist): the largest particle
    * acceleration of the last step, m/s² (the next step's length), and whether the last step had a
    * free surface (1, 0; −1: not known yet), the guess for this one's pressure equation */
@@ -51,13 +52,9 @@ static const char *const sources[] = {
     "usaw/common.cl",       "usaw/wall_force.cl",        "isph_usaw/move.cl",
     "usaw/viscous.cl",      "isph_usaw/free_surface.cl", "isph_usaw/ppe.cl",
     "isph_usaw/project.cl", "isph_usaw/shift.cl",        NULL};
-static const char *const options[] = {"shifting",
-                                      "pressure_gradient",
-                                      "free_surface_offset",
-                                      "gradient_correction",
-                                      "shift_velocity",
-                                      PSOLVE_OPTION_NAMES,
-                                      NULL};
+static const char *const options[] = {
+    "shifting",       "pressure_gradient",    "free_surface_offset", "gradient_correction",
+    "shift_velocity", USAW_WALL_OPTION_NAMES, PSOLVE_OPTION_NAMES,   NULL};
 
 /* -D switches: the pressure-gradient form of the projection. */
 static enum clsph_status isph_define(const struct sim *sim, struct prog_opts *o)
@@ -176,6 +173,9 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
     }
   }
   CLSPH_TRY(sim_psolve_options(sim, &is->popt));
+  /* the viscous wall term at the first row's own distance, δr/2, not the paper's δr (eq 17):
+   * kernels/usaw/viscous.cl */
+  CLSPH_TRY(usaw_wall_distance_floor(sim->scene, 0.5, &is->d_min));
   /* vertex angles the analytic γ handles: a fluid sector of 5° to 355° */
   theta = calloc(geo->n, sizeof *theta);
   CLSPH_CHECK(theta != NULL, CLSPH_E_NOMEM, "out of memory");
@@ -311,7 +311,8 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_predict, &i, sizeof vel, &vel));
   CLSPH_TRY(arg(is->k_predict, &i, sizeof rdt, &rdt));
   CLSPH_TRY(arg(is->k_predict, &i, sizeof nu, &nu));
-  CLSPH_TRY(arg(is->k_predict, &i, sizeof dr, &dr));
+  const real d_min = (real)is->d_min;
+  CLSPH_TRY(arg(is->k_predict, &i, sizeof d_min, &d_min));
   CLSPH_TRY(arg(is->k_predict, &i, sizeof accel, &accel));
   CLSPH_TRY(arg(is->k_predict, &i, sizeof ustar, &ustar));
   CLSPH_TRY(arg(is->k_predict, &i, sizeof visc, &visc));

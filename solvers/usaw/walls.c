@@ -9,6 +9,27 @@
 #include "geometry.h"
 #include "scene.h"
 
+enum clsph_status usaw_wall_distance_floor(const struct scene *sc, double spacings, double *d_min)
+{
+  enum clsph_status st = CLSPH_OK;
+  double f = spacings;
+  for (int i = 0; i < sc->noptions; ++i) {
+    const struct scene_option *o = &sc->options[i];
+    if (strcmp(o->key, "wall_distance_floor") != 0) continue;
+    CLSPH_CHECK(o->is_number, CLSPH_E_INPUT,
+                "%s: wall_distance_floor must be a number of spacings, not \"%s\"", sc->case_path,
+                o->text);
+    CLSPH_CHECK(o->number > 0.0 && o->number <= 1.0, CLSPH_E_INPUT,
+                "%s: wall_distance_floor must be in (0, 1] spacings (the smallest wall distance of "
+                "the viscous wall term; 1 is the paper's eq 17), not %g",
+                sc->case_path, o->number);
+    f = o->number;
+  }
+  *d_min = f * sc->dr;
+done:
+  return st;
+}
+
 enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
                                     const struct usaw_segments *segs, const struct grid_spec *box,
                                     struct usaw_walls *out)

@@ -51,6 +51,13 @@ enum clsph_status usaw_walls_from_geom(const struct dev *dev, cl_program prog,
 enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
                                   const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_strain,
                                   cl_mem d_inv, double mu, const char *group, struct wall_force *f);
+/** The scheme option both USAW schemes take for their viscous wall term (kernels/usaw/viscous.cl).
+ */
+#define USAW_WALL_OPTION_NAMES "wall_distance_floor"
+/** @brief The smallest wall distance δr_as of the viscous wall term (eq 17), in m: the option
+ *  wall_distance_floor (spacings, in (0, 1]; 1 is the paper's δr), or the scheme's default
+ *  `spacings`, times δr. */
+enum clsph_status usaw_wall_distance_floor(const struct scene *sc, double spacings, double *d_min);
 /** @brief Release. */
 void usaw_walls_destroy(struct usaw_walls *w);
 
