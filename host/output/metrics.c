@@ -161,7 +161,7 @@ static enum clsph_status metric_sample(void *ctx, const char *field, int comp, d
   METRIC_REFUSE(idx >= 0, "no field '%s'", field);
   METRIC_REFUSE(comp >= 0 && comp < sim->ps.f[idx].nout, "field '%s' has %d components", field,
                 sim->ps.f[idx].nout);
-  CLSPH_TRY(sim_sample(sim, idx, 1, at, out));
+  CLSPH_TRY(sim_sample(sim, idx, 0, 1, at, out));
   *value = out[comp];
 done:
   return st;
@@ -189,8 +189,8 @@ done:
   return st;
 }
 
-static enum clsph_status metric_sample_many(void *ctx, const char *field, int comp, int np,
-                                            const double *xy, double *values)
+static enum clsph_status metric_sample_many(void *ctx, const char *field, int comp, int order,
+                                            int np, const double *xy, double *values)
 {
   enum clsph_status st = CLSPH_OK;
   struct sim *sim = begin(ctx);
@@ -201,7 +201,7 @@ static enum clsph_status metric_sample_many(void *ctx, const char *field, int co
   METRIC_REFUSE(comp >= 0 && comp < f->nout, "field '%s' has %d components", field, f->nout);
   out = malloc((size_t)np * (size_t)f->ncomp * sizeof *out);
   CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
-  CLSPH_TRY(sim_sample(sim, idx, (size_t)np, xy, out));
+  CLSPH_TRY(sim_sample(sim, idx, order, (size_t)np, xy, out));
   for (int k = 0; k < np; ++k) values[k] = out[(size_t)k * (size_t)f->ncomp + (size_t)comp];
 done:
   free(out);

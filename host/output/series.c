@@ -348,7 +348,7 @@ done:
 
 /* Sample every recorded field at np points (probes NULL) or at the np probes (a point's value, or
  * a face's mean: sim_sample_probes); one row of values per point into rows. */
-static enum clsph_status sample_all(struct sim *sim, size_t np, const double *at,
+static enum clsph_status sample_all(struct sim *sim, size_t np, const double *at, int order,
                                     const struct scene_probe *probes, double *rows, int ncols)
 {
   enum clsph_status st = CLSPH_OK;
@@ -361,7 +361,7 @@ static enum clsph_status sample_all(struct sim *sim, size_t np, const double *at
     if (probes != NULL)
       CLSPH_TRY(sim_sample_probes(sim, k, (int)np, probes, tmp));
     else
-      CLSPH_TRY(sim_sample(sim, k, np, at, tmp));
+      CLSPH_TRY(sim_sample(sim, k, order, np, at, tmp));
     for (size_t i = 0; i < np; ++i)
       for (int c = 0; c < p->nout; ++c)
         rows[i * (size_t)ncols + (size_t)(col + c)] = tmp[i * (size_t)p->ncomp + (size_t)c];
@@ -392,7 +392,7 @@ enum clsph_status series_write(struct sim *sim, struct run_out *o, int what)
   if (s->nprobes > 0 && (what & SERIES_TIME)) {
     rows = malloc((size_t)s->nprobes * (size_t)(nc + 1) * sizeof *rows);
     CLSPH_CHECK(rows != NULL, CLSPH_E_NOMEM, "out of memory");
-    CLSPH_TRY(sample_all(sim, (size_t)sim->scene->nprobes, NULL, sim->scene->probes, rows, nc));
+    CLSPH_TRY(sample_all(sim, (size_t)sim->scene->nprobes, NULL, 0, sim->scene->probes, rows, nc));
     fprintf(o->probes, "%.17g", sim->time);
     for (int i = 0; i < s->nprobes * nc; ++i) fprintf(o->probes, ",%.9g", rows[i]);
     fprintf(o->probes, "\n");
@@ -411,7 +411,7 @@ enum clsph_status series_write(struct sim *sim, struct run_out *o, int what)
       at[2 * i] = pl->a[0] + t * (pl->b[0] - pl->a[0]);
       at[2 * i + 1] = pl->a[1] + t * (pl->b[1] - pl->a[1]);
     }
-    CLSPH_TRY(sample_all(sim, np, at, NULL, rows, nc));
+    CLSPH_TRY(sample_all(sim, np, at, pl->order, NULL, rows, nc));
     double len = hypot(pl->b[0] - pl->a[0], pl->b[1] - pl->a[1]);
     for (size_t i = 0; i < np; ++i) {
       fprintf(o->profiles[p], "%.17g,%.9g,%.9g,%.9g", sim->time, len * (double)i / (double)(np - 1),

@@ -1191,9 +1191,12 @@ static int l_probe(lua_State *L)
   return 0;
 }
 
+/* profile { } and profile_error { }: interpolation = "shepard" (0) or "linear" (1, sim_sample) */
+static const char *const interpolations[] = {"shepard", "linear", NULL};
+
 static int l_profile(lua_State *L)
 {
-  static const char *const keys[] = {"name", "from", "to", "points", NULL};
+  static const char *const keys[] = {"name", "from", "to", "points", "interpolation", NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "profile");
@@ -1210,6 +1213,7 @@ static int l_profile(lua_State *L)
   double np = get_number(L, 1, "profile", "points", 101);
   if (np < 2 || np > 1e5 || np != floor(np)) luaL_error(L, "profile: points must be 2 to 100000");
   p->npts = (int)np;
+  p->order = get_choice(L, 1, "profile", "interpolation", interpolations, 0);
   return 0;
 }
 
@@ -1790,14 +1794,22 @@ static int l_probe_now(lua_State *L)
   return 1;
 }
 
-/* sim.sample(field, x, y [, component]) */
+/* sim.sample(field, x, y [, component [, interpolation]]): interpolation "shepard" (the
+ * default) or "linear" (first-order moving least squares, sim_sample) */
 static int l_sample(lua_State *L)
 {
   const struct case_sim_api *api = api_of(L);
   const char *field = luaL_checkstring(L, 1);
   double x = luaL_checknumber(L, 2), y = luaL_checknumber(L, 3), v = 0.0;
   int comp = (int)luaL_optinteger(L, 4, 1) - 1;
-  if (api->sample(api->ctx, field, comp, x, y, &v) != CLSPH_OK)
+  const char *how = luaL_optstring(L, 5, "shepard");
+  const int order = strcmp(how, "linear") == 0 ? 1 : strcmp(how, "shepard") == 0 ? 0 : -1;
+  if (order < 0)
+    return luaL_error(L, "sim.sample: interpolation must be \"shepard\" or \"linear\", not \"%s\"",
+                      how);
+  const double xy[2] = {x, y};
+  if ((order == 0 ? api->sample(api->ctx, field, comp, x, y, &v)
+                  : api->sample_many(api->ctx, field, comp, order, 1, xy, &v)) != CLSPH_OK)
     return luaL_error(L, "sim.sample: cannot sample '%s' at (%f, %f): %s", field, x, y,
                       why_of(api));
   lua_pushnumber(L, v);
@@ -2074,10 +2086,12 @@ static int l_reference(lua_State *L)
 }
 
 /* rms, max = sim.profile_error{ field =, component =, csv =, coordinate =, value =,
- *                               x = (or y =), scale = , skip_walls = true }
+ *                               x = (or y =), scale = , skip_walls = true,
+ *                               interpolation = "shepard" }
  * Samples the field along the line x = const (coordinate y) or y = const (coordinate x) at the
  * reference points and returns the RMS and largest deviation divided by scale; points on the
- * walls (coordinate 0 or 1 of the reference) are skipped when skip_walls. */
+ * walls (coordinate 0 or 1 of the reference) are skipped when skip_walls; interpolation "linear"
+ * samples by first-order moving least squares (sim_sample). */
 static int l_profile_error(lua_State *L)
 {
   const struct case_sim_api *api = api_of(L);
@@ -2101,6 +2115,7 @@ static int l_profile_error(lua_State *L)
   if (!along_y) at = luaL_checknumber(L, -1);
   lua_getfield(L, 1, "skip_walls");
   int skip = lua_isnil(L, -1) || lua_toboolean(L, -1);
+  const int order = get_choice(L, 1, "profile_error", "interpolation", interpolations, 0);
   char path[2048];
   reference_path(csv, path, sizeof path);
   double *xs = NULL, *vs = NULL;
@@ -2116,7 +2131,7 @@ static int l_profile_error(lua_State *L)
     ++m;
   }
   if (xy == NULL || got == NULL || m == 0 ||
-      api->sample_many(api->ctx, field, comp, m, xy, got) != CLSPH_OK) {
+      api->sample_many(api->ctx, field, comp, order, m, xy, got) != CLSPH_OK) {
     free(xs);
     free(vs);
     free(xy);

@@ -154,13 +154,14 @@ void sim_deferred_finish(struct sim *sim)
   sim->ndeferred = 0;
 }
 
-enum clsph_status sim_sample(struct sim *sim, int field, size_t np, const double *at, double *out)
+enum clsph_status sim_sample(struct sim *sim, int field, int order, size_t np, const double *at,
+                             double *out)
 {
   enum clsph_status st = CLSPH_OK;
   const struct pfield *f = &sim->ps.f[field];
   real *buf = NULL;
   cl_mem d_at = NULL, d_out = NULL;
-  cl_uint ncomp = (cl_uint)f->ncomp, npts = (cl_uint)np;
+  cl_uint ncomp = (cl_uint)f->ncomp, npts = (cl_uint)np, ord = (cl_uint)order;
   CLSPH_CHECK(f->type == PF_REAL && f->ncomp <= 4, CLSPH_E_INPUT,
               "field '%s' cannot be interpolated", f->name);
   buf = calloc(np * (2 + ncomp), sizeof *buf);
@@ -172,7 +173,7 @@ enum clsph_status sim_sample(struct sim *sim, int field, size_t np, const double
   cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
   CLSPH_TRY(KERN_SET(sim->k_probe, KARG(npts), KARG(d_at), KARG(sim->grid.geom),
                      KARG(sim->grid.d_start), KARG(pos), KARG(vol), KARG(kind), KARG(f->d),
-                     KARG(ncomp), KARG(d_out)));
+                     KARG(ncomp), KARG(ord), KARG(d_out)));
   CLSPH_TRY(kern_launch(sim->dev, sim->k_probe, np, NULL));
   CLSPH_TRY(kern_read(sim->dev, d_out, ncomp * np * sizeof(real), buf + 2 * np));
   for (size_t k = 0; k < ncomp * np; ++k) out[k] = (double)buf[2 * np + k];
@@ -204,7 +205,7 @@ enum clsph_status sim_sample_probes(struct sim *sim, int field, int np,
       q[1] = pr->x[1] + s * (pr->b[1] - pr->x[1]);
     }
   }
-  CLSPH_TRY(sim_sample(sim, field, total, at, v));
+  CLSPH_TRY(sim_sample(sim, field, 0, total, at, v));
   /* each probe's mean over its wet points (a dry point interpolates to NaN) */
   const double *row = v;
   for (int p = 0; p < np; ++p) {

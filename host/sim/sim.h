@@ -174,9 +174,11 @@ enum clsph_status sim_slice_velocity(struct sim *sim, double x0, double x1, doub
                                      double *count);
 /** @brief Number of nonzero entries of a uint field, reduced on the device. */
 enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count);
-/** @brief Interpolate component `comp` of a real field at np points (host array of 2 doubles per
- *  point); `out` gets ncomp values per point. */
-enum clsph_status sim_sample(struct sim *sim, int field, size_t np, const double *at, double *out);
+/** @brief Interpolate a real field at np points (host array of 2 doubles per point); `out` gets
+ *  ncomp values per point. order 0: Shepard; 1: first-order moving least squares, exact for a
+ *  linear field (kernels/common/probe.cl). */
+enum clsph_status sim_sample(struct sim *sim, int field, int order, size_t np, const double *at,
+                             double *out);
 /** @brief A real field at np probes (struct scene_probe): at a point probe, its interpolated value;
  *  at a face, the mean over its points (the midpoints of npts equal parts) of the points with
  *  fluid within the support (NaN, the interpolation's value where there is none, only when the

@@ -6,7 +6,11 @@
 -- exact u = U y / H: u_err_max, the largest |u − U y/H| / U over the fluid; slip, the first rows'
 -- mean (u − U y/H)/U next to the floor less that next to the ceiling, halved (the slip of the
 -- viscous wall term, usaw/viscous.cl; 0 exactly). floor sets the scheme option
--- wall_distance_floor (0: the scheme's default).
+-- wall_distance_floor (0: the scheme's default). interp_shepard and interp_linear: the largest
+-- |u − U y/H| / U of the velocity sampled (sim.sample) at 40 heights across the channel, by
+-- Shepard's average and by first-order moving least squares: within h of a wall Shepard's
+-- support is cut and it returns the mean of the particles above (or below) the point; the
+-- linear fit is exact for this linear profile, so it reads the particles' own error.
 param { n = 10, t_end = 1, wcsph = 0, floor = 0 }
 
 local L, H, U, nu, rho = 1.5, 1, 1, 1, 1
@@ -33,7 +37,13 @@ function metrics(sim)
     if y[i] < dr then lo, nlo = lo + d, nlo + 1 end
     if y[i] > H - dr then hi, nhi = hi + d, nhi + 1 end
   end
-  return { floor_error = math.abs(floor.x - exact) / exact,
+  local shep, lin = 0, 0
+  for k = 0, 39 do
+    local yk = (k + 0.5) * H / 40
+    shep = math.max(shep, math.abs(sim.sample("vel", L / 2, yk, 1) - U * yk / H) / U)
+    lin = math.max(lin, math.abs(sim.sample("vel", L / 2, yk, 1, "linear") - U * yk / H) / U)
+  end
+  return { interp_shepard = shep, interp_linear = lin, floor_error = math.abs(floor.x - exact) / exact,
            ceiling_error = math.abs(ceiling.x + exact) / exact,
            floor_pressure_x = math.abs(floor.pressure_x) / exact,
            u_err_max = err, slip = 0.5 * (lo / nlo - hi / nhi) }
