@@ -10,10 +10,14 @@
  * first row (δr/2 off the wall) feels half its wall shear and slips: steady Couette flow at 30
  * rows, Re 1, moves the first row 0.0138 U ahead of the exact profile and lowers the core's
  * shear by 2%; with d_min = δr/2 (isph-usaw's default; scheme option wall_distance_floor) the
- * slip is 0.0008 U. The wall term is taken implicitly (at u*, a 2 x 2 solve per particle): its
- * rate 2ν|∇γ_as|/(γ_a δr_as) reaches about 1.6 ν/δr² in the first row with d_min = δr/2, which
- * with the viscous bound δt ≤ 0.125 h²/ν on top of the fluid sum's own made the explicit step
- * unstable (the cylinder array, Stokes flow, blew up at its 50th step). visc gets (u* − u^n)/δt − g
+ * slip is 0.0008 U. For fluid particles the wall term is taken implicitly (at u*, a 2 x 2 solve
+ * per particle): its rate 2ν|∇γ_as|/(γ_a δr_as) reaches about 1.6 ν/δr² in the first row with
+ * d_min = δr/2, which with the viscous bound δt ≤ 0.125 h²/ν on top of the fluid sum's own made
+ * the explicit step unstable (the cylinder array, Stokes flow, blew up at its 50th step). Vertex
+ * particles keep the paper's explicit form: their u* is not a velocity they take but the wall
+ * condition's input (eq 43), and taken implicitly it let the lid of the 100² and 120² cavities at
+ * Re 100 drive particles through the side walls at the corners within 0.07 s (both hold to t = 1
+ * with the vertices explicit). visc gets (u* − u^n)/δt − g
  * − f, the viscous acceleration, which the wall condition needs. It runs for vertex particles too:
  * their u* enters the wall condition of the pressure equation through the segments (eq 43). */
 __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel, const real dt,
@@ -53,9 +57,14 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     m22 += c * (R(1.0) - nn.y * nn.y);
     b += c * (us - dot(us, nn) * nn);
   }
-  /* (I + δt M) u* = u + δt (ν lap/γ + b + g + f): a 2 x 2 solve; det ≥ 1 as M ≥ 0 */
-  const realv rhs = u + dt * (nu * lap / gam[i] + b + accel);
-  const real a11 = R(1.0) + dt * m11, a12 = dt * m12, a22 = R(1.0) + dt * m22;
+  /* fluid: (I + δt M) u* = u + δt (ν lap/γ + b + g + f), a 2 x 2 solve (det ≥ 1 as M ≥ 0);
+   * vertices: the paper's explicit u* = u + δt (ν lap/γ − M u + b + g + f) */
+  const real ti = kind[i] == ISPH_FLUID ? dt : R(0.0), te = dt - ti;
+  realv mu;
+  mu.x = m11 * u.x + m12 * u.y;
+  mu.y = m12 * u.x + m22 * u.y;
+  const realv rhs = u + dt * (nu * lap / gam[i] + b + accel) - te * mu;
+  const real a11 = R(1.0) + ti * m11, a12 = ti * m12, a22 = R(1.0) + ti * m22;
   const real det = a11 * a22 - a12 * a12;
   realv us;
   us.x = (a22 * rhs.x - a12 * rhs.y) / det;
