@@ -332,6 +332,8 @@ clsph_cli_test(case_wall_distance_floor_text ARGS info ${bad_floor} --set what=2
                REGEX "wall_distance_floor must be a number of spacings, not \"half\"")
 clsph_cli_test(case_wall_distance_floor_wcsph ARGS info ${bad_floor} --set what=3 RC 2
                REGEX "${floor_range}")
+clsph_cli_test(case_wall_distance_floor_nan ARGS info ${bad_floor} --set what=4 RC 2
+               REGEX "${floor_range}.*, not -?nan")
 
 # The infinite array of cylinders in a channel (Leroy et al. 2014 sec 4.2), coarse: 20 particles
 # across the channel (the paper's 120), 12 s (the drag is steady within 0.1% from 8 s on at this
