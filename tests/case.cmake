@@ -924,6 +924,39 @@ clsph_cli_test(channel_ke_wallp_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_
 clsph_cli_test(channel_ke_sample_zero ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
                --set sample_dt=0 RC 2
                REGEX "channel_ke: sample_dt must be a positive time between force samples, not 0")
+# The k-ε channel of the USAW schemes (cases/channel_usaw_ke.lua: Leroy et al. sec 5.1, e+ = 640,
+# the body force u*²/e, periodic), 10 rows per half height (y+ = 32 at the first row; the paper
+# has 20), started from the 1-D reference of the same model and wall law (eq 23;
+# tests/data/channel1d_leroy640.csv) and run to t = 20 s, past the settling of its first rows.
+# Measured, isph-usaw (double and float alike to 4 digits): u+ within 2.4% of the reference on
+# every row (1.4% RMS), the first row 1.8% under it, k 6.5% and ε 17% RMS off it, the particles'
+# mean velocity 1.1% under the reference's, no k or ε clipped. Without the wall layer's wall
+# function (kernels/usaw/turbulence.cl) the first row's k and ε fell to 0.64 and 0.35 of the
+# reference's and u+ to 4% under it; with eq 38's shift correction taking the walls' velocity
+# the rows along the walls broke up at t = 12 s. 20-40 s.
+clsph_run_test(run_channel_usaw_ke ${CMAKE_SOURCE_DIR}/cases/channel_usaw_ke.lua
+               SETS n=10 t_end=20 every=5
+               BOUNDS "u_plus_dev_max<0.03" "u_plus_rms<0.02" "u_plus_dev_row1>-0.03"
+               "u_plus_dev_row1<0.01" "k_plus_rms<0.09" "eps_plus_rms<0.22" "bulk_dev>-0.02"
+               "bulk_dev<0.01" "turbulence.k_clipped<0.5" "turbulence.epsilon_clipped<0.5"
+               "health.nearest_spacing_min_dr>0.9")
+# wcsph-usaw on the same channel (sound speed 10 times the centreline's, a background pressure of
+# 5% of ρ c0²) to t = 4 s: its rows stay in place (without the background pressure the first two
+# rows broke up at t = 3 s). Measured: u+ within 1.8% (1.0% RMS), k 11% and ε 19% RMS off the
+# reference. 15-30 s.
+clsph_run_test(run_channel_usaw_ke_weak ${CMAKE_SOURCE_DIR}/cases/channel_usaw_ke.lua
+               SETS n=10 t_end=4 every=2 weak=1
+               BOUNDS "u_plus_dev_max<0.025" "u_plus_rms<0.015" "k_plus_rms<0.15"
+               "eps_plus_rms<0.25" "health.nearest_spacing_min_dr>0.9")
+# 40 rows per half height put the wall layer at y+ = 9.5, in the viscous sublayer, where the wall
+# law is no log law and the model has no buffer layer (u+ 10-14% low at t = 40 s): warned of
+clsph_cli_test(channel_usaw_ke_sublayer_warned ARGS run ${CMAKE_SOURCE_DIR}/cases/channel_usaw_ke.lua
+               --quiet --overwrite --set n=40 --set t_end=0.02 --set every=0.01
+               --out ${CMAKE_CURRENT_BINARY_DIR}/runs/usaw_ke_sublayer RC 0
+               REGEX "the particles within dr of the walls stand at y\\+ = 9\\.5[0-9]* on average .* in the viscous sublayer")
+clsph_cli_test(channel_usaw_ke_control_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_usaw_ke.lua
+               --set control=2 RC 2
+               REGEX "channel_usaw_ke: control must be 0 \\(the body force")
 # The strongly curved channel's start (cases/channel_curved.lua, N_f = 20, to t = 0.1 s of its 5.4
 # s): started on the developed entry profile, the particles in rows along the walls. Measured
 # (double and float, the walls' pressure the gradient, the default; the mirror's differ by 0.1%
@@ -966,6 +999,15 @@ clsph_cli_test(case_reference_missing ARGS info ${bad_turb} --set what=11 RC 2
                REGEX "reference: cannot read .*tests/data/no_such_table.csv")
 clsph_cli_test(turbulence_fill_negative ARGS info ${bad_turb} --set what=8 RC 2
                REGEX "fill 'fill 1': epsilon must be positive, not -1")
+# the USAW schemes' k-ε (Leroy et al. eqs 22-29) has no use for wcsph-riemann's wall-model keys
+clsph_cli_test(turbulence_usaw_y_p ARGS info ${bad_turb} --set what=12 RC 2
+               REGEX "turbulence: y_p belongs to wcsph-riemann's wall model; isph-usaw applies the log law at each particle's own distance")
+clsph_cli_test(turbulence_usaw_wall_weight ARGS info ${bad_turb} --set what=13 RC 2
+               REGEX "turbulence: wall_weight belongs to wcsph-riemann's wall model .*isph-usaw has none")
+clsph_cli_test(turbulence_usaw_delay ARGS info ${bad_turb} --set what=14 RC 2
+               REGEX "turbulence: delay .* is wcsph-riemann's; isph-usaw starts the model at once")
+clsph_cli_test(turbulence_wcsph_usaw_y_p ARGS info ${bad_turb} --set what=15 RC 2
+               REGEX "turbulence: y_p belongs to wcsph-riemann's wall model; wcsph-usaw applies")
 # an entry's k and ε (inflow { k, epsilon }): only under the model, together, consistent
 set(bad_inflow_turb ${CASE_DIR}/bad_inflow_turbulence.lua)
 clsph_cli_test(turbulence_inflow_without_model ARGS info ${bad_inflow_turb} --set what=1 RC 2

@@ -1508,15 +1508,6 @@ static enum clsph_status finish(const char *path, struct loader *ld)
                 "C_mu^3/4 k^3/2 / epsilon = %g m, larger than the domain (%g m): epsilon is too "
                 "small for k (or k too large)",
                 path, t->line, t->k, t->epsilon, ell, size);
-    /* y+ at the wall model's distance (eq 10) from the declared k: the step-wise wall function
-     * (eq 11) is a log law only above y+ = 11.225, and the paper keeps y+ in 30-100 */
-    const double yplus = y_p * pow(cmu, 0.25) * sqrt(t->k) / s->nu;
-    CLSPH_CHECK(yplus >= 11.225, CLSPH_E_INPUT,
-                "%s:%d: turbulence: y_p = %g m puts the first particles in the viscous sublayer: "
-                "y+ = y_p C_mu^1/4 k^1/2 / nu = %.3g with k = %g (Wang, Sun & Hu eq 10) is below "
-                "11.225, where the wall function is no log law; raise y_p (the particles' first "
-                "row, dr/2 = %g m unless given) to y+ 30-100",
-                path, t->line, y_p, yplus, t->k, 0.5 * s->dr);
     CLSPH_CHECK(y_p < 0.5 * size, CLSPH_E_INPUT,
                 "%s:%d: turbulence: y_p = %g m is more than half the domain (%g m)", path, t->line,
                 y_p, size);

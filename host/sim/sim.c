@@ -211,8 +211,23 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
       has |= strcmp(*m, scene->turb.model) == 0;
     CLSPH_CHECK(has, CLSPH_E_INPUT,
                 "%s:%d: turbulence: model = \"%s\": scheme %s has no turbulence model (the k-ε "
-                "RANS model is wcsph-riemann's)",
+                "RANS model is wcsph-riemann's, isph-usaw's and wcsph-usaw's)",
                 scene->case_path, scene->turb.line, scene->turb.model, sim.scheme->name);
+    /* wcsph-riemann's wall model at y_p (Wang, Sun & Hu eq 10, from the declared k): its
+     * step-wise wall function (eq 11) is a log law only above y+ = 11.225, and the paper keeps
+     * y+ in 30-100. The USAW schemes' wall law (Leroy et al. eq 23) takes each particle's own
+     * distance and turns linear in the sublayer: no such bound there. */
+    if (strcmp(sim.scheme->wall_model, "usaw") != 0) {
+      const struct scene_turbulence *t = &scene->turb;
+      const double y_p = t->y_p > 0.0 ? t->y_p : 0.5 * scene->dr;
+      const double yplus = y_p * pow(0.09, 0.25) * sqrt(t->k) / scene->nu;
+      CLSPH_CHECK(yplus >= 11.225, CLSPH_E_INPUT,
+                  "%s:%d: turbulence: y_p = %g m puts the first particles in the viscous "
+                  "sublayer: y+ = y_p C_mu^1/4 k^1/2 / nu = %.3g with k = %g (Wang, Sun & Hu eq "
+                  "10) is below 11.225, where the wall function is no log law; raise y_p (the "
+                  "particles' first row, dr/2 = %g m unless given) to y+ 30-100",
+                  scene->case_path, t->line, y_p, yplus, t->k, 0.5 * scene->dr);
+    }
   }
   /* smoothing function and length */
   enum smoothing_kind kind;

@@ -87,7 +87,9 @@ struct sim {
   unsigned long sorts; /* sorts so far (sim_sort): per-particle buffers outside the particle set,
                         * which a sort does not reorder, belong to the order they were made in */
   long substeps, substeps_sum;
-  double turb_clips[2]; /* k and ε values clipped by the turbulence model so far (summary) */
+  /* k and ε values clipped by the turbulence model so far (summary.json): the scheme's host copy,
+   * which each step's closing read brings up to date (solvers/kepsilon); NULL: no model */
+  const cl_uint *turb_clip_counts;
   /* pair interactions the scheme evaluated in the last step (0: it does not count them) and their
    * sum over this run: a pair loop over n particles with on average k neighbours inside the
    * support counts n k */

@@ -3,7 +3,12 @@
  *   δr_a = −C h² G_a{1},   G_a{1} = (1/γ_a) Σ_b V_b ∇w_ab − (1/γ_a) Σ_s ∇γ_as      (36-37)
  * (the segment term keeps them off the walls; C = 0.7 for the Wendland kernel), and their
  * velocity follows to first order (eq 38):
- *   u_a += G−_a{ũ}·δr_a = −(1/γ_a) Σ_b V_b u_ab (∇w_ab·δr_a) + (1/γ_a) Σ_s u_as (∇γ_as·δr_a). */
+ *   u_a += G−_a{ũ}·δr_a = −(1/γ_a) Σ_b V_b u_ab (∇w_ab·δr_a) + (1/γ_a) Σ_s u_as (∇γ_as·δr_a),
+ * u_s from wall_vel: the walls' velocity, or under the k-ε model the vertices' own velocity
+ * (eq 24), the one the model's gradients take. With the walls' velocity the wall term reads the
+ * log-law jump from 0 to u(δr/2) as a gradient u/(δr/2), 6 times the log law's gradient at the
+ * first row of the e+ = 640 channel, and the correction grew a lattice mode along the wall
+ * (row-1 u varying with a period of 4 δr) that threw particles out at t = 12 s. */
 #ifndef ISPH_SHIFT_MAX
 #define ISPH_SHIFT_MAX R(0.1)
 #endif
@@ -12,9 +17,9 @@
 #endif
 /* collisions: usaw/common.cl */
 __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
-                         __global const uint *free_surface, const real c_shift, const uint guard,
-                         const real dr0, __global const uint *id, __global realv *shift,
-                         __global realv *vel_out)
+                         __global const realv *wall_vel, __global const uint *free_surface,
+                         const real c_shift, const uint guard, const real dr0,
+                         __global const uint *id, __global realv *shift, __global realv *vel_out)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -87,7 +92,7 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   neigh_begin(&it, &g_seg, x);
   while (neigh_next(&it, &g_seg, seg_start, &s)) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
-    const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
+    const realv us = R(0.5) * (wall_vel[inv[seg_v1[s]]] + wall_vel[inv[seg_v2[s]]]);
     du += (u - us) * dot(usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]), dr);
   }
   vel_out[i] = u + du / gam[i] + cu;

@@ -20,13 +20,33 @@
  * with the vertices explicit). visc gets (u* − u^n)/δt − g
  * − f, the viscous acceleration, which the wall condition needs. It runs for vertex particles too:
  * their u* enters the wall condition of the pressure equation through the segments (eq 43). */
+#if USAW_TURB
+/* Under the k-ε model (usaw/turbulence.cl): ν_t, the vertices' own velocity u_vertex (eq 24; read
+ * and advanced here), ∇γ (the vertices' normal), and the outputs u* (u_star: the friction velocity
+ * from the nearest segment, eq 23) and y+ = δr_as u* / ν (y_plus). */
+#define USAW_PREDICT_TURB_ARGS                                                                     \
+  , __global const real *nu_t, __global realv *u_vertex, __global const realv *ggam,               \
+      __global real *u_fric, __global real *yplus
+#else
+#define USAW_PREDICT_TURB_ARGS
+#endif
 __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel, const real dt,
                            const real nu, const real d_min, const realv accel,
-                           __global realv *ustar, __global realv *visc)
+                           __global realv *ustar, __global realv *visc USAW_PREDICT_TURB_ARGS)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] > ISPH_VERTEX) return;
-  const realv x = pos[i], u = vel[i];
+  const realv x = pos[i];
+#if USAW_TURB
+  const int vertex = kind[i] == ISPH_VERTEX;
+  const realv u = vertex ? u_vertex[i] : vel[i];
+  const real nti = nu_t[i], lap_scale = R(1.0); /* lap carries ν_E,a + ν_E,b (eq 22) */
+  real near = INFINITY, near_u = R(0.0);        /* the nearest segment's δr_as and u* */
+#else
+  const realv u = vel[i];
+  /* lap carries 2 (eq 15) */
+  const real lap_scale = nu;
+#endif
   realv lap = (realv)(R(0.0));
   struct neigh_iter it;
   neigh_begin(&it, &g, x);
@@ -35,13 +55,19 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
+#if USAW_TURB
+    lap += (R(2.0) * nu + nti + nu_t[j]) * vol[j] * smoothing_f(g.sm, sqrt(r2)) * (u - vel[j]);
+#else
     lap += R(2.0) * vol[j] * smoothing_f(g.sm, sqrt(r2)) * (u - vel[j]); /* r·∇w / r² = F */
+#endif
   }
   /* the wall term −Σ_s c_s P_s (u − u_s), c_s = 2ν|∇γ_as|/(γ_a δr_as), P_s = I − n_s n_sᵀ,
    * taken at u*: M = Σ_s c_s P_s, b = Σ_s c_s P_s u_s */
   real m11 = R(0.0), m12 = R(0.0), m22 = R(0.0);
   realv b = (realv)(R(0.0));
+#if !USAW_TURB
   const real cg = R(2.0) * nu / gam[i];
+#endif
   neigh_begin(&it, &g_seg, x);
   uint s;
   while (neigh_next(&it, &g_seg, seg_start, &s)) {
@@ -51,7 +77,16 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     if (ggn == R(0.0)) continue;
     const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
     const real drs = fmax(dot(x - R(0.5) * (a + e), nn), d_min);
+#if USAW_TURB /* eq 22: u*²_as along t_as, the rate 2 u*²/u_t of the tangential slip (eq 23) */
+    const real rate = usaw_wall_rate(u - us, nn, drs, nu);
+    const real c = rate * ggn / gam[i];
+    if (drs < near) {
+      near = drs;
+      near_u = sqrt(R(0.5) * rate * length((u - us) - dot(u - us, nn) * nn));
+    }
+#else
     const real c = cg * ggn / drs;
+#endif
     m11 += c * (R(1.0) - nn.x * nn.x);
     m12 -= c * nn.x * nn.y;
     m22 += c * (R(1.0) - nn.y * nn.y);
@@ -63,12 +98,30 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   realv mu;
   mu.x = m11 * u.x + m12 * u.y;
   mu.y = m12 * u.x + m22 * u.y;
-  const realv rhs = u + dt * (nu * lap / gam[i] + b + accel) - te * mu;
+  const realv rhs = u + dt * (lap_scale * lap / gam[i] + b + accel) - te * mu;
   const real a11 = R(1.0) + ti * m11, a12 = ti * m12, a22 = R(1.0) + ti * m22;
   const real det = a11 * a22 - a12 * a12;
   realv us;
   us.x = (a22 * rhs.x - a12 * rhs.y) / det;
   us.y = (a11 * rhs.y - a12 * rhs.x) / det;
+#if USAW_TURB
+  if (vertex) { /* eq 24: the viscous term alone moves it, along the wall (∇γ_v is its normal) */
+    const realv gv = ggam[i];
+    const real gl = length(gv);
+    const realv av = lap / gam[i] + b - mu; /* L_v{μ_E, u}/ρ at the vertex's own velocity */
+    realv uv = u + dt * av;
+    if (gl > R(0.0)) uv -= dot(uv, gv / gl) * (gv / gl);
+    u_vertex[i] = uv;
+    /* the wall condition's input (eq 43) as without the model: the wall's velocity plus δt times
+     * the viscous and the body accelerations */
+    ustar[i] = vel[i] + dt * (av + accel);
+    visc[i] = av;
+    return;
+  } else {
+    u_fric[i] = near_u;
+    yplus[i] = isinf(near) ? R(0.0) : near * near_u / nu;
+  }
+#endif
   ustar[i] = us;
   visc[i] = (us - u) / dt - accel;
 }

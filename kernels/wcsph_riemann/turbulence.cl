@@ -39,14 +39,9 @@
  * wcr_turb_update: k, ε take the new values and ν_t = C_μ k²/ε (eq 6), or ν_t = nu_fixed while
  * the model waits (sec 5.2's delayed activation: k and ε then stay as they are). */
 #if WCR_TURB
-#define KE_CMU   R(0.09)
-#define KE_C1    R(1.44)
-#define KE_C2    R(1.92)
-#define KE_SK    R(1.0)
-#define KE_SE    R(1.3)
-#define KE_KAPPA R(0.41)
-#define KE_E     R(9.793)
-#define KE_YLAM  R(11.225)
+/* the model's constants and its update: common/kepsilon.cl */
+#define KE_E    R(9.793)
+#define KE_YLAM R(11.225)
 
 __kernel void wcr_turb_wall(const uint n, const struct grid g, __global const realv *pos,
                             __global const realv *vel, __global const uint *kind,
@@ -174,24 +169,10 @@ __kernel void wcr_turb_transport(const uint n, const struct grid g, __global con
         nti * (R(2.0) * (gxx * gxx + gyy * gyy + R(2.0) * sxy * sxy) - div * div * R(2.0) / R(3.0));
     prod = fmax(prod, R(0.0));
   }
-  const real rate = ei / fmax(ki, R(1e-30));
-  real kn = ki + dt * (prod + dk);
-  if (!(kn > R(0.0))) {
-    kn = R(1e-6) * ki;
-    atomic_inc(&clips[0]);
-  }
-  kn /= R(1.0) + dt * rate; /* eq 30 */
-  real en;
-  if (in_p) {
-    en = sqrt(KE_CMU) * sqrt(sqrt(KE_CMU)) * kn * sqrt(kn) / (KE_KAPPA * y_p); /* eq 14 */
-  } else {
-    en = ei + dt * (KE_C1 * rate * prod + de);
-    if (!(en > R(0.0))) {
-      en = R(1e-6) * ei;
-      atomic_inc(&clips[1]);
-    }
-    en /= R(1.0) + dt * KE_C2 * rate; /* eqs 29-30 */
-  }
+  const real kn = ke_advance_k(ki, ei, prod, dk, dt, clips); /* eq 30 */
+  const real en =
+      in_p ? sqrt(KE_CMU) * sqrt(sqrt(KE_CMU)) * kn * sqrt(kn) / (KE_KAPPA * y_p) /* 14 */
+           : ke_advance_eps(ki, ei, prod, de, dt, clips);                         /* eqs 29-30 */
   k_new[i] = kn;
   eps_new[i] = en;
 }
@@ -208,7 +189,7 @@ __kernel void wcr_turb_update(const uint n, __global const uint *kind, __global 
     if (active) {
       k[i] = k_new[i];
       eps[i] = eps_new[i];
-      nt = KE_CMU * k_new[i] * k_new[i] / eps_new[i]; /* eq 6 */
+      nt = ke_nu_t(k_new[i], eps_new[i]); /* eq 6 */
     } else {
       nt = nu_fixed;
     }

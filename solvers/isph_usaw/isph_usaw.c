@@ -12,7 +12,12 @@
  *      (default: ũ = u* − δt g − (δt/ρ) G−{P}, corrected to first order near the free surface)
  *   7. r̃ = r* + δt/2 ũ                                           (34)
  *   8. shifting δr = −C h² G{1} away from the free surface, u += G−{ũ}·δr   (35-38, shift.cl)
- * Time step (48-49): min(0.1 h/u_ref, 0.125 h²/ν, 0.25 √(h/|a|)) (C_CFL halved, see max_dt). */
+ * Time step (48-49): min(0.1 h/u_ref, 0.125 h²/ν, 0.25 √(h/|a|)) (C_CFL halved, see max_dt).
+ * Under the k-ε model (turbulence { model = "k-epsilon" }, solvers/usaw/turbulence.h) step 3 takes
+ * μ_E = μ + μ_T and the wall law (eq 22), k and ε advance after it at r* with u^n (eqs 18-19),
+ * the unknown is P = p̃ + ρgz with p̃ = p + ⅔ ρ k (eq 12), and the viscous bound takes ν + ν_t.
+ * The shift (step 8) moves k and ε with the particles without the first-order correction that it
+ * gives the velocity. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,10 +26,12 @@
 #include "clsph_config.h"
 #include "poisson_op.h"
 #include "sim.h"
+#include "turbulence.h"
 #include "walls.h"
 
 struct isph {
   struct usaw_walls walls;
+  struct usaw_turb turb; /* the k-ε model, when the scene declares it */
   struct poisson_op po;
   struct psolve ps;
   struct psolve_options popt;
@@ -46,12 +53,23 @@ struct isph {
 #define ISPH_ACC  0
 #define ISPH_FREE 1
 
-static const char *const sources[] = {
-    "common/blas1.cl",      "common/krylov.cl",          "common/csr.cl",
-    "common/mg.cl",         "common/poisson.cl",         "usaw/gamma.cl",
-    "usaw/common.cl",       "usaw/wall_force.cl",        "isph_usaw/move.cl",
-    "usaw/viscous.cl",      "isph_usaw/free_surface.cl", "isph_usaw/ppe.cl",
-    "isph_usaw/project.cl", "isph_usaw/shift.cl",        NULL};
+static const char *const sources[] = {"common/blas1.cl",
+                                      "common/krylov.cl",
+                                      "common/csr.cl",
+                                      "common/mg.cl",
+                                      "common/poisson.cl",
+                                      "usaw/gamma.cl",
+                                      "usaw/common.cl",
+                                      "usaw/wall_force.cl",
+                                      "isph_usaw/move.cl",
+                                      "common/kepsilon.cl",
+                                      "usaw/turbulence.cl",
+                                      "usaw/viscous.cl",
+                                      "isph_usaw/free_surface.cl",
+                                      "isph_usaw/ppe.cl",
+                                      "isph_usaw/project.cl",
+                                      "isph_usaw/shift.cl",
+                                      NULL};
 static const char *const options[] = {
     "shifting",       "pressure_gradient",    "free_surface_offset", "gradient_correction",
     "shift_velocity", USAW_WALL_OPTION_NAMES, PSOLVE_OPTION_NAMES,   NULL};
@@ -108,6 +126,7 @@ static enum clsph_status isph_define(const struct sim *sim, struct prog_opts *o)
   /* the first-order correction of G−{P} where air truncates the kernel (project.cl) */
   CLSPH_TRY(prog_opts_define_int(o, "ISPH_GRAD_CORR", corr));
   CLSPH_TRY(prog_opts_define_int(o, "ISPH_SHIFT_VCORR", vcorr));
+  CLSPH_TRY(usaw_turb_define(sim, o));
 done:
   return st;
 }
@@ -115,21 +134,7 @@ done:
 /* The particle and segment arguments every stage starts with; returns the next index. */
 static enum clsph_status prefix(struct sim *sim, struct isph *is, cl_kernel k, cl_uint *next)
 {
-  enum clsph_status st = CLSPH_OK;
-  struct pset *ps = &sim->ps;
-  struct usaw_walls *w = &is->walls;
-  cl_uint n = (cl_uint)ps->n;
-  cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
-  cl_mem kind = pset_mem(ps, sim->f_kind), gam = pset_mem(ps, is->f_gam);
-  cl_mem sa = pset_mem(&w->ps, w->f_a), sb = pset_mem(&w->ps, w->f_b);
-  cl_mem sn = pset_mem(&w->ps, w->f_n), v1 = pset_mem(&w->ps, w->f_v1);
-  cl_mem v2 = pset_mem(&w->ps, w->f_v2);
-  CLSPH_TRY(KERN_SET(k, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
-                     KARG(vol), KARG(kind), KARG(gam), KARG(w->g.geom), KARG(w->g.d_start),
-                     KARG(sa), KARG(sb), KARG(sn), KARG(v1), KARG(v2), KARG(sim->d_inv)));
-  *next = 15;
-done:
-  return st;
+  return usaw_kernel_prefix(sim, &is->walls, pset_mem(&sim->ps, is->f_gam), k, next);
 }
 
 static enum clsph_status arg(cl_kernel k, cl_uint *i, size_t size, const void *v)
@@ -251,6 +256,7 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
   CLSPH_TRY(kern_buffer(sim->dev, 3 * ps->cap * sizeof(real), NULL, &is->d_strain, "strain"));
+  CLSPH_TRY(usaw_turb_create(sim, &is->turb));
   CLSPH_TRY(poisson_op_create(sim->dev, sim->prog, &is->po));
   CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &is->popt, &is->ps));
   *state = is;
@@ -258,6 +264,7 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
 done:
   free(theta);
   if (is != NULL) {
+    usaw_turb_destroy(&is->turb);
     usaw_walls_destroy(&is->walls);
     free(is);
   }
@@ -316,7 +323,10 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_predict, &i, sizeof accel, &accel));
   CLSPH_TRY(arg(is->k_predict, &i, sizeof ustar, &ustar));
   CLSPH_TRY(arg(is->k_predict, &i, sizeof visc, &visc));
+  CLSPH_TRY(usaw_turb_predict_args(sim, &is->turb, pset_mem(ps, is->f_ggam), is->k_predict, &i));
   CLSPH_TRY(kern_launch(sim->dev, is->k_predict, ps->n, NULL));
+  /* k and ε (the k-ε model) */
+  CLSPH_TRY(usaw_turb_advance(sim, &is->turb, &is->walls, pset_mem(ps, is->f_gam), dt, is->d_min));
   /* 3. free surface */
   cl_mem divr = pset_mem(ps, is->f_divr);
   CLSPH_TRY(prefix(sim, is, is->k_free, &i));
@@ -415,6 +425,8 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
     cl_mem shift = pset_mem(ps, is->f_shift), vnew = pset_mem(ps, is->f_vnew);
     CLSPH_TRY(prefix(sim, is, is->k_shift, &i));
     CLSPH_TRY(arg(is->k_shift, &i, sizeof vel, &vel));
+    cl_mem wall_vel = is->turb.on ? pset_mem(ps, is->turb.f_uvert) : vel;
+    CLSPH_TRY(arg(is->k_shift, &i, sizeof wall_vel, &wall_vel));
     CLSPH_TRY(arg(is->k_shift, &i, sizeof fs, &fs));
     CLSPH_TRY(arg(is->k_shift, &i, sizeof c, &c));
     CLSPH_TRY(arg(is->k_shift, &i, sizeof stop_at_walls, &stop_at_walls));
@@ -456,8 +468,9 @@ static enum clsph_status isph_max_dt(struct sim *sim, void *state, double *dt)
    * cavity (Re 100, 20 and 30 particles per side, within 5 s); 0.1 keeps them in. The paper's
    * value is run { cfl = 2 }. */
   if (uref > 0.0) d = fmin(d, 0.1 * h / uref);
-  if (s->nu > 0.0) d = fmin(d, 0.125 * h * h / s->nu); /* viscous (49) */
-  if (a > 0.0) d = fmin(d, 0.25 * sqrt(h / a));        /* force (49) */
+  const double nu = s->nu + (is->turb.on ? is->turb.ke.nut_max : 0.0); /* ν + ν_t */
+  if (nu > 0.0) d = fmin(d, 0.125 * h * h / nu);                       /* viscous (49) */
+  if (a > 0.0) d = fmin(d, 0.25 * sqrt(h / a));                        /* force (49) */
   *dt = d;
 done:
   return st;
@@ -476,9 +489,12 @@ static enum clsph_status isph_wall_force(struct sim *sim, void *state, const cha
   CLSPH_TRY(arg(is->k_strain, &i, sizeof vel, &vel));
   CLSPH_TRY(arg(is->k_strain, &i, sizeof is->d_strain, &is->d_strain));
   CLSPH_TRY(kern_launch(sim->dev, is->k_strain, sim->ps.n, NULL));
+  const double mu = is->turb.on ? 0.0 : sim->scene->rho0 * sim->scene->nu;
   CLSPH_TRY(usaw_wall_force(sim->dev, &sim->geom, sim->scene, sim->ps.n,
-                            pset_mem(&sim->ps, is->f_p), is->d_strain, sim->d_inv,
-                            sim->scene->rho0 * sim->scene->nu, group, f));
+                            pset_mem(&sim->ps, is->f_p), is->d_strain, sim->d_inv, mu, group, f));
+  if (is->turb.on) /* the wall law's shear (eq 22) */
+    CLSPH_TRY(usaw_turb_wall_force(sim, &is->turb, &is->walls, pset_mem(&sim->ps, is->f_gam),
+                                   is->d_min, group, f->viscous));
 done:
   return st;
 }
@@ -492,6 +508,7 @@ static void isph_destroy(void *state)
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   kern_release(&is->d_strain);
+  usaw_turb_destroy(&is->turb);
   psolve_destroy(&is->ps);
   poisson_op_destroy(&is->po);
   usaw_walls_destroy(&is->walls);
@@ -506,6 +523,7 @@ const struct scheme_ops scheme_isph_usaw = {
     .smoothing = "wendland",
     .h_over_dr = 2.0,
     .fill_fields = SCHEME_FILL_PRESSURE,
+    .turbulence = usaw_turbulence_models,
     .sorts_first = 1, /* the half move to r* comes first (step 1) */
     .options = options,
     .define = isph_define,

@@ -8,6 +8,7 @@
 #include "clsph_config.h"
 #include "geometry.h"
 #include "scene.h"
+#include "sim.h"
 
 enum clsph_status usaw_wall_distance_floor(const struct scene *sc, double spacings, double *d_min)
 {
@@ -75,6 +76,8 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   }
   CLSPH_TRY(pset_add(&w.ps, dev, "v1", sizeof(cl_uint), ids, &w.f_v1));
   CLSPH_TRY(pset_add(&w.ps, dev, "v2", sizeof(cl_uint), ids + n, &w.f_v2));
+  for (size_t s = 0; s < n; ++s) ids[s] = (cl_uint)s; /* the order given, kept through the sort */
+  CLSPH_TRY(pset_add(&w.ps, dev, "index", sizeof(cl_uint), ids, &w.f_index));
   /* the bits, a counter and the deepest crossing (as the sim's flags: usaw_walls_gamma may be
    * given this buffer) */
   const cl_uint zeros[3] = {0, 0, 0};
@@ -170,6 +173,25 @@ enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
 done:
   free(inv);
   free(p);
+  return st;
+}
+
+enum clsph_status usaw_kernel_prefix(struct sim *sim, struct usaw_walls *w, cl_mem gam, cl_kernel k,
+                                     cl_uint *next)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n;
+  cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
+  cl_mem kind = pset_mem(ps, sim->f_kind);
+  cl_mem sa = pset_mem(&w->ps, w->f_a), sb = pset_mem(&w->ps, w->f_b);
+  cl_mem sn = pset_mem(&w->ps, w->f_n), v1 = pset_mem(&w->ps, w->f_v1);
+  cl_mem v2 = pset_mem(&w->ps, w->f_v2);
+  CLSPH_TRY(KERN_SET(k, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
+                     KARG(vol), KARG(kind), KARG(gam), KARG(w->g.geom), KARG(w->g.d_start),
+                     KARG(sa), KARG(sb), KARG(sn), KARG(v1), KARG(v2), KARG(sim->d_inv)));
+  *next = 15;
+done:
   return st;
 }
 

@@ -21,8 +21,9 @@ struct usaw_segments {
 
 struct usaw_walls {
   struct grid g;  /* the segments' grid: cells of at least (support + max length/2)/GRID_SUB */
-  struct pset ps; /* segment fields: mid, a, b, n (realv) */
+  struct pset ps; /* segment fields: mid, a, b, n (realv); v1, v2, index (uint) */
   int f_mid, f_a, f_b, f_n, f_v1, f_v2;
+  int f_index; /* each segment's index in the order given (the geometry's), after the sort */
   cl_kernel k_gamma;
   cl_mem d_flags;
 };
@@ -59,6 +60,10 @@ enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
  *  `spacings`, times δr. */
 enum clsph_status usaw_wall_distance_floor(const struct scene *sc, double spacings, double *d_min);
 /** @brief Release. */
+/** @brief The particle and segment arguments every USAW kernel starts with (USAW_PART_ARGS,
+ *  USAW_SEG_ARGS; gam: γ of the particles); *next gets the next argument's index. */
+enum clsph_status usaw_kernel_prefix(struct sim *sim, struct usaw_walls *w, cl_mem gam, cl_kernel k,
+                                     cl_uint *next);
 void usaw_walls_destroy(struct usaw_walls *w);
 
 #endif /* CLSPH_USAW_WALLS_H */

@@ -45,6 +45,7 @@
 #include "../scheme.h"
 #include "clsph_config.h"
 #include "open.h"
+#include "kepsilon.h"
 #include "sim.h"
 #include "sound.h"
 
@@ -74,10 +75,11 @@ struct wcr {
   double ubar0; /* the natural exits' outflow speed at the start (open_initial_outflow), m/s */
   /* the k-ε model (turbulence.cl), when the scene declares turbulence { } */
   int turb;
-  int f_k, f_eps, f_nut, f_yplus;
-  cl_mem d_frame, d_wallv, d_knew, d_enew, d_nut2, d_clips, d_grad;
+  struct kepsilon ke; /* k, epsilon, nu_t and the update's buffers (solvers/kepsilon) */
+  int f_yplus;
+  cl_mem d_frame, d_wallv, d_grad;
   cl_kernel k_twall, k_ttrans, k_tupd;
-  double y_p, w_s, nut_max; /* the wall model's distance and weight; the largest ν_t */
+  double y_p, w_s; /* the wall model's distance and weight */
 };
 
 static const char *const sources[] = {OPEN_SOURCES,
@@ -86,6 +88,7 @@ static const char *const sources[] = {OPEN_SOURCES,
                                       "wcsph_riemann/advection.cl",
                                       "wcsph_riemann/acoustic.cl",
                                       "wcsph_riemann/force.cl",
+                                      "common/kepsilon.cl",          /* empty unless KE_ON */
                                       "wcsph_riemann/turbulence.cl", /* empty unless WCR_TURB */
                                       NULL};
 static const char *const turbulence_models[] = {"k-epsilon", NULL};
@@ -297,6 +300,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_CONT_RIEMANN", w.cont_riemann));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_CONT_NORMAL", w.reinit == WCR_REINIT_OFF));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TURB", sim->scene->turb.on));
+  CLSPH_TRY(prog_opts_define_int(o, "KE_ON", sim->scene->turb.on));
   CLSPH_TRY(open_define(sim, o)); /* the sections (solvers/open) */
 done:
   return st;
@@ -322,47 +326,24 @@ static enum clsph_status turb_create(struct sim *sim, struct wcr *w)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene_turbulence *t = &sim->scene->turb;
-  const size_t n = sim->geom.n, cap = sim->ps.cap;
-  real *buf = calloc(n + 1, sizeof *buf);
-  CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory");
+  const size_t cap = sim->ps.cap;
+  real *zeros = NULL;
   w->turb = 1;
   w->y_p = t->y_p > 0.0 ? t->y_p : 0.5 * sim->scene->dr;
   w->w_s = isnan(t->wall_weight) ? (w->ard ? 0.5 : 0.1) : t->wall_weight; /* sec 4.3 */
-  const struct geom *geo = &sim->geom;
-  /* fill { k, epsilon } where a fill gives them, else turbulence { }'s */
-  for (size_t i = 0; i < n; ++i) buf[i] = (real)(isfinite(geo->k0[i]) ? geo->k0[i] : t->k);
-  CLSPH_TRY(add_field(sim, "k", buf, 1, &w->f_k));
-  for (size_t i = 0; i < n; ++i)
-    buf[i] = (real)(isfinite(geo->eps0[i]) ? geo->eps0[i] : t->epsilon);
-  CLSPH_TRY(add_field(sim, "epsilon", buf, 1, &w->f_eps));
-  w->nut_max = 0.0;
-  for (size_t i = 0; i < n; ++i) {
-    const double k = isfinite(geo->k0[i]) ? geo->k0[i] : t->k;
-    const double e = isfinite(geo->eps0[i]) ? geo->eps0[i] : t->epsilon;
-    const double nut = t->delay > 0.0 ? t->nu_t_delay : 0.09 * k * k / e; /* eq 6 */
-    buf[i] = (real)nut;
-    w->nut_max = fmax(w->nut_max, nut);
-  }
-  CLSPH_TRY(add_field(sim, "nu_t", buf, 1, &w->f_nut));
+  CLSPH_TRY(kepsilon_create(sim, t->delay > 0.0 ? t->nu_t_delay : (double)NAN, &w->ke));
   CLSPH_TRY(add_field(sim, "y_plus", NULL, 1, &w->f_yplus));
   CLSPH_TRY(kern_buffer(sim->dev, cap * 4 * sizeof(real), NULL, &w->d_frame, "wall frames"));
   /* zero until the model starts (after its delay): the dissipation then takes the plain jump */
-  real *zeros = calloc(cap * 4, sizeof *zeros);
+  zeros = calloc(cap * 4, sizeof *zeros);
   CLSPH_CHECK(zeros != NULL, CLSPH_E_NOMEM, "out of memory");
-  st = kern_buffer(sim->dev, cap * 4 * sizeof(real), zeros, &w->d_grad, "velocity gradients");
-  free(zeros);
-  if (st != CLSPH_OK) goto done;
+  CLSPH_TRY(kern_buffer(sim->dev, cap * 4 * sizeof(real), zeros, &w->d_grad, "velocity gradients"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * 2 * sizeof(real), NULL, &w->d_wallv, "wall stresses"));
-  CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(real), NULL, &w->d_knew, "new k"));
-  CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(real), NULL, &w->d_enew, "new epsilon"));
-  CLSPH_TRY(kern_buffer(sim->dev, cap * 2 * sizeof(real), NULL, &w->d_nut2, "eddy viscosity"));
-  const cl_uint zero[2] = {0, 0};
-  CLSPH_TRY(kern_buffer(sim->dev, sizeof zero, zero, &w->d_clips, "clip counts"));
   CLSPH_TRY(prog_kernel(sim->prog, "wcr_turb_wall", &w->k_twall));
   CLSPH_TRY(prog_kernel(sim->prog, "wcr_turb_transport", &w->k_ttrans));
   CLSPH_TRY(prog_kernel(sim->prog, "wcr_turb_update", &w->k_tupd));
 done:
-  free(buf);
+  free(zeros);
   return st;
 }
 
@@ -425,7 +406,7 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   pset_describe(ps, w->f_wnormal, PF_REAL, 2, 0);
   w->f_ard = -1;
   if (w->ard) CLSPH_TRY(add_field(sim, "ard", NULL, 1, &w->f_ard));
-  w->f_k = w->f_eps = w->f_nut = w->f_yplus = -1;
+  w->ke.f_k = w->ke.f_eps = w->ke.f_nut = w->f_yplus = -1;
   if (sc->turb.on) CLSPH_TRY(turb_create(sim, w));
   for (size_t i = 0; i < geo->n; ++i)
     ubuf[i] =
@@ -522,7 +503,7 @@ static enum clsph_status turb_wall(struct sim *sim, struct wcr *w)
   const real r_ext = (real)(2.0 * sim->sm.h - sim->scene->dr);
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem kind = pset_mem(ps, sim->f_kind), wd = pset_mem(ps, w->f_wdist);
-  cl_mem wn = pset_mem(ps, w->f_wnormal), k = pset_mem(ps, w->f_k);
+  cl_mem wn = pset_mem(ps, w->f_wnormal), k = pset_mem(ps, w->ke.f_k);
   cl_mem yplus = pset_mem(ps, w->f_yplus);
   CLSPH_TRY(KERN_SET(w->k_twall, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(kind),
                      KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount), KARG(k), KARG(yp),
@@ -547,24 +528,23 @@ static enum clsph_status turbulence(struct sim *sim, struct wcr *w, double dt)
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem wd = pset_mem(ps, w->f_wdist);
-  cl_mem k = pset_mem(ps, w->f_k), eps = pset_mem(ps, w->f_eps), nut = pset_mem(ps, w->f_nut);
+  cl_mem k = pset_mem(ps, w->ke.f_k), eps = pset_mem(ps, w->ke.f_eps),
+         nut = pset_mem(ps, w->ke.f_nut);
   if (active) {
     CLSPH_TRY(turb_wall(sim, w));
     CLSPH_TRY(KERN_SET(w->k_ttrans, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                        KARG(kind), KARG(wd), KARG(w->d_nlist), KARG(w->d_ncount), KARG(k),
                        KARG(eps), KARG(nut), KARG(w->d_frame), KARG(w->d_wallv), KARG(rdt),
                        KARG(nu), KARG(ilam), KARG(yp), KARG(r_ext), KARG(r_p), KARG(ws),
-                       KARG(w->d_knew), KARG(w->d_enew), KARG(w->d_clips), KARG(w->d_grad)));
+                       KARG(w->ke.d_knew), KARG(w->ke.d_enew), KARG(w->ke.d_clips),
+                       KARG(w->d_grad)));
     CLSPH_TRY(kern_launch(sim->dev, w->k_ttrans, ps->n, NULL));
   }
-  CLSPH_TRY(KERN_SET(w->k_tupd, KARG(n), KARG(kind), KARG(w->d_knew), KARG(w->d_enew), KARG(active),
-                     KARG(nu_fixed), KARG(k), KARG(eps), KARG(nut), KARG(w->d_nut2)));
+  CLSPH_TRY(KERN_SET(w->k_tupd, KARG(n), KARG(kind), KARG(w->ke.d_knew), KARG(w->ke.d_enew),
+                     KARG(active), KARG(nu_fixed), KARG(k), KARG(eps), KARG(nut),
+                     KARG(w->ke.d_nut2)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_tupd, ps->n, NULL));
-  CLSPH_TRY(sim_max_norm(sim, w->d_nut2, KIND_FLUID, &w->nut_max));
-  cl_uint clips[2];
-  CLSPH_TRY(kern_read(sim->dev, w->d_clips, sizeof clips, clips));
-  sim->turb_clips[0] = clips[0];
-  sim->turb_clips[1] = clips[1];
+  CLSPH_TRY(kepsilon_step_end(sim, &w->ke)); /* the largest ν_t, the clip counts */
 done:
   return st;
 }
@@ -592,7 +572,7 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   cl_mem rho = pset_mem(ps, w->f_rho), wd = pset_mem(ps, w->f_wdist);
   cl_mem wn = pset_mem(ps, w->f_wnormal);
   /* the k-ε model's eddy viscosity and wall shear stress (turbulence.cl), once it is active */
-  cl_mem nut = w->turb ? pset_mem(ps, w->f_nut) : w->d_none;
+  cl_mem nut = w->turb ? pset_mem(ps, w->ke.f_nut) : w->d_none;
   cl_mem frame = w->turb ? w->d_frame : w->d_none, wallv = w->turb ? w->d_wallv : w->d_none;
   const real r_ext = (real)(2.0 * h - sc->dr);
   const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
@@ -644,8 +624,8 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
   cl_mem drho = pset_mem(ps, w->f_drho), wn = pset_mem(ps, w->f_wnormal);
-  cl_mem tk = w->turb ? pset_mem(ps, w->f_k) : w->d_none;
-  cl_mem nut = w->turb ? pset_mem(ps, w->f_nut) : w->d_none;
+  cl_mem tk = w->turb ? pset_mem(ps, w->ke.f_k) : w->d_none;
+  cl_mem nut = w->turb ? pset_mem(ps, w->ke.f_nut) : w->d_none;
   cl_mem grad = w->turb ? w->d_grad : w->d_none;
   cl_mem gradp = w->wall_pgrad ? w->d_gradp : w->d_none;
   CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
@@ -753,7 +733,7 @@ static enum clsph_status open_recycle_layers(struct sim *sim, struct wcr *w)
   for (size_t k = 0; k < sizeof fields / sizeof *fields; ++k)
     CLSPH_TRY(open_recycle_copy(&w->open, sim, fields[k]));
   if (w->turb) { /* an entry's k, ε and ν_t */
-    const int turb[] = {w->f_k, w->f_eps, w->f_nut};
+    const int turb[] = {w->ke.f_k, w->ke.f_eps, w->ke.f_nut};
     for (size_t k = 0; k < sizeof turb / sizeof *turb; ++k)
       CLSPH_TRY(open_recycle_copy(&w->open, sim, turb[k]));
   }
@@ -773,7 +753,7 @@ static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
   }
   if (w->turb) {
     if (w->open.nsec > 0) { /* exits: n·∇k = n·∇ε = 0; entries: their prescribed values */
-      const int fields[] = {w->f_k, w->f_eps, w->f_nut};
+      const int fields[] = {w->ke.f_k, w->ke.f_eps, w->ke.f_nut};
       for (size_t k = 0; k < sizeof fields / sizeof *fields; ++k)
         CLSPH_TRY(open_layer_scalar_prescribed(&w->open, sim, pset_mem(&sim->ps, fields[k])));
     }
@@ -811,8 +791,8 @@ static enum clsph_status wcr_max_dt(struct sim *sim, void *state, double *dt)
   CLSPH_TRY(sim_max_speed(sim, KIND_FLUID, &vmax));
   w->vmax = vmax;
   const double v = fmax(vmax, w->u_scale);
-  double d = v > 0.0 ? h / v : HUGE_VAL;                      /* eq 27 */
-  const double nu_eff = s->nu + (w->turb ? w->nut_max : 0.0); /* eq 27: ν + ν_t */
+  double d = v > 0.0 ? h / v : HUGE_VAL;                         /* eq 27 */
+  const double nu_eff = s->nu + (w->turb ? w->ke.nut_max : 0.0); /* eq 27: ν + ν_t */
   if (nu_eff > 0.0) d = fmin(d, h * h / nu_eff);
   if (!isfinite(d)) d = h / w->c0; /* nothing moves: one acoustic CFL */
   *dt = w->cfl_ad * d;
@@ -860,8 +840,8 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
   cl_mem wall = pset_mem(ps, w->f_wall), wd = pset_mem(ps, w->f_wdist);
   cl_mem wn = pset_mem(ps, w->f_wnormal);
-  cl_mem tk = w->turb ? pset_mem(ps, w->f_k) : w->d_none;
-  cl_mem nut = w->turb ? pset_mem(ps, w->f_nut) : w->d_none;
+  cl_mem tk = w->turb ? pset_mem(ps, w->ke.f_k) : w->d_none;
+  cl_mem nut = w->turb ? pset_mem(ps, w->ke.f_nut) : w->d_none;
   cl_mem frame = w->turb ? w->d_frame : w->d_none, wallv = w->turb ? w->d_wallv : w->d_none;
   const real r_ext = (real)(2.0 * sim->sm.h - sc->dr);
   const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
@@ -897,9 +877,9 @@ static void wcr_destroy(void *state)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   cl_mem *ms[] = {&w->d_nlist, &w->d_ncount, &w->d_bmat,    &w->d_sigma, &w->d_prior,
                   &w->d_shift, &w->d_acc,    &w->d_partial, &w->d_force, &w->d_mask,
-                  &w->d_none,  &w->d_frame,  &w->d_wallv,   &w->d_knew,  &w->d_enew,
-                  &w->d_nut2,  &w->d_clips,  &w->d_grad,    &w->d_gradp};
+                  &w->d_none,  &w->d_frame,  &w->d_wallv,   &w->d_grad,  &w->d_gradp};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
+  kepsilon_destroy(&w->ke);
   open_destroy(&w->open);
   free(w->exit_p);
   free(w->h_partial);

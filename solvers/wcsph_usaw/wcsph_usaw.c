@@ -12,7 +12,10 @@
  * (factor of the Ferrari term, 1), pressure_form ("total": G+ of p, the paper's; "dynamic": G+ of
  * the pressure less its hydrostatic part, which holds a tank at rest but glues a moving free
  * surface, update.cl).
- * Time step (48-49) with u_ref = c0: min(0.2 h/c0, 0.125 h²/ν, 0.25 √(h/|a|)). */
+ * Time step (48-49) with u_ref = c0: min(0.2 h/c0, 0.125 h²/ν, 0.25 √(h/|a|)).
+ * Under the k-ε model (turbulence { model = "k-epsilon" }, solvers/usaw/turbulence.h) the
+ * prediction takes μ_E = μ + μ_T and the wall law (eq 22), k and ε advance after it (eqs 18-19),
+ * the equation of state's p plays p̃ = p + ⅔ ρ k (eq 12), and the viscous bound takes ν + ν_t. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,10 +25,12 @@
 #include "clsph_config.h"
 #include "sim.h"
 #include "sound.h"
+#include "turbulence.h"
 #include "walls.h"
 
 struct wcsph {
   struct usaw_walls walls;
+  struct usaw_turb turb; /* the k-ε model, when the scene declares it */
   int f_rho, f_drho, f_p, f_gam, f_ggam, f_theta, f_ustar, f_visc;
   cl_kernel k_cont, k_vertex, k_predict, k_velocity, k_advance, k_strain;
   cl_mem d_strain; /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
@@ -36,13 +41,10 @@ struct wcsph {
   double diffusion; /* factor of the Ferrari density diffusion (1: as published, 0: off) */
 };
 
-static const char *const sources[] = {"usaw/gamma.cl",
-                                      "usaw/common.cl",
-                                      "usaw/wall_force.cl",
-                                      "usaw/viscous.cl",
-                                      "wcsph_usaw/density.cl",
-                                      "wcsph_usaw/update.cl",
-                                      NULL};
+static const char *const sources[] = {
+    "usaw/gamma.cl",         "usaw/common.cl",       "usaw/wall_force.cl",
+    "common/kepsilon.cl",    "usaw/turbulence.cl",   "usaw/viscous.cl",
+    "wcsph_usaw/density.cl", "wcsph_usaw/update.cl", NULL};
 static const char *const options[] = {"sound_speed",   "background_pressure",  "density_diffusion",
                                       "pressure_form", USAW_WALL_OPTION_NAMES, NULL};
 
@@ -55,22 +57,24 @@ static enum clsph_status prefix(struct sim *sim, struct wcsph *ws, cl_kernel k, 
   cl_uint n = (cl_uint)ps->n;
   cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
   cl_mem kind = pset_mem(ps, sim->f_kind), gam = pset_mem(ps, ws->f_gam);
+  if (with_segments) {
+    CLSPH_TRY(usaw_kernel_prefix(sim, w, gam, k, next));
+    goto done;
+  }
   CLSPH_TRY(KERN_SET(k, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
                      KARG(vol), KARG(kind), KARG(gam)));
   *next = 7;
-  if (with_segments) {
-    cl_mem sa = pset_mem(&w->ps, w->f_a), sb = pset_mem(&w->ps, w->f_b);
-    cl_mem sn = pset_mem(&w->ps, w->f_n), v1 = pset_mem(&w->ps, w->f_v1);
-    cl_mem v2 = pset_mem(&w->ps, w->f_v2);
-    struct karg a[] = {KARG(w->g.geom), KARG(w->g.d_start), KARG(sa), KARG(sb),
-                       KARG(sn),        KARG(v1),           KARG(v2), KARG(sim->d_inv)};
-    for (size_t i = 0; i < sizeof a / sizeof *a; ++i) CLSPH_TRY(kern_set_at(k, (*next)++, a[i]));
-  }
 done:
   return st;
 }
 
 #define ARG(k, i, x) CLSPH_TRY(kern_set_at((k), (i)++, KARG(x)))
+
+/* -D switches: the k-ε model's (solvers/usaw/turbulence.h). */
+static enum clsph_status wcsph_define(const struct sim *sim, struct prog_opts *o)
+{
+  return usaw_turb_define(sim, o);
+}
 
 static enum clsph_status wcsph_create(struct sim *sim, void **state)
 {
@@ -129,8 +133,9 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   /* the paper's δr (eq 17) by default: δr/2, which isph-usaw takes, lowers the 20² cavity's u
    * error at Re 100 from 0.131 U to 0.094 U, but the lid, pulling harder, drives more particles
    * into the side walls at its corners (741 steps of 5000 with a crossing, deepest 0.26 δr, to
-   * 2349 steps, deepest 0.45 δr: a run stops at 0.5 δr) */
-  CLSPH_TRY(usaw_wall_distance_floor(sc, 1.0, &ws->d_min));
+   * 2349 steps, deepest 0.45 δr: a run stops at 0.5 δr). Under the k-ε model δr/2: the wall law
+   * (eq 23) needs the first row's own distance from the wall. */
+  CLSPH_TRY(usaw_wall_distance_floor(sc, sc->turb.on ? 0.5 : 1.0, &ws->d_min));
   /* fields: density, pressure, and the USAW helpers */
   struct pset *ps = &sim->ps;
   const size_t rv = 2 * sizeof(real);
@@ -190,11 +195,13 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   CLSPH_TRY(prog_kernel(sim->prog, "wcsph_advance", &ws->k_advance));
   CLSPH_TRY(prog_kernel(sim->prog, "usaw_vertex_strain", &ws->k_strain));
   CLSPH_TRY(kern_buffer(sim->dev, 3 * ps->cap * sizeof(real), NULL, &ws->d_strain, "strain"));
+  CLSPH_TRY(usaw_turb_create(sim, &ws->turb));
   *state = ws;
   ws = NULL;
 done:
   free(buf);
   if (ws != NULL) {
+    usaw_turb_destroy(&ws->turb);
     usaw_walls_destroy(&ws->walls);
     free(ws);
   }
@@ -235,7 +242,10 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   ARG(ws->k_predict, i, accel);
   ARG(ws->k_predict, i, ustar);
   ARG(ws->k_predict, i, visc);
+  CLSPH_TRY(usaw_turb_predict_args(sim, &ws->turb, pset_mem(ps, ws->f_ggam), ws->k_predict, &i));
   CLSPH_TRY(kern_launch(sim->dev, ws->k_predict, ps->n, NULL));
+  /* k and ε (the k-ε model) */
+  CLSPH_TRY(usaw_turb_advance(sim, &ws->turb, &ws->walls, pset_mem(ps, ws->f_gam), dt, ws->d_min));
   CLSPH_TRY(prefix(sim, ws, ws->k_velocity, 1, &i));
   ARG(ws->k_velocity, i, ustar);
   ARG(ws->k_velocity, i, p);
@@ -292,9 +302,10 @@ static enum clsph_status wcsph_max_dt(struct sim *sim, void *state, double *dt)
   const struct scene *s = sim->scene;
   const double h = sim->sm.h;
   double a = hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]);
-  double d = 0.2 * h / ws->c0;                         /* CFL with u_ref = c0 (49) */
-  if (s->nu > 0.0) d = fmin(d, 0.125 * h * h / s->nu); /* viscous (49) */
-  if (a > 0.0) d = fmin(d, 0.25 * sqrt(h / a));        /* force (49) */
+  double d = 0.2 * h / ws->c0; /* CFL with u_ref = c0 (49) */
+  const double nu = s->nu + (ws->turb.on ? ws->turb.ke.nut_max : 0.0); /* ν + ν_t */
+  if (nu > 0.0) d = fmin(d, 0.125 * h * h / nu);                       /* viscous (49) */
+  if (a > 0.0) d = fmin(d, 0.25 * sqrt(h / a));                        /* force (49) */
   *dt = d;
   return CLSPH_OK;
 }
@@ -315,9 +326,12 @@ static enum clsph_status wcsph_wall_force(struct sim *sim, void *state, const ch
   ARG(ws->k_strain, i, vel);
   ARG(ws->k_strain, i, ws->d_strain);
   CLSPH_TRY(kern_launch(sim->dev, ws->k_strain, sim->ps.n, NULL));
+  const double mu = ws->turb.on ? 0.0 : sim->scene->rho0 * sim->scene->nu;
   CLSPH_TRY(usaw_wall_force(sim->dev, &sim->geom, sim->scene, sim->ps.n,
-                            pset_mem(&sim->ps, ws->f_p), ws->d_strain, sim->d_inv,
-                            sim->scene->rho0 * sim->scene->nu, group, f));
+                            pset_mem(&sim->ps, ws->f_p), ws->d_strain, sim->d_inv, mu, group, f));
+  if (ws->turb.on) /* the wall law's shear (eq 22) */
+    CLSPH_TRY(usaw_turb_wall_force(sim, &ws->turb, &ws->walls, pset_mem(&sim->ps, ws->f_gam),
+                                   ws->d_min, group, f->viscous));
 done:
   return st;
 }
@@ -331,6 +345,7 @@ static void wcsph_destroy(void *state)
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   kern_release(&ws->d_strain);
+  usaw_turb_destroy(&ws->turb);
   usaw_walls_destroy(&ws->walls);
   free(ws);
 }
@@ -344,7 +359,9 @@ const struct scheme_ops scheme_wcsph_usaw = {
     .smoothing = "wendland",
     .h_over_dr = 2.0,
     .fill_fields = SCHEME_FILL_PRESSURE | SCHEME_FILL_DENSITY,
+    .turbulence = usaw_turbulence_models,
     .options = options,
+    .define = wcsph_define,
     .create = wcsph_create,
     .step = wcsph_step,
     .max_dt = wcsph_max_dt,

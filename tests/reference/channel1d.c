@@ -57,8 +57,8 @@ static double u_plus_integral(const struct channel1d_model *m, double yp)
 double channel1d_wall_u(const struct channel1d_model *m, double nu, double u_tau, double k_p,
                         double y)
 {
-  double u_star = pow(m->c_mu, 0.25) * sqrt(k_p);
-  /* τ_w = ρ U C_μ^¼ k^½ / u+ (eq 12) with τ_w = ρ u_τ² */
+  double u_star = m->ustar_law ? u_tau : pow(m->c_mu, 0.25) * sqrt(k_p);
+  /* τ_w = ρ U C_μ^¼ k^½ / u+ (eq 12) with τ_w = ρ u_τ²; or U = u_τ u+ (Leroy et al. eq 23) */
   return u_tau * u_tau / u_star * u_plus(m, y * u_star / nu);
 }
 
@@ -171,7 +171,7 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
   for (it = 1; it <= 200000 && change > 1e-10; ++it) {
     for (int i = 0; i < n; ++i) s->nu_t[i] = cmu * s->k[i] * s->k[i] / s->eps[i]; /* eq 6 */
     /* u = u_τ² f: f from the wall function at y_p and (ν + ν_t) df/dy = 1 − y/δ */
-    double u_star = cmu14 * sqrt(s->k[0]);
+    double u_star = m->ustar_law ? u_tau : cmu14 * sqrt(s->k[0]);
     double yp_plus = p->y_p * u_star / p->nu;
     double f0 = u_plus(m, yp_plus) / u_star;
     for (int i = 0; i < n; ++i) g[i] = (1.0 - s->y[i] / p->delta) / (p->nu + s->nu_t[i]);

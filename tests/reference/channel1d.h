@@ -11,6 +11,10 @@ struct channel1d_model {
   double kappa, e_wall; /* the log law u+ = ln(E y+)/κ (eq 11) */
   double y_plus_lam;    /* below it u+ = y+ (eq 11: 11.225) */
   int paper_diffusion; /* 1: (ν + ν_t/σ) d²φ/dy², as eq 41 writes it; 0: d/dy((ν + ν_t/σ) dφ/dy) */
+  /* the wall function's velocity scale: 0 u_k = C_μ^¼ k_p^½ (Wang, Sun & Hu eq 12: τ_w =
+   * ρ U u_k / u+(y_p u_k/ν)); 1 the friction velocity itself (Leroy et al. 2014 eq 23: U/u_τ =
+   * u+(y_p u_τ/ν), the production at y_p τ_w u_τ/(κ y_p)); ε_p stays eq 14's in both */
+  int ustar_law;
 };
 
 /** The problem: the half channel [0, delta], the wall model at y_p, driven either to the bulk

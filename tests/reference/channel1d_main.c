@@ -1,7 +1,12 @@
 /* channel1d_main.c: the 1-D k-ε channel reference (channel1d.h) as a command that writes the
  * profile as CSV.
  *   channel1d [--delta 1] [--nu 1e-4] [--y-p 0.05] [--u-bulk 1 | --u-tau U]
- *             [--cells 3200 | --rows N_f [--bulk-over-rows]] [--paper-diffusion] [--out FILE]
+ *             [--cells 3200 | --rows N_f [--bulk-over-rows]] [--paper-diffusion] [--log-b B]
+ *             [--wall-law u_k|u_tau] [--out FILE]
+ * --log-b B takes the log law u+ = ln(y+)/κ + B (E = exp(κ B)) with the switch to u+ = y+ where
+ * the two meet: B = 5.2 is Leroy et al.'s wall law (eq 23), the default E = 9.793 (B = 5.56) Wang,
+ * Sun & Hu's (eq 11). --wall-law u_tau scales the law with the friction velocity itself, as
+ * Leroy et al.'s wall condition does (eq 23), instead of C_μ^¼ k_p^½ (u_k, the default).
  * --rows N_f puts the nodes on the particle rows of an SPH channel of N_f rows across with its
  * first row at y_p (channel1d.h); --bulk-over-rows then holds the mean of u over those rows at
  * --u-bulk, as the SPH run's flow-rate control holds its particles' mean.
@@ -52,6 +57,17 @@ int main(int argc, char **argv)
       out = val;
       continue;
     }
+    if (strcmp(o, "--wall-law") == 0) {
+      if (strcmp(val, "u_k") != 0 && strcmp(val, "u_tau") != 0) {
+        fprintf(stderr,
+                "channel1d: --wall-law must be u_k (Wang, Sun & Hu eq 12) or u_tau "
+                "(Leroy et al. eq 23), not %s\n",
+                val);
+        return 2;
+      }
+      m.ustar_law = strcmp(val, "u_tau") == 0;
+      continue;
+    }
     if (number(o, val, &v) != 0) return 2;
     if (strcmp(o, "--delta") == 0)
       p.delta = v;
@@ -63,7 +79,17 @@ int main(int argc, char **argv)
       p.u_bulk = v, p.u_tau = 0.0;
     else if (strcmp(o, "--u-tau") == 0)
       p.u_tau = v;
-    else if (strcmp(o, "--cells") == 0 || strcmp(o, "--rows") == 0) {
+    else if (strcmp(o, "--log-b") == 0) {
+      if (!(v > 0.0 && v < 20.0)) {
+        fprintf(stderr, "channel1d: --log-b must be an additive constant from 0 to 20, not %s\n",
+                val);
+        return 2;
+      }
+      m.e_wall = exp(m.kappa * v);
+      double y = 11.0; /* where y+ = ln(E y+)/κ: a fixed point, contracting there */
+      for (int it = 0; it < 200; ++it) y = log(m.e_wall * y) / m.kappa;
+      m.y_plus_lam = y;
+    } else if (strcmp(o, "--cells") == 0 || strcmp(o, "--rows") == 0) {
       if (!(v >= 1.0 && v <= 1e7) || v != floor(v)) {
         fprintf(stderr, "channel1d: %s must be a whole number from 1 to 1e7, not %s\n", o, val);
         return 2;
@@ -83,10 +109,13 @@ int main(int argc, char **argv)
     return 1;
   }
   double ut = s.u_tau;
-  fprintf(f,
-          "# channel1d (tests/reference): standard k-epsilon, wall function at y_p = %g "
-          "(Wang, Sun & Hu sec 5.1, eq 41)%s\n",
-          p.y_p, m.paper_diffusion ? ", diffusion as eq 41 writes it" : "");
+  fprintf(
+      f,
+      "# channel1d (tests/reference): standard k-epsilon, wall function at y_p = %g "
+      "(Wang, Sun & Hu sec 5.1, eq 41)%s%s; log law E = %.6g (B = %.4g), u+ = y+ below y+ = %.5g\n",
+      p.y_p, m.paper_diffusion ? ", diffusion as eq 41 writes it" : "",
+      m.ustar_law ? ", the law scaled by u_tau (Leroy et al. eq 23)" : "", m.e_wall,
+      log(m.e_wall) / m.kappa, m.y_plus_lam);
   char grid[96];
   if (p.rows > 0)
     snprintf(grid, sizeof grid, "rows = %d (spacing %.6g)%s", p.rows, s.y[1] - s.y[0],

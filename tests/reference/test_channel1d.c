@@ -209,6 +209,54 @@ int main(int argc, char **argv)
   if (argc > 1)
     for (int r = 20; r <= 80; r *= 2) check_rows_file(&m, argv[1], r);
 
+  /* Leroy et al.'s wall law (eq 23: U/u_τ = ln(y u_τ/ν)/κ + 5.2, scaled by u_τ, not by
+   * C_μ^¼ k_p^½): the first node sits on it exactly, the steady residual is the solver's, and
+   * the stored references of cases/channel_usaw_ke.lua (e+ = 640 and Re_τ = 543.5) are its
+   * solutions */
+  {
+    struct channel1d_model ml = m;
+    ml.ustar_law = 1;
+    ml.e_wall = exp(ml.kappa * 5.2);
+    double yl = 11.0;
+    for (int it = 0; it < 200; ++it) yl = log(ml.e_wall * yl) / ml.kappa;
+    ml.y_plus_lam = yl;
+    const double nus[2] = {1.5625e-3, 0.0018399264};
+    const char *names[2] = {"channel1d_leroy640.csv", "channel1d_leroy543.csv"};
+    for (int c = 0; c < 2; ++c) {
+      struct channel1d_problem q = {
+          .delta = 1.0, .nu = nus[c], .y_p = 0.025, .u_tau = 1.0, .cells = 3200};
+      struct channel1d_solution s = {0};
+      TC_CHECK(channel1d_solve(&ml, &q, &s) == 0, "solve with the u_tau law, nu %g", nus[c]);
+      double law = log(q.y_p * q.u_tau / q.nu) / ml.kappa + 5.2;
+      TC_NEAR(s.u[0] / q.u_tau, law, 1e-9, "first node on eq 23, nu %g", nus[c]);
+      double res = steady_residual(&ml, &q, &s);
+      TC_CHECK(res < 1e-6, "steady residual %.3g < 1e-6 (u_tau law)", res);
+      printf("u_tau law, e+ %.1f: u+ at y_p %.4f, centre %.4f, k+ at y_p %.4f\n", q.u_tau / q.nu,
+             law, s.u[s.nodes - 1], s.k[0]);
+      if (argc > 1) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s", argv[1], names[c]);
+        FILE *f = fopen(path, "r");
+        TC_CHECK(f != NULL, "open %s", path);
+        char line[1024];
+        int row = 0, bad = 0;
+        while (f != NULL && fgets(line, sizeof line, f)) {
+          double y, yd, yplus, u, uplus, k;
+          if (line[0] == '#' ||
+              sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf", &y, &yd, &yplus, &u, &uplus, &k) != 6)
+            continue;
+          if (row < s.nodes)
+            bad += fabs(u / s.u[row] - 1.0) > 1e-6 || fabs(k / s.k[row] - 1.0) > 1e-6;
+          ++row;
+        }
+        if (f != NULL) fclose(f);
+        TC_CHECK(row == s.nodes && bad == 0, "%s: %d of %d nodes differ from a solve now", path,
+                 bad, row);
+      }
+      channel1d_free(&s);
+    }
+  }
+
   /* a bad problem is refused */
   {
     struct channel1d_problem q = p;
