@@ -33,6 +33,9 @@ param { n = 20, t_end = 100, weak = 0, re_tau = 640, init = 1, every = 5, cfl = 
 if turb ~= 0 and turb ~= 1 then
   error(("channel_usaw_ke: turb must be 1 (the k-ε model) or 0 (none: the same particles laminar, for the cost of a step only), not %g"):format(turb))
 end
+if not (n >= 4 and n <= 400 and n == math.floor(n)) then
+  error(("channel_usaw_ke: n must be a whole number of particle rows per half height from 4 to 400, not %g"):format(n))
+end
 if control ~= 0 and control ~= 1 then
   error(("channel_usaw_ke: control must be 0 (the body force f = u*²/e) or 1 (flow-rate control, eqs 67-68, at the reference's mean over the rows), not %g"):format(control))
 end

@@ -954,6 +954,9 @@ clsph_cli_test(channel_usaw_ke_sublayer_warned ARGS run ${CMAKE_SOURCE_DIR}/case
                --quiet --overwrite --set n=40 --set t_end=0.02 --set every=0.01
                --out ${CMAKE_CURRENT_BINARY_DIR}/runs/usaw_ke_sublayer RC 0
                REGEX "the particles within dr of the walls stand at y\\+ = 9\\.5[0-9]* on average .* in the viscous sublayer")
+clsph_cli_test(channel_usaw_ke_rows_fraction ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_usaw_ke.lua
+               --set n=2.5 RC 2
+               REGEX "channel_usaw_ke: n must be a whole number of particle rows per half height from 4 to 400, not 2.5")
 clsph_cli_test(channel_usaw_ke_control_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_usaw_ke.lua
                --set control=2 RC 2
                REGEX "channel_usaw_ke: control must be 0 \\(the body force")

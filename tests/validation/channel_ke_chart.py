@@ -32,6 +32,9 @@ import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from snapshot_fields import last_snapshot_fields  # noqa: E402
+
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 NU, DELTA, U_TAU_REF = 1e-4, 1.0, 0.0543496
 
@@ -43,17 +46,7 @@ def table(path):
 
 def snapshot_rows(run_dir, nf, y_p):
     """(y, mean u) per particle row of the last snapshot, folded at the centreline (h5dump)."""
-    snaps = sorted(p for p in os.listdir(run_dir) if p.startswith("snap_") and p.endswith(".h5"))
-    path = os.path.join(run_dir, snaps[-1])
-
-    def get(name):
-        out = subprocess.run(["h5dump", "-d", f"/particles/{name}", "-y", "-w", "0", path],
-                             capture_output=True, text=True, check=True).stdout
-        start = out.index("DATA {") + 6
-        body = out[start:out.index("}", start)]
-        return [float(v) for v in body.replace("\n", " ").replace(",", " ").split() if v]
-
-    kind, pos, vel = get("kind"), get("pos"), get("vel")
+    kind, pos, vel = last_snapshot_fields(run_dir, "kind", "pos", "vel")
     dr = (2 * DELTA - 2 * y_p) / (nf - 1)
     off = y_p - dr / 2
     acc = {}

@@ -16,6 +16,9 @@ import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from snapshot_fields import last_snapshot_fields  # noqa: E402
+
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 
 
@@ -26,17 +29,7 @@ def table(path):
 
 def snapshot_rows(run_dir, n):
     """(y, u, k, ε) per particle row of the last snapshot, folded at the centreline."""
-    snaps = sorted(p for p in os.listdir(run_dir) if p.startswith("snap_") and p.endswith(".h5"))
-    path = os.path.join(run_dir, snaps[-1])
-
-    def get(name):
-        out = subprocess.run(["h5dump", "-d", f"/particles/{name}", "-y", "-w", "0", path],
-                             capture_output=True, text=True, check=True).stdout
-        start = out.index("DATA {") + 6
-        body = out[start:out.index("}", start)]
-        return [float(v) for v in body.replace("\n", " ").replace(",", " ").split() if v]
-
-    kind, pos, vel, k, eps = get("kind"), get("pos"), get("vel"), get("k"), get("epsilon")
+    kind, pos, vel, k, eps = last_snapshot_fields(run_dir, "kind", "pos", "vel", "k", "epsilon")
     dr = 1.0 / n
     acc = {}
     for i, kd in enumerate(kind):
