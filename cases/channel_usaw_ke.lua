@@ -8,6 +8,8 @@
 -- (below, tests/data/channel1d_leroy*.csv); init = 0: at rest with k = u*²/√C_μ, ε = u*³/(κ e/10).
 -- weak = 0: isph-usaw, 1: wcsph-usaw (sound speed 10 times the reference's centreline speed, a
 -- background pressure of 5% of ρ c0²).
+-- scalable = 1 takes the scalable wall law (y+ held at 11.06: the wall layer in the viscous
+-- sublayer, n > 28 at e+ = 640, then stands for one on the log law).
 -- turb = 0 leaves the model out (the same particles, laminar): for the cost of a step only.
 -- control = 1 drives the channel by flow-rate control (eqs 67-68) instead, holding the particles'
 -- mean velocity at the reference's mean over the same rows: the walls' friction velocity is then
@@ -29,7 +31,11 @@
 -- With re_tau = 543.5 also the DNS (Lee & Moser 2015, tests/data/channel_dns_LM550.csv):
 --   u_plus_dns_dev_max above y+ = 30 (the model's error and the particles' together), and
 --   k_plus_dns_rms (the k-ε model is not made to reproduce k near the wall: from y+ = 30 on).
-param { n = 20, t_end = 100, weak = 0, re_tau = 640, init = 1, every = 5, cfl = 2, control = 0, turb = 1 }
+param { n = 20, t_end = 100, weak = 0, re_tau = 640, init = 1, every = 5, cfl = 2, control = 0, turb = 1,
+        scalable = 0 }
+if scalable ~= 0 and scalable ~= 1 then
+  error(("channel_usaw_ke: scalable must be 0 (the two-layer wall law of eq 23) or 1 (the scalable one), not %g"):format(scalable))
+end
 if turb ~= 0 and turb ~= 1 then
   error(("channel_usaw_ke: turb must be 1 (the k-ε model) or 0 (none: the same particles laminar, for the cost of a step only), not %g"):format(turb))
 end
@@ -79,7 +85,8 @@ else
   fluid { density = 1, viscosity = nu, body_force = {ustar * ustar / e, 0} }
 end
 if turb == 1 then
-  turbulence { model = "k-epsilon", k = ustar * ustar / math.sqrt(cmu), epsilon = ustar ^ 3 / (kappa * 0.1 * e) }
+  turbulence { model = "k-epsilon", k = ustar * ustar / math.sqrt(cmu), epsilon = ustar ^ 3 / (kappa * 0.1 * e),
+               wall_law = scalable == 1 and "scalable" or nil }
 end
 wall { {L, 0}, {0, 0}, fluid = "right", group = "floor" }
 wall { {0, 2 * e}, {L, 2 * e}, fluid = "right", group = "ceiling" }

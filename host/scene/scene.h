@@ -144,7 +144,9 @@ struct scene_turbulence {
   double delay;           /* s: until then k and ε stay and ν_t = nu_t_delay (sec 5.2) */
   double nu_t_delay;      /* m²/s, the eddy viscosity of the delay */
   double wall_weight;     /* w_s of eq 40 (NaN: the scheme's, 0.1 without ARD, 0.5 with) */
-  int line;               /* line of the case script */
+  int wall_law; /* the USAW schemes' wall law: −1 not given (0), 0 "two-layer" (Leroy et al. eq 23:
+                 * linear below y+ = 11.06), 1 "scalable" (y+ held at 11.06 and above) */
+  int line;     /* line of the case script */
 };
 
 /** How frames show this case (`render { field = "p", range = {0, 1e4}, colormap = "viridis" }`):

@@ -16,6 +16,7 @@ enum clsph_status usaw_turb_define(const struct sim *sim, struct prog_opts *o)
   enum clsph_status st = CLSPH_OK;
   CLSPH_TRY(prog_opts_define_int(o, "USAW_TURB", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "KE_ON", sim->scene->turb.on));
+  CLSPH_TRY(prog_opts_define_int(o, "USAW_SCALABLE", sim->scene->turb.wall_law == 1));
 done:
   return st;
 }

@@ -328,6 +328,10 @@ static enum clsph_status turb_create(struct sim *sim, struct wcr *w)
   const struct scene_turbulence *t = &sim->scene->turb;
   const size_t cap = sim->ps.cap;
   real *zeros = NULL;
+  CLSPH_CHECK(t->wall_law < 0, CLSPH_E_INPUT,
+              "%s:%d: turbulence: wall_law belongs to the USAW schemes' wall law (Leroy et al. eq "
+              "23); wcsph-riemann's wall model (Wang, Sun & Hu eqs 10-11) sits at y_p: drop it",
+              sim->scene->case_path, t->line);
   w->turb = 1;
   w->y_p = t->y_p > 0.0 ? t->y_p : 0.5 * sim->scene->dr;
   w->w_s = isnan(t->wall_weight) ? (w->ard ? 0.5 : 0.1) : t->wall_weight; /* sec 4.3 */

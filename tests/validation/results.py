@@ -431,14 +431,15 @@ def usaw_ke_section(runs, runs_dir):
            "(the issue's goal: u+ within 2% at the paper's resolution); the first row apart; "
            "u* from the walls' wall-law shear weighted as the wall term weighs it (second half "
            "of the run). Chart: [channel_usaw_ke.png](channel_usaw_ke.png).", "",
-           "| scheme | e+ | drive | n | t_end | u+ max dev | u+ RMS | row 1 u+ dev | k+ RMS "
+           "| scheme | e+ | drive | wall law | n | t_end | u+ max dev | u+ RMS | row 1 u+ dev | k+ RMS "
            "| ε+ RMS | mean u dev | u* walls | u* control | u+ vs DNS (max) | wall layer y+ "
            "| particle-steps/s | wall s |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for s in chan:
         p, m = s["parameters"], s.get("metrics", {})
         out.append(f"| {s['scheme']} ({s['precision']}) | {p.get('re_tau', 640):g} "
                    f"| {'flow-rate control' if p.get('control', 0) else 'body force'} "
+                   f"| {'scalable' if p.get('scalable', 0) else 'two-layer (eq 23)'} "
                    f"| {p.get('n', 0):g} | {p.get('t_end', 0):g} | {pct(m, 'u_plus_dev_max')} "
                    f"| {pct(m, 'u_plus_rms')} | {pct(m, 'u_plus_dev_row1', True)} "
                    f"| {pct(m, 'k_plus_rms')} | {pct(m, 'eps_plus_rms')} | {pct(m, 'bulk_dev', True)} "
@@ -632,7 +633,7 @@ def square_cylinder_section(runs):
             "stands out (f D/U0, C_L amplitude).", "",
             "| scheme | exit | L0 | Re | cfl | XSPH | reached t | status | C_D | Breuer | deviation "
             "| St | C_L amplitude / noise | ringing | steps | wall s | particle-steps/s |",
-            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     sweep = sorted((s for s in rows if s["parameters"].get("length") == 32),
                    key=lambda s: (proj(s), exit_(s["parameters"]),
                                   s["parameters"]["n"], s["parameters"]["re"]))

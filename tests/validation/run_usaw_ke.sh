@@ -17,12 +17,14 @@ run() { # name sets...
 # e+ = 640 (the paper's), started from the 1-D reference: isph-usaw at 10, 14 and 20 (the paper's
 # spacing) rows per half height to t = 40 s (settled by t = 20-30 s: the observed orders; the wall
 # layer at y+ = 32, 23 and 16), at 40 rows (y+ = 8: the wall layer in the viscous sublayer, where
-# the model fails) and at 20 rows to the paper's 100 s; wcsph-usaw at 10 and 20 rows; isph-usaw at Lee & Moser's
+# the model fails with the paper's two-layer wall law; also with the scalable one) and at 20 rows
+# to the paper's 100 s; wcsph-usaw at 10 and 20 rows; isph-usaw at Lee & Moser's
 # Re_tau = 543.5 (against the DNS) and under flow-rate control (eqs 67-68)
 (
   run isph_n40 n=40 t_end=40 every=10
   run isph_n10 n=10 t_end=40 every=10
   run isph_n14 n=14 t_end=40 every=10
+  run isph_n40_scalable n=40 t_end=40 every=10 scalable=1
   run isph_n20_retau543 n=20 t_end=40 every=10 re_tau=543.5
 ) &
 (
@@ -36,5 +38,5 @@ wait
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_usaw_ke.md
 python3 tests/validation/channel_usaw_ke_chart.py tests/validation \
   "isph-usaw n = 10=$out/isph_n10" "isph-usaw n = 20=$out/isph_n20_t100" \
-  "isph-usaw n = 14=$out/isph_n14" "isph-usaw n = 40=$out/isph_n40" "wcsph-usaw n = 20=$out/wcsph_n20" \
+  "isph-usaw n = 14=$out/isph_n14" "isph-usaw n = 40=$out/isph_n40" "isph-usaw n = 40 scalable=$out/isph_n40_scalable" "wcsph-usaw n = 20=$out/wcsph_n20" \
   "isph-usaw n = 20 Re_tau 543.5=$out/isph_n20_retau543"
