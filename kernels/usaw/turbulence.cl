@@ -52,7 +52,8 @@
  * With wall_law = "scalable" (as Code_Saturne's scalable wall function) y+ is held at 11.063
  * instead, u* = u_t/11.063, and the wall layer below takes its production and ε at the distance
  * 11.063 ν/u*: the model has no buffer layer, and the channel at e+ = 640 and 40 rows (the wall
- * layer at y+ = 8) ran u+ 10-14% low with the two-layer law, within 1.7% with the scalable one. */
+ * layer at y+ = 8) ran u+ 10-14% low with the two-layer law, within 1.9% with the scalable one
+ * (t = 40 s). */
 #ifndef USAW_SCALABLE /* turbulence { wall_law = "scalable" } (solvers/usaw/turbulence.c) */
 #define USAW_SCALABLE 0
 #endif
