@@ -13,6 +13,8 @@ struct sim;
 struct wall_force {
   double pressure[2];
   double viscous[2];
+  double torque; /* moment of the whole force about the group's centre (scene_group_centre),
+                  * N m per m of span, counter-clockwise positive */
 };
 
 /** Initial fields besides the velocity that a case's fill { } may set (scheme_ops.fill_fields). */

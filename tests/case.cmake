@@ -1080,6 +1080,63 @@ clsph_run_test(run_inflow_profile ${CASE_DIR}/inflow_profile.lua
 # (the walls cut the lattice at every angle). Bounds at about 1.4 times the fitted run's.
 clsph_run_test(run_couette_annulus ${CASE_DIR}/couette_annulus.lua
                BOUNDS "u_err_rms<0.04" "u_err_max<0.085" "u_r_rms<0.003")
+# Walls that turn (wall { omega, centre }) under the USAW schemes: the vertex particles and
+# segments stand rotated by ω t about the centre (kernels/usaw/motion.cl). A square box turning
+# with the fluid inside it (tests/case/turning_box.lua: solid-body rotation, no gravity, 1 rad):
+# isph-usaw keeps u within 0.62% of ω × r RMS (1.1% at most), the pressure within 1.3% RMS of
+# ρ ω² r²/2, the fluid inside the box, the torque on it 0.2% of ρ ω² a³ × its perimeter (double
+# and float alike); with the geometry standing still (the velocity only) the corners plough
+# through the fluid and the run stops at 0.3 s (a particle 0.52 dr behind a wall).
+clsph_run_test(run_turning_box ${CASE_DIR}/turning_box.lua
+               BOUNDS "u_err_rms<0.012" "u_err_max<0.02" "p_err_rms<0.025" "outside<0.5"
+               "crossed<0.5" "torque>-0.005" "torque<0.005")
+# wcsph-usaw from rest density (c0 = 10 ω a √2), to 3 rad: its acoustic start leaves u within
+# 5.2% and p within 7.3% RMS (the wall guard on: without it the corner particles, where the
+# centripetal pressure peaks, crept out through the turning walls and the run stopped at 0.97 s).
+clsph_run_test(run_turning_box_weak ${CASE_DIR}/turning_box.lua SETS weak=1 t_end=3
+               BOUNDS "u_err_rms<0.08" "p_err_rms<0.12" "outside<0.5" "crossed<0.5")
+# Three particles ahead of a turning paddle's face above the water (tests/case/turning_splash.lua):
+# given p̃ = 0 (free_surface.cl, ISPH_SPLASH) they meet the paddle through the wall guard, in 8
+# solver iterations at most; as a pressure block of their own the solve ran to its limit at the
+# first step (residual 1e42) and they went 0.7 dr through the paddle.
+clsph_run_test(run_turning_splash ${CASE_DIR}/turning_splash.lua
+               BOUNDS "crossed<0.5" "escaped<0.5" "solver.iterations_max<50")
+# The water wheel (cases/water_wheel.lua, Leroy et al. sec 4.4) at dr = 0.05 m (2106 particles, its
+# arms 1.6 dr thick) to t = 2 s (t+ = 6.6), both schemes. Measured (double / float; the flow is
+# chaotic and the two part within the first second): isph-usaw (density_relaxation 0.01) no
+# crossing, the water's area within 0.52% / 0.53% of its start, the deep water's number density
+# 0.990 / 0.987, the torque over t = 1-2 s −1405 / −1590 N m/m, the wheel's work 1.53 / 1.51 times
+# the fluid's energy gain (the rest dissipated); wcsph-usaw (c0 = 29.7 m/s) area within 0.64% /
+# 0.20%, density 1.003, torque −1301 / −937 N m/m, work 1.27 / 1.39 times the gain. With the
+# paper's projection (relax = 0) the deep water spread to 0.957 and the area grew 2.1% by t = 2 s;
+# before wcsph-usaw's wall vertices took their pressure from their own fluid sector (density.cl)
+# its torque was −219 N m/m and the fluid gained twice the wheel's work.
+clsph_run_test(run_water_wheel ${CMAKE_SOURCE_DIR}/cases/water_wheel.lua
+               SETS dr=0.05 t_end=2 every=0.5
+               BOUNDS "crossed_wall<0.5" "fluid_particles>2105.5" "fluid_particles<2106.5"
+               "water_area_worst<0.015" "deep_density>0.97" "deep_density<1.02"
+               "torque_mean<-600" "torque_mean>-2500" "work_over_gain>1" "work_over_gain<2"
+               "max_speed_over_tip<3")
+clsph_run_test(run_water_wheel_weak ${CMAKE_SOURCE_DIR}/cases/water_wheel.lua
+               SETS dr=0.05 t_end=2 every=0.5 wcsph=1
+               BOUNDS "crossed_wall<0.5" "fluid_particles>2105.5" "fluid_particles<2106.5"
+               "water_area_worst<0.015" "deep_density>0.98" "deep_density<1.02"
+               "torque_mean<-600" "torque_mean>-2500" "work_over_gain>1" "work_over_gain<2"
+               "max_speed_over_tip<3")
+# Turning walls that cannot turn (tests/case/bad_turning.lua)
+set(bad_turning ${CASE_DIR}/bad_turning.lua)
+clsph_cli_test(turning_valid ARGS info ${bad_turning} --set what=0 RC 0
+               REGEX "particles: 480 \\(fluid 320, wall vertices 160")
+clsph_cli_test(turning_hits_wall ARGS info ${bad_turning} --set what=1 RC 2
+               REGEX "bad_turning.lua:15: the wall turns about \\(0, 0.75\\) through a disc of radius 0.707107 m that comes within 0.0428932 m of the wall of line 12")
+clsph_cli_test(turning_leaves_domain ARGS info ${bad_turning} --set what=2 RC 2
+               REGEX "bad_turning.lua:15: the wall turns about \\(0, 1.5\\) through a disc of radius 0.707107 m that leaves the domain \\[0, 2\\] along y")
+clsph_cli_test(turning_wider_than_period ARGS info ${bad_turning} --set what=3 RC 2
+               REGEX "bad_turning.lua:15: the wall turns .* wider than the period 4 m of axis x less dr: it would meet its own periodic image")
+clsph_cli_test(period_cuts_wall ARGS info ${bad_turning} --set what=4 RC 2
+               REGEX "bad_turning.lua:12: the wall spans 5 m along the periodic axis x, more than the period 4 m: the period cuts it")
+clsph_cli_test(turning_dummy_not_circle ARGS info ${bad_turning} --set what=5 RC 2
+               REGEX "bad_turning.lua:15: the wall turns \\(omega = 1\\) but is not a circle about its centre .* a turning geometry needs a USAW scheme")
 set(bad_fitted ${CASE_DIR}/bad_fitted.lua)
 clsph_cli_test(fitted_valid ARGS info ${bad_fitted} --set what=0 RC 0
                REGEX "particles: 416 \\(fluid 200, wall vertices 0, dummy 216")

@@ -216,7 +216,7 @@ static int force_group(const struct scene *s, const char *group)
   return -1;
 }
 
-/* The recorded total force of a group at each row with t >= since: rows of (t, x, y). */
+/* The recorded total force of a group at each row with t >= since: rows of (t, x, y, torque). */
 static enum clsph_status metric_force_history(void *ctx, const char *group, double since, size_t *n,
                                               double **rows)
 {
@@ -226,15 +226,16 @@ static enum clsph_status metric_force_history(void *ctx, const char *group, doub
   *rows = NULL;
   *n = 0;
   METRIC_REFUSE(g >= 0, "the case records no force of '%s' (force { \"%s\" })", group, group);
-  const size_t cols = 1 + 4 * (size_t)sim->scene->nforces;
-  double *out = malloc(3 * (sim->nforce_rows + 1) * sizeof *out);
+  const size_t cols = 1 + SIM_FORCE_COLS * (size_t)sim->scene->nforces, gc = SIM_FORCE_COLS * g;
+  double *out = malloc(4 * (sim->nforce_rows + 1) * sizeof *out);
   CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
   for (size_t r = 0; r < sim->nforce_rows; ++r) {
     const double *row = sim->force_rows + r * cols;
     if (row[0] < since * (1.0 - 1e-12)) continue;
-    out[3 * *n] = row[0];
-    out[3 * *n + 1] = row[1 + 4 * g] + row[3 + 4 * g]; /* pressure + viscous */
-    out[3 * *n + 2] = row[2 + 4 * g] + row[4 + 4 * g];
+    out[4 * *n] = row[0];
+    out[4 * *n + 1] = row[1 + gc] + row[3 + gc]; /* pressure + viscous */
+    out[4 * *n + 2] = row[2 + gc] + row[4 + gc];
+    out[4 * *n + 3] = row[5 + gc]; /* torque */
     ++*n;
   }
   *rows = out;
@@ -243,7 +244,7 @@ done:
 }
 
 /* Mean of the recorded forces of a group over the outputs at t >= since (since < 0: the last). */
-static enum clsph_status metric_force(void *ctx, const char *group, double since, double out[6],
+static enum clsph_status metric_force(void *ctx, const char *group, double since, double out[7],
                                       int *samples)
 {
   enum clsph_status st = CLSPH_OK;
@@ -255,20 +256,20 @@ static enum clsph_status metric_force(void *ctx, const char *group, double since
                 "(force { \"%s\" })",
                 group, group);
   METRIC_REFUSE(sim->nforce_rows > 0, "no force recorded yet");
-  const size_t cols = 1 + 4 * (size_t)s->nforces;
-  double sum[4] = {0.0, 0.0, 0.0, 0.0};
+  const size_t cols = 1 + SIM_FORCE_COLS * (size_t)s->nforces;
+  double sum[SIM_FORCE_COLS] = {0.0, 0.0, 0.0, 0.0, 0.0};
   int c = 0;
   for (size_t r = 0; r < sim->nforce_rows; ++r) {
     const double *row = sim->force_rows + r * cols;
     if (since < 0.0 ? r + 1 < sim->nforce_rows : row[0] < since * (1.0 - 1e-12)) continue;
-    for (int k = 0; k < 4; ++k) sum[k] += row[1 + 4 * g + k];
+    for (int k = 0; k < SIM_FORCE_COLS; ++k) sum[k] += row[1 + SIM_FORCE_COLS * g + k];
     ++c;
   }
   METRIC_REFUSE(c > 0, "no force recorded at t >= %g s", since);
-  for (int k = 0; k < 4; ++k) sum[k] /= c;
+  for (int k = 0; k < SIM_FORCE_COLS; ++k) sum[k] /= c;
   out[0] = sum[0] + sum[2];
   out[1] = sum[1] + sum[3];
-  for (int k = 0; k < 4; ++k) out[2 + k] = sum[k];
+  for (int k = 0; k < SIM_FORCE_COLS; ++k) out[2 + k] = sum[k];
   *samples = c;
 done:
   return st;

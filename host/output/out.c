@@ -216,6 +216,8 @@ void out_close(const struct scene *s, struct run_out *o)
   io_series_free(&o->series);
   frames_close(o->frames);
   free(o->walls);
+  free(o->turned);
+  free(o->turned_pts);
   for (int a = 0; a < o->nframe_arrays; ++a) free(o->frame_arrays[a]);
   free(o->dir);
   o->dir = NULL;

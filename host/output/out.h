@@ -29,6 +29,10 @@ struct run_out {
    * copy of the arrays a frame reads (pos, vol, kind and the field's) */
   struct frames *frames;
   struct render_wall *walls;
+  /* the walls where they stand at the snapshot's time when some turn (scene_wall_turns): a copy
+   * of the scene's with the points turned (NULL when none turns) */
+  struct scene_wall *turned;
+  double *turned_pts;
   double view[4];
   double *frame_arrays[4];
   struct render_array frame_in[4];

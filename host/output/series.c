@@ -133,16 +133,17 @@ static enum clsph_status forces_reload(struct sim *sim, struct run_out *o,
 {
   enum clsph_status st = CLSPH_OK;
   const int ng = sim->scene->nforces;
-  const size_t cols = 1 + 4 * (size_t)ng;
+  const size_t cols = 1 + SIM_FORCE_COLS * (size_t)ng;
   double *row = malloc(cols * sizeof *row);
   CLSPH_CHECK(row != NULL, CLSPH_E_NOMEM, "out of memory");
   for (const char *c = k->rows; c != NULL && c < k->rows + k->bytes;) {
     char *end = NULL;
     row[0] = strtod(c, &end);
     for (int g = 0; g < ng; ++g) {
-      double v[6];
-      for (int j = 0; j < 6; ++j) v[j] = strtod(end + 1, &end);
-      memcpy(row + 1 + 4 * g, v + 2, 4 * sizeof *v); /* pressure x, y, viscous x, y */
+      double v[7];
+      for (int j = 0; j < 7; ++j) v[j] = strtod(end + 1, &end);
+      /* pressure x, y, viscous x, y, torque */
+      memcpy(row + 1 + SIM_FORCE_COLS * g, v + 2, SIM_FORCE_COLS * sizeof *v);
     }
     CLSPH_TRY(force_row(sim, o, row));
     c = strchr(end, '\n');
@@ -279,14 +280,15 @@ enum clsph_status series_open(struct sim *sim, struct run_out *o, const char *re
     free(path);
     CLSPH_TRY(out_path(o, "forces.csv", &path));
     o->force_stats = calloc((size_t)s->nforces, sizeof *o->force_stats);
-    o->force_scratch = malloc((1 + 4 * (size_t)s->nforces) * sizeof *o->force_scratch);
+    o->force_scratch = malloc((1 + SIM_FORCE_COLS * (size_t)s->nforces) * sizeof *o->force_scratch);
     CLSPH_CHECK(o->force_stats != NULL && o->force_scratch != NULL, CLSPH_E_NOMEM, "out of memory");
     o->forces = fopen(path, "w");
     CLSPH_CHECK(o->forces != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
     fprintf(o->forces, "time");
     for (int g = 0; g < s->nforces; ++g) {
       const char *n = s->forces[g];
-      fprintf(o->forces, ",%s:fx,%s:fy,%s:fx_pressure,%s:fy_pressure,%s:fx_viscous,%s:fy_viscous",
+      fprintf(o->forces,
+              ",%s:fx,%s:fy,%s:fx_pressure,%s:fy_pressure,%s:fx_viscous,%s:fy_viscous,%s:torque", n,
               n, n, n, n, n, n);
     }
     fprintf(o->forces, "\n");
@@ -322,7 +324,7 @@ static enum clsph_status force_row(struct sim *sim, struct run_out *o, const dou
 {
   enum clsph_status st = CLSPH_OK;
   const int ng = sim->scene->nforces;
-  const size_t cols = 1 + 4 * (size_t)ng;
+  const size_t cols = 1 + SIM_FORCE_COLS * (size_t)ng;
   if (sim->nforce_rows == sim->force_rows_cap) {
     size_t cap = sim->force_rows_cap ? 2 * sim->force_rows_cap : 64;
     double *r = realloc(sim->force_rows, cap * cols * sizeof *r);
@@ -333,7 +335,7 @@ static enum clsph_status force_row(struct sim *sim, struct run_out *o, const dou
   memcpy(sim->force_rows + sim->nforce_rows * cols, row, cols * sizeof *row);
   ++sim->nforce_rows;
   for (int g = 0; g < ng; ++g) {
-    const double *q = row + 1 + 4 * g, ft[2] = {q[0] + q[2], q[1] + q[3]};
+    const double *q = row + 1 + SIM_FORCE_COLS * g, ft[2] = {q[0] + q[2], q[1] + q[3]};
     struct force_stat *fs = &o->force_stats[g];
     if (hypot(ft[0], ft[1]) > fs->peak) {
       fs->peak = hypot(ft[0], ft[1]);
@@ -432,13 +434,14 @@ enum clsph_status series_write(struct sim *sim, struct run_out *o, int what)
     for (int g = 0; g < s->nforces; ++g) {
       struct wall_force f;
       CLSPH_TRY(sim->scheme->wall_force(sim, sim->state, s->forces[g], &f));
-      double *q = row + 1 + 4 * g;
+      double *q = row + 1 + SIM_FORCE_COLS * g;
       q[0] = recorded(f.pressure[0]);
       q[1] = recorded(f.pressure[1]);
       q[2] = recorded(f.viscous[0]);
       q[3] = recorded(f.viscous[1]);
-      fprintf(o->forces, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", q[0] + q[2], q[1] + q[3], q[0], q[1],
-              q[2], q[3]);
+      q[4] = recorded(f.torque);
+      fprintf(o->forces, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", q[0] + q[2], q[1] + q[3], q[0],
+              q[1], q[2], q[3], q[4]);
     }
     fprintf(o->forces, "\n");
     fflush(o->forces);

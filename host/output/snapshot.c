@@ -128,12 +128,45 @@ void snapshot_meta(const struct sim *sim, struct io_meta *m)
   m->render = &sim->scene->render;
 }
 
+/* The walls where they stand now, when some turn (into o->turned; the frames' walls follow). */
+static enum clsph_status turn_walls(const struct sim *sim, struct run_out *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *s = sim->scene;
+  size_t npts = 0;
+  int any = 0;
+  for (int w = 0; w < s->nwalls; ++w) {
+    any |= scene_wall_turns(&s->walls[w]);
+    npts += (size_t)s->walls[w].npts;
+  }
+  if (!any) return CLSPH_OK;
+  if (o->turned == NULL) {
+    o->turned = calloc((size_t)s->nwalls, sizeof *o->turned);
+    o->turned_pts = calloc(2 * npts, sizeof *o->turned_pts);
+    CLSPH_CHECK(o->turned != NULL && o->turned_pts != NULL, CLSPH_E_NOMEM, "out of memory");
+  }
+  double *q = o->turned_pts;
+  for (int w = 0; w < s->nwalls; ++w) {
+    const struct scene_wall *wl = &s->walls[w];
+    o->turned[w] = *wl;
+    o->turned[w].pts = q;
+    for (int k = 0; k < wl->npts; ++k)
+      scene_wall_turn(wl, sim->time, wl->pts + 2 * k, 0, q + 2 * k);
+    if (o->walls != NULL) o->walls[w].pts = q;
+    q += 2 * wl->npts;
+  }
+done:
+  return st;
+}
+
 enum clsph_status snapshot_write(struct sim *sim, struct run_out *o)
 {
   enum clsph_status st = CLSPH_OK;
   char name[64], *path = NULL;
   struct io_meta m;
   snapshot_meta(sim, &m);
+  CLSPH_TRY(turn_walls(sim, o));
+  if (o->turned != NULL) m.walls = o->turned;
   snprintf(name, sizeof name, "snap_%06d.h5", o->nsnap);
   CLSPH_TRY(out_path(o, name, &path));
   CLSPH_TRY(io_snapshot_write(path, sim->dev, &sim->ps, &m));

@@ -1844,16 +1844,16 @@ static int l_field_values(lua_State *L)
  * f.viscous_x, f.viscous_y, f.samples. */
 static int l_force_metric(lua_State *L)
 {
-  static const char *const names[] = {"x",          "y",         "pressure_x",
-                                      "pressure_y", "viscous_x", "viscous_y"};
+  static const char *const names[] = {"x",         "y",         "pressure_x", "pressure_y",
+                                      "viscous_x", "viscous_y", "torque"};
   const struct case_sim_api *api = api_of(L);
   const char *group = luaL_checkstring(L, 1);
-  double since = lua_isnoneornil(L, 2) ? -1.0 : luaL_checknumber(L, 2), v[6];
+  double since = lua_isnoneornil(L, 2) ? -1.0 : luaL_checknumber(L, 2), v[7];
   int samples = 0;
   if (api->force == NULL || api->force(api->ctx, group, since, v, &samples) != CLSPH_OK)
     return luaL_error(L, "sim.force: %s", why_of(api));
-  lua_createtable(L, 0, 7);
-  for (int k = 0; k < 6; ++k) {
+  lua_createtable(L, 0, 8);
+  for (int k = 0; k < 7; ++k) {
     lua_pushnumber(L, v[k]);
     lua_setfield(L, -2, names[k]);
   }
@@ -1863,7 +1863,7 @@ static int l_force_metric(lua_State *L)
 }
 
 /* t = sim.force_history(group [, since]): the recorded total force of a wall group at each row
- * with t >= since (all rows without it): arrays t.time, t.x, t.y indexed from 1. */
+ * with t >= since (all rows without it): arrays t.time, t.x, t.y, t.torque indexed from 1. */
 static int l_force_history(lua_State *L)
 {
   const struct case_sim_api *api = api_of(L);
@@ -1873,12 +1873,12 @@ static int l_force_history(lua_State *L)
   if (api->force_history == NULL ||
       api->force_history(api->ctx, group, since, &n, &rows) != CLSPH_OK)
     return luaL_error(L, "sim.force_history: %s", why_of(api));
-  static const char *const names[] = {"time", "x", "y"};
-  lua_createtable(L, 0, 3);
-  for (int c = 0; c < 3; ++c) {
+  static const char *const names[] = {"time", "x", "y", "torque"};
+  lua_createtable(L, 0, 4);
+  for (int c = 0; c < 4; ++c) {
     lua_createtable(L, (int)n, 0);
     for (size_t r = 0; r < n; ++r) {
-      lua_pushnumber(L, rows[3 * r + (size_t)c]);
+      lua_pushnumber(L, rows[4 * r + (size_t)c]);
       lua_rawseti(L, -2, (lua_Integer)r + 1);
     }
     lua_setfield(L, -2, names[c]);

@@ -34,11 +34,12 @@ struct case_sim_api {
   enum clsph_status (*sample)(void *ctx, const char *field, int comp, double x, double y,
                               double *value);
   /** Mean force of a wall group over the outputs at t >= since (since < 0: the last output):
-   *  out = total x, y, pressure x, y, viscous x, y (N/m); samples = outputs averaged. */
-  enum clsph_status (*force)(void *ctx, const char *group, double since, double out[6],
+   *  out = total x, y, pressure x, y, viscous x, y (N/m), torque (N m/m, about the group's
+   *  centre: scene_group_centre); samples = outputs averaged. */
+  enum clsph_status (*force)(void *ctx, const char *group, double since, double out[7],
                              int *samples);
-  /** The recorded total force of a wall group at each row with t >= since: n rows of (t, x, y)
-   *  in an array the caller frees. */
+  /** The recorded total force of a wall group at each row with t >= since: n rows of (t, x, y,
+   *  torque) in an array the caller frees. */
   enum clsph_status (*force_history)(void *ctx, const char *group, double since, size_t *n,
                                      double **rows);
   const char *dir; /* the output folder (profile_<name>.csv for sim.profile); NULL: none */

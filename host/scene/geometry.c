@@ -302,6 +302,114 @@ static int finite_pts(const double *pts, int npts)
   return 1;
 }
 
+/* Distance from c to the segment a-b, or to its nearest periodic image on periodic axes. */
+static double seg_distance(const struct scene *s, const double c[2], const double *a,
+                           const double *b)
+{
+  const double t[2] = {b[0] - a[0], b[1] - a[1]}, tt = t[0] * t[0] + t[1] * t[1];
+  double best = HUGE_VAL;
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j) {
+      if ((i != 0 && !s->periodic[0]) || (j != 0 && !s->periodic[1])) continue;
+      double d[2] = {a[0] - c[0], a[1] - c[1]}; /* a − c, of the image (i, j) of the midpoint's
+                                                 * image nearest c */
+      const double m[2] = {gap(s, 0, c[0], a[0] + 0.5 * t[0]), gap(s, 1, c[1], a[1] + 0.5 * t[1])};
+      d[0] = m[0] - 0.5 * t[0] + i * (s->hi[0] - s->lo[0]);
+      d[1] = m[1] - 0.5 * t[1] + j * (s->hi[1] - s->lo[1]);
+      double u = tt > 0.0 ? -(d[0] * t[0] + d[1] * t[1]) / tt : 0.0;
+      u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
+      best = fmin(best, hypot(d[0] + u * t[0], d[1] + u * t[1]));
+    }
+  return best;
+}
+
+/* Walls on periodic axes and walls that turn: under the USAW walls a wall longer than the period
+ * overlaps its own image (the period cuts it: its segments and their images would count twice in
+ * γ; dummy walls only mark the lattice points behind them, so there it may run on); a turning wall
+ * sweeps the disc of its farthest point about its centre, which must stay inside the domain on a
+ * bounded axis, clear of its own periodic image, and at least dr (room for a particle) from every
+ * wall that does not turn with it; under dummy walls the geometry does not turn (the particles keep
+ * their lattice), so a turning wall must be a circle about its centre there. */
+static enum clsph_status check_periodic_and_turning(const struct scene *s, enum wall_model model)
+{
+  enum clsph_status st = CLSPH_OK;
+  const char *path = s->case_path;
+  const double dr = s->dr;
+  for (int w = 0; w < s->nwalls; ++w) {
+    const struct scene_wall *wl = &s->walls[w];
+    for (int a = 0; a < 2 && model == MODEL_USAW; ++a) {
+      if (!s->periodic[a]) continue;
+      const double len = s->hi[a] - s->lo[a];
+      double lo = HUGE_VAL, hi = -HUGE_VAL;
+      for (int k = 0; k < wl->npts; ++k) {
+        lo = fmin(lo, wl->pts[2 * k + a]);
+        hi = fmax(hi, wl->pts[2 * k + a]);
+      }
+      CLSPH_CHECK(hi - lo <= len + merge_tol * dr, CLSPH_E_INPUT,
+                  "%s:%d: the wall spans %g m along the periodic axis %c, more than the period "
+                  "%g m: the period cuts it and its images overlap (end it within one period)",
+                  path, wl->line, hi - lo, "xy"[a], len);
+    }
+    if (!scene_wall_turns(wl)) continue;
+    const double *c = wl->centre;
+    double rmax = 0.0, rmin = HUGE_VAL, emax = 0.0; /* farthest and nearest vertex, longest edge */
+    const int nedge = wl->closed ? wl->npts : wl->npts - 1;
+    for (int k = 0; k < wl->npts; ++k) {
+      const double r = hypot(wl->pts[2 * k] - c[0], wl->pts[2 * k + 1] - c[1]);
+      rmax = fmax(rmax, r);
+      rmin = fmin(rmin, r);
+    }
+    for (int e = 0; e < nedge; ++e) {
+      const double *p = wl->pts + 2 * e, *q = wl->pts + 2 * ((e + 1) % wl->npts);
+      emax = fmax(emax, hypot(q[0] - p[0], q[1] - p[1]));
+    }
+    /* a circle { } or an arc { } about its centre: its vertices on one circle, about dr apart */
+    CLSPH_CHECK(model != MODEL_DUMMY || (rmax - rmin <= 1e-6 * rmax && emax <= 2.0 * dr),
+                CLSPH_E_INPUT,
+                "%s:%d: the wall turns (omega = %g) but is not a circle about its centre (%g, %g) "
+                "(its points lie %g to %g m from it, %g m apart at most): dummy-particle walls "
+                "keep their place and only carry the velocity; a turning geometry needs a USAW "
+                "scheme (isph-usaw, wcsph-usaw)",
+                path, wl->line, wl->omega, c[0], c[1], rmin, rmax, emax);
+    for (int a = 0; a < 2; ++a) {
+      if (s->periodic[a]) {
+        const double len = s->hi[a] - s->lo[a];
+        CLSPH_CHECK(2.0 * rmax + dr <= len, CLSPH_E_INPUT,
+                    "%s:%d: the wall turns about (%g, %g) through a disc of radius %g m, wider "
+                    "than the period %g m of axis %c less dr: it would meet its own periodic "
+                    "image (lengthen the period or move the centre)",
+                    path, wl->line, c[0], c[1], rmax, len, "xy"[a]);
+      } else {
+        CLSPH_CHECK(c[a] - rmax >= s->lo[a] && c[a] + rmax <= s->hi[a], CLSPH_E_INPUT,
+                    "%s:%d: the wall turns about (%g, %g) through a disc of radius %g m that "
+                    "leaves the domain [%g, %g] along %c (check centre and the wall's points)",
+                    path, wl->line, c[0], c[1], rmax, s->lo[a], s->hi[a], "xy"[a]);
+      }
+    }
+    for (int v = 0; v < s->nwalls; ++v) {
+      const struct scene_wall *o = &s->walls[v];
+      if (v == w || (scene_wall_turns(o) && o->omega == wl->omega && o->centre[0] == c[0] &&
+                     o->centre[1] == c[1]))
+        continue; /* the same rigid body */
+      const int ne = o->closed ? o->npts : o->npts - 1;
+      for (int e = 0; e < ne; ++e) {
+        const double *pa = o->pts + 2 * e, *pb = o->pts + 2 * ((e + 1) % o->npts);
+        const double d = seg_distance(s, c, pa, pb);
+        CLSPH_CHECK(d >= rmax + dr, CLSPH_E_INPUT,
+                    "%s:%d: the wall turns about (%g, %g) through a disc of radius %g m that "
+                    "comes within %g m of the wall of line %d (at %g m from the centre, the "
+                    "edge from (%g, %g) to (%g, %g)): as it turns it would cut through it; move "
+                    "the centre (centre = {x, y}) or shorten the wall so that dr = %g m stays "
+                    "between them",
+                    path, wl->line, c[0], c[1], rmax, fmax(0.0, d - rmax), o->line, d, pa[0], pa[1],
+                    pb[0], pb[1], dr);
+      }
+    }
+  }
+done:
+  return st;
+}
+
 static enum clsph_status check_scene(const struct scene *s, const char *model, int layers,
                                      enum wall_model *out)
 {
@@ -386,6 +494,7 @@ static enum clsph_status check_scene(const struct scene *s, const char *model, i
     CLSPH_CHECK(sc->layers >= 0, CLSPH_E_INPUT, "%s:%d: section '%s' has %d layers", path, sc->line,
                 sc->name, sc->layers);
   }
+  CLSPH_TRY(check_periodic_and_turning(s, *out));
 done:
   return st;
 }

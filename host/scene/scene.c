@@ -103,3 +103,35 @@ double scene_param(const struct scene *s, const char *name, double fallback)
     if (strcmp(s->params[i].name, name) == 0) return s->params[i].value;
   return fallback;
 }
+
+int scene_wall_turns(const struct scene_wall *w)
+{
+  return w->motion == SCENE_ROTATING && w->omega != 0.0;
+}
+
+void scene_wall_turn(const struct scene_wall *w, double t, const double x[2], int vector,
+                     double out[2])
+{
+  if (!scene_wall_turns(w)) {
+    out[0] = x[0];
+    out[1] = x[1];
+    return;
+  }
+  const double th = fmod(w->omega * t, 2.0 * 3.14159265358979323846);
+  const double c = cos(th), s = sin(th);
+  const double o[2] = {vector ? 0.0 : w->centre[0], vector ? 0.0 : w->centre[1]};
+  const double d[2] = {x[0] - o[0], x[1] - o[1]};
+  out[0] = o[0] + c * d[0] - s * d[1];
+  out[1] = o[1] + s * d[0] + c * d[1];
+}
+
+void scene_group_centre(const struct scene *s, const char *group, double c[2])
+{
+  c[0] = c[1] = 0.0;
+  for (int w = 0; w < s->nwalls; ++w)
+    if (scene_wall_turns(&s->walls[w]) && strcmp(s->walls[w].group, group) == 0) {
+      c[0] = s->walls[w].centre[0];
+      c[1] = s->walls[w].centre[1];
+      return;
+    }
+}

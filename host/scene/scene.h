@@ -234,6 +234,17 @@ void scene_free(struct scene *s);
 /** @brief Value of a parameter, or `fallback` when the case declares none of that name. */
 double scene_param(const struct scene *s, const char *name, double fallback);
 
+/** @brief 1 when the wall turns: rotating (omega ≠ 0); its geometry then stands rotated by ω t
+ *  about its centre at time t (scene_wall_turn). */
+int scene_wall_turns(const struct scene_wall *w);
+/** @brief Where the point x of wall w (given at t = 0) stands at time t: x itself unless the wall
+ *  turns. With `vector`, x is a direction (a normal): rotated, not moved with the centre. */
+void scene_wall_turn(const struct scene_wall *w, double t, const double x[2], int vector,
+                     double out[2]);
+/** @brief The point a wall group's moment (struct wall_force's torque) is taken about: the centre
+ *  of its first turning wall, else the origin. */
+void scene_group_centre(const struct scene *s, const char *group, double c[2]);
+
 /** @brief The default health-check thresholds (what healthy runs were measured to stay within). */
 void scene_checks_default(struct scene_checks *c);
 

@@ -28,6 +28,9 @@ struct sim_flow {
   double primed; /* 0 before the first step (ṽ^{n−2} unknown), 1 after */
 };
 
+/** Values per wall group in a row of sim->force_rows. */
+#define SIM_FORCE_COLS 5
+
 struct sim {
   const struct dev *dev;
   const struct scene *scene;
@@ -72,7 +75,8 @@ struct sim {
     size_t nrows, cap;
   } samples;
   double *force_rows; /* wall forces at each output: time, then per group of scene->forces
-                       * pressure x, y and viscous x, y (N/m) */
+                       * SIM_FORCE_COLS values: pressure x, y and viscous x, y (N/m), and the
+                       * torque (N m/m, struct wall_force) */
   size_t nforce_rows, force_rows_cap;
   long step;
   long step0;        /* the step this run started from (a restart's checkpoint; 0 otherwise) */

@@ -27,6 +27,16 @@
 #ifndef ISPH_WET
 #define ISPH_WET R(0.1)
 #endif
+/* A fluid particle about to hit a wall keeps its pressure unknown only when it is part of a body of
+ * fluid, Σ_b V_b w_ab ≥ ISPH_SPLASH γ_a (a jet two particles thick, about 0.3; a flat free surface
+ * 0.36; a particle inside 0.86): a few particles flung onto a turning arm above the water
+ * (cases/water_wheel.lua), which touch the wall and nothing else, otherwise made a block of the
+ * pressure equation with no Dirichlet row, singular and, with the arm closing on them,
+ * inconsistent: BiCGStab diverged (a residual of 1e118 at t = 3.31 s, δr = 0.02 m) and the run
+ * stopped. Given p̃ = 0 they meet the wall through the projection's wall guard (project.cl). */
+#ifndef ISPH_SPLASH
+#define ISPH_SPLASH R(0.25)
+#endif
 /* Eq 39 with the departures above: a point at distance dist from the wall (or vertex) that
  * closes on it by `closing` in one step. */
 int isph_impact(const struct smooth sm, real dist, real closing)
@@ -90,6 +100,6 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
    * next to the free surface would impose p̃ = 0 below the fluid's top row and pull the fluid
    * into the wall; with fluid around, its row of eq 44 extrapolates the pressure to the wall
    * (P constant at rest; above the water line see project.cl). */
-  const int dry = wet < ISPH_WET * gam[i];
-  free_surface[i] = kind[i] == ISPH_VERTEX ? dry : d <= R(1.5) && (!hitting || dry);
+  const int dry = wet < ISPH_WET * gam[i], splash = wet < ISPH_SPLASH * gam[i];
+  free_surface[i] = kind[i] == ISPH_VERTEX ? dry : d <= R(1.5) && (!hitting || splash);
 }

@@ -14,12 +14,18 @@
  * particle's acceleration of the last step, so
  *   p̃_a = max(0, −ρ (g − a_a)·n d),   P_a = −ρ g·r_a + p̃_a:
  * ρ |g| d under a surface at rest (the hydrostatic tank), 0 on the top of a column in free fall
- * (the dam break, where the hydrostatic value pushed the top layer down onto the layer below). */
+ * (the dam break, where the hydrostatic value pushed the top layer down onto the layer below).
+ * With the scheme option density_relaxation = α (our addition; 0, the paper's, by default) a row
+ * whose support holds no free-surface particle also takes
+ *   + α ρ (γ_a − Σ_b V_b w_ab)/δt²,
+ * the relaxed density invariance of Asai et al. 2012 (isph-stabilized's, with the number density
+ * Σ_b V_b w_ab/γ_a for ρ* over ρ0): the projection then contracts where the particles have spread
+ * (∇·ũ = −α (1 − ρ* over ρ0)/δt), which the divergence-free projection alone lets accumulate. */
 __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ustar,
                            __global const realv *visc, __global const uint *free_surface,
                            const real rho, const real dt, const realv gravity,
                            __global const realv *normal, const real surface_offset,
-                           __global const realv *acc, __global real *rhs)
+                           __global const realv *acc, const real relax, __global real *rhs)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -34,7 +40,8 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     return;
   }
   const realv us = ustar[i];
-  real div = R(0.0), wall = R(0.0);
+  real div = R(0.0), wall = R(0.0), dens = vol[i] * smoothing_w(g.sm, R(0.0));
+  uint near_surface = 0;
   struct neigh_iter it;
   neigh_begin(&it, &g, x);
   uint j;
@@ -43,6 +50,10 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
     div -= vol[j] * smoothing_f(g.sm, sqrt(r2)) * dot(us - ustar[j], r);
+    if (relax > R(0.0)) {
+      dens += vol[j] * smoothing_w(g.sm, sqrt(r2));
+      near_surface |= free_surface[j];
+    }
   }
   neigh_begin(&it, &g_seg, x);
   uint s;
@@ -54,6 +65,7 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     wall += dot(R(0.5) * (visc[v1] + visc[v2]), gg);
   }
   rhs[i] = rho / dt * div + R(2.0) * rho * wall;
+  if (relax > R(0.0) && kind[i] == ISPH_FLUID && !near_surface) rhs[i] += relax * (gam[i] - dens);
 }
 
 /* p̃ = P + ρ g·r */

@@ -48,8 +48,12 @@ realv usaw_wall_guard(const realv x, realv m, const real tau, const real margin,
     const realv c = a + clamp(f, R(0.0), R(1.0)) * t;
     const real dist = length(x - c);
     const realv nrm = (f < R(0.0) || f > R(1.0)) && dist > R(0.0) ? (x - c) / dist : seg_n[s];
+    /* the wall's velocity at c: linear along a segment for a sliding or a turning wall (the
+     * segment's mean would miss a turning wall's ω × (c − mid), and let a particle that rides a
+     * rotating arm's corner creep into it by that times δt every step) */
+    const realv v1 = moving_walls ? vel[inv[seg_v1[s]]] : (realv)(R(0.0));
     const realv us =
-        moving_walls ? R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]) : (realv)(R(0.0));
+        moving_walls ? v1 + clamp(f, R(0.0), R(1.0)) * (vel[inv[seg_v2[s]]] - v1) : (realv)(R(0.0));
     const real mn = dot(m - us, nrm);
     if (mn < R(0.0) && dist + tau * mn < margin) m -= mn * nrm;
   }

@@ -9,7 +9,12 @@
  * its bottom wall at 0.05 m/s), the linear
  * equation of state p = c0² (ρ − ρ0) + p_bg, and the wall vertices' pressure as the
  * Shepard mean of the fluid's, carried hydrostatically to the wall (Ferrand et al. 2013):
- *   p_v = Σ_b V_b (p_b + ρ_b g·(r_v − r_b)) w_vb / Σ_b V_b w_vb.
+ *   p_v = Σ_b V_b (p_b + ρ_b g·(r_v − r_b)) w_vb / Σ_b V_b w_vb,
+ * over the fluid in the vertex's own fluid sector (the angle θ_v = 2π γ_v about its normal n_v):
+ * next to a wall thinner than the support, the fluid on the far side would enter the mean. On
+ * the water wheel's arms (cases/water_wheel.lua, 0.08 m thick, 1.6 δr at δr = 0.05 m) it carried
+ * the pressure of an arm's lee onto its front: the torque came out 0.16 of isph-usaw's, and the
+ * wheel's work was half the energy the fluid gained.
  * dρ/dt is taken from the new velocities u^{n+1} at r^n (the step's order: wcsph_usaw.c), so that
  * ρ^{n+1} = ρ^n + δt dρ/dt is symplectic Euler with the velocity, as the positions are. */
 __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
@@ -47,11 +52,12 @@ __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const rea
 }
 
 __kernel void wcsph_vertex_pressure(USAW_PART_ARGS, __global const real *rho, const realv gravity,
-                                    __global real *p)
+                                    __global const realv *normal, __global real *p)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ISPH_VERTEX) return;
-  const realv x = pos[i];
+  const realv x = pos[i], nv = normal[i];
+  const real cos_half = cos(ISPH_PI * gam[i]); /* cos(θ_v/2), γ_v = θ_v/2π */
   real s = R(0.0), ws = R(0.0);
   struct neigh_iter it;
   neigh_begin(&it, &g, x);
@@ -60,6 +66,8 @@ __kernel void wcsph_vertex_pressure(USAW_PART_ARGS, __global const real *rho, co
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || kind[j] != ISPH_FLUID) continue;
+    /* r_b − r_v within θ_v/2 of n_v (a little slack: the fluid next to the wall, along it) */
+    if (-dot(r, nv) < (cos_half - R(1e-3)) * sqrt(r2)) continue;
     real w = vol[j] * smoothing_w(g.sm, sqrt(r2));
     s += w * (p[j] + rho[j] * dot(gravity, r)); /* r = r_v − r_b */
     ws += w;

@@ -42,6 +42,8 @@ static size_t place(const struct scene *sc, const char *group, real *xs, real *u
         const double f = (i + 0.5) / m, x[2] = {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])};
         double u[2];
         wall_velocity(wall, x, u);
+        s->x[2 * k] = x[0];
+        s->x[2 * k + 1] = x[1];
         xs[2 * k] = (real)x[0];
         xs[2 * k + 1] = (real)x[1];
         uw[2 * k] = (real)u[0];
@@ -76,10 +78,12 @@ enum clsph_status rot_force_create(const struct dev *dev, cl_program prog, const
                 s->group);
     s->nrm = malloc(2 * s->n * sizeof *s->nrm);
     s->len = malloc(s->n * sizeof *s->len);
+    s->x = malloc(2 * s->n * sizeof *s->x);
+    scene_group_centre(sc, s->group, s->centre);
     s->h_out = malloc(5 * s->n * sizeof *s->h_out);
     xs = malloc(2 * s->n * sizeof *xs);
     uw = malloc(2 * s->n * sizeof *uw);
-    CLSPH_CHECK(s->nrm && s->len && s->h_out && xs && uw, CLSPH_E_NOMEM, "out of memory");
+    CLSPH_CHECK(s->nrm && s->len && s->x && s->h_out && xs && uw, CLSPH_E_NOMEM, "out of memory");
     place(sc, s->group, xs, uw, s);
     CLSPH_TRY(kern_buffer(dev, 2 * s->n * sizeof *xs, xs, &s->d_x, "force sample points"));
     CLSPH_TRY(kern_buffer(dev, 2 * s->n * sizeof *uw, uw, &s->d_uw, "force sample velocities"));
@@ -100,7 +104,7 @@ done:
 enum clsph_status rot_force_eval(struct rot_force *rf, const struct dev *dev, const struct grid *g,
                                  size_t n, cl_mem pos, cl_mem vol, cl_mem kind, cl_mem vel,
                                  cl_mem p, double mu, const char *group, double pressure[2],
-                                 double viscous[2])
+                                 double viscous[2], double *torque)
 {
   enum clsph_status st = CLSPH_OK;
   struct rot_samples *s = NULL;
@@ -113,16 +117,19 @@ enum clsph_status rot_force_eval(struct rot_force *rf, const struct dev *dev, co
                      KARG(s->d_out)));
   CLSPH_TRY(kern_launch(dev, rf->k, s->n, NULL));
   CLSPH_TRY(kern_read(dev, s->d_out, 5 * s->n * sizeof(real), s->h_out));
-  pressure[0] = pressure[1] = viscous[0] = viscous[1] = 0.0;
+  pressure[0] = pressure[1] = viscous[0] = viscous[1] = *torque = 0.0;
   for (size_t k = 0; k < s->n; ++k) { /* eq 31: f = Σ (−p n + µ (∇u + ∇uᵀ) n) ΔS */
     const real *o = s->h_out + 5 * k;
     const double nx = s->nrm[2 * k], ny = s->nrm[2 * k + 1], L = s->len[k];
     const double exx = 2.0 * (double)o[1], exy = (double)o[2] + (double)o[3],
                  eyy = 2.0 * (double)o[4];
+    const double f[2] = {-(double)o[0] * nx * L + mu * (exx * nx + exy * ny) * L,
+                         -(double)o[0] * ny * L + mu * (exy * nx + eyy * ny) * L};
     pressure[0] -= (double)o[0] * nx * L;
     pressure[1] -= (double)o[0] * ny * L;
     viscous[0] += mu * (exx * nx + exy * ny) * L;
     viscous[1] += mu * (exy * nx + eyy * ny) * L;
+    *torque += (s->x[2 * k] - s->centre[0]) * f[1] - (s->x[2 * k + 1] - s->centre[1]) * f[0];
   }
 done:
   return st;
@@ -137,6 +144,7 @@ void rot_force_destroy(struct rot_force *rf)
     kern_release(&s->d_out);
     free(s->nrm);
     free(s->len);
+    free(s->x);
     free(s->h_out);
   }
   free(rf->g);

@@ -639,10 +639,10 @@ static enum clsph_status rot_wall_force(struct sim *sim, void *state, const char
   struct rot *r = state;
   struct pset *ps = &sim->ps;
   CLSPH_TRY(sim_sort(sim));
-  CLSPH_TRY(rot_force_eval(&r->force, sim->dev, &sim->grid, ps->n, pset_mem(ps, sim->f_pos),
-                           pset_mem(ps, sim->f_vol), pset_mem(ps, sim->f_kind),
-                           pset_mem(ps, sim->f_vel), pset_mem(ps, r->f_p),
-                           sim->scene->rho0 * sim->scene->nu, group, f->pressure, f->viscous));
+  CLSPH_TRY(rot_force_eval(
+      &r->force, sim->dev, &sim->grid, ps->n, pset_mem(ps, sim->f_pos), pset_mem(ps, sim->f_vol),
+      pset_mem(ps, sim->f_kind), pset_mem(ps, sim->f_vel), pset_mem(ps, r->f_p),
+      sim->scene->rho0 * sim->scene->nu, group, f->pressure, f->viscous, &f->torque));
 done:
   return st;
 }

@@ -40,8 +40,11 @@ struct isph {
   cl_kernel k_half, k_predict, k_free, k_rhs, k_pressure, k_no_tension, k_project, k_shift, k_apply,
       k_strain;
   cl_mem d_strain;  /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
+  cl_mem d_guess;   /* the pressure solve's initial guess, kept for a second try (solve) */
+  long resolves;    /* solves tried again with a reinforced diagonal */
   double c_shift;   /* shifting coefficient (0: off) */
   double fs_offset; /* distance of the free surface beyond its particles, in dr */
+  double relax;     /* density_relaxation α (0: off, the paper's; ppe.cl) */
   double u_wall;    /* largest wall speed, m/s */
   double d_min;     /* smallest wall distance of the viscous wall term, m (usaw/viscous.cl) */
   /* carried from step to step, and over a restart (isph_persist): the largest particle
@@ -53,26 +56,24 @@ struct isph {
 #define ISPH_ACC  0
 #define ISPH_FREE 1
 
-static const char *const sources[] = {"common/blas1.cl",
-                                      "common/krylov.cl",
-                                      "common/csr.cl",
-                                      "common/mg.cl",
-                                      "common/poisson.cl",
-                                      "usaw/gamma.cl",
-                                      "usaw/common.cl",
-                                      "usaw/wall_force.cl",
-                                      "isph_usaw/move.cl",
-                                      "common/kepsilon.cl",
-                                      "usaw/turbulence.cl",
-                                      "usaw/viscous.cl",
-                                      "isph_usaw/free_surface.cl",
-                                      "isph_usaw/ppe.cl",
-                                      "isph_usaw/project.cl",
-                                      "isph_usaw/shift.cl",
+static const char *const sources[] = {"common/blas1.cl",    "common/krylov.cl",
+                                      "common/csr.cl",      "common/mg.cl",
+                                      "common/poisson.cl",  "usaw/gamma.cl",
+                                      "usaw/common.cl",     "usaw/motion.cl",
+                                      "usaw/wall_force.cl", "isph_usaw/move.cl",
+                                      "common/kepsilon.cl", "usaw/turbulence.cl",
+                                      "usaw/viscous.cl",    "isph_usaw/free_surface.cl",
+                                      "isph_usaw/ppe.cl",   "isph_usaw/project.cl",
+                                      "isph_usaw/shift.cl", NULL};
+static const char *const options[] = {"shifting",
+                                      "pressure_gradient",
+                                      "free_surface_offset",
+                                      "gradient_correction",
+                                      "shift_velocity",
+                                      "density_relaxation",
+                                      USAW_WALL_OPTION_NAMES,
+                                      PSOLVE_OPTION_NAMES,
                                       NULL};
-static const char *const options[] = {
-    "shifting",       "pressure_gradient",    "free_surface_offset", "gradient_correction",
-    "shift_velocity", USAW_WALL_OPTION_NAMES, PSOLVE_OPTION_NAMES,   NULL};
 
 /* -D switches: the pressure-gradient form of the projection. */
 static enum clsph_status isph_define(const struct sim *sim, struct prog_opts *o)
@@ -171,6 +172,13 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
                   "%s: shifting must be a coefficient from 0 (off) to 2", sim->scene->case_path);
       is->c_shift = o->number;
     }
+    if (strcmp(o->key, "density_relaxation") == 0) {
+      CLSPH_CHECK(o->is_number && o->number >= 0.0 && o->number <= 1.0, CLSPH_E_INPUT,
+                  "%s: density_relaxation must be a coefficient from 0 (off, the paper's "
+                  "divergence-free projection) to 1, not %s",
+                  sim->scene->case_path, o->is_number ? "out of range" : o->text);
+      is->relax = o->number;
+    }
     if (strcmp(o->key, "free_surface_offset") == 0) {
       CLSPH_CHECK(o->is_number && o->number >= 0.0 && o->number <= 1.0, CLSPH_E_INPUT,
                   "%s: free_surface_offset must be 0 to 1 (spacings)", sim->scene->case_path);
@@ -244,7 +252,7 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   CLSPH_TRY(kern_write(sim->dev, pset_mem(ps, sim->f_vol), geo->n * sizeof(real), theta));
   pset_describe(ps, is->f_theta, PF_REAL, 0, 0);
   /* segments, kernels, solver */
-  CLSPH_TRY(usaw_walls_from_geom(sim->dev, sim->prog, geo, &sim->gspec, &is->walls));
+  CLSPH_TRY(usaw_walls_from_geom(sim->dev, sim->prog, geo, sim->scene, &sim->gspec, &is->walls));
   struct {
     cl_kernel *k;
     const char *name;
@@ -256,6 +264,7 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
   CLSPH_TRY(kern_buffer(sim->dev, 3 * ps->cap * sizeof(real), NULL, &is->d_strain, "strain"));
+  CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(real), NULL, &is->d_guess, "pressure guess"));
   CLSPH_TRY(usaw_turb_create(sim, &is->turb));
   CLSPH_TRY(poisson_op_create(sim->dev, sim->prog, &is->po));
   CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &is->popt, &is->ps));
@@ -292,6 +301,36 @@ static enum clsph_status gamma_now(struct sim *sim, struct isph *is)
                           pset_mem(&sim->ps, is->f_ggam), sim->d_flags);
 }
 
+/* The pressure solve, and a second try when it fails. Fluid that touches a wall and nothing else
+ * (a few particles flung onto a turning arm above the water, cases/water_wheel.lua) is about to
+ * hit the wall (free_surface.cl), so it has no Dirichlet row: its block is a pure Neumann problem,
+ * singular and, with the arm closing on it, inconsistent. BiCGStab then diverged (a residual of
+ * 1e118 after 639 iterations at t = 3.31 s, δr = 0.02 m) and the run stopped. The second try
+ * starts again from the same guess with the reinforced diagonal of the confined flows (sec 3.3),
+ * which makes such a block regular. */
+static enum clsph_status solve(struct sim *sim, struct isph *is, cl_mem rhs, cl_mem P,
+                               struct psolve_result *res)
+{
+  enum clsph_status st = CLSPH_OK;
+  const size_t bytes = sim->ps.n * sizeof(real);
+  CLSPH_TRY(kern_copy(sim->dev, is->d_guess, P, bytes));
+  CLSPH_TRY(psolve_solve(&is->ps, &is->po.op, rhs, P, res));
+  if (res->reason > 0 || is->ps.opt.singular == PSOLVE_REINFORCE) goto done;
+  const int its = res->its;
+  const enum psolve_singular singular = is->ps.opt.singular;
+  ++is->resolves;
+  log_warn("isph-usaw: step %ld: the pressure solve failed; again with a reinforced diagonal",
+           sim->step);
+  CLSPH_TRY(kern_copy(sim->dev, P, is->d_guess, bytes));
+  is->ps.opt.singular = PSOLVE_REINFORCE;
+  st = psolve_solve(&is->ps, &is->po.op, rhs, P, res);
+  is->ps.opt.singular = singular;
+  CLSPH_TRY(st);
+  res->its += its;
+done:
+  return st;
+}
+
 static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
 {
   enum clsph_status st = CLSPH_OK;
@@ -305,8 +344,9 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
       dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
   const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
 
-  /* 1. half move, neighbours and γ at r* */
+  /* 1. half move, neighbours and γ at r* (turning walls where they stand at t + δt/2) */
   CLSPH_TRY(half_move(sim, is, dt));
+  CLSPH_TRY(usaw_walls_turn(&is->walls, sim, sim->time + 0.5 * dt));
   CLSPH_TRY(sim_sort(sim));
   CLSPH_TRY(gamma_now(sim, is));
   cl_mem vel = pset_mem(ps, sim->f_vel), ustar = pset_mem(ps, is->f_ustar);
@@ -361,12 +401,14 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof off, &off));
   cl_mem acc_last = pset_mem(ps, is->f_acc); /* the accelerations of the last step */
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof acc_last, &acc_last));
+  const real relax = (real)(is->relax * sc->rho0 / (dt * dt)); /* α ρ/δt² */
+  CLSPH_TRY(arg(is->k_rhs, &i, sizeof relax, &relax));
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof rhs, &rhs));
   CLSPH_TRY(kern_launch(sim->dev, is->k_rhs, ps->n, NULL));
   is->ps.opt.singular = guess ? is->popt.singular : PSOLVE_REINFORCE;
   poisson_op_bind(&is->po, &sim->grid, ps->n, pos, pset_mem(ps, sim->f_vol), NULL, fs);
   struct psolve_result res;
-  CLSPH_TRY(psolve_solve(&is->ps, &is->po.op, rhs, P, &res));
+  CLSPH_TRY(solve(sim, is, rhs, P, &res));
   if (known) { /* the solve has waited: the partial counts are here */
     for (size_t g = 0; g < groups; ++g) nfree += (double)is->part[g];
     if ((nfree > 0.0) != guess) {
@@ -374,7 +416,7 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
                 sim->step, guess ? "is gone" : "is back", guess ? "reinforced" : "regular");
       is->ps.opt.singular = nfree > 0.0 ? is->popt.singular : PSOLVE_REINFORCE;
       const int its = res.its; /* the step reports both solves' iterations */
-      CLSPH_TRY(psolve_solve(&is->ps, &is->po.op, rhs, P, &res));
+      CLSPH_TRY(solve(sim, is, rhs, P, &res));
       res.its += its;
     }
   }
@@ -415,6 +457,7 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   /* largest |u̇_a| of the fluid (49), for the next step's length: read at the step's end */
   CLSPH_TRY(sim_max_norm_deferred(sim, acc, 0, &is->carry[ISPH_ACC]));
   CLSPH_TRY(half_move(sim, is, dt));
+  CLSPH_TRY(usaw_walls_turn(&is->walls, sim, sim->time + dt));
   /* 6. shifting at r̃ */
   if (is->c_shift > 0.0) {
     CLSPH_TRY(sim_sort(sim));
@@ -483,15 +526,24 @@ static enum clsph_status isph_wall_force(struct sim *sim, void *state, const cha
   enum clsph_status st = CLSPH_OK;
   struct isph *is = state;
   cl_uint i;
+  /* the turning walls where they stand now (a restart's first output), γ at the current
+   * positions (none yet before the first step) */
+  if (is->walls.turning) {
+    CLSPH_TRY(usaw_walls_turn(&is->walls, sim, sim->time));
+    CLSPH_TRY(sim_sort(sim));
+  }
   cl_mem vel = pset_mem(&sim->ps, sim->f_vel);
-  CLSPH_TRY(gamma_now(sim, is)); /* γ at the current positions (none yet before the first step) */
+  CLSPH_TRY(gamma_now(sim, is));
   CLSPH_TRY(prefix(sim, is, is->k_strain, &i));
   CLSPH_TRY(arg(is->k_strain, &i, sizeof vel, &vel));
   CLSPH_TRY(arg(is->k_strain, &i, sizeof is->d_strain, &is->d_strain));
   CLSPH_TRY(kern_launch(sim->dev, is->k_strain, sim->ps.n, NULL));
+  /* under the k-ε model the viscous part is the wall law's mean shear (below), whose moment
+   * the torque leaves out */
   const double mu = is->turb.on ? 0.0 : sim->scene->rho0 * sim->scene->nu;
   CLSPH_TRY(usaw_wall_force(sim->dev, &sim->geom, sim->scene, sim->ps.n,
-                            pset_mem(&sim->ps, is->f_p), is->d_strain, sim->d_inv, mu, group, f));
+                            pset_mem(&sim->ps, is->f_p), is->d_strain, sim->d_inv, mu, sim->time,
+                            group, f));
   if (is->turb.on) /* the wall law's shear (eq 22) */
     CLSPH_TRY(usaw_turb_wall_force(sim, &is->turb, &is->walls, pset_mem(&sim->ps, is->f_gam),
                                    is->d_min, group, f->viscous));
@@ -508,6 +560,7 @@ static void isph_destroy(void *state)
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   kern_release(&is->d_strain);
+  kern_release(&is->d_guess);
   usaw_turb_destroy(&is->turb);
   psolve_destroy(&is->ps);
   poisson_op_destroy(&is->po);

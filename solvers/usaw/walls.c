@@ -63,6 +63,7 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
       mid[vs * s + c] = (real)(0.5 * (segs->a[2 * s + c] + segs->b[2 * s + c]));
     }
   }
+  w.f_vnormal = -1;
   pset_init(&w.ps, n, n > 0 ? n : 1);
   CLSPH_TRY(pset_add(&w.ps, dev, "mid", vs * sizeof(real), mid, &w.f_mid));
   CLSPH_TRY(pset_add(&w.ps, dev, "a", vs * sizeof(real), a, &w.f_a));
@@ -113,9 +114,79 @@ done:
   return st;
 }
 
+/* The image of x nearest c on the periodic axes of box. */
+static void nearest_image(const struct grid_spec *box, const double c[2], double x[2])
+{
+  for (int a = 0; a < 2; ++a)
+    if (box->periodic[a]) {
+      const double len = box->hi[a] - box->lo[a];
+      x[a] -= len * round((x[a] - c[a]) / len);
+    }
+}
+
+/* What usaw_walls_turn needs of the turning walls: the geometry at t = 0 (segment ends and vertex
+ * positions as the images nearest their wall's centre), which wall each turns with, the kernels. */
+static enum clsph_status turning_create(const struct dev *dev, cl_program prog,
+                                        const struct geom *geo, const struct scene *sc,
+                                        const struct grid_spec *box, struct usaw_walls *w)
+{
+  enum clsph_status st = CLSPH_OK;
+  cl_int *turn = NULL;
+  real *x0 = NULL;
+  w->nwalls = sc->nwalls;
+  const size_t ns = geo->nseg > 0 ? geo->nseg : 1, np = geo->n > 0 ? geo->n : 1;
+  turn = calloc(ns > np ? ns : np, sizeof *turn);
+  x0 = calloc(6 * (ns > np ? ns : np), sizeof *x0);
+  w->h_rot = calloc(5 * (size_t)(sc->nwalls > 0 ? sc->nwalls : 1), sizeof *w->h_rot);
+  CLSPH_CHECK(turn != NULL && x0 != NULL && w->h_rot != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t s = 0; s < geo->nseg; ++s) {
+    const int wi = geo->seg_wall[s];
+    const struct scene_wall *wl = &sc->walls[wi];
+    turn[s] = scene_wall_turns(wl) ? wi : -1;
+    if (turn[s] < 0) continue;
+    w->turning = 1;
+    for (int e = 0; e < 2; ++e) {
+      double x[2] = {geo->x[2 * geo->seg_v[2 * s + e]], geo->x[2 * geo->seg_v[2 * s + e] + 1]};
+      nearest_image(box, wl->centre, x);
+      x0[6 * s + 2 * e] = (real)x[0];
+      x0[6 * s + 2 * e + 1] = (real)x[1];
+    }
+    x0[6 * s + 4] = (real)geo->seg_normal[2 * s];
+    x0[6 * s + 5] = (real)geo->seg_normal[2 * s + 1];
+  }
+  if (!w->turning) goto done;
+  CLSPH_TRY(kern_buffer(dev, ns * sizeof *turn, turn, &w->d_seg_turn, "turning segments"));
+  CLSPH_TRY(kern_buffer(dev, 6 * ns * sizeof *x0, x0, &w->d_seg0, "turning segments at t = 0"));
+  memset(x0, 0, 6 * (ns > np ? ns : np) * sizeof *x0); /* now 4 per particle: x, normal */
+  for (size_t i = 0; i < geo->n; ++i) {
+    turn[i] = -1;
+    if (geo->kind[i] != KIND_VERTEX || geo->group[i] < 0) continue;
+    const struct scene_wall *wl = &sc->walls[geo->group[i]];
+    if (!scene_wall_turns(wl)) continue;
+    turn[i] = geo->group[i];
+    double x[2] = {geo->x[2 * i], geo->x[2 * i + 1]};
+    nearest_image(box, wl->centre, x);
+    x0[4 * i] = (real)x[0];
+    x0[4 * i + 1] = (real)x[1];
+    x0[4 * i + 2] = (real)geo->normal[2 * i];
+    x0[4 * i + 3] = (real)geo->normal[2 * i + 1];
+  }
+  CLSPH_TRY(kern_buffer(dev, np * sizeof *turn, turn, &w->d_vert_turn, "turning vertices"));
+  CLSPH_TRY(kern_buffer(dev, 4 * np * sizeof *x0, x0, &w->d_vert0, "turning vertices at t = 0"));
+  CLSPH_TRY(kern_buffer(dev, 5 * (size_t)(sc->nwalls > 0 ? sc->nwalls : 1) * sizeof *w->h_rot, NULL,
+                        &w->d_rot, "wall rotations"));
+  CLSPH_TRY(prog_kernel(prog, "usaw_turn_vertices", &w->k_turn_vertices));
+  CLSPH_TRY(prog_kernel(prog, "usaw_turn_segments", &w->k_turn_segments));
+  w->t_now = 0.0;
+done:
+  free(x0);
+  free(turn);
+  return st;
+}
+
 enum clsph_status usaw_walls_from_geom(const struct dev *dev, cl_program prog,
-                                       const struct geom *geo, const struct grid_spec *box,
-                                       struct usaw_walls *out)
+                                       const struct geom *geo, const struct scene *sc,
+                                       const struct grid_spec *box, struct usaw_walls *out)
 {
   enum clsph_status st = CLSPH_OK;
   double *ab = calloc(4 * (geo->nseg + 1), sizeof *ab);
@@ -139,14 +210,57 @@ enum clsph_status usaw_walls_from_geom(const struct dev *dev, cl_program prog,
     }
   struct usaw_segments segs = {geo->nseg, ab, ab + 2 * geo->nseg, geo->seg_normal, geo->seg_v};
   CLSPH_TRY(usaw_walls_create(dev, prog, &segs, box, out));
+  st = turning_create(dev, prog, geo, sc, box, out);
+  if (st != CLSPH_OK) usaw_walls_destroy(out);
 done:
   free(ab);
   return st;
 }
 
+enum clsph_status usaw_walls_turn(struct usaw_walls *w, struct sim *sim, double t)
+{
+  enum clsph_status st = CLSPH_OK;
+  if (!w->turning || t == w->t_now) return CLSPH_OK;
+  const struct scene *sc = sim->scene;
+  for (int k = 0; k < w->nwalls; ++k) {
+    const struct scene_wall *wl = &sc->walls[k];
+    const double th = fmod(wl->omega * t, 2.0 * 3.14159265358979323846); /* θ = ω t */
+    real *r = w->h_rot + 5 * k;
+    r[0] = (real)wl->centre[0];
+    r[1] = (real)wl->centre[1];
+    r[2] = (real)cos(th);
+    r[3] = (real)sin(th);
+    r[4] = (real)wl->omega;
+  }
+  CLSPH_TRY(kern_write(sim->dev, w->d_rot, 5 * (size_t)w->nwalls * sizeof *w->h_rot, w->h_rot));
+  struct pset *ps = &sim->ps;
+  const cl_uint n = (cl_uint)ps->n, ns = (cl_uint)w->ps.n;
+  cl_mem id = pset_mem(ps, sim->f_id), pos = pset_mem(ps, sim->f_pos);
+  cl_mem vel = pset_mem(ps, sim->f_vel);
+  const cl_uint has_normal = w->f_vnormal >= 0;
+  cl_mem nrm = has_normal ? pset_mem(ps, w->f_vnormal) : w->d_vert0;
+  CLSPH_TRY(KERN_SET(w->k_turn_vertices, KARG(n), KARG(sim->grid.geom), KARG(id),
+                     KARG(w->d_vert_turn), KARG(w->d_vert0), KARG(w->d_rot), KARG(pos), KARG(vel),
+                     KARG(has_normal), KARG(nrm)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_turn_vertices, ps->n, NULL));
+  cl_mem index = pset_mem(&w->ps, w->f_index), a = pset_mem(&w->ps, w->f_a);
+  cl_mem b = pset_mem(&w->ps, w->f_b), nn = pset_mem(&w->ps, w->f_n);
+  cl_mem mid = pset_mem(&w->ps, w->f_mid);
+  CLSPH_TRY(KERN_SET(w->k_turn_segments, KARG(ns), KARG(w->g.geom), KARG(index),
+                     KARG(w->d_seg_turn), KARG(w->d_seg0), KARG(w->d_rot), KARG(a), KARG(b),
+                     KARG(nn), KARG(mid)));
+  CLSPH_TRY(kern_launch(sim->dev, w->k_turn_segments, w->ps.n, NULL));
+  CLSPH_TRY(grid_sort(&w->g, sim->dev, w->ps.n, mid, w->d_flags));
+  CLSPH_TRY(pset_reorder(&w->ps, &w->g, sim->dev));
+  w->t_now = t;
+done:
+  return st;
+}
+
 enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
                                   const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_strain,
-                                  cl_mem d_inv, double mu, const char *group, struct wall_force *f)
+                                  cl_mem d_inv, double mu, double t, const char *group,
+                                  struct wall_force *f)
 {
   enum clsph_status st = CLSPH_OK;
   real *p = malloc(4 * n * sizeof *p);
@@ -157,18 +271,43 @@ enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
   CLSPH_TRY(kern_read(dev, d_strain, 3 * n * sizeof *e, e));
   CLSPH_TRY(kern_read(dev, d_inv, n * sizeof *inv, inv));
   memset(f, 0, sizeof *f);
+  double c[2];
+  scene_group_centre(sc, group, c);
   for (size_t s = 0; s < geo->nseg; ++s) {
-    if (strcmp(sc->walls[geo->seg_wall[s]].group, group) != 0) continue;
-    const size_t v1 = inv[geo->seg_v[2 * s]], v2 = inv[geo->seg_v[2 * s + 1]];
-    const double nx = geo->seg_normal[2 * s], ny = geo->seg_normal[2 * s + 1],
-                 len = geo->seg_len[s];
+    const struct scene_wall *wl = &sc->walls[geo->seg_wall[s]];
+    if (strcmp(wl->group, group) != 0) continue;
+    const size_t i1 = geo->seg_v[2 * s], i2 = geo->seg_v[2 * s + 1];
+    const size_t v1 = inv[i1], v2 = inv[i2];
+    double nrm[2], m[2];
+    scene_wall_turn(wl, t, geo->seg_normal + 2 * s, 1, nrm);
+    /* the midpoint at t = 0 (the ends' images nearest each other), where it stands at t */
+    double m0[2] = {geo->x[2 * i1], geo->x[2 * i1 + 1]},
+           x2[2] = {geo->x[2 * i2], geo->x[2 * i2 + 1]};
+    for (int k = 0; k < 2; ++k) {
+      if (sc->periodic[k]) {
+        const double len = sc->hi[k] - sc->lo[k];
+        x2[k] -= len * round((x2[k] - m0[k]) / len);
+      }
+      m0[k] = 0.5 * (m0[k] + x2[k]);
+    }
+    scene_wall_turn(wl, t, m0, 0, m);
+    for (int k = 0; k < 2; ++k)
+      if (sc->periodic[k]) { /* the image nearest the centre */
+        const double len = sc->hi[k] - sc->lo[k];
+        m[k] -= len * round((m[k] - c[k]) / len);
+      }
+    const double len = geo->seg_len[s];
     const double ps = 0.5 * ((double)p[v1] + (double)p[v2]);
     double es[3];
-    for (int c = 0; c < 3; ++c) es[c] = 0.5 * ((double)e[3 * v1 + c] + (double)e[3 * v2 + c]);
-    f->pressure[0] -= ps * nx * len;
-    f->pressure[1] -= ps * ny * len;
-    f->viscous[0] += mu * (es[0] * nx + es[1] * ny) * len;
-    f->viscous[1] += mu * (es[1] * nx + es[2] * ny) * len;
+    for (int k = 0; k < 3; ++k) es[k] = 0.5 * ((double)e[3 * v1 + k] + (double)e[3 * v2 + k]);
+    const double fp[2] = {-ps * nrm[0] * len, -ps * nrm[1] * len};
+    const double fv[2] = {mu * (es[0] * nrm[0] + es[1] * nrm[1]) * len,
+                          mu * (es[1] * nrm[0] + es[2] * nrm[1]) * len};
+    for (int k = 0; k < 2; ++k) {
+      f->pressure[k] += fp[k];
+      f->viscous[k] += fv[k];
+    }
+    f->torque += (m[0] - c[0]) * (fp[1] + fv[1]) - (m[1] - c[1]) * (fp[0] + fv[0]);
   }
 done:
   free(inv);
@@ -197,8 +336,16 @@ done:
 
 void usaw_walls_destroy(struct usaw_walls *w)
 {
-  if (w->k_gamma != NULL) clReleaseKernel(w->k_gamma);
-  w->k_gamma = NULL;
+  cl_kernel *ks[] = {&w->k_gamma, &w->k_turn_vertices, &w->k_turn_segments};
+  for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k) {
+    if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
+    *ks[k] = NULL;
+  }
+  cl_mem *ms[] = {&w->d_rot, &w->d_seg_turn, &w->d_seg0, &w->d_vert_turn, &w->d_vert0};
+  for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
+  free(w->h_rot);
+  w->h_rot = NULL;
+  w->turning = 0;
   kern_release(&w->d_flags);
   pset_destroy(&w->ps);
   grid_destroy(&w->g);

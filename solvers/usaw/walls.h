@@ -26,6 +26,22 @@ struct usaw_walls {
   int f_index; /* each segment's index in the order given (the geometry's), after the sort */
   cl_kernel k_gamma;
   cl_mem d_flags;
+  /* walls that turn (wall { omega, centre }: the geometry rotates about the centre, θ = ω t;
+   * kernels/usaw/motion.cl); all zero when none does */
+  int turning;        /* 1: some segment turns */
+  double t_now;       /* the time the turning walls stand at, s */
+  int nwalls;         /* scene walls (rows of h_rot / d_rot) */
+  real *h_rot;        /* per wall: centre x, y, cos θ, sin θ, ω (5 reals) */
+  cl_mem d_rot;       /* the same on the device */
+  cl_mem d_seg_turn;  /* per segment (the geometry's order): its wall if it turns, else −1 */
+  cl_mem d_seg0;      /* per segment: a, b, n at t = 0 (3 realv), the ends the images nearest
+                       * their wall's centre */
+  cl_mem d_vert_turn; /* per particle (original index): its wall if a turning vertex, else −1 */
+  cl_mem d_vert0;     /* per particle: the position at t = 0 nearest its wall's centre, and
+                       * its normal */
+  int f_vnormal;      /* the particle field of the vertices' normals that usaw_walls_turn turns
+                       * with them (the scheme's; −1: none) */
+  cl_kernel k_turn_vertices, k_turn_segments;
 };
 
 /** @brief Upload the segments and sort them into their grid.
@@ -40,18 +56,27 @@ enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, 
                                    cl_mem d_grad_gamma, cl_mem d_flags);
 struct geom;
 struct scene;
-/** @brief usaw_walls_create() with the segments of a generated geometry (geometry.h). */
+/** @brief usaw_walls_create() with the segments of a generated geometry (geometry.h); the walls
+ *  of the scene that turn (scene_wall_turns) get what usaw_walls_turn() needs (the program then
+ *  holds kernels/usaw/motion.cl). */
 enum clsph_status usaw_walls_from_geom(const struct dev *dev, cl_program prog,
-                                       const struct geom *geo, const struct grid_spec *box,
-                                       struct usaw_walls *out);
+                                       const struct geom *geo, const struct scene *sc,
+                                       const struct grid_spec *box, struct usaw_walls *out);
+/** @brief Put the turning walls where they stand at time t (rotated by ω t about their centres):
+ *  their vertex particles' positions and velocities ω × (r − c), their segments, re-binned.
+ *  A no-op when no wall turns or they stand at t already. Sort the particles after it. */
+enum clsph_status usaw_walls_turn(struct usaw_walls *w, struct sim *sim, double t);
 /** @brief Force of the fluid on the walls of a group (eq 69): p_s and ∇u_s + ∇u_sᵀ are the means
  *  of the segment's two vertex values (eq 70; the strain from the kernel usaw_vertex_strain,
  *  three reals xx, xy, yy per particle); reads p, the strain and the inverse index (current index
- *  of each original particle) back from the device.
+ *  of each original particle) back from the device. Its moment (f->torque) is about the group's
+ *  centre (wall_force_centre), each segment's force at its midpoint; turning walls stand where
+ *  they are at time t.
  *  @param mu dynamic viscosity, Pa s */
 enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
                                   const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_strain,
-                                  cl_mem d_inv, double mu, const char *group, struct wall_force *f);
+                                  cl_mem d_inv, double mu, double t, const char *group,
+                                  struct wall_force *f);
 /** The scheme option both USAW schemes take for their viscous wall term (kernels/usaw/viscous.cl).
  */
 #define USAW_WALL_OPTION_NAMES "wall_distance_floor"

@@ -813,6 +813,7 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   struct pset *ps = &sim->ps;
   const struct scene *sc = sim->scene;
   cl_uint *mask = NULL;
+  real *hpos = NULL;
   const cl_uint n = (cl_uint)ps->n, nmask = (cl_uint)(sc->nwalls > 0 ? sc->nwalls : 1);
   mask = calloc(nmask, sizeof *mask);
   CLSPH_CHECK(mask != NULL, CLSPH_E_NOMEM, "out of memory");
@@ -859,14 +860,28 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
                      KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(grav), KARG(gradp)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
+  /* the torque about the group's centre, each dummy particle's force at its own position */
+  hpos = malloc(2 * (ps->n + 1) * sizeof *hpos);
+  CLSPH_CHECK(hpos != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(kern_read(sim->dev, pos, 2 * ps->n * sizeof *hpos, hpos));
+  double c[2];
+  scene_group_centre(sc, group, c);
   memset(out, 0, sizeof *out);
   for (size_t i = 0; i < ps->n; ++i) {
+    const double fx = (double)w->h_force[4 * i] + (double)w->h_force[4 * i + 2],
+                 fy = (double)w->h_force[4 * i + 1] + (double)w->h_force[4 * i + 3];
     out->pressure[0] += (double)w->h_force[4 * i];
     out->pressure[1] += (double)w->h_force[4 * i + 1];
     out->viscous[0] += (double)w->h_force[4 * i + 2];
     out->viscous[1] += (double)w->h_force[4 * i + 3];
+    if (fx == 0.0 && fy == 0.0) continue;
+    double r[2] = {(double)hpos[2 * i] - c[0], (double)hpos[2 * i + 1] - c[1]};
+    for (int a = 0; a < 2; ++a) /* the image nearest the centre */
+      if (sc->periodic[a]) r[a] -= (sc->hi[a] - sc->lo[a]) * round(r[a] / (sc->hi[a] - sc->lo[a]));
+    out->torque += r[0] * fy - r[1] * fx;
   }
 done:
+  free(hpos);
   free(mask);
   return st;
 }

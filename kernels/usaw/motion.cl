@@ -1,0 +1,77 @@
+/* motion.cl (USAW schemes): walls that turn, wall { omega, centre } (the water wheel of Leroy et
+ * al. 2014 sec 4.4). A turning wall is a rigid body: at time t its points stand rotated by
+ * θ = ω t about the centre c, r(t) = c + R(θ) (r(0) − c), and move at u = ω e_z × (r − c), the
+ * velocity its vertex particles carry into the sums (the wall's own velocity, as a sliding lid's).
+ * The rotation is applied to the positions at t = 0, not stepped, so the wheel keeps its shape
+ * and its radius over any number of steps. rot holds, per scene wall, c_x, c_y, cos θ, sin θ, ω
+ * (usaw_walls_turn computes θ in double on the host). */
+
+/* r(0) of wall w turned to where it stands now */
+realv usaw_turned(__global const real *rot, const int w, const realv x0)
+{
+  const realv c = (realv)(rot[5 * w], rot[5 * w + 1]);
+  const real cs = rot[5 * w + 2], sn = rot[5 * w + 3];
+  const realv d = x0 - c;
+  return c + (realv)(cs * d.x - sn * d.y, sn * d.x + cs * d.y);
+}
+
+/* The vertex particles of turning walls: position and velocity now, and their normal (into the
+ * fluid) when has_normal; periodic axes wrap. x0: per original particle, its position and its
+ * normal at t = 0. */
+__kernel void usaw_turn_vertices(const uint n, const struct grid g, __global const uint *id,
+                                 __global const int *turn, __global const realv *x0,
+                                 __global const real *rot, __global realv *pos, __global realv *vel,
+                                 const uint has_normal, __global realv *normal)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  const uint o = id[i];
+  const int w = turn[o];
+  if (w < 0) return;
+  realv x = usaw_turned(rot, w, x0[2 * o]);
+  const realv d = x - (realv)(rot[5 * w], rot[5 * w + 1]);
+  vel[i] = rot[5 * w + 4] * (realv)(-d.y, d.x);
+  if (has_normal) {
+    const real cs = rot[5 * w + 2], sn = rot[5 * w + 3];
+    const realv n0 = x0[2 * o + 1];
+    normal[i] = (realv)(cs * n0.x - sn * n0.y, sn * n0.x + cs * n0.y);
+  }
+#if PERIODIC_X
+  x.x = isph_wrap(x.x, g.lo.x, g.len.x);
+#endif
+#if PERIODIC_Y
+  x.y = isph_wrap(x.y, g.lo.y, g.len.y);
+#endif
+  pos[i] = x;
+}
+
+/* The segments of turning walls (index: each segment's place in the geometry's order): ends,
+ * normal and midpoint now; on a periodic axis the midpoint (which bins the segment) is wrapped
+ * into the domain and both ends move with it, as usaw_walls_from_geom places them at t = 0. */
+__kernel void usaw_turn_segments(const uint ns, const struct grid g, __global const uint *index,
+                                 __global const int *turn, __global const realv *seg0,
+                                 __global const real *rot, __global realv *a, __global realv *b,
+                                 __global realv *nrm, __global realv *mid)
+{
+  const uint s = get_global_id(0);
+  if (s >= ns) return;
+  const uint o = index[s];
+  const int w = turn[o];
+  if (w < 0) return;
+  const realv A = usaw_turned(rot, w, seg0[3 * o]), B = usaw_turned(rot, w, seg0[3 * o + 1]);
+  const realv n0 = seg0[3 * o + 2];
+  const real cs = rot[5 * w + 2], sn = rot[5 * w + 3];
+  const realv M = R(0.5) * (A + B);
+  realv Mw = M;
+#if PERIODIC_X
+  Mw.x = isph_wrap(M.x, g.lo.x, g.len.x);
+#endif
+#if PERIODIC_Y
+  Mw.y = isph_wrap(M.y, g.lo.y, g.len.y);
+#endif
+  const realv shift = Mw - M;
+  a[s] = A + shift;
+  b[s] = B + shift;
+  nrm[s] = (realv)(cs * n0.x - sn * n0.y, sn * n0.x + cs * n0.y);
+  mid[s] = Mw;
+}

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""The water wheel (Leroy et al. 2014 sec 4.4, cases/water_wheel.lua): isph-usaw against
+wcsph-usaw.
+
+    python3 tests/validation/wheel_chart.py RUNS_DIR OUT_DIR
+
+RUNS_DIR holds the runs of tests/validation/run_wheel.sh (isph_dr020, wcsph_dr020, each rendered
+with `clsph render RUN --field speed --range 0,3`). Writes to OUT_DIR:
+  wheel_torque.csv, wheel_torque.png  the torque of the fluid on the wheel against t+ = t √(g/H)
+                                       (each sample, and its mean over a quarter turn, 1 s, as
+                                       the paper smooths its force), the water's area against its
+                                       start, and the wheel's work beside the fluid's energy gain
+  wheel_t66.png                        the two schemes' frames at t+ = 66 (t = 20 s) side by side
+and RUNS_DIR/wheel.mp4, the two movies side by side (ffmpeg).
+"""
+import csv
+import math
+import os
+import subprocess
+import sys
+
+G, H, OMEGA = 9.81, 0.9, math.pi / 2
+RUNS = [("isph-usaw", "isph_dr020"), ("wcsph-usaw", "wcsph_dr020")]
+
+
+def series(run_dir):
+    with open(os.path.join(run_dir, "series.csv")) as f:
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    runs_dir, out_dir = sys.argv[1], sys.argv[2]
+    rows = []  # scheme, t+, torque, torque (1 s mean), area change, work, energy gain
+    present = []
+    for label, name in RUNS:
+        path = os.path.join(runs_dir, name)
+        if not os.path.exists(os.path.join(path, "series.csv")):
+            continue
+        present.append((label, path))
+        s = series(path)
+        work, a0, e0 = 0.0, s[0]["water_area"], s[0]["energy"]
+        for i, r in enumerate(s):
+            if i > 0:
+                work -= 0.5 * (r["torque"] + s[i - 1]["torque"]) * OMEGA * (r["time"] - s[i - 1]["time"])
+            window = [q["torque"] for q in s if abs(q["time"] - r["time"]) <= 0.5]
+            rows.append((label, r["time"] * math.sqrt(G / H), r["torque"], sum(window) / len(window),
+                         r["water_area"] / a0 - 1, work, r["energy"] - e0))
+    csv_path = os.path.join(out_dir, "wheel_torque.csv")
+    with open(csv_path, "w") as f:
+        f.write("scheme,t_plus,torque,torque_1s,area_change,work,energy_gain\n")
+        f.writelines(f"{r[0]},{r[1]:.5g},{r[2]:.6g},{r[3]:.6g},{r[4]:.6g},{r[5]:.6g},{r[6]:.6g}\n"
+                     for r in rows)
+
+    def plot(col, smooth=None):
+        out = []
+        for label, _ in present:
+            if smooth is not None:
+                out.append(f"'{csv_path}' using (strcol(1) eq '{label}' ? $2 : 1/0):{col} with lines "
+                           f"lw 0.5 lc '{'#9ecae1' if label.startswith('isph') else '#fdae6b'}' notitle")
+                out.append(f"'{csv_path}' using (strcol(1) eq '{label}' ? $2 : 1/0):{smooth} with "
+                           f"lines lw 2 lc '{'#08519c' if label.startswith('isph') else '#d94801'}' "
+                           f"title '{label} (1 s mean)'")
+            else:
+                out.append(f"'{csv_path}' using (strcol(1) eq '{label}' ? $2 : 1/0):{col} with lines "
+                           f"lw 2 title '{label}'")
+        return ", ".join(out)
+    energy = ", ".join(
+        f"'{csv_path}' using (strcol(1) eq '{label}' ? $2 : 1/0):6 with lines lw 2 title '{label}: work', "
+        f"'{csv_path}' using (strcol(1) eq '{label}' ? $2 : 1/0):7 with lines lw 2 dt 2 "
+        f"title '{label}: energy gain'" for label, _ in present)
+    script = f"""set terminal pngcairo size 1500,450 font ",10" noenhanced
+set output '{os.path.join(out_dir, "wheel_torque.png")}'
+set datafile separator ','
+set multiplot layout 1,3 title 'Water wheel (Leroy et al. 2014 sec 4.4), dr = 0.02 m'
+set grid
+set key left bottom
+set xlabel 't+ = t (g/H)^(1/2)'
+set ylabel 'torque of the fluid on the wheel (N m/m)'
+plot {plot(3, smooth=4)}
+set key left top
+set ylabel 'water area / its start - 1'
+plot {plot(5)}
+set ylabel 'J/m'
+plot {energy}
+unset multiplot
+"""
+    subprocess.run(["gnuplot"], input=script, text=True, check=True)
+    # the frames at t = 20 s (snapshot 40 at output_every 0.5 s) side by side, and the movies
+    frames = [os.path.join(p, "frames", "speed_000040.png") for _, p in present]
+    if len(frames) == 2 and all(os.path.exists(f) for f in frames):
+        subprocess.run(["ffmpeg", "-y", "-loglevel", "error", "-i", frames[0], "-i", frames[1],
+                        "-filter_complex", "hstack", os.path.join(out_dir, "wheel_t66.png")],
+                       check=True)
+    movies = [os.path.join(p, "speed.mp4") for _, p in present]
+    if len(movies) == 2 and all(os.path.exists(m) for m in movies):
+        subprocess.run(["ffmpeg", "-y", "-loglevel", "error", "-i", movies[0], "-i", movies[1],
+                        "-filter_complex", "hstack", os.path.join(runs_dir, "wheel.mp4")],
+                       check=True)
+    print(f"wrote {csv_path} and its chart")
+
+
+if __name__ == "__main__":
+    main()
