@@ -1,7 +1,7 @@
 -- Turning walls that cannot turn (host/scene/geometry.c, check_periodic_and_turning), chosen by
 -- `what`: 0 a valid wheel; 1 its disc reaches the bottom; 2 its disc leaves the domain's top;
--- 3 its disc is wider than the period; 4 a bottom longer than the period (USAW walls); 5 a turning square under
--- dummy walls (wcsph-riemann), which keep their place.
+-- 3 its disc is wider than the period; 4 a bottom longer than the period (USAW walls); 5 a
+-- turning square under dummy walls (wcsph-riemann), which keep their place.
 param { what = 0 }
 local L, top = 4, 2
 domain { -L / 2, 0, L / 2, top, periodic = "x" }
