@@ -300,7 +300,7 @@ def rans_section(runs):
                 "| N_f | U_b | momentum dissipation | wall pressure | t_end | u_τ | vs 1-D "
                 "| vs OpenFOAM | u+ vs DNS (rows 2+) | u+ vs DNS row 1 | u+ vs OpenFOAM | u+ vs 1-D "
                 "| bulk | wall s | particle-steps/s |",
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for s in chan:
             p, m = s["parameters"], s.get("metrics", {})
             ub = f"{p['ub']:g}" if p.get("ub", 0) > 0 else "(u_τ fixed)"
@@ -483,6 +483,7 @@ def wheel_section(runs, runs_dir):
            "[wheel_t66.png](wheel_t66.png); torque, area and energy: "
            "[wheel_torque.png](wheel_torque.png).", "",
            "| run | scheme | dr | fluid particles | t_end | steps | crossings | area change (end / worst) "
+           "| spray (end) | area + spray (worst) "
            "| deep density | torque mean | work/gain | max speed / ω R | particle-steps/s | wall s "
            "| 30 s of 3e4 particles, h (paper) |",
            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -501,11 +502,13 @@ def wheel_section(runs, runs_dir):
 
         def g(k, f):
             return format(m[k], f) if k in m else "–"
+        spray_worst = f"{100 * m['water_spray_worst']:.2f}%" if "water_spray_worst" in m else "–"
         out.append(f"| {s['run']} | {s['scheme']} ({s['precision']}{relax}) | {p.get('dr', 0):g} "
                    f"| {s['fluid_particles']:g} | {p.get('t_end', 0):g} | {s['steps']:g} "
                    f"| {m.get('crossed_wall', float('nan')):g} "
                    f"| {100 * m.get('water_area_change', float('nan')):+.2f}% / "
                    f"{100 * m.get('water_area_worst', float('nan')):.2f}% "
+                   f"| {g('spray', '.0f')} | {spray_worst} "
                    f"| {g('deep_density', '.4f')} | {g('torque_mean', '.0f')} | {g('work_over_gain', '.2f')} "
                    f"| {g('max_speed_over_tip', '.2f')} | {s['particle_steps_per_second']:.3g} "
                    f"| {wall(s)} | {cost} |")
