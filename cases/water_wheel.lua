@@ -98,33 +98,19 @@ local function w(r)
   return alpha * t ^ 4 * (2 * q + 1)
 end
 
--- The water's area, the region where the particles' indicator χ = Σ_b dr² w(x − x_b) is at
--- least ½ (the level a VoF code takes for its free surface): χ on a raster of spacing dr over the
--- domain (the fluid particles binned in cells of 2h), and along each column of the raster the
--- length where χ ≥ ½, its ends placed between raster points by linear interpolation (a raster
--- that only counted its points would jump by a whole row of the lattice, 5% of the area, as the
--- free surface settles by a fraction of dr). A lattice at rest fills it up to dr/2 beyond its
--- last row and to the walls, L H less the arms under the water; compression, expansion and voids
--- change it, the particle count does not.
-local function water_area(sim)
-  local f = sim.field("pos", 1)
-  local xs, ys = f.x, f.y
+-- The particles' indicator χ(x) = Σ_b dr² w(x − x_b) over the fluid particles at (xs, ys),
+-- binned in cells of 2h (periodic along x): 1 inside a lattice at rest, ½ where its edge lies.
+local function indicator(xs, ys)
   local cell, nx = 2 * h, math.floor(L / (2 * h))
   local csize = L / nx
   local bins = {}
   for i = 1, #xs do
-    local cx = math.floor((xs[i] + L / 2) / csize) % nx
-    local cy = math.floor(ys[i] / cell)
-    local key = cy * nx + cx
+    local key = math.floor(ys[i] / cell) * nx + math.floor((xs[i] + L / 2) / csize) % nx
     local b = bins[key]
     if b == nil then b = {}; bins[key] = b end
     b[#b + 1] = i
   end
-  local dx = dr
-  local vol = dr * dr
-  local nyr = math.floor(top / dx)
-  local nxr = math.floor(L / dx)
-  local function chi(x, y)
+  return function(x, y)
     local cx, cy = math.floor((x + L / 2) / csize), math.floor(y / cell)
     local s = 0
     for oy = cy - 1, cy + 1 do
@@ -136,27 +122,40 @@ local function water_area(sim)
             ddx = ddx - L * math.floor(ddx / L + 0.5)
             local ddy = ys[p] - y
             local r2 = ddx * ddx + ddy * ddy
-            if r2 < 4 * h * h then s = s + vol * w(math.sqrt(r2)) end
+            if r2 < 4 * h * h then s = s + dr * dr * w(math.sqrt(r2)) end
           end
         end
       end
     end
     return s
   end
-  -- the spray: fluid particles cut off from the water (drops, films one particle thick on the
-  -- arms above it), whose indicator stays below 0.4 (a particle alone 0.14, a line of them 0.37;
-  -- a particle in the surface row of the water at rest 0.57), so that the region above holds
-  -- none of their area
+end
+
+-- The water's area, the region where χ ≥ ½ (the level a VoF code takes for its free surface): χ
+-- on a raster of spacing dr over the domain, and along each column of the raster the length
+-- where χ ≥ ½, its ends placed between raster points by linear interpolation (a raster that only
+-- counted its points would jump by a whole row of the lattice, 5% of the area, as the free
+-- surface settles by a fraction of dr). A lattice at rest fills it up to dr/2 beyond its last row
+-- and to the walls, L H less the arms under the water; compression, expansion and voids change
+-- it, the particle count does not. Also the spray: fluid particles cut off from the water (drops,
+-- films one particle thick on the arms above it), whose χ stays below 0.4 (a particle alone 0.14,
+-- a line of them 0.37; a particle in the surface row of the water at rest 0.57), so that the
+-- region holds none of their area.
+local function water_area(sim)
+  local f = sim.field("pos", 1)
+  local xs, ys = f.x, f.y
+  local chi = indicator(xs, ys)
   local spray = 0
   for i = 1, #xs do
     if chi(xs[i], ys[i]) < 0.4 then spray = spray + 1 end
   end
+  local dx = dr
   local area = 0
-  for i = 0, nxr - 1 do
+  for i = 0, math.floor(L / dx) - 1 do
     local x = -L / 2 + (i + 0.5) * dx
     local below = chi(x, 0.5 * dx)
     local len = below >= 0.5 and 0.5 * dx or 0 -- from the bottom to the first point
-    for j = 1, nyr - 1 do
+    for j = 1, math.floor(top / dx) - 1 do
       local c = chi(x, (j + 0.5) * dx)
       if below >= 0.5 and c >= 0.5 then
         len = len + dx
@@ -172,43 +171,15 @@ local function water_area(sim)
 end
 
 -- The fluid's number density in the deep water below the wheel's reach (2h above the bottom
--- to 0.3 m): the mean of Σ_b dr² w_ab, 1 on the lattice at rest; a drift of the particles'
+-- to 0.3 m): the mean χ at its particles, 1 on the lattice at rest; a drift of the particles'
 -- spacing shows in it, free of the free surface's shape.
 local function deep_density(sim)
   local f = sim.field("pos", 1)
   local xs, ys = f.x, f.y
-  local cell, nx = 2 * h, math.floor(L / (2 * h))
-  local csize = L / nx
-  local bins = {}
-  for i = 1, #xs do
-    if ys[i] < 0.3 + 2 * h then
-      local key = math.floor(ys[i] / cell) * nx + math.floor((xs[i] + L / 2) / csize) % nx
-      local b = bins[key]
-      if b == nil then b = {}; bins[key] = b end
-      b[#b + 1] = i
-    end
-  end
+  local chi = indicator(xs, ys)
   local sum, count = 0, 0
   for i = 1, #xs do
-    if ys[i] > 2 * h and ys[i] < 0.3 then
-      local cx, cy = math.floor((xs[i] + L / 2) / csize), math.floor(ys[i] / cell)
-      local s = 0
-      for oy = cy - 1, cy + 1 do
-        for ox = cx - 1, cx + 1 do
-          local b = bins[oy * nx + (ox % nx)]
-          if b ~= nil then
-            for _, p in ipairs(b) do
-              local ddx = xs[p] - xs[i]
-              ddx = ddx - L * math.floor(ddx / L + 0.5)
-              local ddy = ys[p] - ys[i]
-              local r2 = ddx * ddx + ddy * ddy
-              if r2 < 4 * h * h then s = s + dr * dr * w(math.sqrt(r2)) end
-            end
-          end
-        end
-      end
-      sum, count = sum + s, count + 1
-    end
+    if ys[i] > 2 * h and ys[i] < 0.3 then sum, count = sum + chi(xs[i], ys[i]), count + 1 end
   end
   return count > 0 and sum / count or 0
 end

@@ -26,7 +26,7 @@ if [ "${WHEEL_SKIP_RUNS:-0}" != 1 ]; then
   # the paper's particle count, 1 s of the 30, for the cost per step
   run isph_dr0134_1s dr=0.0134 t_end=1 every=1
   run wcsph_dr0134_1s wcsph=1 dr=0.0134 t_end=1 every=1
-  run isph_dr020_relax0 dr=0.02 t_end=10 relax=0
+  run isph_dr020_relax0 dr=0.02 t_end=4 relax=0
 fi
 python3 tests/validation/wheel_chart.py "$out" tests/validation
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_wheel.md
