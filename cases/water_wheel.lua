@@ -14,8 +14,9 @@
 --   * its centre 1.35 m above the bottom: the arms' tips dip 0.55 m into the water at the bottom
 --     of their turn and clear the bottom by 0.35 m; the hub stays 0.2 m above the water at rest;
 --   * the period L = 6 m (3 wheel diameters), the domain 2.6 m tall (the wheel's top at 2.35 m).
--- At dr = 0.0134 m the pool holds about 3e4 fluid particles (the paper's count); the default
--- dr = 0.02 m, 1.3e4.
+-- At dr = 0.0134 m the pool holds 2.9e4 fluid particles (the paper's count, about 3e4; the
+-- lattice then meets itself across the period 0.8 dr apart: dr = 6/440 m wraps evenly with as
+-- many); the default dr = 0.02 m, 1.3e4.
 --
 -- Outputs: forces.csv (group "wheel": the force and its torque about the wheel's centre,
 -- struct wall_force; the paper's force on one bucket has no published numbers to compare with), series.csv (the torque on the whole wheel, the water's area and its
