@@ -3,16 +3,23 @@
  * θ = ω t about the centre c, r(t) = c + R(θ) (r(0) − c), and move at u = ω e_z × (r − c), the
  * velocity its vertex particles carry into the sums (the wall's own velocity, as a sliding lid's).
  * The rotation is applied to the positions at t = 0, not stepped, so the wheel keeps its shape
- * and its radius over any number of steps. rot holds, per scene wall, c_x, c_y, cos θ, sin θ, ω
- * (usaw_walls_turn computes θ in double on the host). */
+ * and its radius over any number of steps. rot holds, per scene wall, c_x, c_y, ω; the time t
+ * comes as an argument, so that turning the walls takes no transfer (in float, θ = ω t at t =
+ * 30 s is within 3e-6 rad). */
 
-/* r(0) of wall w turned to where it stands now */
-realv usaw_turned(__global const real *rot, const int w, const realv x0)
+/* cos θ, sin θ of wall w at time t */
+real2 usaw_turn_angle(__global const real *rot, const int w, const real t)
 {
-  const realv c = (realv)(rot[5 * w], rot[5 * w + 1]);
-  const real cs = rot[5 * w + 2], sn = rot[5 * w + 3];
+  const real th = rot[3 * w + 2] * t;
+  return (real2)(cos(th), sin(th));
+}
+
+/* r(0) of wall w turned by the angle cs (cos θ, sin θ) about its centre */
+realv usaw_turned(__global const real *rot, const int w, const real2 cs, const realv x0)
+{
+  const realv c = (realv)(rot[3 * w], rot[3 * w + 1]);
   const realv d = x0 - c;
-  return c + (realv)(cs * d.x - sn * d.y, sn * d.x + cs * d.y);
+  return c + (realv)(cs.x * d.x - cs.y * d.y, cs.y * d.x + cs.x * d.y);
 }
 
 /* The vertex particles of turning walls: position and velocity now, and their normal (into the
@@ -20,21 +27,21 @@ realv usaw_turned(__global const real *rot, const int w, const realv x0)
  * normal at t = 0. */
 __kernel void usaw_turn_vertices(const uint n, const struct grid g, __global const uint *id,
                                  __global const int *turn, __global const realv *x0,
-                                 __global const real *rot, __global realv *pos, __global realv *vel,
-                                 const uint has_normal, __global realv *normal)
+                                 __global const real *rot, const real t, __global realv *pos,
+                                 __global realv *vel, const uint has_normal, __global realv *normal)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
   const uint o = id[i];
   const int w = turn[o];
   if (w < 0) return;
-  realv x = usaw_turned(rot, w, x0[2 * o]);
-  const realv d = x - (realv)(rot[5 * w], rot[5 * w + 1]);
-  vel[i] = rot[5 * w + 4] * (realv)(-d.y, d.x);
+  const real2 cs = usaw_turn_angle(rot, w, t);
+  realv x = usaw_turned(rot, w, cs, x0[2 * o]);
+  const realv d = x - (realv)(rot[3 * w], rot[3 * w + 1]);
+  vel[i] = rot[3 * w + 2] * (realv)(-d.y, d.x);
   if (has_normal) {
-    const real cs = rot[5 * w + 2], sn = rot[5 * w + 3];
     const realv n0 = x0[2 * o + 1];
-    normal[i] = (realv)(cs * n0.x - sn * n0.y, sn * n0.x + cs * n0.y);
+    normal[i] = (realv)(cs.x * n0.x - cs.y * n0.y, cs.y * n0.x + cs.x * n0.y);
   }
 #if PERIODIC_X
   x.x = isph_wrap(x.x, g.lo.x, g.len.x);
@@ -50,17 +57,18 @@ __kernel void usaw_turn_vertices(const uint n, const struct grid g, __global con
  * into the domain and both ends move with it, as usaw_walls_from_geom places them at t = 0. */
 __kernel void usaw_turn_segments(const uint ns, const struct grid g, __global const uint *index,
                                  __global const int *turn, __global const realv *seg0,
-                                 __global const real *rot, __global realv *a, __global realv *b,
-                                 __global realv *nrm, __global realv *mid)
+                                 __global const real *rot, const real t, __global realv *a,
+                                 __global realv *b, __global realv *nrm, __global realv *mid)
 {
   const uint s = get_global_id(0);
   if (s >= ns) return;
   const uint o = index[s];
   const int w = turn[o];
   if (w < 0) return;
-  const realv A = usaw_turned(rot, w, seg0[3 * o]), B = usaw_turned(rot, w, seg0[3 * o + 1]);
+  const real2 cs = usaw_turn_angle(rot, w, t);
+  const realv A = usaw_turned(rot, w, cs, seg0[3 * o]);
+  const realv B = usaw_turned(rot, w, cs, seg0[3 * o + 1]);
   const realv n0 = seg0[3 * o + 2];
-  const real cs = rot[5 * w + 2], sn = rot[5 * w + 3];
   const realv M = R(0.5) * (A + B);
   realv Mw = M;
 #if PERIODIC_X
@@ -72,6 +80,6 @@ __kernel void usaw_turn_segments(const uint ns, const struct grid g, __global co
   const realv shift = Mw - M;
   a[s] = A + shift;
   b[s] = B + shift;
-  nrm[s] = (realv)(cs * n0.x - sn * n0.y, sn * n0.x + cs * n0.y);
+  nrm[s] = (realv)(cs.x * n0.x - cs.y * n0.y, cs.y * n0.x + cs.x * n0.y);
   mid[s] = Mw;
 }

@@ -132,13 +132,12 @@ static enum clsph_status turning_create(const struct dev *dev, cl_program prog,
 {
   enum clsph_status st = CLSPH_OK;
   cl_int *turn = NULL;
-  real *x0 = NULL;
-  w->nwalls = sc->nwalls;
+  real *x0 = NULL, *rot = NULL;
   const size_t ns = geo->nseg > 0 ? geo->nseg : 1, np = geo->n > 0 ? geo->n : 1;
   turn = calloc(ns > np ? ns : np, sizeof *turn);
   x0 = calloc(6 * (ns > np ? ns : np), sizeof *x0);
-  w->h_rot = calloc(5 * (size_t)(sc->nwalls > 0 ? sc->nwalls : 1), sizeof *w->h_rot);
-  CLSPH_CHECK(turn != NULL && x0 != NULL && w->h_rot != NULL, CLSPH_E_NOMEM, "out of memory");
+  rot = calloc(3 * (size_t)(sc->nwalls > 0 ? sc->nwalls : 1), sizeof *rot);
+  CLSPH_CHECK(turn != NULL && x0 != NULL && rot != NULL, CLSPH_E_NOMEM, "out of memory");
   for (size_t s = 0; s < geo->nseg; ++s) {
     const int wi = geo->seg_wall[s];
     const struct scene_wall *wl = &sc->walls[wi];
@@ -173,12 +172,18 @@ static enum clsph_status turning_create(const struct dev *dev, cl_program prog,
   }
   CLSPH_TRY(kern_buffer(dev, np * sizeof *turn, turn, &w->d_vert_turn, "turning vertices"));
   CLSPH_TRY(kern_buffer(dev, 4 * np * sizeof *x0, x0, &w->d_vert0, "turning vertices at t = 0"));
-  CLSPH_TRY(kern_buffer(dev, 5 * (size_t)(sc->nwalls > 0 ? sc->nwalls : 1) * sizeof *w->h_rot, NULL,
+  for (int k = 0; k < sc->nwalls; ++k) { /* centre and ω of each wall (motion.cl) */
+    rot[3 * k] = (real)sc->walls[k].centre[0];
+    rot[3 * k + 1] = (real)sc->walls[k].centre[1];
+    rot[3 * k + 2] = (real)sc->walls[k].omega;
+  }
+  CLSPH_TRY(kern_buffer(dev, 3 * (size_t)(sc->nwalls > 0 ? sc->nwalls : 1) * sizeof *rot, rot,
                         &w->d_rot, "wall rotations"));
   CLSPH_TRY(prog_kernel(prog, "usaw_turn_vertices", &w->k_turn_vertices));
   CLSPH_TRY(prog_kernel(prog, "usaw_turn_segments", &w->k_turn_segments));
   w->t_now = 0.0;
 done:
+  free(rot);
   free(x0);
   free(turn);
   return st;
@@ -221,18 +226,7 @@ enum clsph_status usaw_walls_turn(struct usaw_walls *w, struct sim *sim, double 
 {
   enum clsph_status st = CLSPH_OK;
   if (!w->turning || t == w->t_now) return CLSPH_OK;
-  const struct scene *sc = sim->scene;
-  for (int k = 0; k < w->nwalls; ++k) {
-    const struct scene_wall *wl = &sc->walls[k];
-    const double th = fmod(wl->omega * t, 2.0 * 3.14159265358979323846); /* θ = ω t */
-    real *r = w->h_rot + 5 * k;
-    r[0] = (real)wl->centre[0];
-    r[1] = (real)wl->centre[1];
-    r[2] = (real)cos(th);
-    r[3] = (real)sin(th);
-    r[4] = (real)wl->omega;
-  }
-  CLSPH_TRY(kern_write(sim->dev, w->d_rot, 5 * (size_t)w->nwalls * sizeof *w->h_rot, w->h_rot));
+  const real rt = (real)t;
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n, ns = (cl_uint)w->ps.n;
   cl_mem id = pset_mem(ps, sim->f_id), pos = pset_mem(ps, sim->f_pos);
@@ -240,15 +234,15 @@ enum clsph_status usaw_walls_turn(struct usaw_walls *w, struct sim *sim, double 
   const cl_uint has_normal = w->f_vnormal >= 0;
   cl_mem nrm = has_normal ? pset_mem(ps, w->f_vnormal) : w->d_vert0;
   CLSPH_TRY(KERN_SET(w->k_turn_vertices, KARG(n), KARG(sim->grid.geom), KARG(id),
-                     KARG(w->d_vert_turn), KARG(w->d_vert0), KARG(w->d_rot), KARG(pos), KARG(vel),
-                     KARG(has_normal), KARG(nrm)));
+                     KARG(w->d_vert_turn), KARG(w->d_vert0), KARG(w->d_rot), KARG(rt), KARG(pos),
+                     KARG(vel), KARG(has_normal), KARG(nrm)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_turn_vertices, ps->n, NULL));
   cl_mem index = pset_mem(&w->ps, w->f_index), a = pset_mem(&w->ps, w->f_a);
   cl_mem b = pset_mem(&w->ps, w->f_b), nn = pset_mem(&w->ps, w->f_n);
   cl_mem mid = pset_mem(&w->ps, w->f_mid);
   CLSPH_TRY(KERN_SET(w->k_turn_segments, KARG(ns), KARG(w->g.geom), KARG(index),
-                     KARG(w->d_seg_turn), KARG(w->d_seg0), KARG(w->d_rot), KARG(a), KARG(b),
-                     KARG(nn), KARG(mid)));
+                     KARG(w->d_seg_turn), KARG(w->d_seg0), KARG(w->d_rot), KARG(rt), KARG(a),
+                     KARG(b), KARG(nn), KARG(mid)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_turn_segments, w->ps.n, NULL));
   CLSPH_TRY(grid_sort(&w->g, sim->dev, w->ps.n, mid, w->d_flags));
   CLSPH_TRY(pset_reorder(&w->ps, &w->g, sim->dev));
@@ -343,8 +337,6 @@ void usaw_walls_destroy(struct usaw_walls *w)
   }
   cl_mem *ms[] = {&w->d_rot, &w->d_seg_turn, &w->d_seg0, &w->d_vert_turn, &w->d_vert0};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
-  free(w->h_rot);
-  w->h_rot = NULL;
   w->turning = 0;
   kern_release(&w->d_flags);
   pset_destroy(&w->ps);

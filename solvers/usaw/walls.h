@@ -30,9 +30,7 @@ struct usaw_walls {
    * kernels/usaw/motion.cl); all zero when none does */
   int turning;        /* 1: some segment turns */
   double t_now;       /* the time the turning walls stand at, s */
-  int nwalls;         /* scene walls (rows of h_rot / d_rot) */
-  real *h_rot;        /* per wall: centre x, y, cos θ, sin θ, ω (5 reals) */
-  cl_mem d_rot;       /* the same on the device */
+  cl_mem d_rot;       /* per scene wall: centre x, y and ω (3 reals; kernels/usaw/motion.cl) */
   cl_mem d_seg_turn;  /* per segment (the geometry's order): its wall if it turns, else −1 */
   cl_mem d_seg0;      /* per segment: a, b, n at t = 0 (3 realv), the ends the images nearest
                        * their wall's centre */
