@@ -1107,7 +1107,7 @@ clsph_run_test(run_turning_splash ${CASE_DIR}/turning_splash.lua
 # crossing, the water's area within 0.52% / 0.54% of its start, the deep water's number density
 # 0.990 / 0.988, the torque over t = 1-2 s −1405 / −1358 N m/m, the wheel's work 1.53 / 1.38 times
 # the fluid's energy gain (the rest dissipated); wcsph-usaw (c0 = 29.7 m/s, samples every 0.05 s)
-# area within 0.64% / 0.20%, density 1.003, torque −662 / −670 N m/m, work 1.27 / 1.18 times the
+# area within 0.24% / 0.29%, density 1.003, torque −662 / −670 N m/m, work 1.27 / 1.18 times the
 # gain. With the paper's projection (relax = 0) the deep water spread to 0.957 and the area grew
 # 2.1% by t = 2 s; before wcsph-usaw's wall vertices took their pressure from their own fluid
 # sector (density.cl) its torque was −219 N m/m and the wheel's work 0.42 of the fluid's gain.
