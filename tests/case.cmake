@@ -668,6 +668,15 @@ clsph_cli_test(case_wall_velocity ARGS info ${CASE_DIR}/bad_wall_velocity.lua RC
                REGEX "bad_wall_velocity.lua: wall_velocity must be \"shepard\".* or \"image\"")
 clsph_cli_test(case_viscous ARGS info ${CASE_DIR}/bad_viscous.lua RC 2
                REGEX "bad_viscous.lua: viscous must be \"explicit\".* or \"implicit\"")
+clsph_cli_test(density_relaxation_range ARGS info ${CASE_DIR}/bad_density_relaxation.lua
+               --set what=1 RC 2
+               REGEX "bad_density_relaxation.lua: density_relaxation must be a coefficient from 0 .* to 1, not 2")
+clsph_cli_test(density_relaxation_text ARGS info ${CASE_DIR}/bad_density_relaxation.lua
+               --set what=2 RC 2
+               REGEX "bad_density_relaxation.lua: density_relaxation must be a number .*, not \"strong\"")
+clsph_cli_test(density_relaxation_nan ARGS info ${CASE_DIR}/bad_density_relaxation.lua
+               --set what=3 RC 2
+               REGEX "bad_density_relaxation.lua: density_relaxation must be a coefficient .* not (nan|-nan)")
 clsph_cli_test(case_shift_velocity ARGS info ${CASE_DIR}/bad_shift_velocity.lua RC 2
                REGEX "bad_shift_velocity.lua: shift_velocity must be \"on\".* or \"off\"")
 

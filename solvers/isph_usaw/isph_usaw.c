@@ -173,10 +173,14 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
       is->c_shift = o->number;
     }
     if (strcmp(o->key, "density_relaxation") == 0) {
-      CLSPH_CHECK(o->is_number && o->number >= 0.0 && o->number <= 1.0, CLSPH_E_INPUT,
+      CLSPH_CHECK(o->is_number, CLSPH_E_INPUT,
+                  "%s: density_relaxation must be a number (a coefficient from 0, off, to 1), "
+                  "not \"%s\"",
+                  sim->scene->case_path, o->text);
+      CLSPH_CHECK(o->number >= 0.0 && o->number <= 1.0, CLSPH_E_INPUT,
                   "%s: density_relaxation must be a coefficient from 0 (off, the paper's "
-                  "divergence-free projection) to 1, not %s",
-                  sim->scene->case_path, o->is_number ? "out of range" : o->text);
+                  "divergence-free projection) to 1, not %g",
+                  sim->scene->case_path, o->number);
       is->relax = o->number;
     }
     if (strcmp(o->key, "free_surface_offset") == 0) {
