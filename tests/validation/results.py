@@ -483,10 +483,10 @@ def wheel_section(runs, runs_dir):
            "[wheel_t66.png](wheel_t66.png); torque, area and energy: "
            "[wheel_torque.png](wheel_torque.png). The side-by-side movie is "
            f"`{runs_dir}/wheel.mp4` (not stored). Wall times: none of these runs had the machine "
-           "to itself (the two dr = 0.02 m runs ran side by side, with the test suites and a CI "
-           "run beside them for their first hour; the 1-s runs beside the isph-usaw run), so "
-           "they are about twice what the runs take alone; the cost of 30 s scales each run's "
-           "own time per step.", "",
+           "to itself but the 1-s runs at the paper's count, which ran alone (the two dr = 0.02 m "
+           "runs ran side by side, with the test suites and a CI run beside them for their first "
+           "hour, about twice what they take alone; the relax = 0 run beside the isph-usaw one); "
+           "the cost of 30 s scales each run's own time per step.", "",
            "| run | scheme | dr | fluid particles | t_end | steps | crossings | area change (end / worst) "
            "| spray (end) | area + spray (worst) "
            "| deep density | torque mean | work/gain | max speed / ω R | particle-steps/s | wall s "
