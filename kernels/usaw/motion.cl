@@ -14,12 +14,29 @@ real2 usaw_turn_angle(__global const real *rot, const int w, const real t)
   return (real2)(cos(th), sin(th));
 }
 
-/* r(0) of wall w turned by the angle cs (cos θ, sin θ) about its centre */
+/* the vector v turned by the angle cs (cos θ, sin θ) */
+realv usaw_rotate(const real2 cs, const realv v)
+{
+  return (realv)(cs.x * v.x - cs.y * v.y, cs.y * v.x + cs.x * v.y);
+}
+
+/* r(0) of wall w turned by the angle cs about its centre */
 realv usaw_turned(__global const real *rot, const int w, const real2 cs, const realv x0)
 {
   const realv c = (realv)(rot[3 * w], rot[3 * w + 1]);
-  const realv d = x0 - c;
-  return c + (realv)(cs.x * d.x - cs.y * d.y, cs.y * d.x + cs.x * d.y);
+  return c + usaw_rotate(cs, x0 - c);
+}
+
+/* x wrapped into the domain on its periodic axes */
+realv usaw_wrap_point(const struct grid g, realv x)
+{
+#if PERIODIC_X
+  x.x = isph_wrap(x.x, g.lo.x, g.len.x);
+#endif
+#if PERIODIC_Y
+  x.y = isph_wrap(x.y, g.lo.y, g.len.y);
+#endif
+  return x;
 }
 
 /* The vertex particles of turning walls: position and velocity now, and their normal (into the
@@ -36,20 +53,11 @@ __kernel void usaw_turn_vertices(const uint n, const struct grid g, __global con
   const int w = turn[o];
   if (w < 0) return;
   const real2 cs = usaw_turn_angle(rot, w, t);
-  realv x = usaw_turned(rot, w, cs, x0[2 * o]);
+  const realv x = usaw_turned(rot, w, cs, x0[2 * o]);
   const realv d = x - (realv)(rot[3 * w], rot[3 * w + 1]);
   vel[i] = rot[3 * w + 2] * (realv)(-d.y, d.x);
-  if (has_normal) {
-    const realv n0 = x0[2 * o + 1];
-    normal[i] = (realv)(cs.x * n0.x - cs.y * n0.y, cs.y * n0.x + cs.x * n0.y);
-  }
-#if PERIODIC_X
-  x.x = isph_wrap(x.x, g.lo.x, g.len.x);
-#endif
-#if PERIODIC_Y
-  x.y = isph_wrap(x.y, g.lo.y, g.len.y);
-#endif
-  pos[i] = x;
+  if (has_normal) normal[i] = usaw_rotate(cs, x0[2 * o + 1]);
+  pos[i] = usaw_wrap_point(g, x);
 }
 
 /* The segments of turning walls (index: each segment's place in the geometry's order): ends,
@@ -68,18 +76,9 @@ __kernel void usaw_turn_segments(const uint ns, const struct grid g, __global co
   const real2 cs = usaw_turn_angle(rot, w, t);
   const realv A = usaw_turned(rot, w, cs, seg0[3 * o]);
   const realv B = usaw_turned(rot, w, cs, seg0[3 * o + 1]);
-  const realv n0 = seg0[3 * o + 2];
-  const realv M = R(0.5) * (A + B);
-  realv Mw = M;
-#if PERIODIC_X
-  Mw.x = isph_wrap(M.x, g.lo.x, g.len.x);
-#endif
-#if PERIODIC_Y
-  Mw.y = isph_wrap(M.y, g.lo.y, g.len.y);
-#endif
-  const realv shift = Mw - M;
-  a[s] = A + shift;
-  b[s] = B + shift;
-  nrm[s] = (realv)(cs.x * n0.x - cs.y * n0.y, cs.y * n0.x + cs.x * n0.y);
+  const realv M = R(0.5) * (A + B), Mw = usaw_wrap_point(g, M);
+  a[s] = A + (Mw - M);
+  b[s] = B + (Mw - M);
+  nrm[s] = usaw_rotate(cs, seg0[3 * o + 2]);
   mid[s] = Mw;
 }
