@@ -12,3 +12,10 @@ endforeach()
 # one OpenFOAM run at a time: each is serial, and the references were made that way
 set_tests_properties(openfoam_channel_straight openfoam_channel_mild openfoam_channel_strong
                      openfoam_channel_hcd openfoam_channel_hcd_fine PROPERTIES RUN_SERIAL TRUE)
+# The fish-pass reference (tests/validation/openfoam/fish_pass, Leroy et al. sec 5.2): pimpleFoam
+# from rest to 20 s on two meshes, about 25 minutes of one core; the fresh profiles against
+# tests/data/openfoam_fish_pass.csv (check.sh: U within 1e-2 of the peak)
+clsph_add_test(openfoam_fish_pass TIMEOUT 3600 LABELS "slow;openfoam"
+               COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/validation/openfoam/fish_pass/check.sh
+                       ${CMAKE_CURRENT_BINARY_DIR}/openfoam_fish_pass)
+set_tests_properties(openfoam_fish_pass PROPERTIES RUN_SERIAL TRUE)

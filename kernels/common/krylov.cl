@@ -156,6 +156,17 @@ __kernel void kr_shift(const uint n, __global const real *part, const uint ngrou
   for (uint i = get_global_id(0); i < n; i += get_global_size(0)) dst[i] = src[i] - c;
 }
 
+/* dst = src − Σ w src / Σ w, the sums of kr_wtotal */
+__kernel void kr_wshift(const uint n, __global const real *part, const uint ngroups,
+                        __global const real *src, __global real *dst)
+{
+  __local real c;
+  if (get_local_id(0) == 0)
+    c = (real)(kr_sum(part, KR_SUM, ngroups) / kr_sum(part, KR_TT, ngroups));
+  barrier(CLK_LOCAL_MEM_FENCE);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) dst[i] = src[i] - c;
+}
+
 /* Start: ||b|| (set KR_BB) and ||r|| (set KR_RR) decide whether there is anything to do; if so,
  * r0 = r, p = v = 0, ρ = α = ω = 1. */
 __kernel void kr_start(const uint n, const uint ngroups, const real rtol, const real atol,
@@ -400,6 +411,24 @@ __kernel void kr_total(const uint n, __global const real *x, __global real *part
   for (uint i = get_global_id(0); i < n; i += get_global_size(0)) acc += x[i];
   s[get_local_id(0)] = acc;
   blas1_group_sum(s, part + KR_SUM * BLAS1_GROUPS, get_group_id(0));
+}
+
+/* Σ w x into set KR_SUM and Σ w into set KR_TT (free outside the iterations): the weighted mean
+ * of a singular operator whose left null vector is w (PSOLVE_MEAN with psolve_op.weight) */
+__kernel void kr_wtotal(const uint n, __global const real *w, __global const real *x,
+                        __global real *part)
+{
+  __local real s[BLAS1_WG];
+  __local real t[BLAS1_WG];
+  real acc = R(0.0), wacc = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    acc += w[i] * x[i];
+    wacc += w[i];
+  }
+  s[get_local_id(0)] = acc;
+  t[get_local_id(0)] = wacc;
+  blas1_group_sum(s, part + KR_SUM * BLAS1_GROUPS, get_group_id(0));
+  blas1_group_sum(t, part + KR_TT * BLAS1_GROUPS, get_group_id(0));
 }
 
 /* y = (A + ε diag A) x from the stored rows (csr.cl layout, diagonal first), in iteration k */

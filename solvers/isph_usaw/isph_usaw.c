@@ -45,6 +45,7 @@ struct isph {
   double c_shift;   /* shifting coefficient (0: off) */
   double fs_offset; /* distance of the free surface beyond its particles, in dr */
   double relax;     /* density_relaxation α (0: off, the paper's; ppe.cl) */
+  cl_uint guard;    /* the wall guard (project.cl, shift.cl): wall_guard, by default with gravity */
   double u_wall;    /* largest wall speed, m/s */
   double d_min;     /* smallest wall distance of the viscous wall term, m (usaw/viscous.cl) */
   /* carried from step to step, and over a restart (isph_persist): the largest particle
@@ -190,6 +191,8 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
     }
   }
   CLSPH_TRY(sim_psolve_options(sim, &is->popt));
+  CLSPH_TRY(usaw_wall_guard_option(
+      sim->scene, hypot(sim->scene->gravity[0], sim->scene->gravity[1]) > 0.0, &is->guard));
   /* the viscous wall term at the first row's own distance, δr/2, not the paper's δr (eq 17):
    * kernels/usaw/viscous.cl */
   CLSPH_TRY(usaw_wall_distance_floor(sim->scene, 0.5, &is->d_min));
@@ -335,6 +338,17 @@ done:
   return st;
 }
 
+/* How the pressure equation is solved: with a free surface (Dirichlet rows) as solver_singular
+ * says, but never mean-free (the rows break the weighted mean's null vector); without one
+ * (singular) with the reinforced diagonal of sec 3.3, or mean-free (solver_singular = "mean" or
+ * "project"). */
+static enum psolve_singular singular_mode(const struct isph *is, int free_surface)
+{
+  const enum psolve_singular s = is->popt.singular;
+  if (free_surface) return PSOLVE_MEAN_FREE(s) ? PSOLVE_REGULAR : s;
+  return PSOLVE_MEAN_FREE(s) ? s : PSOLVE_REINFORCE;
+}
+
 static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
 {
   enum clsph_status st = CLSPH_OK;
@@ -409,7 +423,7 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof relax, &relax));
   CLSPH_TRY(arg(is->k_rhs, &i, sizeof rhs, &rhs));
   CLSPH_TRY(kern_launch(sim->dev, is->k_rhs, ps->n, NULL));
-  is->ps.opt.singular = guess ? is->popt.singular : PSOLVE_REINFORCE;
+  is->ps.opt.singular = singular_mode(is, guess);
   poisson_op_bind(&is->po, &sim->grid, ps->n, pos, pset_mem(ps, sim->f_vol), NULL, fs);
   struct psolve_result res;
   CLSPH_TRY(solve(sim, is, rhs, P, &res));
@@ -418,7 +432,7 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
     if ((nfree > 0.0) != guess) {
       log_debug("isph-usaw: step %ld: the free surface %s; the pressure equation again, %s",
                 sim->step, guess ? "is gone" : "is back", guess ? "reinforced" : "regular");
-      is->ps.opt.singular = nfree > 0.0 ? is->popt.singular : PSOLVE_REINFORCE;
+      is->ps.opt.singular = singular_mode(is, nfree > 0.0);
       const int its = res.its; /* the step reports both solves' iterations */
       CLSPH_TRY(solve(sim, is, rhs, P, &res));
       res.its += its;
@@ -453,7 +467,7 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_project, &i, sizeof divr, &divr));
   const cl_uint free_flow = nfree > 0.0;
   CLSPH_TRY(arg(is->k_project, &i, sizeof free_flow, &free_flow));
-  CLSPH_TRY(arg(is->k_project, &i, sizeof stop_at_walls, &stop_at_walls));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof is->guard, &is->guard));
   CLSPH_TRY(arg(is->k_project, &i, sizeof vel, &vel));
   cl_mem acc = pset_mem(ps, is->f_acc); /* the accelerations, kept for the next free surface */
   CLSPH_TRY(arg(is->k_project, &i, sizeof acc, &acc));
@@ -476,7 +490,7 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
     CLSPH_TRY(arg(is->k_shift, &i, sizeof wall_vel, &wall_vel));
     CLSPH_TRY(arg(is->k_shift, &i, sizeof fs, &fs));
     CLSPH_TRY(arg(is->k_shift, &i, sizeof c, &c));
-    CLSPH_TRY(arg(is->k_shift, &i, sizeof stop_at_walls, &stop_at_walls));
+    CLSPH_TRY(arg(is->k_shift, &i, sizeof is->guard, &is->guard));
     CLSPH_TRY(arg(is->k_shift, &i, sizeof dr, &dr));
     cl_mem id = pset_mem(ps, sim->f_id);
     CLSPH_TRY(arg(is->k_shift, &i, sizeof id, &id));

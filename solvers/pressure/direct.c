@@ -10,6 +10,17 @@
 #include "clsph_config.h"
 #include "psolve.h"
 
+/* Σ w v / Σ w of v (real, or double where vr is NULL) */
+static double weighted_mean(const double *w, const real *vr, const double *vd, size_t n)
+{
+  double s = 0.0, sw = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    s += w[i] * (vr != NULL ? (double)vr[i] : vd[i]);
+    sw += w[i];
+  }
+  return sw != 0.0 ? s / sw : 0.0;
+}
+
 enum clsph_status psolve_direct(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
                                 struct psolve_result *res)
 {
@@ -17,7 +28,7 @@ enum clsph_status psolve_direct(struct psolve *ps, const struct psolve_op *op, c
   const size_t n = op->n;
   size_t *row = NULL;
   int *col = NULL, *ap = NULL;
-  double *val = NULL, *hb = NULL, *hx = NULL;
+  double *val = NULL, *hb = NULL, *hx = NULL, *hw = NULL;
   real *buf = NULL;
   void *symbolic = NULL, *numeric = NULL;
   double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
@@ -31,12 +42,20 @@ enum clsph_status psolve_direct(struct psolve *ps, const struct psolve_op *op, c
   buf = malloc(n * sizeof *buf);
   CLSPH_CHECK(ap && hb && hx && buf, CLSPH_E_NOMEM, "direct solve: out of memory");
   for (size_t i = 0; i <= n; ++i) ap[i] = (int)row[i];
+  /* mean-free: the weights of the mean, the operator's left null vector or ones (psolve.c) */
+  if (PSOLVE_MEAN_FREE(ps->opt.singular)) {
+    hw = malloc(n * sizeof *hw);
+    CLSPH_CHECK(hw != NULL, CLSPH_E_NOMEM, "direct solve: out of memory");
+    if (op->weight != NULL) {
+      CLSPH_TRY(kern_read(ps->dev, op->weight, n * sizeof *buf, buf));
+      for (size_t i = 0; i < n; ++i) hw[i] = (double)buf[i];
+    } else {
+      for (size_t i = 0; i < n; ++i) hw[i] = 1.0;
+    }
+  }
   CLSPH_TRY(kern_read(ps->dev, b, n * sizeof *buf, buf));
-  double mean = 0.0;
-  for (size_t i = 0; i < n; ++i) mean += (double)buf[i];
-  mean /= (double)n;
-  for (size_t i = 0; i < n; ++i)
-    hb[i] = (double)buf[i] - (ps->opt.singular == PSOLVE_MEAN ? mean : 0.0);
+  const double mean = hw != NULL ? weighted_mean(hw, buf, NULL, n) : 0.0;
+  for (size_t i = 0; i < n; ++i) hb[i] = (double)buf[i] - mean;
 
   umfpack_di_defaults(control);
   int s = umfpack_di_symbolic((int)n, (int)n, ap, col, val, &symbolic, control, info);
@@ -48,10 +67,9 @@ enum clsph_status psolve_direct(struct psolve *ps, const struct psolve_op *op, c
               "UMFPACK: the pressure matrix is singular; use solver_singular = \"reinforce\"");
   s = umfpack_di_solve(UMFPACK_At, ap, col, val, hx, hb, numeric, control, info);
   CLSPH_CHECK(s == UMFPACK_OK, CLSPH_E_BLOWUP, "UMFPACK solve failed (status %d)", s);
-  if (ps->opt.singular == PSOLVE_MEAN) {
-    double m = 0.0;
-    for (size_t i = 0; i < n; ++i) m += hx[i];
-    for (size_t i = 0; i < n; ++i) hx[i] -= m / (double)n;
+  if (hw != NULL) {
+    const double m = weighted_mean(hw, NULL, hx, n);
+    for (size_t i = 0; i < n; ++i) hx[i] -= m;
   }
   /* residual of the assembled system, in double */
   double rr = 0.0, bb = 0.0;
@@ -70,6 +88,7 @@ done:
   if (numeric != NULL) umfpack_di_free_numeric(&numeric);
   if (symbolic != NULL) umfpack_di_free_symbolic(&symbolic);
   free(buf);
+  free(hw);
   free(hx);
   free(hb);
   free(ap);

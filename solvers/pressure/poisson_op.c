@@ -94,6 +94,9 @@ void poisson_op_bind(struct poisson_op *po, const struct grid *g, size_t n, cl_m
   po->op.row_counts = po_counts;
   po->op.coefficients = po_coefficients;
   po->op.grid = g;
+  /* V_i A_ij = −2 V_i V_j F_ij is symmetric: the volumes are the left null vector of the
+   * Laplacian without Dirichlet rows (not with KGC's L_i) */
+  po->op.weight = L == NULL ? vol : NULL;
 }
 
 void poisson_op_destroy(struct poisson_op *po)

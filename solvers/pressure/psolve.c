@@ -64,7 +64,7 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
   static const char *const methods[] = {"bicgstab", "direct", NULL};
   static const char *const applies[] = {"stored", "recompute", NULL};
   static const char *const preconds[] = {"jacobi", "none", "jacobi_sweeps", "multigrid", NULL};
-  static const char *const singulars[] = {"regular", "reinforce", "mean", NULL};
+  static const char *const singulars[] = {"regular", "reinforce", "mean", "project", NULL};
   int k;
   if (strcmp(key, "solver") == 0) {
     CLSPH_CHECK((k = pick(text, methods)) >= 0, CLSPH_E_INPUT,
@@ -80,7 +80,7 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
     o->precond = (enum psolve_precond)k;
   } else if (strcmp(key, "singular") == 0) {
     CLSPH_CHECK((k = pick(text, singulars)) >= 0, CLSPH_E_INPUT,
-                "solver_singular must be \"regular\", \"reinforce\" or \"mean\"");
+                "solver_singular must be \"regular\", \"reinforce\", \"mean\" or \"project\"");
     o->singular = (enum psolve_singular)k;
   } else if (strcmp(key, "sweeps") == 0) {
     CLSPH_CHECK(number >= 1 && number <= 16, CLSPH_E_INPUT, "solver_sweeps must be 1 to 16");
@@ -133,6 +133,8 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
             {&ps.k_end, "kr_end_iteration"},
             {&ps.k_restart, "kr_restart"},
             {&ps.k_total, "kr_total"},
+            {&ps.k_wtotal, "kr_wtotal"},
+            {&ps.k_wshift, "kr_wshift"},
             {&ps.k_spmv, "kr_spmv"},
             {&ps.k_scale, "kr_scale"},
             {&ps.k_sweep, "kr_sweep"},
@@ -239,11 +241,21 @@ static enum clsph_status copy(struct psolve *ps, cl_mem dst, cl_mem src, cl_uint
   return kern_copy(ps->dev, dst, src, n * sizeof(real));
 }
 
-/* dst = src − mean(src) (PSOLVE_MEAN), on the device */
-static enum clsph_status remove_mean(struct psolve *ps, cl_uint n, cl_mem src, cl_mem dst)
+/* dst = src − mean(src) (PSOLVE_MEAN, PSOLVE_PROJECT), on the device: the mean weighted by the
+ * operator's left null vector where it gives one (then Σ w b = 0 makes the system consistent), else
+ * the plain one */
+static enum clsph_status remove_mean(struct psolve *ps, const struct psolve_op *op, cl_uint n,
+                                     cl_mem src, cl_mem dst)
 {
   enum clsph_status st = CLSPH_OK;
   const cl_uint ng = (cl_uint)ps->ngroups;
+  if (op->weight != NULL) {
+    CLSPH_TRY(KERN_SET(ps->k_wtotal, KARG(n), KARG(op->weight), KARG(src), KARG(ps->d_partial)));
+    CLSPH_TRY(launch_groups(ps, ps->k_wtotal));
+    CLSPH_TRY(KERN_SET(ps->k_wshift, KARG(n), KARG(ps->d_partial), KARG(ng), KARG(src), KARG(dst)));
+    CLSPH_TRY(launch_groups(ps, ps->k_wshift));
+    goto done;
+  }
   CLSPH_TRY(KERN_SET(ps->k_total, KARG(n), KARG(src), KARG(ps->d_partial)));
   CLSPH_TRY(launch_groups(ps, ps->k_total));
   CLSPH_TRY(KERN_SET(ps->k_shift, KARG(n), KARG(ps->d_partial), KARG(ng), KARG(src), KARG(dst)));
@@ -314,7 +326,7 @@ static enum clsph_status apply(struct psolve *ps, const struct psolve_op *op, cl
   enum clsph_status st = CLSPH_OK;
   cl_uint n = (cl_uint)op->n;
   struct kern_timer *t = &ps->t_apply;
-  const real e = (real)(ps->opt.singular == PSOLVE_REINFORCE ? ps->opt.reinforce : 0.0);
+  const real e = (real)(PSOLVE_REINFORCED(ps->opt.singular) ? ps->opt.reinforce : 0.0);
   if (ps->opt.apply == PSOLVE_STORED) {
     CLSPH_TRY(KERN_SET(ps->k_spmv, KARG(n), KARG(k), KARG(ps->d_state), KARG(ps->d_row),
                        KARG(ps->d_col), KARG(ps->d_val), KARG(e), KARG(x), KARG(y)));
@@ -328,7 +340,7 @@ static enum clsph_status apply(struct psolve *ps, const struct psolve_op *op, cl
     t->seconds += now() - t0;
     t->launches += 1;
   }
-  if (ps->opt.singular == PSOLVE_REINFORCE) { /* y += ε diag(A) x */
+  if (PSOLVE_REINFORCED(ps->opt.singular)) { /* y += ε diag(A) x */
     CLSPH_TRY(KERN_SET(ps->k_add_diag, KARG(n), KARG(y), KARG(e), KARG(ps->d_diag), KARG(x)));
     CLSPH_TRY(launch(ps, ps->k_add_diag, n));
   }
@@ -336,10 +348,13 @@ done:
   return st;
 }
 
-/* ε of A + ε diag(A), 0 without the reinforcement */
+/* ε of the multigrid preconditioner's A + ε diag(A): the reinforcement's, and a mean-free solve's
+ * too, whose operator stays singular but whose preconditioner must not be: on the fish-pass
+ * (cases/fish_pass.lua) in float the singular coarse levels sent BiCGStab to non-finite values in
+ * its first step; 0 for a regular system */
 static double reinforcement(const struct psolve *ps)
 {
-  return ps->opt.singular == PSOLVE_REINFORCE ? ps->opt.reinforce : 0.0;
+  return ps->opt.singular == PSOLVE_REGULAR ? 0.0 : ps->opt.reinforce;
 }
 
 /* z = M⁻¹ r in iteration k: none, multigrid, Jacobi, or Jacobi followed by sweeps toward A z = r
@@ -388,7 +403,7 @@ static enum clsph_status diagonal(struct psolve *ps, const struct psolve_op *op)
     CLSPH_TRY(op->diagonal(op->ctx, ps->d_diag));
   }
   CLSPH_TRY(copy(ps, ps->d_dinv, ps->d_diag, n));
-  if (ps->opt.singular == PSOLVE_REINFORCE) { /* dinv = (1 + ε) diag(A) */
+  if (PSOLVE_REINFORCED(ps->opt.singular)) { /* dinv = (1 + ε) diag(A) */
     real e = (real)ps->opt.reinforce;
     CLSPH_TRY(KERN_SET(ps->k_axpy, KARG(n), KARG(e), KARG(ps->d_diag), KARG(ps->d_dinv)));
     CLSPH_TRY(launch(ps, ps->k_axpy, n));
@@ -447,8 +462,8 @@ static enum clsph_status bicgstab(struct psolve *ps, const struct psolve_op *op,
   res->its = 0;
   res->restarts = 0;
   /* b (mean-free for a consistent singular system), r = b − A x (x: the initial guess), r0 = r */
-  if (ps->opt.singular == PSOLVE_MEAN)
-    CLSPH_TRY(remove_mean(ps, n, b, ps->d_b));
+  if (PSOLVE_MEAN_FREE(ps->opt.singular))
+    CLSPH_TRY(remove_mean(ps, op, n, b, ps->d_b));
   else
     CLSPH_TRY(copy(ps, ps->d_b, b, n));
   CLSPH_TRY(dot(ps, n, 0, ps->d_b, ps->d_b, KR_BB_SET));
@@ -519,7 +534,7 @@ static enum clsph_status bicgstab(struct psolve *ps, const struct psolve_op *op,
   }
   if (res->reason > 0 && res->its > 0) ps->last_its = res->its;
 done:
-  if (st == CLSPH_OK && ps->opt.singular == PSOLVE_MEAN) st = remove_mean(ps, n, x, x);
+  if (st == CLSPH_OK && PSOLVE_MEAN_FREE(ps->opt.singular)) st = remove_mean(ps, op, n, x, x);
   return st;
 }
 
@@ -632,7 +647,7 @@ enum clsph_status psolve_assemble(struct psolve *ps, const struct psolve_op *op,
     for (size_t k = r[i]; k < r[i + 1]; ++k) {
       int cc = (int)c[k];
       double vv = (double)v[k];
-      if (cc == (int)i && ps->opt.singular == PSOLVE_REINFORCE) vv *= 1.0 + ps->opt.reinforce;
+      if (cc == (int)i && PSOLVE_REINFORCED(ps->opt.singular)) vv *= 1.0 + ps->opt.reinforce;
       size_t m = k;
       while (m > r[i] && cols[m - 1] > cc) {
         cols[m] = cols[m - 1];
@@ -665,7 +680,8 @@ void psolve_destroy(struct psolve *ps)
                      &ps->k_start,    &ps->k_begin,       &ps->k_s,        &ps->k_end,
                      &ps->k_restart,  &ps->k_total,       &ps->k_spmv,     &ps->k_scale,
                      &ps->k_sweep,    &ps->k_axpy,        &ps->k_add_diag, &ps->k_invert,
-                     &ps->k_csr_diag, &ps->k_scan_blocks, &ps->k_scan_top, &ps->k_scan_apply};
+                     &ps->k_csr_diag, &ps->k_scan_blocks, &ps->k_scan_top, &ps->k_scan_apply,
+                     &ps->k_wtotal,   &ps->k_wshift,      &ps->k_guard};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {
     if (*ks[i] != NULL) clReleaseKernel(*ks[i]);
     *ks[i] = NULL;

@@ -17,6 +17,9 @@
 struct psolve_op {
   void *ctx;
   size_t n; /* unknowns */
+  /** The left null vector w of a singular operator (wᵀ A = 0), or NULL for the ones: PSOLVE_MEAN
+   *  makes the right-hand side consistent (Σ w b = 0) and the solution's w-weighted mean zero. */
+  cl_mem weight;
   /** y = A x, recomputing the kernel terms. */
   enum clsph_status (*apply)(void *ctx, cl_mem x, cl_mem y);
   /** d = diag(A). */
@@ -36,8 +39,15 @@ enum psolve_precond { PSOLVE_JACOBI = 0, PSOLVE_NONE, PSOLVE_JACOBI_SWEEPS, PSOL
 enum psolve_singular {
   PSOLVE_REGULAR = 0, /* the system has a unique solution (Dirichlet rows somewhere) */
   PSOLVE_REINFORCE,   /* A + ε diag(A): Leroy et al. 2014 sec 3.3, "a slight reinforcement" */
-  PSOLVE_MEAN         /* consistent singular system: mean-free right-hand side and solution */
+  PSOLVE_MEAN,        /* consistent singular system: mean-free right-hand side and solution */
+  PSOLVE_PROJECT      /* both: the right-hand side made consistent (mean-free), A + ε diag A
+                       * solved, the solution mean-free (robust in float, where BiCGStab on the
+                       * singular operator itself can diverge) */
 };
+/** The options' system is solved with A + ε diag A. */
+#define PSOLVE_REINFORCED(s) ((s) == PSOLVE_REINFORCE || (s) == PSOLVE_PROJECT)
+/** The options' right-hand side and solution are made mean-free. */
+#define PSOLVE_MEAN_FREE(s) ((s) == PSOLVE_MEAN || (s) == PSOLVE_PROJECT)
 
 /** Options (defaults from psolve_defaults()). */
 struct psolve_options {
@@ -80,7 +90,7 @@ struct psolve {
   int failures; /* consecutive non-converged solves */
   cl_kernel k_dot, k_dot_ts, k_residual, k_shift, k_start, k_begin, k_s, k_end, k_restart, k_total,
       k_spmv, k_scale, k_sweep, k_axpy, k_add_diag, k_invert, k_csr_diag, k_scan_blocks, k_scan_top,
-      k_scan_apply, k_guard;
+      k_scan_apply, k_guard, k_wtotal, k_wshift;
   cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags;
   cl_mem d_state;                               /* the iteration's state (krylov.cl) */
   cl_mem d_row, d_col, d_val, d_count, d_block; /* stored layout */

@@ -31,6 +31,30 @@ done:
   return st;
 }
 
+enum clsph_status usaw_wall_guard_option(const struct scene *sc, int auto_on, cl_uint *on)
+{
+  enum clsph_status st = CLSPH_OK;
+  *on = auto_on ? 1u : 0u;
+  for (int i = 0; i < sc->noptions; ++i) {
+    const struct scene_option *o = &sc->options[i];
+    if (strcmp(o->key, "wall_guard") != 0) continue;
+    CLSPH_CHECK(!o->is_number, CLSPH_E_INPUT,
+                "%s: wall_guard must be \"auto\" (on with gravity or turning walls), \"on\" or "
+                "\"off\", not the number %g",
+                sc->case_path, o->number);
+    const char *t = o->text;
+    CLSPH_CHECK(strcmp(t, "on") == 0 || strcmp(t, "off") == 0 || strcmp(t, "auto") == 0,
+                CLSPH_E_INPUT,
+                "%s: wall_guard must be \"auto\" (on with gravity or turning walls), \"on\" or "
+                "\"off\", not \"%s\"",
+                sc->case_path, t);
+    if (strcmp(t, "on") == 0) *on = 1u;
+    if (strcmp(t, "off") == 0) *on = 0u;
+  }
+done:
+  return st;
+}
+
 enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
                                     const struct usaw_segments *segs, const struct grid_spec *box,
                                     struct usaw_walls *out)

@@ -75,9 +75,12 @@ enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
                                   const struct scene *sc, size_t n, cl_mem d_p, cl_mem d_strain,
                                   cl_mem d_inv, double mu, double t, const char *group,
                                   struct wall_force *f);
-/** The scheme option both USAW schemes take for their viscous wall term (kernels/usaw/viscous.cl).
- */
-#define USAW_WALL_OPTION_NAMES "wall_distance_floor"
+/** The scheme options both USAW schemes take: their viscous wall term's distance floor
+ *  (kernels/usaw/viscous.cl) and the wall guard (usaw_wall_guard, kernels/usaw/common.cl). */
+#define USAW_WALL_OPTION_NAMES "wall_distance_floor", "wall_guard"
+/** @brief Whether the wall guard is on: the option wall_guard ("on", "off", or "auto", the
+ *  default, which takes `auto_on`: the scheme's own rule). */
+enum clsph_status usaw_wall_guard_option(const struct scene *sc, int auto_on, cl_uint *on);
 /** @brief The smallest wall distance δr_as of the viscous wall term (eq 17), in m: the option
  *  wall_distance_floor (spacings, in (0, 1]; 1 is the paper's δr), or the scheme's default
  *  `spacings`, times δr. */

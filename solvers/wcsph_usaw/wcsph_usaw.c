@@ -39,6 +39,7 @@ struct wcsph {
   double p_ref;     /* −ρ0 g·r_top: P = p − ρ0 g·r − p_ref is p_bg in a fluid at rest */
   int dynamic;      /* 1: G+ of P (pressure_form = "dynamic"), 0: G+ of p (the paper's) */
   double diffusion; /* factor of the Ferrari density diffusion (1: as published, 0: off) */
+  cl_uint guard;    /* the wall guard (update.cl): wall_guard, by default with gravity or turning */
 };
 
 static const char *const sources[] = {"usaw/gamma.cl",        "usaw/common.cl",
@@ -137,6 +138,10 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
    * 2349 steps, deepest 0.45 δr: a run stops at 0.5 δr). Under the k-ε model δr/2: the wall law
    * (eq 23) needs the first row's own distance from the wall. */
   CLSPH_TRY(usaw_wall_distance_floor(sc, sc->turb.on ? 0.5 : 1.0, &ws->d_min));
+  int turning = 0;
+  for (int w = 0; w < sc->nwalls; ++w) turning |= scene_wall_turns(&sc->walls[w]);
+  CLSPH_TRY(usaw_wall_guard_option(sc, hypot(sc->gravity[0], sc->gravity[1]) > 0.0 || turning,
+                                   &ws->guard));
   /* fields: density, pressure, and the USAW helpers */
   struct pset *ps = &sim->ps;
   const size_t rv = 2 * sizeof(real);
@@ -281,9 +286,7 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
    * the fluid in it (tests/case/turning_box.lua, ω = 1 rad/s, no gravity) the particles in the
    * corners, where the centripetal pressure peaks, crept out through the turning walls by
    * 3e-4 δr a step from t = 0.82 s and the run stopped at 0.97 s, 0.5 δr behind them */
-  const cl_uint guard =
-      hypot(sim->scene->gravity[0], sim->scene->gravity[1]) > 0.0 || ws->walls.turning;
-  ARG(ws->k_velocity, i, guard);
+  ARG(ws->k_velocity, i, ws->guard);
   ARG(ws->k_velocity, i, dr);
   cl_mem id = pset_mem(ps, sim->f_id);
   ARG(ws->k_velocity, i, id);

@@ -170,11 +170,11 @@ static void check_singular(const struct dev *dev)
     TC_CHECK(0, "singular: set-up");
     goto done;
   }
-  const enum psolve_singular modes[] = {PSOLVE_REINFORCE, PSOLVE_MEAN};
-  const char *mode_names[] = {"reinforced diagonal", "fixed mean"};
+  const enum psolve_singular modes[] = {PSOLVE_REINFORCE, PSOLVE_MEAN, PSOLVE_PROJECT};
+  const char *mode_names[] = {"reinforced diagonal", "fixed mean", "projected"};
   const enum psolve_precond pcs[] = {PSOLVE_JACOBI, PSOLVE_MULTIGRID};
   const char *pc_names[] = {"Jacobi", "multigrid"};
-  for (int m = 0; m < 4; ++m) {
+  for (int m = 0; m < 6; ++m) {
     struct outcome direct = {0}, it = {0};
     char name[64];
     snprintf(name, sizeof name, "%s, %s", mode_names[m / 2], pc_names[m % 2]);

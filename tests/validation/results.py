@@ -520,6 +520,73 @@ def wheel_section(runs, runs_dir):
     return out
 
 
+def fish_pass_section(runs, runs_dir):
+    """The fish-pass (Leroy et al. 2014 sec 5.2, cases/fish_pass.lua): each run's deviations from
+    OpenFOAM along P1-P4 at its end, its flow rate, momentum balance and crossings, and the cost of
+    20 s at the paper's 6e4 particles against its Table 3 (isph-usaw 76 h, wcsph-usaw 55 h on one
+    CPU; the goal, 10 times faster: 7.6 h and 5.5 h). The cost of 20 s scales a run's own wall
+    time per step by the steps of the longest run of the scheme (scaled to 20 s, and by n/n_long:
+    the time step goes with the spacing)."""
+    fp = sorted((s for s in runs if s["case"] == "fish_pass"),
+                key=lambda s: (s["scheme"], s["parameters"].get("turb", 1), s["parameters"].get("n", 0),
+                               s["run"]))
+    if not fp:
+        return []
+    paper = {"isph-usaw": 76.0, "wcsph-usaw": 55.0}
+    longest = {}
+    for s in fp:
+        if s["status"] in ("ok", "metrics failed") and s["parameters"].get("turb", 1) == 1:
+            f = longest.get(s["scheme"])
+            if f is None or s["parameters"].get("t_end", 0) > f["parameters"].get("t_end", 0):
+                longest[s["scheme"]] = s
+    out = ["", "## Fish-pass (Leroy et al. sec 5.2)", "",
+           "One periodic pool of a vertical-slot fish-pass seen from above (`cases/fish_pass.lua`, "
+           "which fixes the geometry the paper refers to its refs [45, 10]: slot b = 0.3 m, pool "
+           "10 b by 8 b, rectangular baffles), no gravity, a body force of 1.885 m/s² along x, "
+           "ν = 1e-6 m²/s, k-ε with the semi-analytical walls; n is the slot in spacings (n = 28: "
+           "5.9e4 particles, the paper's count). The reference is OpenFOAM v1912 pimpleFoam on the "
+           "same geometry (standard k-ε, wall functions; `tests/data/openfoam_fish_pass.csv`, "
+           "made by `tests/validation/openfoam/fish_pass/run.sh`). Deviations at t_end along "
+           "P1-P3 (x = 1.6, 2.2, 2.8 m, across the pool): u RMS |u − u_FV| over U_ref (the "
+           "reference's largest speed there), p RMS over ½ ρ U_ref² (both less their P1-P3 mean), "
+           "k RMS over the section's largest k_FV, ε the RMS of log10(ε/ε_FV); P4 the wall "
+           "pressure along y = 0. Momentum: the fluid's x momentum against the drive less the "
+           "walls' recorded impulse, over the drive's impulse. Profiles: "
+           "[fish_pass_profiles.png](fish_pass_profiles.png). Wall times: see each row's note.", "",
+           "| run | scheme | n | fluid particles | t_end | steps | crossings | flow rate (FV) m²/s "
+           "| u RMS P1/P2/P3 | p RMS P1/P2/P3/P4 | k RMS P1/P2/P3 | ε log RMS P1/P2/P3 | momentum "
+           "| solver its | particle-steps/s | wall s | 20 s of 6e4 particles, h (paper) |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for s in fp:
+        p, m = s["parameters"], s.get("metrics", {})
+
+        def g(keys, f=".3f"):
+            return " / ".join(format(m[k], f) if k in m else "–" for k in keys)
+        cost = "–"
+        ref = longest.get(s["scheme"])
+        if ref is not None and steps_run(s) > 0:
+            steps20 = ref["steps"] * 20 / ref["parameters"]["t_end"] * p.get("n", 10) / ref["parameters"]["n"]
+            hours = s["wall_seconds"] / steps_run(s) * steps20 / 3600
+            scale = 5.88e4 / s["fluid_particles"]
+            cost = (f"{hours * scale:.2f} ({paper[s['scheme']]:g})" if abs(scale - 1) < 0.05
+                    else f"{hours:.2f} for {s['fluid_particles']:g} ({paper[s['scheme']]:g})")
+        solver = s.get("solver")
+        its = f"{solver['iterations_mean']:.1f}" if solver else "–"
+        turb = "" if p.get("turb", 1) == 1 else ", laminar"
+        flow = (f"{m['flow_rate']:.3f} ({m['flow_rate_fv']:.3f})" if "flow_rate_fv" in m
+                else f"{m.get('flow_rate', float('nan')):.3f}")
+        out.append(f"| {s['run']} | {s['scheme']} ({s['precision']}{turb}) | {p.get('n', 0):g} "
+                   f"| {s['fluid_particles']:g} | {p.get('t_end', 0):g} | {s['steps']:g} "
+                   f"| {m.get('crossed_wall', float('nan')):g} | {flow} "
+                   f"| {g(['u_rms_P1', 'u_rms_P2', 'u_rms_P3'])} "
+                   f"| {g(['p_rms_P1', 'p_rms_P2', 'p_rms_P3', 'p_rms_P4'])} "
+                   f"| {g(['k_rms_P1', 'k_rms_P2', 'k_rms_P3'])} "
+                   f"| {g(['eps_log_rms_P1', 'eps_log_rms_P2', 'eps_log_rms_P3'], '.2f')} "
+                   f"| {g(['momentum_residual'], '+.4f')} | {its} "
+                   f"| {s['particle_steps_per_second']:.3g} | {wall(s)} | {cost} |")
+    return out
+
+
 def steps_run(s):
     """Steps this run's wall time covers: a restarted run's count from its checkpoint."""
     return s["steps"] - s.get("restarted_at_step", 0)
@@ -837,6 +904,7 @@ def main():
     lines += rans_section(runs)
     lines += usaw_ke_section(runs, runs_dir)
     lines += wheel_section(runs, runs_dir)
+    lines += fish_pass_section(runs, runs_dir)
     lines += profile_section(runs)
     devices = sorted({s["device"] for s in runs})
     lines += ["", f"Device: {', '.join(devices)}.", ""]
