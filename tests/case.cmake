@@ -1034,6 +1034,10 @@ clsph_cli_test(turbulence_wall_law_misspelt ARGS info ${bad_turb} --set what=16 
                REGEX "turbulence: 'scaleable' is not a valid wall_law.*scalable")
 clsph_cli_test(turbulence_wall_law_riemann ARGS info ${bad_turb} --set what=17 RC 2
                REGEX "turbulence: wall_law belongs to the USAW schemes' wall law .* wcsph-riemann's wall model")
+clsph_cli_test(turbulence_production_unknown ARGS info ${bad_turb} --set what=18 RC 2
+               REGEX "turbulence: 'linear' is not a valid production.*semi-linear")
+clsph_cli_test(turbulence_production_riemann ARGS info ${bad_turb} --set what=19 RC 2
+               REGEX "turbulence: production belongs to the USAW schemes' model .* drop it")
 clsph_cli_test(turbulence_wcsph_usaw_y_p ARGS info ${bad_turb} --set what=15 RC 2
                REGEX "turbulence: y_p belongs to wcsph-riemann's wall model; wcsph-usaw applies")
 # an entry's k and ε (inflow { k, epsilon }): only under the model, together, consistent

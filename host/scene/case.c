@@ -514,15 +514,17 @@ static int l_fluid(lua_State *L)
 }
 
 /* turbulence { model = "k-epsilon", k = K, epsilon = E, y_p = Y, delay = T, nu_t = N,
- * wall_weight = W, wall_law = "two-layer" | "scalable" }: which model, its initial (and entry) k
- * and ε, the wall model's distance (wcsph-riemann), the wall law (the USAW schemes); the values'
+ * wall_weight = W, wall_law = "two-layer" | "scalable", production = "semi-linear" | "standard" }:
+ * which model, its initial (and entry) k and ε, the wall model's distance (wcsph-riemann), the
+ * wall law and the production of k (the USAW schemes); the values'
  * consistency is checked in finish(), once the fluid and the particles are known */
 static int l_turbulence(lua_State *L)
 {
-  static const char *const keys[] = {"model", "k",           "epsilon",  "y_p", "delay",
-                                     "nu_t",  "wall_weight", "wall_law", NULL};
+  static const char *const keys[] = {"model", "k",           "epsilon",  "y_p",        "delay",
+                                     "nu_t",  "wall_weight", "wall_law", "production", NULL};
   static const char *const models[] = {"k-epsilon", NULL};
   static const char *const laws[] = {"two-layer", "scalable", NULL};
+  static const char *const productions[] = {"semi-linear", "standard", NULL};
   struct loader *ld = loader_of(L);
   struct scene_turbulence *t = &ld->s->turb;
   need_table(L, "turbulence");
@@ -540,6 +542,7 @@ static int l_turbulence(lua_State *L)
   t->nu_t_delay = get_number(L, 1, "turbulence", "nu_t", NAN);
   t->wall_weight = get_number(L, 1, "turbulence", "wall_weight", NAN);
   t->wall_law = get_choice(L, 1, "turbulence", "wall_law", laws, -1);
+  t->production = get_choice(L, 1, "turbulence", "production", productions, -1);
   if (isnan(t->k) || isnan(t->epsilon))
     luaL_error(L,
                "turbulence: needs both k (m²/s²) and epsilon (m²/s³), the initial and entry "

@@ -146,7 +146,9 @@ struct scene_turbulence {
   double wall_weight;     /* w_s of eq 40 (NaN: the scheme's, 0.1 without ARD, 0.5 with) */
   int wall_law; /* the USAW schemes' wall law: −1 not given (0), 0 "two-layer" (Leroy et al. eq 23:
                  * linear below y+ = 11.06), 1 "scalable" (y+ held at 11.06 and above) */
-  int line;     /* line of the case script */
+  int production; /* the USAW schemes' production of k: −1 not given (0), 0 "semi-linear" (Leroy
+                   * et al. eq 20: min(√C_μ k S, ν_T S²)), 1 "standard" (ν_T S², OpenFOAM's) */
+  int line;       /* line of the case script */
 };
 
 /** How frames show this case (`render { field = "p", range = {0, 1e4}, colormap = "viridis" }`):

@@ -54,6 +54,10 @@
  * 11.063 ν/u*: the model has no buffer layer, and the channel at e+ = 640 and 40 rows (the wall
  * layer at y+ = 8) ran u+ 10-14% low with the two-layer law, within 1.9% with the scalable one
  * (t = 40 s). */
+#ifndef USAW_PROD_STANDARD /* turbulence { production = "standard" } (solvers/usaw/turbulence.c)   \
+                            */
+#define USAW_PROD_STANDARD 0
+#endif
 #ifndef USAW_SCALABLE /* turbulence { wall_law = "scalable" } (solvers/usaw/turbulence.c) */
 #define USAW_SCALABLE 0
 #endif
@@ -145,7 +149,11 @@ __kernel void usaw_turb_transport(USAW_PART_ARGS, USAW_SEG_ARGS, __global const 
   gy *= ig;
   const real sxy = R(0.5) * (gx.y + gy.x);
   const real s2 = R(2.0) * (gx.x * gx.x + gy.y * gy.y + R(2.0) * sxy * sxy); /* S² = 2 S:S */
-  real prod = fmin(sqrt(KE_CMU) * ki * sqrt(s2), nti * s2);                  /* eq 20 */
+#if USAW_PROD_STANDARD /* turbulence { production = "standard" }: ν_T S², OpenFOAM's kEpsilon */
+  real prod = nti * s2;
+#else /* the semi-linear production of eq 20 (Guimet & Laurence): at most √C_μ k S */
+  real prod = fmin(sqrt(KE_CMU) * ki * sqrt(s2), nti * s2);
+#endif
   int layer = 0; /* in the wall layer, on the log law: the wall function's P and ε (see above) */
   if (near < dr0) {
     const real us = usaw_friction(near_ut, near_d, nu);

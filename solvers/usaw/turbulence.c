@@ -17,6 +17,7 @@ enum clsph_status usaw_turb_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "USAW_TURB", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "KE_ON", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "USAW_SCALABLE", sim->scene->turb.wall_law == 1));
+  CLSPH_TRY(prog_opts_define_int(o, "USAW_PROD_STANDARD", sim->scene->turb.production == 1));
 done:
   return st;
 }

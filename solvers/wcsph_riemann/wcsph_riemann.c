@@ -332,6 +332,10 @@ static enum clsph_status turb_create(struct sim *sim, struct wcr *w)
               "%s:%d: turbulence: wall_law belongs to the USAW schemes' wall law (Leroy et al. eq "
               "23); wcsph-riemann's wall model (Wang, Sun & Hu eqs 10-11) sits at y_p: drop it",
               sim->scene->case_path, t->line);
+  CLSPH_CHECK(t->production < 0, CLSPH_E_INPUT,
+              "%s:%d: turbulence: production belongs to the USAW schemes' model (Leroy et al. eq "
+              "20); wcsph-riemann's production is Wang, Sun & Hu's: drop it",
+              sim->scene->case_path, t->line);
   w->turb = 1;
   w->y_p = t->y_p > 0.0 ? t->y_p : 0.5 * sim->scene->dr;
   w->w_s = isnan(t->wall_weight) ? (w->ard ? 0.5 : 0.1) : t->wall_weight; /* sec 4.3 */

@@ -4,15 +4,16 @@
 --   7 fill { k, epsilon } without turbulence { }, 8 fill { epsilon } < 0, 9 an unknown model,
 --   10 k not a number, 11 a reference table that does not exist; isph-usaw with the keys of
 --   wcsph-riemann's wall model: 12 y_p, 13 wall_weight, 14 delay; 15 wcsph-usaw with y_p;
---   16 a misspelt wall_law, 17 wall_law in wcsph-riemann
+--   16 a misspelt wall_law, 17 wall_law in wcsph-riemann, 18 an unknown production, 19 production
+--   in wcsph-riemann
 param { what = 1 }
-local usaw = what >= 12 and what ~= 17
+local usaw = what >= 12 and what ~= 17 and what ~= 19
 local L = usaw and 1.5 or 1 -- the segments' grid needs a longer period
 domain { 0, 0, L, 2, periodic = "x" }
 particles { dr = 0.1 }
 if what == 15 then
   scheme { "wcsph-usaw", sound_speed = 1 }
-elseif what == 17 then
+elseif what == 17 or what == 19 then
   scheme { "wcsph-riemann", sound_speed = 1 }
 else
   scheme(what == 1 and "isph-rotational" or (usaw and "isph-usaw") or "wcsph-riemann")
@@ -45,6 +46,10 @@ elseif what == 16 then
   turbulence { model = "k-epsilon", k = k, epsilon = eps, wall_law = "scaleable" }
 elseif what == 17 then
   turbulence { model = "k-epsilon", k = k, epsilon = eps, wall_law = "scalable" }
+elseif what == 18 then
+  turbulence { model = "k-epsilon", k = k, epsilon = eps, production = "linear" }
+elseif what == 19 then
+  turbulence { model = "k-epsilon", k = k, epsilon = eps, production = "standard" }
 elseif what == 14 then
   turbulence { model = "k-epsilon", k = k, epsilon = eps, delay = 1, nu_t = 1e-3 }
 else
