@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The fish-pass (Leroy et al. 2014 sec 5.2, cases/fish_pass.lua) on one chart: u_x, u_y, p, k
 and ε along the sections P1-P3 (columns) and the wall pressure along P4, with the flow rate
-across P2 over time, for the runs given and OpenFOAM's profiles (tests/data/openfoam_fish_pass.csv).
+across P2 over time (OpenFOAM's: tests/data/openfoam_fish_pass_flow.csv), for the runs given and OpenFOAM's profiles (tests/data/openfoam_fish_pass.csv).
 Each run's profiles are its profile_P*.csv rows at its last time; its pressure, like OpenFOAM's,
 less its mean over the P1-P3 points (a periodic pool with walls only fixes p up to a constant).
 
@@ -70,6 +70,8 @@ def main():
     flow_path = os.path.join(out_dir, "fish_pass_flow.csv")
     with open(flow_path, "w") as f:
         f.write("series,time,flow_rate\n")
+        for r in table(os.path.join(ROOT, "tests", "data", "openfoam_fish_pass_flow.csv")):
+            f.write(f"{series[0][0]},{r['time']},{r['flow_rate']}\n")
         for label, _, run_dir in series:
             if run_dir is None:
                 continue
@@ -94,8 +96,9 @@ def main():
                           f"plot {plots(line, col)}")
     panels.append("unset logscale y\nset title 'P4 (wall y = 0): p (Pa, less the P1-P3 mean)'\n"
                   f"set xlabel 'x (m)'\nplot {plots('P4', 8, xcol=4)}")
-    flows = ", ".join(f"'{flow_path}' using (strcol(1) eq '{s}' ? $2 : 1/0):3 with lines lw 1.5 "
-                      f"title '{s}'" for s in labels[1:])
+    flows = ", ".join(f"'{flow_path}' using (strcol(1) eq '{s}' ? $2 : 1/0):3 with lines "
+                      + ("lw 2 lc rgb 'black'" if s.startswith("OpenFOAM") else "lw 1.5")
+                      + f" title '{s}'" for s in labels)
     panels.append(f"set title 'flow rate across P2 (m2/s)'\nset xlabel 't (s)'\nplot {flows}")
     gnuplot(f"""set terminal pngcairo size 1500,2000 font ",9" noenhanced
 set output '{os.path.join(out_dir, "fish_pass_profiles.png")}'
