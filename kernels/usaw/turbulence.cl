@@ -54,8 +54,8 @@
  * 11.063 ν/u*: the model has no buffer layer, and the channel at e+ = 640 and 40 rows (the wall
  * layer at y+ = 8) ran u+ 10-14% low with the two-layer law, within 1.9% with the scalable one
  * (t = 40 s). */
-#ifndef USAW_PROD_STANDARD /* turbulence { production = "standard" } (solvers/usaw/turbulence.c)   \
-                            */
+/* turbulence { production = "standard" } (solvers/usaw/turbulence.c) */
+#ifndef USAW_PROD_STANDARD
 #define USAW_PROD_STANDARD 0
 #endif
 #ifndef USAW_SCALABLE /* turbulence { wall_law = "scalable" } (solvers/usaw/turbulence.c) */

@@ -133,6 +133,10 @@ static void check_solver_options(void)
   TC_CHECK(psolve_set(&o, "max_it", NULL, 0) == CLSPH_E_INPUT, "max_it 0 is refused");
   TC_CHECK(psolve_set(&o, "singular", "mean", 0) == CLSPH_OK && o.singular == PSOLVE_MEAN,
            "solver_singular = \"mean\"");
+  TC_CHECK(psolve_set(&o, "singular", "project", 0) == CLSPH_OK && o.singular == PSOLVE_PROJECT,
+           "solver_singular = \"project\"");
+  TC_CHECK(psolve_set(&o, "singular", "pin", 0) == CLSPH_E_INPUT,
+           "an unknown solver_singular is refused");
   TC_CHECK(psolve_set(&o, "colour", "red", 0) == CLSPH_E_INPUT, "an unknown option is refused");
 }
 
