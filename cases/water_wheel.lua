@@ -26,8 +26,11 @@
 -- last half, the wheel's work against the fluid's energy gain, the largest speed.
 --
 -- --set wcsph=1 runs wcsph-usaw, the paper's weakly-compressible baseline on the same walls;
--- --set relax=0 isph-usaw as the paper has it, without the relaxed density invariance.
-param { dr = 0.02, t_end = 30, wcsph = 0, L = 6, every = 0.5, relax = 0.01 }
+-- --set relax=0 isph-usaw as the paper has it, without the relaxed density invariance; --set cfl=2
+-- isph-usaw at the paper's C_CFL = 0.2 (the scheme's is 0.1): half the steps, but particles end
+-- up behind the turning arms (tests/validation/RESULTS_wheel.md); --set rtol=1e-6 a looser
+-- pressure solve (below).
+param { dr = 0.02, t_end = 30, wcsph = 0, L = 6, every = 0.5, relax = 0.01, cfl = 1, rtol = 0 }
 
 local g, H, R, omega, nu = 9.81, 0.9, 1.0, math.pi / 2, 1e-2
 local yc = 1.35             -- the wheel's centre above the bottom
@@ -46,7 +49,13 @@ else
   -- the paper's divergence-free projection lets the particles spread where the arms stir the
   -- water (relax = 0: the deep water's number density 0.957 after 2 s at dr = 0.05 m, 0.969 at
   -- 0.025 m, the water's area growing with it); density_relaxation (ppe.cl) holds it
-  scheme { "isph-usaw", density_relaxation = relax }
+  -- rtol = 0: the pressure solve's default tolerance (1e-8 in double, 1e-5 in float builds); a
+  -- positive rtol is its solver_rtol. --set rtol=1e-6 (double): over 0.1 s at
+  -- dr = 0.0134 m the fluid's pressure moves by 1.6e-6 (RMS, relative) and its velocity by 6e-7,
+  -- a thousandth of what a float build moves them (1.7e-3, 5.2e-3), in 10.7 BiCGStab iterations a
+  -- step instead of 14.1 (tests/validation/RESULTS_wheel.md)
+  if not (rtol >= 0) then error("water_wheel: rtol must be 0 (the solver's default) or positive, not " .. rtol) end
+  scheme { "isph-usaw", density_relaxation = relax, solver_rtol = rtol > 0 and rtol or nil }
 end
 fluid { density = 1000, viscosity = nu, gravity = {0, -g} }
 wall { {-L / 2, 0}, {L / 2, 0}, fluid = "left", group = "bottom" }
@@ -86,7 +95,7 @@ wall(outline)
 
 fill { -L / 2, 0, L / 2, H, name = "pool" } -- the wheel carves itself out
 force { "wheel" }
-run { t_end = t_end, output_every = every, sample_every = every / 5 }
+run { t_end = t_end, output_every = every, sample_every = every / 5, cfl = cfl }
 render { field = "speed" }
 
 -- Wendland C2 in 2-D (support 2h, h = 2 dr), for the water's area below

@@ -188,14 +188,20 @@ __kernel void mg_galerkin(const int4 nf, const int Rf, const uint sf, const int4
   for (int o = 0; o < MG_WC; ++o) S[sc + (size_t)K * MG_WC + o] = acc[o];
 }
 
-/* dw = ω / diag (0 on an empty cell), a level's stencil at S + so, its vectors at dw + vo */
+/* dw = ω / diag (0 on an empty cell), a level's stencil at S + so, its vectors at dw + vo; live:
+ * 1 where the row has a nonzero entry (the cycle skips the others: the cells of a free-surface
+ * flow's air, most of a tall domain) */
 __kernel void mg_weights(const uint n, const int W, const uint so, __global const real *S,
-                         const real omega, const uint vo, __global real *dw)
+                         const real omega, const uint vo, __global real *dw, __global uchar *live)
 {
   const uint I = get_global_id(0);
   if (I >= n) return;
-  const real d = S[so + (size_t)I * W + W / 2];
+  const size_t r0 = so + (size_t)I * W;
+  const real d = S[r0 + W / 2];
   dw[vo + I] = d != R(0.0) ? omega / d : R(0.0);
+  uchar any = 0;
+  for (int o = 0; o < W; ++o) any |= S[r0 + o] != R(0.0);
+  live[vo + I] = any;
 }
 
 /* dw = ω dinv */
@@ -279,8 +285,8 @@ __kernel void mg_up_csr(const uint n, __global const uint *agg, __global const r
  * of level l at fo) and t. Level l: cells nf, W entries a row, stencil and tables at sf. */
 void mg_down_cell(const int4 nf, const int W, const uint sf, const uint fo, const int4 nc,
                   const uint co, __global const real *S, __global const uint *nb,
-                  __global const real *dw, __global real *b, __global real *t, __global real *x,
-                  const uint K)
+                  __global const uchar *live, __global const real *dw, __global real *b,
+                  __global real *t, __global real *x, const uint K)
 {
   const int4 k = mg_coords(nc, K);
   real sum = R(0.0);
@@ -290,10 +296,11 @@ void mg_down_cell(const int4 nf, const int W, const uint sf, const uint fo, cons
     const uint id = mg_id(nf, I);
     const size_t r0 = sf + (size_t)id * W;
     real s = R(0.0);
-    for (int o = 0; o < W; ++o) {
-      const uint J = nb[r0 + o];
-      if (J != MG_NONE) s += S[r0 + o] * t[fo + J];
-    }
+    if (live[fo + id])
+      for (int o = 0; o < W; ++o) {
+        const uint J = nb[r0 + o];
+        if (J != MG_NONE) s += S[r0 + o] * t[fo + J];
+      }
     const real res = b[fo + id] - s;
     x[fo + id] = res;
     sum += res;
@@ -304,31 +311,34 @@ void mg_down_cell(const int4 nf, const int W, const uint sf, const uint fo, cons
 
 /* Cell I of level l (W entries a row, stencil and tables at so, vectors at vo; the coarser
  * level's at co) on the way up: x = t + MG_OVER x_c(par) + dw (res − MG_OVER Σ S x_c(pnb)),
- * res being x from the way down */
+ * res being x from the way down; a row whose dw is 0 (no diagonal: empty) skips the sum it would
+ * multiply by 0 */
 void mg_up_cell(const int W, const uint so, const uint vo, const uint co, __global const real *S,
                 __global const uint *pnb, __global const uint *par, __global const real *dw,
                 __global const real *t, __global real *x, const uint I)
 {
   const size_t r0 = so + (size_t)I * W;
-  real s = R(0.0);
-  for (int o = 0; o < W; ++o) {
-    const uint P = pnb[r0 + o];
-    if (P != MG_NONE) s += S[r0 + o] * x[co + P];
-  }
   const uint J = vo + I;
-  x[J] = t[J] + MG_OVER * x[co + par[J]] + dw[J] * (x[J] - MG_OVER * s);
+  const real d = dw[J];
+  real s = R(0.0);
+  if (d != R(0.0))
+    for (int o = 0; o < W; ++o) {
+      const uint P = pnb[r0 + o];
+      if (P != MG_NONE) s += S[r0 + o] * x[co + P];
+    }
+  x[J] = t[J] + MG_OVER * x[co + par[J]] + d * (x[J] - MG_OVER * s);
 }
 
 /* One stencil level down, one coarse cell per work-item */
 __kernel void mg_down(const int4 nf, const int W, const uint sf, const uint fo, const int4 nc,
                       const uint co, __global const real *S, __global const uint *nb,
-                      __global const real *dw, __global real *b, __global real *t, __global real *x,
-                      const uint kit, __global const kreal *st)
+                      __global const uchar *live, __global const real *dw, __global real *b,
+                      __global real *t, __global real *x, const uint kit, __global const kreal *st)
 {
   if (kr_over(st, kit)) return;
   const uint K = get_global_id(0);
   if (K >= (uint)nc.w) return;
-  mg_down_cell(nf, W, sf, fo, nc, co, S, nb, dw, b, t, x, K);
+  mg_down_cell(nf, W, sf, fo, nc, co, S, nb, live, dw, b, t, x, K);
 }
 
 /* One stencil level up, one cell per work-item */
@@ -355,10 +365,11 @@ int4 mg_info_n(__global const int *info, const int l)
  * W, stencil offset, vector offset. */
 __kernel void mg_block(const int l0, const int L, __global const int *info, const uint m,
                        __global const real *M, __global const real *S, __global const uint *nb,
-                       __global const uint *pnb, __global const uint *par, __global const real *dw,
-                       __global real *b, __global real *t, __global real *x,
-                       __global const uint *start, __global const uint *agg,
-                       __global const real *res, const uint kit, __global const kreal *st)
+                       __global const uint *pnb, __global const uint *par,
+                       __global const uchar *live, __global const real *dw, __global real *b,
+                       __global real *t, __global real *x, __global const uint *start,
+                       __global const uint *agg, __global const real *res, const uint kit,
+                       __global const kreal *st)
 {
   if (kr_over(st, kit)) return;
   const uint lid = get_local_id(0), ls = get_local_size(0);
@@ -373,7 +384,7 @@ __kernel void mg_block(const int l0, const int L, __global const int *info, cons
     const uint sf = (uint)info[MG_INFO * l + 5], fo = (uint)info[MG_INFO * l + 6];
     const uint co = (uint)info[MG_INFO * (l + 1) + 6];
     for (uint K = lid; K < (uint)nc.w; K += ls)
-      mg_down_cell(nf, W, sf, fo, nc, co, S, nb, dw, b, t, x, K);
+      mg_down_cell(nf, W, sf, fo, nc, co, S, nb, live, dw, b, t, x, K);
     barrier(CLK_GLOBAL_MEM_FENCE);
   }
   const uint cL = (uint)info[MG_INFO * L + 6];

@@ -62,9 +62,9 @@ done:
 
 static void release_levels(struct mg *mg)
 {
-  cl_mem *ms[] = {&mg->d_S,  &mg->d_nb,  &mg->d_pnb,  &mg->d_par,  &mg->d_cdw,
-                  &mg->d_b,  &mg->d_t_c, &mg->d_x,    &mg->d_info, &mg->d_M,
-                  &mg->d_AP, &mg->d_APc, &mg->d_dense};
+  cl_mem *ms[] = {&mg->d_S,    &mg->d_nb, &mg->d_pnb, &mg->d_par,  &mg->d_cdw,
+                  &mg->d_live, &mg->d_b,  &mg->d_t_c, &mg->d_x,    &mg->d_info,
+                  &mg->d_M,    &mg->d_AP, &mg->d_APc, &mg->d_dense};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
   mg->nlevels = 0;
   mg->grid = NULL;
@@ -168,6 +168,7 @@ static enum clsph_status size_levels(struct mg *mg, const struct grid *g)
   cl_mem *vs[] = {&mg->d_cdw, &mg->d_b, &mg->d_t_c, &mg->d_x};
   for (size_t i = 0; i < sizeof vs / sizeof *vs; ++i)
     CLSPH_TRY(kern_buffer(mg->dev, vo * sizeof(real), NULL, vs[i], "multigrid vectors"));
+  CLSPH_TRY(kern_buffer(mg->dev, vo * sizeof(cl_uchar), NULL, &mg->d_live, "multigrid vectors"));
   CLSPH_TRY(kern_buffer(mg->dev, sizeof info, info, &mg->d_info, "multigrid levels"));
   CLSPH_TRY(kern_buffer(mg->dev, mg->cap * (size_t)mg->lv[1].W * sizeof(real), NULL, &mg->d_AP,
                         "multigrid fine-to-coarse operator"));
@@ -250,7 +251,7 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
       CLSPH_TRY(kern_launch(mg->dev, mg->k_galerkin, cells, NULL));
     }
     CLSPH_TRY(KERN_SET(mg->k_weights, KARG(cells), KARG(W), KARG(so), KARG(mg->d_S), KARG(omega),
-                       KARG(vo), KARG(mg->d_cdw)));
+                       KARG(vo), KARG(mg->d_cdw), KARG(mg->d_live)));
     CLSPH_TRY(kern_launch(mg->dev, mg->k_weights, cells, NULL));
   }
   CLSPH_TRY(coarsest(mg));
@@ -283,8 +284,8 @@ enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_m
     const cl_int W = f->W;
     const cl_uint sf = (cl_uint)f->so, fo = (cl_uint)f->vo, co = (cl_uint)c->vo;
     CLSPH_TRY(KERN_SET(mg->k_down, KARG(f->n), KARG(W), KARG(sf), KARG(fo), KARG(c->n), KARG(co),
-                       KARG(mg->d_S), KARG(mg->d_nb), KARG(mg->d_cdw), KARG(mg->d_b),
-                       KARG(mg->d_t_c), KARG(mg->d_x), KARG(k), KARG(state)));
+                       KARG(mg->d_S), KARG(mg->d_nb), KARG(mg->d_live), KARG(mg->d_cdw),
+                       KARG(mg->d_b), KARG(mg->d_t_c), KARG(mg->d_x), KARG(k), KARG(state)));
     CLSPH_TRY(kern_launch(mg->dev, mg->k_down, (size_t)c->n.s[3], NULL));
   }
   {
@@ -292,9 +293,9 @@ enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_m
     const cl_uint m = (cl_uint)mg->m;
     CLSPH_TRY(KERN_SET(mg->k_block, KARG(bl0), KARG(bL), KARG(mg->d_info), KARG(m), KARG(mg->d_M),
                        KARG(mg->d_S), KARG(mg->d_nb), KARG(mg->d_pnb), KARG(mg->d_par),
-                       KARG(mg->d_cdw), KARG(mg->d_b), KARG(mg->d_t_c), KARG(mg->d_x),
-                       KARG(mg->grid->d_start), KARG(mg->d_agg), KARG(mg->d_res), KARG(k),
-                       KARG(state)));
+                       KARG(mg->d_live), KARG(mg->d_cdw), KARG(mg->d_b), KARG(mg->d_t_c),
+                       KARG(mg->d_x), KARG(mg->grid->d_start), KARG(mg->d_agg), KARG(mg->d_res),
+                       KARG(k), KARG(state)));
     CLSPH_TRY(kern_launch_wg(mg->dev, mg->k_block, mg->block_wg, mg->block_wg, NULL));
   }
   for (int l = l0 - 1; l >= 1; --l) { /* large stencil levels up */

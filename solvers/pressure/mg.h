@@ -51,6 +51,7 @@ struct mg {
   cl_mem d_par;                  /* every coarse cell's parent (as the vectors) */
   cl_mem d_cdw, d_b, d_t_c, d_x; /* every coarse level's ω/diag, right-hand side, first
                                   * sweep, solution */
+  cl_mem d_live;                 /* every coarse cell: 1 where its row has a nonzero (uchar) */
   cl_mem d_info;                 /* the block's level table */
   size_t m;                      /* unknowns of the coarsest level */
   cl_mem d_M;                    /* its dense inverse */

@@ -452,41 +452,96 @@ def usaw_ke_section(runs, runs_dir):
     return out
 
 
+WHEEL_PAPER_HOURS = {"isph-usaw": 15.0, "wcsph-usaw": 18.5}  # Leroy et al. 2014 Table 3
+
+
+def wheel_rtol(s):
+    """A water-wheel run's pressure-solve tolerance (rtol = 0, or a run from before the case's rtol
+    parameter: the solver's default, 1e-8 in double, 1e-5 in float); None for wcsph-usaw, which
+    solves none."""
+    if s["scheme"] != "isph-usaw":
+        return None
+    return s["parameters"].get("rtol", 0) or (1e-8 if s["precision"] == "double" else 1e-5)
+
+
+def wheel_key(s):
+    """What sets a water-wheel run's steps: its scheme, cfl and solver tolerance."""
+    return s["scheme"], s["parameters"].get("cfl", 1), wheel_rtol(s)
+
+
+def wheel_label(s):
+    """isph-usaw's time step and tolerance in words."""
+    if s["scheme"] != "isph-usaw":
+        return s["scheme"]
+    return f"isph-usaw C_CFL {0.1 * s['parameters'].get('cfl', 1):g} rtol {wheel_rtol(s):g}"
+
+
+def wheel_full_runs(wheel):
+    """Per wheel_key, the longest successful run at dr = 0.02 m: its steps set the cost of 30 s
+    (relax = 0, which does not run the whole 30 s, stays out)."""
+    full = {}
+    for s in wheel:
+        if (abs(s["parameters"].get("dr", 0) - 0.02) < 1e-9 and s["status"] == "ok"
+                and s["parameters"].get("relax", 0.01) > 0):
+            f = full.get(wheel_key(s))
+            if f is None or s["parameters"].get("t_end", 0) > f["parameters"].get("t_end", 0):
+                full[wheel_key(s)] = s
+    return full
+
+
+def wheel_cost_hours(s, ref):
+    """Hours for 30 s of run s's particles: its wall time per step times the steps of ref (the
+    longest run at dr = 0.02 m of its scheme, cfl and tolerance) scaled to 30 s and by 0.02/dr (the time step
+    goes with dr for both schemes); None without them."""
+    if ref is None or steps_run(s) <= 0:
+        return None
+    steps30 = ref["steps"] * 30 / ref["parameters"]["t_end"] * 0.02 / s["parameters"].get("dr", 0.02)
+    return s["wall_seconds"] / steps_run(s) * steps30 / 3600
+
+
 def wheel_section(runs, runs_dir):
     """The water wheel (Leroy et al. 2014 sec 4.4, cases/water_wheel.lua): wall crossings, the
     water's volume, the torque and the energy balance, and the cost against the paper's Table 3
     (30 s of 3e4 particles on one CPU: isph-usaw 15 h, wcsph-usaw 18.5 h). The cost of 30 s is
-    the steps of the longest run of the same scheme at dr = 0.02 m, scaled to 30 s and by 0.02/dr
-    (wcsph-usaw's step is 0.2 h/c0, fixed; isph-usaw's 0.1 h/u_ref, u_ref the largest speed), 
-    time step is h/u_ref) times its own wall time per step."""
+    the steps of the longest run of the same scheme, cfl and tolerance at dr = 0.02 m, scaled to
+    30 s and by 0.02/dr (wcsph-usaw's step is 0.2 h/c0, fixed; isph-usaw's 0.1 cfl h/u_ref, u_ref
+    the largest speed: both go with dr), times the run's own wall time per step."""
     wheel = sorted((s for s in runs if s["case"] == "water_wheel"),
                    key=lambda s: (s["scheme"], -s["parameters"].get("dr", 0), s["run"]))
     if not wheel:
         return []
-    paper = {"isph-usaw": 15.0, "wcsph-usaw": 18.5}
-    full = {}  # per scheme, the longest run at dr = 0.02 m
-    for s in wheel:
-        if abs(s["parameters"].get("dr", 0) - 0.02) < 1e-9 and s["status"] == "ok":
-            f = full.get(s["scheme"])
-            if f is None or s["parameters"].get("t_end", 0) > f["parameters"].get("t_end", 0):
-                full[s["scheme"]] = s
+    paper = WHEEL_PAPER_HOURS
+    full = wheel_full_runs(wheel)
     out = ["", "## Water wheel (Leroy et al. sec 4.4)", "",
            "R = 1 m turning counter-clockwise at π/2 rad/s over water 0.9 m deep, periodic pool "
            "6 m long, ν = 1e-2 m²/s (`cases/water_wheel.lua`, which fixes the geometry the paper's "
            "figure 13 draws: a hub of 0.25 m and 8 arms 0.08 m thick, the centre 1.35 m above the "
            "bottom). isph-usaw with `density_relaxation` 0.01 unless relax = 0 (the paper's "
-           "projection); wcsph-usaw at c0 = 29.7 m/s. The water's area is the region where "
+           "projection); wcsph-usaw at c0 = 29.7 m/s. isph-usaw's time step is the scheme's "
+           "C_CFL = 0.1 h/u_ref, half the paper's 0.2 (cfl = 1; the runs named _cfl2 take the "
+           "paper's 0.2: half the steps, but fluid particles behind the turning arms at 12% of "
+           "the 30-s run's steps, 0.39 dr deep at worst, and a spray flung at 2.5 ω R). "
+           "The water's area is the region where "
            "Σ_b dr² w ≥ ½ (at the snapshots); the deep water's number density the mean Σ_b dr² w "
            "of the particles 2h to 0.3 m above the bottom; the torque's mean over the second half "
            "of the run; work/gain the wheel's work −∫ torque ω dt over the fluid's gain of kinetic "
            "and potential energy (at least 1: viscosity dissipates the rest). Frames at t+ = 66: "
            "[wheel_t66.png](wheel_t66.png); torque, area and energy: "
-           "[wheel_torque.png](wheel_torque.png). The side-by-side movie is "
+           "[wheel_torque.png](wheel_torque.png); accuracy (the worst area change at dr = 0.02 m) "
+           "against the cost of 30 s at the paper's count: [wheel_cost.png](wheel_cost.png). "
+           "The side-by-side movie is "
            f"`{runs_dir}/wheel.mp4` (not stored). Wall times: none of these runs had the machine "
-           "to itself but the 1-s runs at the paper's count, which ran alone (the two dr = 0.02 m "
-           "runs ran side by side, with the test suites and a CI run beside them for their first "
-           "hour, about twice what they take alone; the relax = 0 run beside the isph-usaw one); "
-           "the cost of 30 s scales each run's own time per step.", "",
+           "to itself but the 1-s runs at the paper's count, isph_dr020_rtol1e-6 and isph_dr020_cfl2 "
+           "(which shared its first 5 s with short runs), which ran alone (the two dr = 0.02 m runs at C_CFL 0.1 ran "
+           "side by side, with the test suites and a CI run beside them for their first hour, "
+           "about twice what they take alone; the relax = 0 run beside the isph-usaw one); "
+           "the cost of 30 s scales each run's own time per step. The machine's speed drifts: "
+           "the 1-s run at rtol 1e-8 took 122.7 s, then 117-143 s (median 130.0 s) in 3 pairs "
+           "interleaved with rtol 1e-6 (117-143 s, median 129.6 s; farm-bench), and one profiled "
+           "0.3-s run took 29.7 s and, half an hour later, 37.8 s; a cost of 30 s within about "
+           "10% of the 1.5 h goal is not told apart from it. rtol 1e-6: 10.6 BiCGStab iterations "
+           "a step instead of 13.8, 15% less device time in a profiled pair (28.1 s against "
+           "32.9 s over 0.3 s).", "",
            "| run | scheme | dr | fluid particles | t_end | steps | crossings | area change (end / worst) "
            "| spray (end) | area + spray (worst) "
            "| deep density | torque mean | work/gain | max speed / ω R | particle-steps/s | wall s "
@@ -495,15 +550,15 @@ def wheel_section(runs, runs_dir):
     for s in wheel:
         p, m = s["parameters"], s.get("metrics", {})
         cost = "–"
-        ref = full.get(s["scheme"])
-        if ref is not None and steps_run(s) > 0:
-            steps30 = ref["steps"] * 30 / ref["parameters"]["t_end"] * 0.02 / p.get("dr", 0.02)
-            hours = s["wall_seconds"] / steps_run(s) * steps30 / 3600
+        hours = wheel_cost_hours(s, full.get(wheel_key(s)))
+        if hours is not None:
             scale = 3e4 / s["fluid_particles"]
             cost = (f"{hours * scale:.2f} ({paper[s['scheme']]:g})" if abs(scale - 1) < 0.05
                     else f"{hours:.2f} for {s['fluid_particles']:g}; ×{scale:.2f} particles "
                          f"({paper[s['scheme']]:g})")
-        relax = "" if s["scheme"] != "isph-usaw" else f", relax {p.get('relax', 0.01):g}"
+        relax = ("" if s["scheme"] != "isph-usaw"
+                 else f", relax {p.get('relax', 0.01):g}, C_CFL {0.1 * p.get('cfl', 1):g}, "
+                      f"rtol {wheel_rtol(s):g}")
 
         def g(k, f):
             return format(m[k], f) if k in m else "–"
@@ -813,15 +868,21 @@ def case_defaults(case):
                                                 m.group(1))}
 
 
-def main():
-    runs_dir = sys.argv[1] if len(sys.argv) > 1 else "out/validation"
-    out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__file__), "RESULTS.md")
+def load_runs(runs_dir):
+    """The summary.json of every run in runs_dir, each with its folder's name as "run"."""
     runs = []
     for path in sorted(glob.glob(os.path.join(runs_dir, "*", "summary.json"))):
         with open(path) as f:
             s = json.load(f)
         s["run"] = os.path.basename(os.path.dirname(path))
         runs.append(s)
+    return runs
+
+
+def main():
+    runs_dir = sys.argv[1] if len(sys.argv) > 1 else "out/validation"
+    out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__file__), "RESULTS.md")
+    runs = load_runs(runs_dir)
     lines = ["# Validation results", "",
              "Generated by `tests/validation/results.py` from the `summary.json` of each run in "
              f"`{runs_dir}` (`tests/validation/run.sh`, or `run_rans.sh` and `run_usaw_ke.sh` for the k-ε runs, `run_wheel.sh` for the water wheel). Wall times "
