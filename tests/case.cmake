@@ -1144,6 +1144,9 @@ clsph_run_test(run_water_wheel_weak ${CMAKE_SOURCE_DIR}/cases/water_wheel.lua
                BOUNDS "crossed_wall<0.5" "fluid_particles>2105.5" "fluid_particles<2106.5"
                "water_area_worst<0.015" "water_spray_worst<0.015" "deep_density>0.98" "deep_density<1.02"
                "torque_mean<0" "work_over_gain>0.6" "work_over_gain<2" "max_speed_over_tip<3")
+# The wheel's solver tolerance: 0 is the solver's default, a negative one is refused by name
+clsph_cli_test(case_water_wheel_bad_rtol ARGS info ${CMAKE_SOURCE_DIR}/cases/water_wheel.lua
+               --set rtol=-1e-6 RC 2 REGEX "rtol must be 0 \\(the solver's default\\) or positive")
 # The fish-pass (cases/fish_pass.lua, Leroy et al. sec 5.2) at n = 8 (the slot in spacings: 4247
 # fluid particles) from rest to t = 1 s, k-ε on, both schemes, against OpenFOAM's start-up from rest
 # on the same pool (tests/data/openfoam_fish_pass_flow.csv; its 20-s profiles are the validation
