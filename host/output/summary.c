@@ -114,6 +114,10 @@ enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double
     cJSON_AddNumberToObject(root, "wall_seconds_whole_run", sim->wall_before + wall);
   }
   cJSON_AddNumberToObject(root, "wall_seconds", wall);
+  /* of which the outputs and the set-up before the first step (the case's sample() included),
+   * and the steps themselves: what the solver costs, apart from what a run chose to write */
+  cJSON_AddNumberToObject(root, "output_seconds", sim->out_wall);
+  cJSON_AddNumberToObject(root, "step_seconds", wall - sim->out_wall);
   cJSON_AddNumberToObject(root, "particle_steps_per_second",
                           wall > 0.0 ? (double)sim->ps.n * (double)(sim->step - sim->step0) / wall
                                      : 0.0);

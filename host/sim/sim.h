@@ -121,6 +121,8 @@ struct sim {
   double energy_ratio_max, spacing_min, cluster_max;
   double wall;          /* wall-clock time of this run so far (summary.json wall_seconds), s */
   double wall_before;   /* of the run before its checkpoint (a restart's), s */
+  double out_wall;      /* of wall: the outputs (the first snapshot, snapshots, series with the
+                         * case's sample(), checkpoints), each timed from an idle device, s */
   unsigned long digest; /* geometry_digest of the scene: checkpoints record it */
   double mem_estimate;  /* device memory the run needs, estimated at set-up, bytes */
   char status[512];     /* "ok" or why the run stopped */

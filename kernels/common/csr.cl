@@ -34,18 +34,6 @@ __kernel void csr_guard(const uint n, const uint cap, __global uint *row, __glob
   for (uint i = get_local_id(0); i <= n; i += get_local_size(0)) row[i] = 0u;
 }
 
-/* y <- A x */
-__kernel void csr_spmv(const uint n, __global const uint *row, __global const uint *col,
-                       __global const real *val, __global const real *x, __global real *y)
-{
-  const uint i = get_global_id(0);
-  if (i >= n) return;
-  real s = R(0.0);
-  const uint end = row[i + 1];
-  for (uint k = row[i]; k < end; ++k) s += val[k] * x[col[k]];
-  y[i] = s;
-}
-
 /* d <- diag(A) */
 __kernel void csr_diag(const uint n, __global const uint *row, __global const real *val,
                        __global real *d)

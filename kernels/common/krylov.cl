@@ -440,9 +440,7 @@ __kernel void kr_spmv(const uint n, const uint k, __global const kreal *st,
   const uint i = get_global_id(0);
   if (i >= n) return;
   const uint end = row[i + 1];
-  real s = eps * val[row[i]] * x[i];
-  for (uint m = row[i]; m < end; ++m) s += val[m] * x[col[m]];
-  y[i] = s;
+  y[i] = blas1_row_dot(eps * val[row[i]] * x[i], row[i], end, col, val, x);
 }
 
 /* y = d ∘ x (Jacobi), in iteration k */

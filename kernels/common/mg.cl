@@ -33,7 +33,8 @@
 
 int4 mg_coords(const int4 n, const uint id)
 {
-  return (int4)((int)id % n.x, ((int)id / n.x) % n.y, (int)id / (n.x * n.y), 0);
+  const int yz = (int)id / n.x, z = yz / n.y; /* two divisions, not four */
+  return (int4)((int)id - yz * n.x, yz - z * n.y, z, 0);
 }
 
 uint mg_id(const int4 n, const int4 c)
@@ -41,11 +42,11 @@ uint mg_id(const int4 n, const int4 c)
   return (uint)(c.x + n.x * (c.y + n.y * c.z));
 }
 
-/* Offset d along an axis of n cells, wrapped into (−n/2, n/2] on a periodic one. */
+/* Offset d = b − a of two cells of an axis of n (|d| < n), wrapped into (−n/2, n/2] on a
+ * periodic one. */
 int mg_wrap_offset(int d, const int n, const int periodic)
 {
   if (!periodic) return d;
-  d %= n;
   if (d < 0) d += n;
   if (2 * d > n) d -= n;
   return d;
@@ -91,6 +92,27 @@ int mg_neighbour(const int4 n, const int4 a, const int o, const int R, int4 *b)
   return 1;
 }
 
+/* Σ_o S[r0 + o] x[xo + idx[r0 + o]] over the W entries of a stencil row whose idx is a cell
+ * (MG_NONE: none), in four partial sums (blas1_row_dot) */
+real mg_stencil_dot(__global const real *S, __global const uint *idx, const size_t r0, const int W,
+                    __global const real *x, const uint xo)
+{
+  real s0 = R(0.0), s1 = R(0.0), s2 = R(0.0), s3 = R(0.0);
+  int o = 0;
+  for (; o + 4 <= W; o += 4) {
+    const uint J0 = idx[r0 + o], J1 = idx[r0 + o + 1], J2 = idx[r0 + o + 2], J3 = idx[r0 + o + 3];
+    if (J0 != MG_NONE) s0 += S[r0 + o] * x[xo + J0];
+    if (J1 != MG_NONE) s1 += S[r0 + o + 1] * x[xo + J1];
+    if (J2 != MG_NONE) s2 += S[r0 + o + 2] * x[xo + J2];
+    if (J3 != MG_NONE) s3 += S[r0 + o + 3] * x[xo + J3];
+  }
+  for (; o < W; ++o) {
+    const uint J = idx[r0 + o];
+    if (J != MG_NONE) s0 += S[r0 + o] * x[xo + J];
+  }
+  return (s0 + s1) + (s2 + s3);
+}
+
 /* ---- set-up, once per solve ---- */
 
 /* The levels' stencils, damped inverse diagonals and vectors lie one after the other in one buffer
@@ -129,11 +151,22 @@ __kernel void mg_ap_csr(const uint n, const int4 nc, __global const uint *row,
   for (int o = 0; o < MG_W1; ++o) acc[o] = R(0.0);
   const int4 a = mg_coords(nc, cell[i]);
   if (agg[i] != MG_NONE) acc[centre] += eps * val[row[i]];
-  for (uint k = row[i]; k < row[i + 1]; ++k) {
-    const uint J = agg[col[k]];
-    if (J == MG_NONE) continue;
-    const int o = mg_offset(nc, a, mg_coords(nc, J), MG_R1);
-    acc[o < 0 ? centre : o] += val[k];
+  /* the columns come cell by cell (the neighbour loop's order): a run of one cell's entries is
+   * summed first, and placed once */
+  uint run_cell = MG_NONE;
+  real run = R(0.0);
+  for (uint k = row[i]; k <= row[i + 1]; ++k) {
+    const uint J = k < row[i + 1] ? agg[col[k]] : MG_NONE;
+    if (J == run_cell) {
+      run += J != MG_NONE ? val[k] : R(0.0);
+      continue;
+    }
+    if (run_cell != MG_NONE) {
+      const int o = mg_offset(nc, a, mg_coords(nc, run_cell), MG_R1);
+      acc[o < 0 ? centre : o] += run;
+    }
+    run_cell = J;
+    run = J != MG_NONE ? val[k] : R(0.0);
   }
   for (int o = 0; o < MG_W1; ++o) {
     int4 b;
@@ -234,9 +267,7 @@ __kernel void mg_down_csr(const uint n, __global const uint *row, __global const
   if (kr_over(st, kit)) return;
   const uint i = get_global_id(0);
   if (i >= n) return;
-  real s = eps * val[row[i]] * t[i];
-  for (uint k = row[i]; k < row[i + 1]; ++k) s += val[k] * t[col[k]];
-  res[i] = r[i] - s;
+  res[i] = r[i] - blas1_row_dot(eps * val[row[i]] * t[i], row[i], row[i + 1], col, val, t);
 }
 
 /* Level-1 b and t of cell c: Σ res over its aggregated unknowns, times dw */
@@ -271,11 +302,7 @@ __kernel void mg_up_csr(const uint n, __global const uint *agg, __global const r
   if (kr_over(st, kit)) return;
   const uint i = get_global_id(0);
   if (i >= n) return;
-  real s = R(0.0);
-  for (int o = 0; o < MG_W1; ++o) {
-    const uint c = APc[(size_t)i * MG_W1 + o];
-    if (c != MG_NONE) s += AP[(size_t)i * MG_W1 + o] * x1[c];
-  }
+  const real s = mg_stencil_dot(AP, APc, (size_t)i * MG_W1, MG_W1, x1, 0u);
   const uint g = agg[i];
   const real u = t[i] + (g != MG_NONE ? MG_OVER * x1[g] : R(0.0));
   z[i] = u + dw[i] * (res[i] - MG_OVER * s);
@@ -295,13 +322,7 @@ void mg_down_cell(const int4 nf, const int W, const uint sf, const uint fo, cons
     if (I.x >= nf.x || I.y >= nf.y || I.z >= nf.z) continue;
     const uint id = mg_id(nf, I);
     const size_t r0 = sf + (size_t)id * W;
-    real s = R(0.0);
-    if (live[fo + id])
-      for (int o = 0; o < W; ++o) {
-        const uint J = nb[r0 + o];
-        if (J != MG_NONE) s += S[r0 + o] * t[fo + J];
-      }
-    const real res = b[fo + id] - s;
+    const real res = b[fo + id] - (live[fo + id] ? mg_stencil_dot(S, nb, r0, W, t, fo) : R(0.0));
     x[fo + id] = res;
     sum += res;
   }
@@ -320,12 +341,7 @@ void mg_up_cell(const int W, const uint so, const uint vo, const uint co, __glob
   const size_t r0 = so + (size_t)I * W;
   const uint J = vo + I;
   const real d = dw[J];
-  real s = R(0.0);
-  if (d != R(0.0))
-    for (int o = 0; o < W; ++o) {
-      const uint P = pnb[r0 + o];
-      if (P != MG_NONE) s += S[r0 + o] * x[co + P];
-    }
+  const real s = d != R(0.0) ? mg_stencil_dot(S, pnb, r0, W, x, co) : R(0.0);
   x[J] = t[J] + MG_OVER * x[co + par[J]] + d * (x[J] - MG_OVER * s);
 }
 

@@ -490,13 +490,26 @@ def wheel_full_runs(wheel):
 
 
 def wheel_cost_hours(s, ref):
-    """Hours for 30 s of run s's particles: its wall time per step times the steps of ref (the
-    longest run at dr = 0.02 m of its scheme, cfl and tolerance) scaled to 30 s and by 0.02/dr (the time step
-    goes with dr for both schemes); None without them."""
+    """Hours for 30 s of run s's particles: its time per step times the steps of ref (the
+    longest run at dr = 0.02 m of its scheme, cfl and tolerance) scaled to 30 s and by 0.02/dr
+    (the time step goes with dr for both schemes), plus its set-up and outputs once; None without
+    them. The time per step is the steps' own (summary.json step_seconds: the outputs and the
+    set-up apart, which a short run would otherwise multiply by 30) where the run has it, else its
+    whole wall time."""
     if ref is None or steps_run(s) <= 0:
         return None
     steps30 = ref["steps"] * 30 / ref["parameters"]["t_end"] * 0.02 / s["parameters"].get("dr", 0.02)
-    return s["wall_seconds"] / steps_run(s) * steps30 / 3600
+    return run_cost_hours(s, steps30)
+
+
+def run_cost_hours(s, steps):
+    """Hours for `steps` steps at run s's cost: its time per step (the steps' own, summary.json
+    step_seconds, where the run has it: a short run's set-up and outputs are counted once, not
+    multiplied with its steps; else its whole wall time) times steps, plus its set-up and
+    outputs."""
+    if "step_seconds" not in s:
+        return s["wall_seconds"] / steps_run(s) * steps / 3600
+    return (s["step_seconds"] / steps_run(s) * steps + s["output_seconds"]) / 3600
 
 
 def wheel_section(runs, runs_dir):
@@ -534,14 +547,24 @@ def wheel_section(runs, runs_dir):
            "to itself but the 1-s runs at the paper's count, isph_dr020_rtol1e-6 and isph_dr020_cfl2 "
            "(which shared its first 5 s with short runs), which ran alone (the two dr = 0.02 m runs at C_CFL 0.1 ran "
            "side by side, with the test suites and a CI run beside them for their first hour, "
-           "about twice what they take alone; the relax = 0 run beside the isph-usaw one); "
-           "the cost of 30 s scales each run's own time per step. The machine's speed drifts: "
-           "the 1-s run at rtol 1e-8 took 122.7 s, then 117-143 s (median 130.0 s) in 3 pairs "
-           "interleaved with rtol 1e-6 (117-143 s, median 129.6 s; farm-bench), and one profiled "
-           "0.3-s run took 29.7 s and, half an hour later, 37.8 s; a cost of 30 s within about "
-           "10% of the 1.5 h goal is not told apart from it. rtol 1e-6: 10.6 BiCGStab iterations "
-           "a step instead of 13.8, 15% less device time in a profiled pair (28.1 s against "
-           "32.9 s over 0.3 s).", "",
+           "about twice what they take alone; the relax = 0 run beside the isph-usaw one). "
+           "The cost of 30 s is each 1-s run's own time per step (summary.json step_seconds: "
+           "the steps without the outputs, which include the case's water area in Lua, about 2 s "
+           "a snapshot at dr = 0.0134 m: a 30-s run with snapshots every 0.5 s adds about 2 min) "
+           "times the steps of 30 s, plus its set-up and outputs once. The 1-s runs at the "
+           "paper's count were run again (2026-12-02) after the solve's row sums were split into "
+           "four partial sums (the CPU's multiply-add latency, not memory, had set their speed): "
+           "the 1-s isph-usaw run took 108.0 s (median of 2, farm-bench) against 118.4 s for "
+           "the build before, interleaved (ratio 0.911, range 0.899-0.924), the same 827 steps "
+           "and 13.8 iterations a step; half an hour later, in one pair with rtol 1e-6 (the "
+           "rows in the table), 119.3 s against 96.5 s. Over those three runs the cost of 30 s "
+           "at the paper's count is 1.24 to 1.36 h at rtol 1e-8 (goal 1.5 h) and 1.10 h at "
+           "1e-6 (10.6 BiCGStab iterations a step instead of 13.8). The machine's speed drifts: "
+           "the case's Lua outputs, the same work in every 1-s run, took 4.5 to 7.4 s; the build "
+           "before took 122.7 s, then 117-143 s (median 130.0 s) in 3 pairs on another day, and "
+           "one profiled 0.3-s run took 29.7 s and, half an hour later, 37.8 s. Profiled over "
+           "0.2 s (165 steps), the device is busy 95% of the steps' time (124 ms a step; 480 "
+           "launches a step, 14 µs of host and waiting each).", "",
            "| run | scheme | dr | fluid particles | t_end | steps | crossings | area change (end / worst) "
            "| spray (end) | area + spray (worst) "
            "| deep density | torque mean | work/gain | max speed / ω R | particle-steps/s | wall s "
@@ -627,7 +650,7 @@ def fish_pass_section(runs, runs_dir):
         ref = longest.get(s["scheme"])
         if ref is not None and steps_run(s) > 0:
             steps20 = ref["steps"] * 20 / ref["parameters"]["t_end"] * p.get("n", 10) / ref["parameters"]["n"]
-            hours = s["wall_seconds"] / steps_run(s) * steps20 / 3600
+            hours = run_cost_hours(s, steps20)
             scale = 5.88e4 / s["fluid_particles"]
             cost = (f"{hours * scale:.2f} ({paper[s['scheme']]:g})" if abs(scale - 1) < 0.05
                     else f"{hours:.2f} for {s['fluid_particles']:g} ({paper[s['scheme']]:g})")
