@@ -19,20 +19,22 @@ void blas1_group_sum(__local real *s, __global real *partial, uint slot)
 
 /* s + Σ_{k in [k0, k1)} val[k] x[col[k]]: a stored row times x, in four partial sums (a single sum
  * waits on each multiply-add before the next: the CPU's floating-point latency, not memory, set
- * the speed of the solve's row sweeps) */
-real blas1_row_dot(real s, uint k, const uint k1, __global const uint *col,
-                   __global const real *val, __global const real *x)
-{
-  real s1 = R(0.0), s2 = R(0.0), s3 = R(0.0);
-  for (; k + 4 <= k1; k += 4) {
-    s += val[k] * x[col[k]];
-    s1 += val[k + 1] * x[col[k + 1]];
-    s2 += val[k + 2] * x[col[k + 2]];
-    s3 += val[k + 3] * x[col[k + 3]];
+ * the speed of the solve's row sweeps). NAME's values are of type VT (mg.cl keeps a float copy). */
+#define BLAS1_ROW_DOT(NAME, VT)                                                                    \
+  real NAME(real s, uint k, const uint k1, __global const uint *col, __global const VT *val,       \
+            __global const real *x)                                                                \
+  {                                                                                                \
+    real s1 = R(0.0), s2 = R(0.0), s3 = R(0.0);                                                    \
+    for (; k + 4 <= k1; k += 4) {                                                                  \
+      s += val[k] * x[col[k]];                                                                     \
+      s1 += val[k + 1] * x[col[k + 1]];                                                            \
+      s2 += val[k + 2] * x[col[k + 2]];                                                            \
+      s3 += val[k + 3] * x[col[k + 3]];                                                            \
+    }                                                                                              \
+    for (; k < k1; ++k) s += val[k] * x[col[k]];                                                   \
+    return (s + s1) + (s2 + s3);                                                                   \
   }
-  for (; k < k1; ++k) s += val[k] * x[col[k]];
-  return (s + s1) + (s2 + s3);
-}
+BLAS1_ROW_DOT(blas1_row_dot, real)
 
 /* y <- y + a x */
 __kernel void blas1_axpy(const uint n, const real a, __global const real *x, __global real *y)

@@ -15,6 +15,11 @@
 #define MG_NONE      0xffffffffu
 #define MG_COARSE_WG 64 /* work-items of mg_coarsest at most (MG_COARSE_WG in mg.h) */
 
+/* The preconditioner's stored coefficients (the fine rows' copy, A P, the coarse stencils) are
+ * float in both builds: the cycle's sweeps are bound by memory, and a preconditioner has only to
+ * be close to the inverse (its vectors stay in real). MG_REAL_SIZE in mg.h. */
+typedef float mreal;
+
 #ifndef MG_OVER
 #define MG_OVER R(1.5)
 #endif
@@ -92,9 +97,11 @@ int mg_neighbour(const int4 n, const int4 a, const int o, const int R, int4 *b)
   return 1;
 }
 
+BLAS1_ROW_DOT(mg_row_dot, mreal) /* the fine rows' float copy (mg_down_csr) */
+
 /* Σ_o S[r0 + o] x[xo + idx[r0 + o]] over the W entries of a stencil row whose idx is a cell
  * (MG_NONE: none), in four partial sums (blas1_row_dot) */
-real mg_stencil_dot(__global const real *S, __global const uint *idx, const size_t r0, const int W,
+real mg_stencil_dot(__global const mreal *S, __global const uint *idx, const size_t r0, const int W,
                     __global const real *x, const uint xo)
 {
   real s0 = R(0.0), s1 = R(0.0), s2 = R(0.0), s3 = R(0.0);
@@ -142,7 +149,7 @@ __kernel void mg_aggregate(const uint ncells, __global const uint *start, __glob
 __kernel void mg_ap_csr(const uint n, const int4 nc, __global const uint *row,
                         __global const uint *col, __global const real *val,
                         __global const uint *agg, __global const uint *cell, const real eps,
-                        __global real *AP, __global uint *APc)
+                        __global mreal *AP, __global uint *APc, __global mreal *valm)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -150,6 +157,7 @@ __kernel void mg_ap_csr(const uint n, const int4 nc, __global const uint *row,
   real acc[MG_W1];
   for (int o = 0; o < MG_W1; ++o) acc[o] = R(0.0);
   const int4 a = mg_coords(nc, cell[i]);
+  for (uint k = row[i]; k < row[i + 1]; ++k) valm[k] = (mreal)val[k]; /* mg_down_csr's rows */
   if (agg[i] != MG_NONE) acc[centre] += eps * val[row[i]];
   /* the columns come cell by cell (the neighbour loop's order): a run of one cell's entries is
    * summed first, and placed once */
@@ -171,7 +179,7 @@ __kernel void mg_ap_csr(const uint n, const int4 nc, __global const uint *row,
   for (int o = 0; o < MG_W1; ++o) {
     int4 b;
     const int in = acc[o] != R(0.0) && mg_neighbour(nc, a, o, MG_R1, &b);
-    AP[(size_t)i * MG_W1 + o] = in ? acc[o] : R(0.0);
+    AP[(size_t)i * MG_W1 + o] = in ? (mreal)acc[o] : 0.0f;
     APc[(size_t)i * MG_W1 + o] = in ? mg_id(nc, b) : MG_NONE;
   }
 }
@@ -179,7 +187,7 @@ __kernel void mg_ap_csr(const uint n, const int4 nc, __global const uint *row,
 /* Level 1: S = Pᵀ (A + ε diag A) P = Pᵀ AP, one cell per work-item: the sum of the AP rows of its
  * aggregated unknowns (whose slots are offsets from this cell). */
 __kernel void mg_galerkin_ap(const uint ncells, __global const uint *start,
-                             __global const uint *agg, __global const real *AP, __global real *S)
+                             __global const uint *agg, __global const mreal *AP, __global mreal *S)
 {
   const uint c = get_global_id(0);
   if (c >= ncells) return;
@@ -189,20 +197,20 @@ __kernel void mg_galerkin_ap(const uint ncells, __global const uint *start,
     if (agg[i] == MG_NONE) continue;
     for (int o = 0; o < MG_W1; ++o) acc[o] += AP[(size_t)i * MG_W1 + o];
   }
-  for (int o = 0; o < MG_W1; ++o) S[(size_t)c * MG_W1 + o] = acc[o];
+  for (int o = 0; o < MG_W1; ++o) S[(size_t)c * MG_W1 + o] = (mreal)acc[o];
 }
 
 /* Level l + 1 (stencil at S + sc) from level l (radius Rf, stencil at S + sf): the 2 x 2 (x 2)
  * children of each coarse cell. */
 __kernel void mg_galerkin(const int4 nf, const int Rf, const uint sf, const int4 nc, const uint sc,
-                          __global real *S)
+                          __global mreal *S)
 {
   const uint K = get_global_id(0);
   if (K >= (uint)nc.w) return;
   const int wf = 2 * Rf + 1;
   const int Wf = DIM == 2 ? wf * wf : wf * wf * wf;
   const int centre = MG_WC / 2;
-  __global const real *Sf = S + sf;
+  __global const mreal *Sf = S + sf;
   real acc[MG_WC];
   for (int o = 0; o < MG_WC; ++o) acc[o] = R(0.0);
   const int4 k = mg_coords(nc, K);
@@ -218,13 +226,13 @@ __kernel void mg_galerkin(const int4 nf, const int Rf, const uint sf, const int4
       acc[oc < 0 ? centre : oc] += v;
     }
   }
-  for (int o = 0; o < MG_WC; ++o) S[sc + (size_t)K * MG_WC + o] = acc[o];
+  for (int o = 0; o < MG_WC; ++o) S[sc + (size_t)K * MG_WC + o] = (mreal)acc[o];
 }
 
 /* dw = ω / diag (0 on an empty cell), a level's stencil at S + so, its vectors at dw + vo; live:
  * 1 where the row has a nonzero entry (the cycle skips the others: the cells of a free-surface
  * flow's air, most of a tall domain) */
-__kernel void mg_weights(const uint n, const int W, const uint so, __global const real *S,
+__kernel void mg_weights(const uint n, const int W, const uint so, __global const mreal *S,
                          const real omega, const uint vo, __global real *dw, __global uchar *live)
 {
   const uint I = get_global_id(0);
@@ -260,14 +268,14 @@ __kernel void mg_damp(const uint n, const real omega, __global const real *dinv,
 
 /* Fine level down: res = r − (A + ε diag A) t */
 __kernel void mg_down_csr(const uint n, __global const uint *row, __global const uint *col,
-                          __global const real *val, const real eps, __global const real *t,
+                          __global const mreal *val, const real eps, __global const real *t,
                           __global const real *r, __global real *res, const uint kit,
                           __global const kreal *st)
 {
   if (kr_over(st, kit)) return;
   const uint i = get_global_id(0);
   if (i >= n) return;
-  res[i] = r[i] - blas1_row_dot(eps * val[row[i]] * t[i], row[i], row[i + 1], col, val, t);
+  res[i] = r[i] - mg_row_dot(eps * val[row[i]] * t[i], row[i], row[i + 1], col, val, t);
 }
 
 /* Level-1 b and t of cell c: Σ res over its aggregated unknowns, times dw */
@@ -294,7 +302,7 @@ __kernel void mg_restrict_csr(const uint ncells, __global const uint *start,
 }
 
 /* Fine level up: z = t + MG_OVER x1(agg) + dw (res − MG_OVER AP x1) */
-__kernel void mg_up_csr(const uint n, __global const uint *agg, __global const real *AP,
+__kernel void mg_up_csr(const uint n, __global const uint *agg, __global const mreal *AP,
                         __global const uint *APc, __global const real *dw, __global const real *t,
                         __global const real *res, __global const real *x1, __global real *z,
                         const uint kit, __global const kreal *st)
@@ -311,7 +319,7 @@ __kernel void mg_up_csr(const uint n, __global const uint *agg, __global const r
 /* Coarse cell K (cells nc, vectors at co): its b (the sum of its children's res, which go to x
  * of level l at fo) and t. Level l: cells nf, W entries a row, stencil and tables at sf. */
 void mg_down_cell(const int4 nf, const int W, const uint sf, const uint fo, const int4 nc,
-                  const uint co, __global const real *S, __global const uint *nb,
+                  const uint co, __global const mreal *S, __global const uint *nb,
                   __global const uchar *live, __global const real *dw, __global real *b,
                   __global real *t, __global real *x, const uint K)
 {
@@ -334,7 +342,7 @@ void mg_down_cell(const int4 nf, const int W, const uint sf, const uint fo, cons
  * level's at co) on the way up: x = t + MG_OVER x_c(par) + dw (res − MG_OVER Σ S x_c(pnb)),
  * res being x from the way down; a row whose dw is 0 (no diagonal: empty) skips the sum it would
  * multiply by 0 */
-void mg_up_cell(const int W, const uint so, const uint vo, const uint co, __global const real *S,
+void mg_up_cell(const int W, const uint so, const uint vo, const uint co, __global const mreal *S,
                 __global const uint *pnb, __global const uint *par, __global const real *dw,
                 __global const real *t, __global real *x, const uint I)
 {
@@ -347,7 +355,7 @@ void mg_up_cell(const int W, const uint so, const uint vo, const uint co, __glob
 
 /* One stencil level down, one coarse cell per work-item */
 __kernel void mg_down(const int4 nf, const int W, const uint sf, const uint fo, const int4 nc,
-                      const uint co, __global const real *S, __global const uint *nb,
+                      const uint co, __global const mreal *S, __global const uint *nb,
                       __global const uchar *live, __global const real *dw, __global real *b,
                       __global real *t, __global real *x, const uint kit, __global const kreal *st)
 {
@@ -359,7 +367,7 @@ __kernel void mg_down(const int4 nf, const int W, const uint sf, const uint fo, 
 
 /* One stencil level up, one cell per work-item */
 __kernel void mg_up(const uint cells, const int W, const uint so, const uint vo, const uint co,
-                    __global const real *S, __global const uint *pnb, __global const uint *par,
+                    __global const mreal *S, __global const uint *pnb, __global const uint *par,
                     __global const real *dw, __global const real *t, __global real *x,
                     const uint kit, __global const kreal *st)
 {
@@ -380,7 +388,7 @@ int4 mg_info_n(__global const int *info, const int l)
  * between the phases is ordered by the work-group's barriers. info: per level nx, ny, nz, cells,
  * W, stencil offset, vector offset. */
 __kernel void mg_block(const int l0, const int L, __global const int *info, const uint m,
-                       __global const real *M, __global const real *S, __global const uint *nb,
+                       __global const real *M, __global const mreal *S, __global const uint *nb,
                        __global const uint *pnb, __global const uint *par,
                        __global const uchar *live, __global const real *dw, __global real *b,
                        __global real *t, __global real *x, __global const uint *start,
@@ -429,7 +437,7 @@ __kernel void mg_block(const int l0, const int L, __global const int *info, cons
  * singular (a zero diagonal: rows that only copy a neighbour's value) gets Jacobi, and flag = 1
  * for the host's warning. work holds a, b and inv (m² each); at most MG_COARSE_WG work-items. */
 __kernel void mg_coarsest(const int4 nc, const int R, const int W, const uint so, const uint m,
-                          __global const real *S, __global kreal *work, __global real *M,
+                          __global const mreal *S, __global kreal *work, __global real *M,
                           __global uint *flag)
 {
 #pragma OPENCL FP_CONTRACT OFF /* no fused multiply-adds: the same sums as the host's old loop */

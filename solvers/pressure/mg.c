@@ -163,14 +163,14 @@ static enum clsph_status size_levels(struct mg *mg, const struct grid *g)
   }
   CLSPH_CHECK(so < 0x7fffffffu, CLSPH_E_INPUT, "multigrid: %zu stencil entries are too many", so);
   if (mg->l0 == 0) mg->l0 = mg->nlevels;
-  CLSPH_TRY(kern_buffer(mg->dev, so * sizeof(real), NULL, &mg->d_S, "multigrid stencils"));
+  CLSPH_TRY(kern_buffer(mg->dev, so * MG_REAL_SIZE, NULL, &mg->d_S, "multigrid stencils"));
   CLSPH_TRY(tables(mg, g, so, vo));
   cl_mem *vs[] = {&mg->d_cdw, &mg->d_b, &mg->d_t_c, &mg->d_x};
   for (size_t i = 0; i < sizeof vs / sizeof *vs; ++i)
     CLSPH_TRY(kern_buffer(mg->dev, vo * sizeof(real), NULL, vs[i], "multigrid vectors"));
   CLSPH_TRY(kern_buffer(mg->dev, vo * sizeof(cl_uchar), NULL, &mg->d_live, "multigrid vectors"));
   CLSPH_TRY(kern_buffer(mg->dev, sizeof info, info, &mg->d_info, "multigrid levels"));
-  CLSPH_TRY(kern_buffer(mg->dev, mg->cap * (size_t)mg->lv[1].W * sizeof(real), NULL, &mg->d_AP,
+  CLSPH_TRY(kern_buffer(mg->dev, mg->cap * (size_t)mg->lv[1].W * MG_REAL_SIZE, NULL, &mg->d_AP,
                         "multigrid fine-to-coarse operator"));
   CLSPH_TRY(kern_buffer(mg->dev, mg->cap * (size_t)mg->lv[1].W * sizeof(cl_uint), NULL, &mg->d_APc,
                         "multigrid fine-to-coarse operator"));
@@ -214,7 +214,7 @@ void mg_report(struct mg *mg)
 }
 
 enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem row, cl_mem col,
-                           cl_mem val, double eps, cl_mem dinv)
+                           cl_mem val, cl_mem valm, double eps, cl_mem dinv)
 {
   enum clsph_status st = CLSPH_OK;
   CLSPH_CHECK(n <= mg->cap, CLSPH_E_INPUT, "multigrid: %zu unknowns exceed %zu", n, mg->cap);
@@ -229,7 +229,8 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
                      KARG(mg->d_agg), KARG(mg->d_cell)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_aggregate, ncells, NULL));
   CLSPH_TRY(KERN_SET(mg->k_ap_csr, KARG(nn), KARG(mg->lv[1].n), KARG(row), KARG(col), KARG(val),
-                     KARG(mg->d_agg), KARG(mg->d_cell), KARG(e), KARG(mg->d_AP), KARG(mg->d_APc)));
+                     KARG(mg->d_agg), KARG(mg->d_cell), KARG(e), KARG(mg->d_AP), KARG(mg->d_APc),
+                     KARG(valm)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_ap_csr, n, NULL));
   CLSPH_TRY(KERN_SET(mg->k_damp, KARG(nn), KARG(omega), KARG(dinv), KARG(mg->d_dw)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_damp, n, NULL));
@@ -262,7 +263,7 @@ done:
 /* The V(1,1) cycle (mg.cl): the fine level down, the stencil levels above the block down, the
  * block (the small levels down, the coarsest, up again), the levels above it up, the fine level
  * up: 3 launches, and 1 + 2 (l0 − 1) more where level 1 has more than MG_BLOCK cells. */
-enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem val, double eps,
+enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem valm, double eps,
                            cl_mem r, cl_mem z, cl_mem state, cl_uint k)
 {
   enum clsph_status st = CLSPH_OK;
@@ -270,7 +271,7 @@ enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_m
   const real e = (real)eps;
   const int L = mg->nlevels, l0 = mg->l0;
   /* the fine t = dw ∘ r (the first sweep from zero) came with r (kr_begin, kr_s) */
-  CLSPH_TRY(KERN_SET(mg->k_down_csr, KARG(nn), KARG(row), KARG(col), KARG(val), KARG(e),
+  CLSPH_TRY(KERN_SET(mg->k_down_csr, KARG(nn), KARG(row), KARG(col), KARG(valm), KARG(e),
                      KARG(mg->d_t), KARG(r), KARG(mg->d_res), KARG(k), KARG(state)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_down_csr, n, NULL));
   if (l0 > 1) { /* level 1 (offset 0) outside the block: its b and t here */

@@ -3,7 +3,8 @@
  * coarse operators built on the device once per solve, one damped-Jacobi sweep before and after
  * each coarse correction (a V(1,1) cycle, one launch a level and the small levels in one), and the
  * coarsest level (at most MG_COARSEST cells) solved exactly by a dense inverse computed on the
- * device, in one work-group (mg_coarsest): the set-up waits for nothing. Used through psolve
+ * device, in one work-group (mg_coarsest): the set-up waits for nothing. Its stored coefficients
+ * are float in both builds (MG_REAL_SIZE), its vectors real. Used through psolve
  * (precond = "multigrid"); it needs the stored rows (csr.cl) and unknowns that are particles sorted
  * by a grid (struct psolve_op's grid). */
 #ifndef CLSPH_MG_H
@@ -23,6 +24,9 @@
 #define MG_BLOCK 4096
 #define MG_INFO  8           /* ints a level in the block's table (MG_INFO in mg.cl) */
 #define MG_NONE  0xffffffffu /* no cell (MG_NONE in mg.cl) */
+/* The stored coefficients of the preconditioner (the fine rows' copy, A P, the coarse stencils)
+ * are float in both builds (mreal in mg.cl): the cycle is bound by memory */
+#define MG_REAL_SIZE sizeof(cl_float)
 
 struct mg_level {
   cl_int4 n; /* cells per axis, .s[3] = total */
@@ -65,16 +69,17 @@ struct mg {
  *  unknowns. */
 enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, struct mg *out);
 /** @brief Build the hierarchy for the operator stored in (row, col, val) over the n particles
- *  sorted by g: A + eps diag(A), dinv its inverse diagonal. */
+ *  sorted by g: A + eps diag(A), dinv its inverse diagonal; valm (as long as val, MG_REAL_SIZE
+ *  an entry) gets the cycle's copy of val. */
 enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem row, cl_mem col,
-                           cl_mem val, double eps, cl_mem dinv);
+                           cl_mem val, cl_mem valm, double eps, cl_mem dinv);
 /** @brief After the solve's first blocking read: warn once when the last set-up found the coarsest
  *  operator singular (its Jacobi fallback). */
 void mg_report(struct mg *mg);
-/** @brief z = M⁻¹ r: one V(1,1) cycle from z = 0, as part of Krylov iteration k whose state is
- *  `state` (krylov.cl: the kernels do nothing once the solve ended before k). The kernel that
- *  made r has made d_t = d_dw ∘ r, the first sweep from zero. */
-enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem val, double eps,
+/** @brief z = M⁻¹ r: one V(1,1) cycle from z = 0 (valm: mg_setup's copy of the values), as part of
+ * Krylov iteration k whose state is `state` (krylov.cl: the kernels do nothing once the solve ended
+ * before k). The kernel that made r has made d_t = d_dw ∘ r, the first sweep from zero. */
+enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem valm, double eps,
                            cl_mem r, cl_mem z, cl_mem state, cl_uint k);
 /** @brief Release (safe on a zeroed struct). */
 void mg_destroy(struct mg *mg);

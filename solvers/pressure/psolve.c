@@ -168,15 +168,16 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
                         &ps.d_block, "csr scan blocks"));
   if (opt->precond == PSOLVE_MULTIGRID) CLSPH_TRY(mg_create(dev, prog, ps.cap, &ps.mg));
   /* what the first solve allocates: the stored operator (a quarter more than its nonzeros,
-   * store()) and the multigrid's levels: the coarse stencils (about 3 reals a particle) and the
+   * store()) and the multigrid's levels: the coarse stencils (about 3 floats a particle) and the
    * fine rows of A P against the level-1 cells (a value and a cell for each of (2 GRID_SUB + 1)^d
    * cells: about half a row of the operator) */
   const double rows = opt->row_estimate > 0.0 ? opt->row_estimate : 50.0;
   if (opt->apply == PSOLVE_STORED)
     ps.reserved += 1.25 * (double)ps.cap * rows * (double)(sizeof(cl_uint) + sizeof(real));
-  if (opt->precond == PSOLVE_MULTIGRID)
+  if (opt->precond == PSOLVE_MULTIGRID) /* and the stored values' float copy */
     ps.reserved += (double)ps.cap *
-                   (3.0 * sizeof(real) + 0.5 * rows * (double)(sizeof(cl_uint) + sizeof(real)));
+                   (3.0 * MG_REAL_SIZE + 0.5 * rows * (double)(sizeof(cl_uint) + MG_REAL_SIZE) +
+                    1.25 * rows * MG_REAL_SIZE);
   kern_reserve(ps.reserved);
   *out = ps;
   memset(&ps, 0, sizeof ps);
@@ -274,9 +275,13 @@ static enum clsph_status grow(struct psolve *ps, size_t nnz)
   if (nnz <= ps->nnz_cap) goto done;
   kern_release(&ps->d_col);
   kern_release(&ps->d_val);
+  kern_release(&ps->d_valm);
   ps->nnz_cap = nnz + nnz / 4 + 16;
   CLSPH_TRY(kern_buffer(ps->dev, ps->nnz_cap * sizeof(cl_uint), NULL, &ps->d_col, "csr columns"));
   CLSPH_TRY(kern_buffer(ps->dev, ps->nnz_cap * sizeof(real), NULL, &ps->d_val, "csr values"));
+  if (ps->opt.precond == PSOLVE_MULTIGRID)
+    CLSPH_TRY(kern_buffer(ps->dev, ps->nnz_cap * MG_REAL_SIZE, NULL, &ps->d_valm,
+                          "multigrid csr values"));
 done:
   return st;
 }
@@ -369,7 +374,7 @@ static enum clsph_status precond(struct psolve *ps, const struct psolve_op *op, 
     goto done;
   }
   if (ps->opt.precond == PSOLVE_MULTIGRID) {
-    CLSPH_TRY(mg_apply(&ps->mg, op->n, ps->d_row, ps->d_col, ps->d_val, reinforcement(ps), r, z,
+    CLSPH_TRY(mg_apply(&ps->mg, op->n, ps->d_row, ps->d_col, ps->d_valm, reinforcement(ps), r, z,
                        ps->d_state, k));
     goto done;
   }
@@ -578,7 +583,7 @@ static enum clsph_status solve(struct psolve *ps, const struct psolve_op *op, cl
       if (ps->opt.apply == PSOLVE_STORED || multigrid) CLSPH_TRY(store(ps, op, multigrid && !pass));
       CLSPH_TRY(diagonal(ps, op));
       if (multigrid)
-        CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val,
+        CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val, ps->d_valm,
                            reinforcement(ps), ps->d_dinv));
     }
     CLSPH_TRY(bicgstab(ps, op, b, x, res));
@@ -690,7 +695,7 @@ void psolve_destroy(struct psolve *ps)
   cl_mem *ms[] = {&ps->d_r,    &ps->d_r0,  &ps->d_p,       &ps->d_v,     &ps->d_s,
                   &ps->d_t,    &ps->d_ph,  &ps->d_sh,      &ps->d_q,     &ps->d_dinv,
                   &ps->d_diag, &ps->d_b,   &ps->d_partial, &ps->d_flags, &ps->d_row,
-                  &ps->d_col,  &ps->d_val, &ps->d_count,   &ps->d_block};
+                  &ps->d_col,  &ps->d_val, &ps->d_count,   &ps->d_block, &ps->d_valm};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
   mg_destroy(&ps->mg);
   kern_reserve(-ps->reserved);

@@ -94,6 +94,7 @@ struct psolve {
   cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags;
   cl_mem d_state;                               /* the iteration's state (krylov.cl) */
   cl_mem d_row, d_col, d_val, d_count, d_block; /* stored layout */
+  cl_mem d_valm;                                /* the multigrid's copy of d_val (mg.h) */
   size_t nnz_cap;
   cl_uint h_overflow; /* the nonzeros of the last guarded store() when they passed nnz_cap, else 0
                        * (queued read: valid once the multigrid's set-up has read its stencils) */
