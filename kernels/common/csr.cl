@@ -12,9 +12,7 @@ __kernel void csr_count(const uint n, const struct grid g, __global const uint *
   const realv x = pos[i];
   uint c = 1;
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     if (dot(r, r) < g.sm.support2 && j != i) ++c;
   }

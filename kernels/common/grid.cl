@@ -89,9 +89,7 @@ int grid_wrap_axis(int *c, int n, int periodic, real len, real *shift)
 
 /* ---- the neighbour loop ----
  *   struct neigh_iter it;
- *   neigh_begin(&it, &g, x_i);
- *   uint j;
- *   while (neigh_next(&it, &g, cell_start, &j)) {
+ *   NEIGH_FOR(it, g, cell_start, x_i, j) {
  *     realv r_ij = x_i - (pos[j] + it.shift);
  *     ...
  *   }
@@ -100,7 +98,10 @@ int grid_wrap_axis(int *c, int n, int periodic, real len, real *shift)
  * the support radius. Particles are sorted by cell and cells are numbered x fastest, so the
  * 2 GRID_SUB + 1 cells of a row along x are one contiguous range of particles: the loop runs over
  * rows (strips), not cells. A row that wraps around a periodic x boundary is two ranges with
- * different image shifts. */
+ * different image shifts. NEIGH_FOR is two nested loops, the inner one a plain counted loop over
+ * a range (neigh_range finds the next non-empty one), which the compiler turns into the same code
+ * as a native loop; `continue` goes to the next j, and `break` would leave only the range (use
+ * neigh_next for a loop that stops early: while (neigh_next(&it, &g, cell_start, &j))). */
 #ifndef GRID_SUB
 #define GRID_SUB 2
 #endif
@@ -155,10 +156,10 @@ void neigh_begin(struct neigh_iter *it, const struct grid *g, realv x)
   it->shift = it->wrap_shift = (realv)(R(0.0));
 }
 
-int neigh_next(struct neigh_iter *it, const struct grid *g, __global const uint *cell_start,
-               uint *j)
+int neigh_range(struct neigh_iter *it, const struct grid *g, __global const uint *cell_start)
 {
-  while (it->j >= it->end) {
+  it->j = it->end; /* the current range is done */
+  do {
     if (it->wrap_j < it->wrap_end) { /* the other half of a wrapping row */
       it->j = it->wrap_j;
       it->end = it->wrap_end;
@@ -203,10 +204,21 @@ int neigh_next(struct neigh_iter *it, const struct grid *g, __global const uint 
 #endif
     it->j = cell_start[base + x0];
     it->end = cell_start[base + x1 + 1];
-  }
+  } while (it->j >= it->end);
+  return 1;
+}
+
+int neigh_next(struct neigh_iter *it, const struct grid *g, __global const uint *cell_start,
+               uint *j)
+{
+  if (it->j >= it->end && !neigh_range(it, g, cell_start)) return 0;
   *j = it->j++;
   return 1;
 }
+
+#define NEIGH_FOR(IT, G, CS, X, J)                                                                 \
+  for (neigh_begin(&(IT), &(G), (X)); neigh_range(&(IT), &(G), (CS));)                             \
+    for (uint J = (IT).j; J < (IT).end; ++J)
 
 /* ---- building the list ---- */
 

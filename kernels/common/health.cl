@@ -23,9 +23,7 @@ __kernel void health_sums(const uint n, const struct grid g, __global const uint
     m += R(1.0);
     real d2 = g.sm.support2;
     struct neigh_iter it;
-    neigh_begin(&it, &g, x);
-    uint j;
-    while (neigh_next(&it, &g, cell_start, &j)) {
+    NEIGH_FOR(it, g, cell_start, x, j) {
       if (j == i || kind[j] != 0u) continue;
       const realv r = x - (pos[j] + it.shift);
       d2 = fmin(d2, dot(r, r));

@@ -29,9 +29,7 @@ struct marker_sums marker_shepard(const struct grid *g, __global const uint *cel
   m.nearest = self;
   real best = INFINITY;
   struct neigh_iter it;
-  neigh_begin(&it, g, x);
-  uint j;
-  while (neigh_next(&it, g, cell_start, &j)) {
+  NEIGH_FOR(it, *g, cell_start, x, j) {
     if (kind[j] == MARKER_DUMMY) continue;
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);

@@ -101,9 +101,7 @@ uint open_nearest_fluid(const struct grid *g, __global const uint *cell_start,
   real best = INFINITY;
   uint m = none;
   struct neigh_iter it;
-  neigh_begin(&it, g, at);
-  uint j;
-  while (neigh_next(&it, g, cell_start, &j)) {
+  NEIGH_FOR(it, *g, cell_start, at, j) {
     if (kind[j] != OPEN_FLUID) continue;
     const realv xj = pos[j] + it.shift;
     const realv r = at - xj;

@@ -103,9 +103,7 @@ __kernel void op_correction(OP_ARGS, __global realm *L_out)
   const realv x = pos[i];
   realm m = (realm)(R(0.0));
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -121,9 +119,7 @@ __kernel void op_shepard(OP_ARGS, __global real *out)
   const realv x = pos[i];
   real s = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2) continue;
@@ -139,9 +135,7 @@ __kernel void op_interp(OP_ARGS, __global const real *a, __global real *out)
   const realv x = pos[i];
   real s = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2) continue;
@@ -159,9 +153,7 @@ __kernel void op_grad_sym(OP_ARGS, __global const real *a, __global realv *out)
   const realm L_i = OP_LOAD_L(i);
   realv s = (realv)(R(0.0));
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -181,9 +173,7 @@ __kernel void op_grad_antisym(OP_ARGS, __global const real *a, __global realv *o
   const realm L_i = L[i];
 #endif
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -206,9 +196,7 @@ __kernel void op_div(OP_ARGS, __global const realv *u, __global real *out)
   const realm L_i = OP_LOAD_L(i);
   real s = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -226,9 +214,7 @@ __kernel void op_lap(OP_ARGS, __global const real *a, __global real *out)
   const realm L_i = OP_LOAD_L(i);
   real s = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;

@@ -27,9 +27,7 @@ __kernel void poisson_apply(OP_ARGS, __global const uint *dirichlet, __global co
   const realm L_i = OP_LOAD_L(i);
   real s = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, xi);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, xi, j) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -49,9 +47,7 @@ __kernel void poisson_coeffs(OP_ARGS, __global const uint *dirichlet, __global c
   uint k = row[i] + 1;
   real diag = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, xi);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, xi, j) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -77,9 +73,7 @@ __kernel void poisson_diag(OP_ARGS, __global const uint *dirichlet, __global rea
   const realm L_i = OP_LOAD_L(i);
   real s = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, xi);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, xi, j) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;

@@ -33,9 +33,7 @@ __kernel void probe_sample(const uint np, __global const realv *at, const struct
   real sx[4] = {R(0.0), R(0.0), R(0.0), R(0.0)}, sy[4] = {R(0.0), R(0.0), R(0.0), R(0.0)};
 #endif
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     if (kind[j] > 1u) continue; /* fluid and USAW vertex particles carry the fields */
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);

@@ -28,9 +28,7 @@ __kernel void rot_surface_sample(const uint ns, __global const realv *xs, __glob
   for (int a = 0; a < 5; ++a)
     for (int b = 0; b < 7; ++b) M[a][b] = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     if (kind[j] != ROT_FLUID && kind[j] != ROT_DUMMY) continue;
     const realv d = pos[j] + it.shift - x;
     const real r2 = dot(d, d);

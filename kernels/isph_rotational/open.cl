@@ -104,9 +104,7 @@ __kernel void rot_open_pressure(OP_ARGS, __global const uint *kind, __global con
   const realm L_m = OP_LOAD_L(m);
   realv lap = (realv)(R(0.0));
   struct neigh_iter it;
-  neigh_begin(&it, &g, xm);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, xm, j) {
     realv r = xm - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == m) continue;

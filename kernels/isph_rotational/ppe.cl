@@ -32,9 +32,7 @@ __kernel void rot_ppe_apply(OP_ARGS, __global const uint *kind, __global const u
   const realm L_i = OP_LOAD_L(i);
   real s = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, xi);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, xi, j) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -55,9 +53,7 @@ __kernel void rot_ppe_coeffs(OP_ARGS, __global const uint *kind, __global const 
   uint k = row[i] + 1;
   real diag = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, xi);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, xi, j) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -91,9 +87,7 @@ __kernel void rot_ppe_diag(OP_ARGS, __global const uint *kind, __global const ui
   const realm L_i = OP_LOAD_L(i);
   real s = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, xi);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, xi, j) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;

@@ -34,9 +34,7 @@ __kernel void rot_predict(OP_ARGS, __global const uint *kind, __global const rea
   const realm L_i = OP_LOAD_L(i);
   realv lap = (realv)(R(0.0)), gp = (realv)(R(0.0));
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -65,9 +63,7 @@ __kernel void rot_source(OP_ARGS, __global const uint *kind, __global const real
   const realm L_i = OP_LOAD_L(i);
   real s = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;

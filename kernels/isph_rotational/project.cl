@@ -19,9 +19,7 @@ __kernel void rot_project(OP_ARGS, __global const uint *kind, __global const rea
   const realm L_i = OP_LOAD_L(i);
   realv gf = (realv)(R(0.0));
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -62,9 +60,7 @@ __kernel void rot_move(const uint n, const struct grid g, __global const uint *c
   realv du = (realv)(R(0.0));
   if (xsph > R(0.0)) {
     struct neigh_iter it;
-    neigh_begin(&it, &g, x);
-    uint j;
-    while (neigh_next(&it, &g, cell_start, &j)) {
+    NEIGH_FOR(it, g, cell_start, x, j) {
       if (kind[j] != ROT_FLUID) continue;
       realv r = x - (pos[j] + it.shift);
       real r2 = dot(r, r);

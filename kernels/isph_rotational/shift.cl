@@ -18,9 +18,7 @@ __kernel void rot_shift(const uint n, const struct grid g, __global const uint *
   realv rs = (realv)(R(0.0));
   real rbar = R(0.0), cnt = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -29,8 +27,7 @@ __kernel void rot_shift(const uint n, const struct grid g, __global const uint *
   }
   if (cnt == R(0.0)) return;
   rbar /= cnt;
-  neigh_begin(&it, &g, x);
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -38,8 +35,7 @@ __kernel void rot_shift(const uint n, const struct grid g, __global const uint *
   }
   const realv d = c_alpha * rs;
   realv du = (realv)(R(0.0));
-  neigh_begin(&it, &g, x);
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;

@@ -39,9 +39,7 @@ __kernel void rot_visc_count(const uint n, const struct grid g, __global const u
     const int fluid = ki == ROT_FLUID;
     const realv at = fluid ? pos[i] : pos[i] + R(2.0) * dist[i] * normal[i];
     struct neigh_iter it;
-    neigh_begin(&it, &g, at);
-    uint j;
-    while (neigh_next(&it, &g, cell_start, &j)) {
+    NEIGH_FOR(it, g, cell_start, at, j) {
       if (fluid ? j == i : kind[j] == ROT_DUMMY) continue;
       realv r = at - (pos[j] + it.shift);
       if (dot(r, r) < g.sm.support2) ++c;
@@ -71,9 +69,7 @@ __kernel void rot_visc_coeffs(OP_ARGS, __global const uint *kind, __global const
     const realm L_i = OP_LOAD_L(i);
     real diag = R(0.0);
     struct neigh_iter it;
-    neigh_begin(&it, &g, xi);
-    uint j;
-    while (neigh_next(&it, &g, cell_start, &j)) {
+    NEIGH_FOR(it, g, cell_start, xi, j) {
       realv r = xi - (pos[j] + it.shift);
       real r2 = dot(r, r);
       if (r2 >= g.sm.support2 || j == i) continue;
@@ -91,9 +87,7 @@ __kernel void rot_visc_coeffs(OP_ARGS, __global const uint *kind, __global const
     real wsum = R(0.0), best = INFINITY;
     uint near = 0;
     struct neigh_iter it;
-    neigh_begin(&it, &g, img);
-    uint j;
-    while (neigh_next(&it, &g, cell_start, &j)) {
+    NEIGH_FOR(it, g, cell_start, img, j) {
       if (kind[j] == ROT_DUMMY) continue;
       realv r = img - (pos[j] + it.shift);
       real r2 = dot(r, r);

@@ -77,9 +77,7 @@ __kernel void stab_ppe_count(OP_ARGS, __global const uint *kind, __global const 
   const realv x = dummy ? stab_pmarker(i, pos, dist, normal) : pos[i];
   uint c = 1;
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     if (j == i || (dummy && kind[j] != STAB_FLUID)) continue;
     realv r = x - (pos[j] + it.shift);
     if (dot(r, r) < g.sm.support2) ++c;
@@ -107,9 +105,7 @@ __kernel void stab_ppe_coeffs(OP_ARGS, __global const uint *kind, __global const
   uint k = first + 1;
   real diag = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     if (j == i || (dummy && kind[j] != STAB_FLUID)) continue;
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
@@ -145,9 +141,7 @@ __kernel void stab_ppe_apply(OP_ARGS, __global const uint *kind, __global const 
   const real x_i = x[i];
   real s = R(0.0), ws = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, xi);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, xi, j) {
     if (j == i || (dummy && kind[j] != STAB_FLUID)) continue;
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
@@ -175,9 +169,7 @@ __kernel void stab_ppe_diag(OP_ARGS, __global const uint *kind, __global const u
   const realv xi = pos[i];
   real s = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, xi);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, xi, j) {
     realv r = xi - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -210,9 +202,7 @@ __kernel void stab_wall_neumann(const uint n, const struct grid g, __global cons
   const realv f = gate != 0 && gate[i] != 0u ? force - a_gate : force;
   real ws = R(0.0), s = R(0.0), sp = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, xv);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, xv, j) {
     if (kind[j] != STAB_FLUID) continue;
     const realv xj = pos[j] + it.shift;
     realv r = xv - xj;
@@ -228,6 +218,7 @@ __kernel void stab_wall_neumann(const uint n, const struct grid g, __global cons
   }
   const int wet = ws > R(0.0);
   int seen = 0;
+  uint j;
   neigh_begin(&it, &g, xw);
   while (!seen && neigh_next(&it, &g, cell_start, &j)) {
     realv r = xw - (pos[j] + it.shift);

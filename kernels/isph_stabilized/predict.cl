@@ -47,9 +47,7 @@ __kernel void stab_predict(OP_ARGS, __global const uint *kind, __global const re
   const realm L_i = mat_identity();
   realv lap = (realv)(R(0.0));
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -83,9 +81,7 @@ uint stab_scan_empty(uint i, realv xs, realv gss, const struct grid *gg,
   const real h = R(1.0) / gg->sm.inv_h;
   const realv t = xs + h * nrm;
   struct neigh_iter it;
-  neigh_begin(&it, gg, pos[i]);
-  uint j;
-  while (neigh_next(&it, gg, cell_start, &j)) {
+  NEIGH_FOR(it, *gg, cell_start, pos[i], j) {
     if (j == i) continue;
     const realv xj = stab_xstar(j, pos, kind, ustar, wall_vel, dt) + it.shift;
     const realv rj = xj - xs, rt = xj - t;
@@ -125,9 +121,7 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
   realv gs = (realv)(R(0.0));  /* Σ V ∇W: −gs points out of the fluid */
   realv gss = (realv)(R(0.0)); /* the same at x*, for the scan */
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv rs = xs - (stab_xstar(j, pos, kind, ustar, wall_vel, dt) + it.shift);
     const real rsl = sqrt(dot(rs, rs));
     s += vol[j] * smoothing_w(g.sm, rsl); /* j == i included: W(0) */

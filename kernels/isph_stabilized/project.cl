@@ -43,8 +43,7 @@ __kernel void stab_project(OP_ARGS, __global const uint *kind, __global const re
   /* e_i = P_i − min P over the support: P_j − P_i = p_j − p_i + ρ0 a·r_ij */
   real e = R(0.0);
   if (free_surface[i] == 0u) {
-    neigh_begin(&it, &g, x);
-    while (neigh_next(&it, &g, cell_start, &j)) {
+    NEIGH_FOR(it, g, cell_start, x, j) {
       realv r = x - (pos[j] + it.shift);
       if (dot(r, r) >= g.sm.support2) continue;
       e = fmax(e, -(p[j] - p_i + dot(rho_a, r)));
@@ -54,8 +53,7 @@ __kernel void stab_project(OP_ARGS, __global const uint *kind, __global const re
 #else
   realv gp = (realv)(R(0.0));
 #endif
-  neigh_begin(&it, &g, x);
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -101,9 +99,7 @@ __kernel void stab_move(const uint n, const struct grid g, __global const uint *
   /* the nearest of the dummies' wall points q_d = x_d + d n_d (distance²), the best side there */
   real best = INFINITY, side = INFINITY;
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     if (kind[j] == STAB_FLUID) continue;
     const realv r = x - (pos[j] + it.shift + dist[j] * normal[j]);
     const real r2 = dot(r, r);

@@ -25,9 +25,7 @@ __kernel void stab_particle_shift(const uint n, const struct grid g,
   realv gc = (realv)(R(0.0)), wn = (realv)(R(0.0));
   real wbest = dr * dr; /* a wall point within dr: the nearest one's normal */
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     if (j == i) continue;
     const realv r = x - (pos[j] + it.shift);
     const real r2 = dot(r, r);

@@ -61,9 +61,7 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
   realv gf = (realv)(R(0.0)); /* Σ_b V_b ∇w_ab: into the fluid (and the walls) */
   realv gw = (realv)(R(0.0)); /* ∇γ_a = Σ_s ∇γ_as: away from the walls */
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
@@ -71,9 +69,7 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
     if (kind[j] == ISPH_FLUID) wet += vol[j] * smoothing_w(g.sm, sqrt(r2));
     gf += vol[j] * smoothing_f(g.sm, sqrt(r2)) * r;
   }
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
     d += dot(x - R(0.5) * (a + b), gg);

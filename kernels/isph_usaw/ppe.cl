@@ -43,9 +43,7 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   real div = R(0.0), wall = R(0.0), dens = vol[i] * smoothing_w(g.sm, R(0.0));
   uint near_surface = 0;
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
@@ -55,9 +53,7 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
       near_surface |= free_surface[j];
     }
   }
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
     const uint v1 = inv[seg_v1[s]], v2 = inv[seg_v2[s]];
@@ -100,9 +96,7 @@ __kernel void isph_no_tension(USAW_PART_ARGS, USAW_SEG_ARGS, __global const uint
   const real near2 = R(0.25) * g.sm.support2; /* (h q_max / 2)² */
   int near_surface = 0;
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     near_surface |= kind[j] == ISPH_FLUID && free_surface[j] && dot(r, r) < near2;
   }

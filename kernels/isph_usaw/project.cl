@@ -52,9 +52,7 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   int near_air = ISPH_GRAD_CORR == 2 || free_surface[i];
   uint wet = 0; /* fluid neighbours */
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
@@ -69,9 +67,7 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     grad += vol[j] * (pa + p[j]) * smoothing_f(g.sm, sqrt(r2)) * r;
 #endif
   }
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const uint v1 = inv[seg_v1[s]], v2 = inv[seg_v2[s]];
     /* a segment above the free surface borders air: its P says nothing about the fluid's, so

@@ -33,9 +33,7 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   realv cx = (realv)(R(0.0)), cu = (realv)(R(0.0)); /* collisions: move and velocity change */
   int near_surface = 0;
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || kind[j] > ISPH_VERTEX) continue;
@@ -61,9 +59,7 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
     }
     return;
   }
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s))
+  NEIGH_FOR(it, g_seg, seg_start, x, s)
     gc -= usaw_grad_gamma_seg(g.sm, x, seg_a[s] + it.shift, seg_b[s] + it.shift, seg_n[s]);
   const real h = R(1.0) / g.sm.inv_h;
   realv dr = -c_shift * h * h * gc / gam[i];
@@ -82,15 +78,13 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
 #if ISPH_SHIFT_VCORR
   /* first-order velocity correction (eq 38) */
   realv du = (realv)(R(0.0));
-  neigh_begin(&it, &g, x);
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
     du -= vol[j] * (u - vel[j]) * (smoothing_f(g.sm, sqrt(r2)) * dot(r, dr));
   }
-  neigh_begin(&it, &g_seg, x);
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv us = R(0.5) * (wall_vel[inv[seg_v1[s]]] + wall_vel[inv[seg_v2[s]]]);
     du += (u - us) * dot(usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]), dr);

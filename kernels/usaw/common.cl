@@ -40,9 +40,7 @@ realv usaw_wall_guard(const realv x, realv m, const real tau, const real margin,
                       __global const realv *vel, const int moving_walls)
 {
   struct neigh_iter it;
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, t = b - a;
     const real f = dot(x - a, t) / dot(t, t);
     const realv c = a + clamp(f, R(0.0), R(1.0)) * t;

@@ -116,9 +116,7 @@ __kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const u
   real dmin = INFINITY, side = -INFINITY; /* nearest distance², best signed distance there */
   int decided = 0;
   struct neigh_iter it;
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, nn = seg_n[s];
     g -= usaw_gamma_seg(g_seg.sm, x, a, b, nn);
     gg += usaw_grad_gamma_seg(g_seg.sm, x, a, b, nn);

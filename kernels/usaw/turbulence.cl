@@ -109,9 +109,7 @@ __kernel void usaw_turb_transport(USAW_PART_ARGS, USAW_SEG_ARGS, __global const 
   realv gx = (realv)(R(0.0)), gy = (realv)(R(0.0)); /* rows of γ G−{u}: ∇u_x, ∇u_y */
   real dk = R(0.0), de = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     const realv r = x - (pos[j] + it.shift);
     const real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] != ISPH_FLUID) continue;
@@ -125,9 +123,7 @@ __kernel void usaw_turb_transport(USAW_PART_ARGS, USAW_SEG_ARGS, __global const 
   }
   real wall = R(0.0);                                      /* Σ_s |∇γ_as| / δr_as */
   real near = INFINITY, near_ut = R(0.0), near_d = R(0.0); /* the nearest segment */
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, nn = seg_n[s];
     const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, nn);
     const real ggn = length(gg);
@@ -194,9 +190,7 @@ __kernel void usaw_turb_update(USAW_PART_ARGS, USAW_SEG_ARGS, __global const uin
   const realv x = pos[i];
   real wk = R(0.0), sk = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     const realv r = x - (pos[j] + it.shift);
     const real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || kind[j] != ISPH_FLUID) continue;
@@ -208,15 +202,12 @@ __kernel void usaw_turb_update(USAW_PART_ARGS, USAW_SEG_ARGS, __global const uin
   const real c34 = sqrt(KE_CMU) * sqrt(sqrt(KE_CMU)); /* C_μ^¾ */
   real se = R(0.0);
   int ns = 0;
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     if (seg_v1[s] != id[i] && seg_v2[s] != id[i]) continue;
     const realv m = R(0.5) * (seg_a[s] + seg_b[s]) + it.shift, nn = seg_n[s];
     real ws = R(0.0), es = R(0.0);
     struct neigh_iter jt;
-    neigh_begin(&jt, &g, m);
-    while (neigh_next(&jt, &g, cell_start, &j)) {
+    NEIGH_FOR(jt, g, cell_start, m, j) {
       const realv xb = pos[j] + jt.shift, r = m - xb;
       const real r2 = dot(r, r);
       if (r2 >= g.sm.support2 || kind[j] != ISPH_FLUID) continue;
@@ -256,9 +247,7 @@ __kernel void usaw_turb_wall_shear(USAW_PART_ARGS, USAW_SEG_ARGS, __global const
   if (kind[i] == ISPH_FLUID) {
     const realv x = pos[i], u = vel[i];
     struct neigh_iter it;
-    neigh_begin(&it, &g_seg, x);
-    uint s;
-    while (neigh_next(&it, &g_seg, seg_start, &s)) {
+    NEIGH_FOR(it, g_seg, seg_start, x, s) {
       if (in_group[seg_index[s]] == 0u) continue;
       const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, nn = seg_n[s];
       const real ggn = length(usaw_grad_gamma_seg(g.sm, x, a, b, nn));

@@ -49,9 +49,7 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
 #endif
   realv lap = (realv)(R(0.0));
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
@@ -68,9 +66,7 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
 #if !USAW_TURB
   const real cg = R(2.0) * nu / gam[i];
 #endif
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, e = seg_b[s] + it.shift, nn = seg_n[s];
     const realv gg = usaw_grad_gamma_seg(g.sm, x, a, e, nn);
     const real ggn = length(gg);

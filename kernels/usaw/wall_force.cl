@@ -13,9 +13,7 @@ __kernel void usaw_vertex_strain(USAW_PART_ARGS, USAW_SEG_ARGS, __global const r
   const realv x = pos[i], u = vel[i];
   realv gx = (realv)(R(0.0)), gy = (realv)(R(0.0)); /* ∇u_x and ∇u_y (rows of G) */
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
@@ -23,9 +21,7 @@ __kernel void usaw_vertex_strain(USAW_PART_ARGS, USAW_SEG_ARGS, __global const r
     gx -= vol[j] * du.x * gw;
     gy -= vol[j] * du.y * gw;
   }
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
     const realv du = u - R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);

@@ -159,9 +159,7 @@ __kernel void wcr_config(const uint n, const struct grid g, __global const uint 
   uint c = 0u;
   __global uint *row = nlist + (size_t)i * WCR_MAXN;
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     const realv r = x - (pos[j] + it.shift);
     const real r2 = dot(r, r);
     if (r2 >= rlist2 || j == i || kind[j] == WCR_PARKED) continue;

@@ -29,9 +29,7 @@ __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const rea
   const real ra = rho[i];
   real div = R(0.0), diff = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] != ISPH_FLUID) continue;
@@ -41,9 +39,7 @@ __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const rea
      * (g·r_ab = |g| (z_b − z_a)) */
     diff += vol[j] * (ra - rho[j] - rho0_c2 * dot(gravity, r)) * f * rr; /* r·∇w / r = F r */
   }
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
     div -= dot(u - us, usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]));
@@ -60,9 +56,7 @@ __kernel void wcsph_vertex_pressure(USAW_PART_ARGS, __global const real *rho, co
   const real cos_half = cos(ISPH_PI * gam[i]); /* cos(θ_v/2), γ_v = θ_v/2π */
   real s = R(0.0), ws = R(0.0);
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || kind[j] != ISPH_FLUID) continue;

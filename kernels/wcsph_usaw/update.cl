@@ -28,9 +28,7 @@ __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv
   realv cu = (realv)(R(0.0)); /* collisions (usaw/common.cl), in scenes with gravity */
   const real cd = USAW_COLLIDE * dr0;
   struct neigh_iter it;
-  neigh_begin(&it, &g, x);
-  uint j;
-  while (neigh_next(&it, &g, cell_start, &j)) {
+  NEIGH_FOR(it, g, cell_start, x, j) {
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
@@ -42,9 +40,7 @@ __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv
       if (vn < R(0.0)) cu -= R(0.5) * (R(1.0) + USAW_RESTITUTION) * vn * e;
     }
   }
-  neigh_begin(&it, &g_seg, x);
-  uint s;
-  while (neigh_next(&it, &g_seg, seg_start, &s)) {
+  NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const real ps = R(0.5) * (p[inv[seg_v1[s]]] + p[inv[seg_v2[s]]]) -
                     rho0 * dot(gravity, R(0.5) * (a + b)) - p_ref;
