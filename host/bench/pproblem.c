@@ -62,6 +62,7 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
   dir = malloc(pp.n * sizeof *dir);
   CLSPH_CHECK(pos && vol && b && dir, CLSPH_E_NOMEM, "pproblem: out of memory");
   rng_seed(&r, spec->seed);
+  const double scale = spec->scale > 0.0 ? spec->scale : 1.0;
   size_t i = 0;
   for (int k = 0; k < rows; ++k) {
     for (int m = 0; m < spec->side; ++m, ++i) {
@@ -76,9 +77,9 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
       pos[2 * i + 1] = (real)y;
       x = (double)pos[2 * i];
       y = (double)pos[2 * i + 1];
-      vol[i] = (real)(pp.dr * pp.dr);
+      vol[i] = (real)(scale * pp.dr * pp.dr);
       dir[i] = !spec->singular && (k < ghost || k >= ghost + spec->side);
-      b[i] = (real)(dir[i] ? exact(spec, x, y) : laplacian(spec, x, y));
+      b[i] = (real)(dir[i] ? exact(spec, x, y) : scale * laplacian(spec, x, y));
     }
   }
   pset_init(&pp.ps, pp.n, pp.n);

@@ -19,6 +19,8 @@ struct pproblem_spec {
   int singular;  /* periodic in y too */
   double jitter; /* random displacement, fraction of dr */
   int kgc;       /* kernel-gradient correction */
+  double scale;  /* the volumes and so the Laplacian's rows, and their right-hand side, times this
+                    (0: 1): the same solution on another scale */
   unsigned long seed;
 };
 

@@ -430,12 +430,16 @@ __kernel void mg_block(const int l0, const int L, __global const int *info, cons
 
 /* The coarsest level's dense inverse M = A⁻¹ (m ≤ MG_COARSEST cells), in one work-group, in
  * kreal (double where the device has it; krylov.cl): A from the level's stencils (an empty cell
- * is an identity row; periodic axes wrap), then Gauss-Jordan with partial pivoting, a pivot under
- * 1e-12 (float builds 1e-5) of the largest entry counting as singular. A singular operator (pure
- * Neumann, solved mean-free) is tried again with its diagonal scaled by 1 + 1e-6, then 1 + 1e-3:
- * the preconditioner only has to be close to the inverse on the rest of the space. One that stays
- * singular (a zero diagonal: rows that only copy a neighbour's value) gets Jacobi, and flag = 1
- * for the host's warning. work holds a, b and inv (m² each); at most MG_COARSE_WG work-items. */
+ * is an identity row scaled to the operator's largest entry, so that it neither sets nor fails
+ * the test below; periodic axes wrap), then Gauss-Jordan with partial pivoting, a pivot under
+ * 1e-5 of the largest entry counting as singular: the stencils are float in both builds, so an
+ * exactly singular operator shows pivots of its float rounding (about 1e-7), which a double-only
+ * bound (1e-12) had taken for regular and inverted, amplifying its null space. A singular
+ * operator (pure Neumann, solved mean-free) is tried again with its diagonal scaled by 1 + 1e-6,
+ * then by 1 + 1e-3: the preconditioner only has to be close to the inverse on the rest of the
+ * space. One that stays singular (a zero diagonal: rows that only copy a neighbour's value) gets
+ * Jacobi, and flag = 1 for the host's warning. work holds a, b and inv (m² each); at most
+ * MG_COARSE_WG work-items. */
 __kernel void mg_coarsest(const int4 nc, const int R, const int W, const uint so, const uint m,
                           __global const mreal *S, __global kreal *work, __global real *M,
                           __global uint *flag)
@@ -451,7 +455,6 @@ __kernel void mg_coarsest(const int4 nc, const int R, const int W, const uint so
   for (uint I = lid; I < m; I += L) {
     for (uint j = 0; j < m; ++j) a[I * m + j] = KR(0.0);
     const int4 c = mg_coords(nc, I);
-    int empty = 1;
     for (int o = 0; o < W; ++o) {
       const kreal v = (kreal)S[so + I * (uint)W + (uint)o];
       if (v == KR(0.0)) continue;
@@ -472,16 +475,21 @@ __kernel void mg_coarsest(const int4 nc, const int R, const int W, const uint so
       }
       if (!inside) continue;
       a[I * m + mg_id(nc, t)] += v;
-      empty = 0;
     }
-    if (empty) a[I * m + I] = KR(1.0);
     for (uint j = 0; j < m; ++j) big = fmax(big, fabs(a[I * m + j]));
   }
   big_l[lid] = big;
   barrier(CLK_LOCAL_MEM_FENCE | CLK_GLOBAL_MEM_FENCE);
   big = KR(0.0);
   for (uint k = 0; k < L; ++k) big = fmax(big, big_l[k]);
-  const kreal tol = (CLSPH_DOUBLE ? KR(1e-12) : KR(1e-5)) * big;
+  if (!(big > KR(0.0))) big = KR(1.0); /* no fluid at all: identity rows */
+  for (uint I = lid; I < m; I += L) {  /* empty cells: identity rows on the operator's scale */
+    int empty = 1;
+    for (uint j = 0; j < m && empty; ++j) empty = a[I * m + j] == KR(0.0);
+    if (empty) a[I * m + I] = big;
+  }
+  barrier(CLK_GLOBAL_MEM_FENCE);
+  const kreal tol = KR(1e-5) * big;
   for (int attempt = 0; attempt < 3; ++attempt) {
     const kreal eps = attempt == 0 ? KR(0.0) : (attempt == 1 ? KR(1e-6) : KR(1e-3));
     for (uint I = lid; I < m; I += L)
