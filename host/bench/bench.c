@@ -138,7 +138,7 @@ static enum clsph_status bench_size(const struct dev *dev, const struct cli *cli
   CLSPH_TRY(ops_apply(&ops[0], OP_CORRECTION, dev, &g, n, P, V, NULL, NULL, d_L, NULL));
   CLSPH_TRY(kern_read(dev, d_L, 4 * n * sizeof(real), Lh));
   struct native_set ns = {.pos = pos,
-                          .vol = vol,
+                          .vol = vol, /* uniform: the same in the sorted order */
                           .start = start,
                           .n = n,
                           .nc = {g.n[0], g.n[1]},
