@@ -136,6 +136,7 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
             {&ps.k_wtotal, "kr_wtotal"},
             {&ps.k_wshift, "kr_wshift"},
             {&ps.k_spmv, "kr_spmv"},
+            {&ps.k_spmv_dot, "kr_spmv_dot"},
             {&ps.k_scale, "kr_scale"},
             {&ps.k_sweep, "kr_sweep"},
             {&ps.k_axpy, "blas1_axpy"},
@@ -198,6 +199,10 @@ done:
 #define KR_CAPACITY      12
 #define KR_RHO_SET       2 /* partial sums of (r0, r) */
 #define KR_BB_SET        0 /* partial sums of (b, b) */
+#define KR_R0V_SET       3 /* (r0, v) */
+#define KR_TS_SET        5 /* (t, s) */
+#define KR_TT_SET        6 /* (t, t) */
+#define KR_NO_SET        0xffffffffu
 
 static enum clsph_status launch(struct psolve *ps, cl_kernel k, cl_uint n)
 {
@@ -420,6 +425,35 @@ done:
   return st;
 }
 
+/* y = A x and the partial sums of (a, y) into set sa and, unless sb is KR_NO_SET, of (y, y) into
+ * set sb: in one pass (kr_spmv_dot) with the stored operator, else the product and then the dot
+ * products, with the same sums */
+static enum clsph_status apply_dot(struct psolve *ps, const struct psolve_op *op, cl_mem x,
+                                   cl_mem y, cl_uint k, cl_mem a, cl_uint sa, cl_uint sb)
+{
+  enum clsph_status st = CLSPH_OK;
+  const cl_uint n = (cl_uint)op->n;
+  if (ps->opt.apply == PSOLVE_STORED) {
+    const real e = (real)(PSOLVE_REINFORCED(ps->opt.singular) ? ps->opt.reinforce : 0.0);
+    CLSPH_TRY(KERN_SET(ps->k_spmv_dot, KARG(n), KARG(k), KARG(ps->d_state), KARG(ps->d_row),
+                       KARG(ps->d_col), KARG(ps->d_val), KARG(e), KARG(x), KARG(y), KARG(a),
+                       KARG(sa), KARG(sb), KARG(ps->d_partial)));
+    CLSPH_TRY(kern_launch_wg(ps->dev, ps->k_spmv_dot, (size_t)ps->ngroups * PSOLVE_WG, PSOLVE_WG,
+                             &ps->t_apply));
+    goto done;
+  }
+  CLSPH_TRY(apply(ps, op, x, y, k));
+  if (sb == KR_NO_SET) {
+    CLSPH_TRY(dot(ps, n, k, a, y, sa));
+  } else { /* kr_dot_ts's sets: (t, s) and (t, t) */
+    CLSPH_TRY(KERN_SET(ps->k_dot_ts, KARG(n), KARG(k), KARG(ps->d_state), KARG(y), KARG(a),
+                       KARG(ps->d_partial)));
+    CLSPH_TRY(launch_groups(ps, ps->k_dot_ts));
+  }
+done:
+  return st;
+}
+
 /* ---- the solve ---- */
 
 /* Enqueue iteration k (krylov.cl): its kernels return at once once the solve has ended. */
@@ -437,16 +471,14 @@ static enum clsph_status iteration(struct psolve *ps, const struct psolve_op *op
                      KARG(scale), KARG(dw), KARG(t)));
   CLSPH_TRY(launch_groups(ps, ps->k_begin));                 /* ρ', β, p */
   CLSPH_TRY(precond(ps, op, ps->d_p, ps->d_ph, ps->d_q, k)); /* p̂ <- M⁻¹ p */
-  CLSPH_TRY(apply(ps, op, ps->d_ph, ps->d_v, k));            /* v <- A p̂ */
-  CLSPH_TRY(dot(ps, n, k, ps->d_r0, ps->d_v, 3));            /* (r0, v) */
+  CLSPH_TRY(
+      apply_dot(ps, op, ps->d_ph, ps->d_v, k, ps->d_r0, KR_R0V_SET, KR_NO_SET)); /* v, (r0, v) */
   CLSPH_TRY(KERN_SET(ps->k_s, KARG(n), KARG(k), KARG(ng), KARG(ps->d_state), KARG(ps->d_partial),
                      KARG(ps->d_r), KARG(ps->d_v), KARG(ps->d_s), KARG(scale), KARG(dw), KARG(t)));
   CLSPH_TRY(launch_groups(ps, ps->k_s));                     /* α, s = r − α v, (s, s) */
   CLSPH_TRY(precond(ps, op, ps->d_s, ps->d_sh, ps->d_q, k)); /* ŝ <- M⁻¹ s */
-  CLSPH_TRY(apply(ps, op, ps->d_sh, ps->d_t, k));            /* t <- A ŝ */
-  CLSPH_TRY(KERN_SET(ps->k_dot_ts, KARG(n), KARG(k), KARG(ps->d_state), KARG(ps->d_t),
-                     KARG(ps->d_s), KARG(ps->d_partial)));
-  CLSPH_TRY(launch_groups(ps, ps->k_dot_ts)); /* (t, s), (t, t) */
+  CLSPH_TRY(apply_dot(ps, op, ps->d_sh, ps->d_t, k, ps->d_s, KR_TS_SET,
+                      KR_TT_SET)); /* t, (t, s), (t, t) */
   CLSPH_TRY(KERN_SET(ps->k_end, KARG(n), KARG(k), KARG(ng), KARG(tiny), KARG(ps->d_state),
                      KARG(ps->d_partial), KARG(x), KARG(ps->d_ph), KARG(ps->d_sh), KARG(ps->d_r),
                      KARG(ps->d_s), KARG(ps->d_t), KARG(ps->d_r0)));
@@ -681,12 +713,12 @@ done:
 
 void psolve_destroy(struct psolve *ps)
 {
-  cl_kernel *ks[] = {&ps->k_dot,      &ps->k_dot_ts,      &ps->k_residual, &ps->k_shift,
-                     &ps->k_start,    &ps->k_begin,       &ps->k_s,        &ps->k_end,
-                     &ps->k_restart,  &ps->k_total,       &ps->k_spmv,     &ps->k_scale,
-                     &ps->k_sweep,    &ps->k_axpy,        &ps->k_add_diag, &ps->k_invert,
-                     &ps->k_csr_diag, &ps->k_scan_blocks, &ps->k_scan_top, &ps->k_scan_apply,
-                     &ps->k_wtotal,   &ps->k_wshift,      &ps->k_guard};
+  cl_kernel *ks[] = {&ps->k_dot,        &ps->k_dot_ts,   &ps->k_residual,    &ps->k_shift,
+                     &ps->k_start,      &ps->k_begin,    &ps->k_s,           &ps->k_end,
+                     &ps->k_restart,    &ps->k_total,    &ps->k_spmv,        &ps->k_spmv_dot,
+                     &ps->k_scale,      &ps->k_sweep,    &ps->k_axpy,        &ps->k_add_diag,
+                     &ps->k_invert,     &ps->k_csr_diag, &ps->k_scan_blocks, &ps->k_scan_top,
+                     &ps->k_scan_apply, &ps->k_wtotal,   &ps->k_wshift,      &ps->k_guard};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {
     if (*ks[i] != NULL) clReleaseKernel(*ks[i]);
     *ks[i] = NULL;

@@ -89,8 +89,8 @@ struct psolve {
   size_t cap;   /* vector length the buffers hold */
   int failures; /* consecutive non-converged solves */
   cl_kernel k_dot, k_dot_ts, k_residual, k_shift, k_start, k_begin, k_s, k_end, k_restart, k_total,
-      k_spmv, k_scale, k_sweep, k_axpy, k_add_diag, k_invert, k_csr_diag, k_scan_blocks, k_scan_top,
-      k_scan_apply, k_guard, k_wtotal, k_wshift;
+      k_spmv, k_spmv_dot, k_scale, k_sweep, k_axpy, k_add_diag, k_invert, k_csr_diag, k_scan_blocks,
+      k_scan_top, k_scan_apply, k_guard, k_wtotal, k_wshift;
   cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags;
   cl_mem d_state;                               /* the iteration's state (krylov.cl) */
   cl_mem d_row, d_col, d_val, d_count, d_block; /* stored layout */
