@@ -161,38 +161,23 @@ NATIVE_SWEEP_FN(sweep_div_kgc, OP_DIV, 1)
 NATIVE_SWEEP_FN(sweep_lap, OP_LAP, 0)
 NATIVE_SWEEP_FN(sweep_lap_kgc, OP_LAP, 1)
 
+/* the loop of each operator, without and with the correction (those with no gradient inside
+ * ignore it) */
+typedef long (*native_sweep)(const struct native_set *, const real *, real *);
+static const native_sweep sweeps[OP_COUNT][2] = {
+    [OP_CORRECTION] = {sweep_correction, sweep_correction},
+    [OP_SHEPARD] = {sweep_shepard, sweep_shepard},
+    [OP_INTERP] = {sweep_interp, sweep_interp},
+    [OP_GRAD_SYM] = {sweep_grad_sym, sweep_grad_sym_kgc},
+    [OP_GRAD_ANTISYM] = {sweep_grad_antisym, sweep_grad_antisym_kgc},
+    [OP_DIV] = {sweep_div, sweep_div_kgc},
+    [OP_LAP] = {sweep_lap, sweep_lap_kgc},
+};
+
 double native_op(enum op_kind op, const struct native_set *s, const real *in, real *out,
                  long *pairs)
 {
-  const int kgc = s->L != NULL;
-  long count = 0;
   const double t0 = omp_get_wtime();
-  switch (op) {
-  case OP_CORRECTION:
-    count = sweep_correction(s, in, out);
-    break;
-  case OP_SHEPARD:
-    count = sweep_shepard(s, in, out);
-    break;
-  case OP_INTERP:
-    count = sweep_interp(s, in, out);
-    break;
-  case OP_GRAD_SYM:
-    count = kgc ? sweep_grad_sym_kgc(s, in, out) : sweep_grad_sym(s, in, out);
-    break;
-  case OP_GRAD_ANTISYM:
-    count = kgc ? sweep_grad_antisym_kgc(s, in, out) : sweep_grad_antisym(s, in, out);
-    break;
-  case OP_DIV:
-    count = kgc ? sweep_div_kgc(s, in, out) : sweep_div(s, in, out);
-    break;
-  case OP_LAP:
-    count = kgc ? sweep_lap_kgc(s, in, out) : sweep_lap(s, in, out);
-    break;
-  default:
-    break;
-  }
-  const double t = omp_get_wtime() - t0;
-  *pairs = count;
-  return t;
+  *pairs = op >= 0 && op < OP_COUNT ? sweeps[op][s->L != NULL](s, in, out) : 0;
+  return omp_get_wtime() - t0;
 }
