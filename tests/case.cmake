@@ -275,9 +275,14 @@ clsph_cli_test(case_wcsph_sound_speed_given ARGS info ${CMAKE_SOURCE_DIR}/cases/
 # for the float build and the time stepping). Sampled by first-order moving least squares
 # (interpolation = "linear"), which does not lag next to the walls as Shepard's average does:
 # 0.029 U and 0.017 U; bounds 40% above. The paper's resolutions are validation runs outside CI.
+# The particles' own u on x = 1/2 against Ghia's table read by cubics (no interpolation of ours):
+# RMS 0.018 U (float 0.019 U), and the two rows under the lid lag it by 0.046 U (float 0.049 U):
+# most of the error of the coarse cavity is there (tests/validation/RESULTS_cavity_causes.md);
+# bounds 40% above, the lag between 0 and 0.07 U.
 clsph_run_test(run_cavity_coarse ${CMAKE_SOURCE_DIR}/cases/cavity.lua SETS n=20 t_end=10
                BOUNDS "u_rms_vs_ghia<0.12" "v_rms_vs_ghia<0.029" "wall_crossing_steps<0.5"
-                      "u_rms_linear<0.042" "v_rms_linear<0.024")
+                      "u_rms_linear<0.042" "v_rms_linear<0.024" "u_rms_particles<0.027"
+                      "u_lid_rows<0" "u_lid_rows>-0.07")
 
 # wcsph-usaw, the baseline, on the same coarse cavity (measured RMS 0.131 U for u, 0.045 U for v,
 # its wall term at u* (usaw/viscous.cl); before, 0.137 U for u, 0.039 U for v;
@@ -478,6 +483,12 @@ clsph_failure_test(health_energy ${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua en
 clsph_failure_test(health_wall_crossing ${CMAKE_SOURCE_DIR}/cases/cavity.lua wall_crossing
                    "a fluid particle crossed a wall \\([0-9.]+ dr behind it.*\\(run { checks = { wall_depth = 0.5 } } sets this limit, in dr\\)"
                    SETS n=20 cfl=4 t_end=5)
+# The lid's corner vertices moving with the lid (cases/cavity.lua corners = 1) drag the fluid
+# under them into the side walls: through the right one at step 20, t = 0.2 s, at 20² (both
+# precisions; 0.12 s at 30², 0.085 s at 40²). The cavity's corners stay at rest.
+clsph_failure_test(health_wall_crossing_corners ${CMAKE_SOURCE_DIR}/cases/cavity.lua wall_crossing
+                   "a fluid particle crossed a wall \\([0-9.]+ dr behind it.* at step [0-9]+, t = 0\\.[0-9]+ s"
+                   SETS n=20 corners=1 t_end=2)
 # A particle leaving the domain is classified too (the message: run_blowup_escape); no setting
 # controls it, so the message says where to look.
 clsph_failure_test(health_escaped ${CMAKE_SOURCE_DIR}/cases/free_fall.lua escaped

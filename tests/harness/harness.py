@@ -332,13 +332,21 @@ set logscale xy
 set key bottom left box opaque
 set ylabel '{esc(metric)} (error against the reference)'
 """
+    def style(k):
+        """gnuplot's 8 line colours, then the same colours dashed with another point shape"""
+        return f"lw 2 pt {(7, 5, 9, 13)[k // 8 % 4]} dt {k // 8 + 1} lc {k % 8 + 1}"
+
+    def shown(name):
+        """a series none of whose runs ended "ok" has no line: its title says so"""
+        return name if any(r["series"] == name for r in ok) else f"{name} (no run ended ok)"
+
     plots = []
     for k, name in enumerate(series):
         plots.append(f"'{esc(csv_path)}' every ::1 using {sel(name, 'wall_seconds')}:"
-                     f"{cols['error']} with linespoints lw 2 pt 7 lc {k + 1} title '{esc(name)}'")
+                     f"{cols['error']} with linespoints {style(k)} title '{esc(shown(name))}'")
         plots.append(f"'{esc(csv_path)}' every ::1 using {sel(name, 'wall_seconds')}:"
                      f"{cols['error']}:('{esc(res_name)}='.strcol({cols['value']})) with labels "
-                     f"offset 0.8,0.8 font ',9' tc lt {k + 1} notitle")
+                     f"offset 0.8,0.8 font ',9' tc lt {k % 8 + 1} notitle")
     peers_path, peers = read_peers(study, metric)
     groups = []
     for r in peers:
@@ -366,9 +374,9 @@ plot {', '.join(plots)}
 """)
     plots = []
     for k, (name, o) in enumerate(zip(series, orders)):
-        title = name + (f", observed order {float(o['order']):.2f} in h" if o["order"] else "")
+        title = shown(name) + (f", observed order {float(o['order']):.2f} in h" if o["order"] else "")
         plots.append(f"'{esc(csv_path)}' every ::1 using {sel(name, 'fluid_particles')}:"
-                     f"{cols['error']} with linespoints lw 2 pt 7 lc {k + 1} title '{esc(title)}'")
+                     f"{cols['error']} with linespoints {style(k)} title '{esc(title)}'")
     gnuplot(common + f"""
 set output '{esc(base)}_particles.png'
 set title '{esc(case)}: error against resolution ({esc(study)})'
