@@ -9,9 +9,10 @@
 -- hdr sets the smoothing length h/δr (0: the scheme's, 2 for the USAW schemes as in the paper);
 -- guard = 1 turns the USAW schemes' wall guard on (by default it is on only with gravity);
 -- corners = 1 gives the lid's two corner vertices the lid's velocity instead of the side walls'
--- rest (the studies cavity_re100_causes in tests/harness/studies.txt measure each).
+-- rest; shift_velocity = 0 turns off isph-usaw's first-order velocity correction of the shift
+-- (eq 38) (the study cavity_re100_causes in tests/harness/studies.txt measures each).
 param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, riemann = 0, ard = 0, tvf = 2, dens = 0, c0 = 10, alpha = 0.2,
-        shift = 0.7, checkpoint = 0, hdr = 0, guard = 0, corners = 0 }
+        shift = 0.7, checkpoint = 0, hdr = 0, guard = 0, corners = 0, shift_velocity = 1 }
 
 local U = 1
 domain { 0, 0, 1, 1 }
@@ -24,7 +25,8 @@ elseif wcsph == 1 then -- the paper's baseline: c0 = 10 U and a background press
   scheme { "wcsph-usaw", sound_speed = 10 * U, background_pressure = 0.05 * 100 * U * U,
            wall_guard = guard == 1 and "on" or nil }
 else
-  scheme { "isph-usaw", shifting = shift, wall_guard = guard == 1 and "on" or nil }
+  scheme { "isph-usaw", shifting = shift, wall_guard = guard == 1 and "on" or nil,
+           shift_velocity = shift_velocity == 0 and "off" or nil }
 end
 fluid { density = 1, viscosity = U / re }
 if corners == 1 then -- the lid first: walls that share an end point share its vertex particle,
