@@ -15,6 +15,13 @@ param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, riemann = 0, ard = 0,
         shift = 0.7, checkpoint = 0, hdr = 0, guard = 0, corners = 0, shift_velocity = 1 }
 
 local U = 1
+for _, name in ipairs({"guard", "corners", "shift_velocity"}) do
+  local v = ({guard = guard, corners = corners, shift_velocity = shift_velocity})[name]
+  if v ~= 0 and v ~= 1 then error(("cavity: %s must be 0 or 1, not %g"):format(name, v)) end
+end
+if not (hdr == 0 or (hdr > 0 and hdr <= 10)) then
+  error(("cavity: hdr (h/δr) must be 0 (the scheme's) or in (0, 10], not %g"):format(hdr))
+end
 domain { 0, 0, 1, 1 }
 particles { dr = 1 / n, h_over_dr = hdr > 0 and hdr or nil }
 if riemann == 1 then -- Riemann WCSPH with the limited transport velocity (c0 = 10 U)
@@ -45,7 +52,8 @@ run { t_end = t_end, output_every = t_end / 10, cfl = cfl,
       checkpoint_every = checkpoint > 0 and checkpoint or nil }
 
 -- Ghia's centreline values, for the particles' own velocities (below)
-local ghia_u = reference("tests/data/ghia1982_u_centreline.csv", "y", "u_Re100", "u_Re400", "u_Re1000")
+local ghia_u = reference("tests/data/ghia1982_u_centreline.csv", "y", "u_Re100", "u_Re400",
+                         "u_Re1000")
 
 -- Ghia's value at s by the cubic through the 4 tabulated points nearest to it (Lagrange)
 local function ghia_at(coord, value, s)

@@ -374,7 +374,9 @@ plot {', '.join(plots)}
 """)
     plots = []
     for k, (name, o) in enumerate(zip(series, orders)):
-        title = shown(name) + (f", observed order {float(o['order']):.2f} in h" if o["order"] else "")
+        title = shown(name)
+        if o["order"]:
+            title += f", observed order {float(o['order']):.2f} in h"
         plots.append(f"'{esc(csv_path)}' every ::1 using {sel(name, 'fluid_particles')}:"
                      f"{cols['error']} with linespoints {style(k)} title '{esc(title)}'")
     gnuplot(common + f"""

@@ -5,8 +5,8 @@ cavity_re100_causes (tests/harness/studies.txt), every metric of each run.
     tests/harness/harness.py accuracy cavity_re100_causes --results tests/validation
     tests/validation/cavity_causes.py [RUNS_DIR [OUT.md]]
 
-RUNS_DIR is the harness's folder of the runs (default out/harness/cavity_re100_causes/runs), OUT the
-Markdown file (default tests/validation/RESULTS_cavity_causes.md). Each series changes one thing
+RUNS_DIR is the harness's folder of the runs (default out/harness/cavity_re100_causes/runs), OUT
+the Markdown file (default tests/validation/RESULTS_cavity_causes.md). Each series changes one thing
 from the default set-up; the columns are in units of the lid speed U:
   * particles u: RMS of the fluid particles' own u − u_Ghia(y) within δr/2 of x = 1/2 (no
     interpolation of ours; Ghia's table by cubics, cases/cavity.lua);
@@ -19,8 +19,8 @@ import json
 import os
 import sys
 
-ORDER = ["default", "cfl-0.5", "cfl-2", "shift-0.35", "shift-1.4", "no-shift-velocity", "moving-corners",
-         "moving-corners-cfl-0.5", "guard", "guard-cfl-2", "h1.5", "h1.5-cfl-2"]
+ORDER = ["default", "cfl-0.5", "cfl-2", "shift-0.35", "shift-1.4", "no-shift-velocity",
+         "moving-corners", "moving-corners-cfl-0.5", "guard", "guard-cfl-2", "h1.5", "h1.5-cfl-2"]
 WHAT = {
     "default": "the default set-up: the paper's h = 2 δr and shifting C = 0.7, C_CFL = 0.1 "
                "(cfl = 1: half the paper's), the lid's corner vertices at rest, no wall guard",
