@@ -10,9 +10,12 @@
 -- guard = 1 turns the USAW schemes' wall guard on (by default it is on only with gravity);
 -- corners = 1 gives the lid's two corner vertices the lid's velocity instead of the side walls'
 -- rest; shift_velocity = 0 turns off isph-usaw's first-order velocity correction of the shift
--- (eq 38) (the study cavity_re100_causes in tests/harness/studies.txt measures each).
+-- (eq 38); floor sets the USAW schemes' wall_distance_floor, the least wall distance of the
+-- viscous wall term in spacings (0: the scheme's, δr/2 for isph-usaw) (the study
+-- cavity_re100_causes in tests/harness/studies.txt measures each).
 param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, riemann = 0, ard = 0, tvf = 2, dens = 0, c0 = 10, alpha = 0.2,
-        shift = 0.7, checkpoint = 0, hdr = 0, guard = 0, corners = 0, shift_velocity = 1 }
+        shift = 0.7, checkpoint = 0, hdr = 0, guard = 0, corners = 0, shift_velocity = 1,
+        floor = 0 }
 
 local U = 1
 for _, name in ipairs({"guard", "corners", "shift_velocity"}) do
@@ -22,6 +25,10 @@ end
 if not (hdr == 0 or (hdr > 0 and hdr <= 10)) then
   error(("cavity: hdr (h/δr) must be 0 (the scheme's) or in (0, 10], not %g"):format(hdr))
 end
+if not (floor == 0 or (floor > 0 and floor <= 1)) then
+  error(("cavity: floor (in δr) must be 0 (the scheme's) or in (0, 1], not %g"):format(floor))
+end
+local wall_floor = floor > 0 and floor or nil
 domain { 0, 0, 1, 1 }
 particles { dr = 1 / n, h_over_dr = hdr > 0 and hdr or nil }
 if riemann == 1 then -- Riemann WCSPH with the limited transport velocity (c0 = 10 U)
@@ -30,10 +37,10 @@ if riemann == 1 then -- Riemann WCSPH with the limited transport velocity (c0 = 
            density = dens == 1 and "continuity" or nil }
 elseif wcsph == 1 then -- the paper's baseline: c0 = 10 U and a background pressure
   scheme { "wcsph-usaw", sound_speed = 10 * U, background_pressure = 0.05 * 100 * U * U,
-           wall_guard = guard == 1 and "on" or nil }
+           wall_guard = guard == 1 and "on" or nil, wall_distance_floor = wall_floor }
 else
   scheme { "isph-usaw", shifting = shift, wall_guard = guard == 1 and "on" or nil,
-           shift_velocity = shift_velocity == 0 and "off" or nil }
+           shift_velocity = shift_velocity == 0 and "off" or nil, wall_distance_floor = wall_floor }
 end
 fluid { density = 1, viscosity = U / re }
 if corners == 1 then -- the lid first: walls that share an end point share its vertex particle,

@@ -20,6 +20,7 @@ import os
 import sys
 
 ORDER = ["default", "cfl-0.5", "cfl-2", "shift-0.35", "shift-1.4", "no-shift-velocity",
+         "floor-0.35", "floor-0.25",
          "moving-corners", "moving-corners-cfl-0.5", "guard", "guard-cfl-2", "h1.5", "h1.5-cfl-2"]
 WHAT = {
     "default": "the default set-up: the paper's h = 2 δr and shifting C = 0.7, C_CFL = 0.1 "
@@ -29,6 +30,8 @@ WHAT = {
     "shift-0.35": "half the shifting coefficient",
     "shift-1.4": "twice the shifting coefficient",
     "no-shift-velocity": "the shift's velocity correction (eq 38) off",
+    "floor-0.35": "the viscous wall term's least distance 0.35 δr (wall_distance_floor)",
+    "floor-0.25": "the same, 0.25 δr",
     "moving-corners": "the lid's corner vertices move with the lid",
     "moving-corners-cfl-0.5": "the same at half the time step",
     "guard": "the wall guard on (as in the scenes with gravity)",
