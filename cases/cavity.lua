@@ -18,9 +18,10 @@ param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, riemann = 0, ard = 0,
         floor = 0 }
 
 local U = 1
-for _, name in ipairs({"guard", "corners", "shift_velocity"}) do
-  local v = ({guard = guard, corners = corners, shift_velocity = shift_velocity})[name]
-  if v ~= 0 and v ~= 1 then error(("cavity: %s must be 0 or 1, not %g"):format(name, v)) end
+for _, sw in ipairs({{"guard", guard}, {"corners", corners}, {"shift_velocity", shift_velocity}}) do
+  if sw[2] ~= 0 and sw[2] ~= 1 then
+    error(("cavity: %s must be 0 or 1, not %g"):format(sw[1], sw[2]))
+  end
 end
 if not (hdr == 0 or (hdr > 0 and hdr <= 10)) then
   error(("cavity: hdr (h/δr) must be 0 (the scheme's) or in (0, 10], not %g"):format(hdr))
@@ -40,7 +41,8 @@ elseif wcsph == 1 then -- the paper's baseline: c0 = 10 U and a background press
            wall_guard = guard == 1 and "on" or nil, wall_distance_floor = wall_floor }
 else
   scheme { "isph-usaw", shifting = shift, wall_guard = guard == 1 and "on" or nil,
-           shift_velocity = shift_velocity == 0 and "off" or nil, wall_distance_floor = wall_floor }
+           shift_velocity = shift_velocity == 0 and "off" or nil,
+           wall_distance_floor = wall_floor }
 end
 fluid { density = 1, viscosity = U / re }
 if corners == 1 then -- the lid first: walls that share an end point share its vertex particle,
@@ -58,27 +60,30 @@ force { "lid" }
 run { t_end = t_end, output_every = t_end / 10, cfl = cfl,
       checkpoint_every = checkpoint > 0 and checkpoint or nil }
 
--- Ghia's centreline values, for the particles' own velocities (below)
+-- Ghia's centreline u, for the particles' own velocities (below), its rows by increasing y
 local ghia_u = reference("tests/data/ghia1982_u_centreline.csv", "y", "u_Re100", "u_Re400",
                          "u_Re1000")
+local ghia_rows = {}
+for k = 1, #ghia_u.y do ghia_rows[k] = k end
+table.sort(ghia_rows, function(a, b) return ghia_u.y[a] < ghia_u.y[b] end)
 
--- Ghia's value at s by the cubic through the 4 tabulated points nearest to it (Lagrange)
-local function ghia_at(coord, value, s)
-  local idx = {}
-  for k = 1, #coord do idx[k] = k end
-  table.sort(idx, function(a, b) return coord[a] < coord[b] end)
+-- Ghia's u (column "u_ReN") at y by the cubic through the 4 tabulated points nearest (Lagrange)
+local function ghia_at(column, y)
+  local yy, uu, m = ghia_u.y, ghia_u[column], #ghia_rows
   local near = 1
-  for k = 1, #idx do
-    if math.abs(coord[idx[k]] - s) < math.abs(coord[idx[near]] - s) then near = k end
+  for k = 2, m do
+    if math.abs(yy[ghia_rows[k]] - y) < math.abs(yy[ghia_rows[near]] - y) then near = k end
   end
-  local lo = math.max(1, math.min(#idx - 3, near - 2))
+  local lo = math.max(1, math.min(m - 3, near - 2))
   local sum = 0
   for a = lo, lo + 3 do
     local w = 1
     for b = lo, lo + 3 do
-      if a ~= b then w = w * (s - coord[idx[b]]) / (coord[idx[a]] - coord[idx[b]]) end
+      if a ~= b then
+        w = w * (y - yy[ghia_rows[b]]) / (yy[ghia_rows[a]] - yy[ghia_rows[b]])
+      end
     end
-    sum = sum + w * value[idx[a]]
+    sum = sum + w * uu[ghia_rows[a]]
   end
   return sum
 end
@@ -96,7 +101,7 @@ local function particle_errors(sim, column)
   local su, nu_, sl, nl = 0, 0, 0, 0
   for i = 1, #x do
     if math.abs(x[i] - 0.5) < dr then
-      local e = u[i] / U - ghia_at(ghia_u.y, ghia_u["u_" .. column], y[i])
+      local e = u[i] / U - ghia_at("u_" .. column, y[i])
       if math.abs(x[i] - 0.5) < dr / 2 then su, nu_ = su + e * e, nu_ + 1 end
       if 1 - y[i] < 2 * dr then sl, nl = sl + e, nl + 1 end
     end
