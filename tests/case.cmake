@@ -483,17 +483,17 @@ clsph_failure_test(health_energy ${CMAKE_SOURCE_DIR}/cases/periodic_drift.lua en
 clsph_failure_test(health_wall_crossing ${CMAKE_SOURCE_DIR}/cases/cavity.lua wall_crossing
                    "a fluid particle crossed a wall \\([0-9.]+ dr behind it.*\\(run { checks = { wall_depth = 0.5 } } sets this limit, in dr\\)"
                    SETS n=20 cfl=4 t_end=5)
-# The lid's corner vertices moving with the lid (cases/cavity.lua corners = 1) drag the fluid
-# under them into the side walls: through the right one at step 20, t = 0.2 s, at 20² (both
-# precisions; 0.12 s at 30², 0.085 s at 40²). The cavity's corners stay at rest.
-# The cavity's switches of that study are 0 or 1, hdr (h/δr) 0 or in (0, 10], floor (δr) 0 or in
-# (0, 1].
+# The cavity's switches of the study cavity_re100_causes are 0 or 1, hdr (h/δr) 0 or in (0, 10],
+# floor (δr) 0 or in (0, 1].
 clsph_cli_test(case_cavity_bad_switch ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set corners=2
                RC 2 REGEX "cavity.lua:[0-9]+: cavity: corners must be 0 or 1, not 2")
 clsph_cli_test(case_cavity_bad_hdr ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set hdr=-1
                RC 2 REGEX "cavity: hdr \\(h/δr\\) must be 0 \\(the scheme.s\\) or in \\(0, 10.*, not -1")
 clsph_cli_test(case_cavity_bad_floor ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set floor=2
                RC 2 REGEX "cavity: floor \\(in δr\\) must be 0 \\(the scheme.s\\) or in \\(0, 1.*, not 2")
+# The lid's corner vertices moving with the lid (cases/cavity.lua corners = 1) drag the fluid
+# under them into the side walls: through the right one at step 20, t = 0.2 s, at 20² (both
+# precisions; 0.12 s at 30², 0.085 s at 40²). The cavity's corners stay at rest.
 clsph_failure_test(health_wall_crossing_corners ${CMAKE_SOURCE_DIR}/cases/cavity.lua wall_crossing
                    "a fluid particle crossed a wall \\([0-9.]+ dr behind it.* at step [0-9]+, t = 0\\.[0-9]+ s"
                    SETS n=20 corners=1 t_end=2)
