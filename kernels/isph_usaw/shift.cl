@@ -17,9 +17,10 @@
 #endif
 /* collisions: usaw/common.cl */
 __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
-                         __global const realv *wall_vel, __global const uint *free_surface,
-                         const real c_shift, const uint guard, const real dr0,
-                         __global const uint *id, __global realv *shift, __global realv *vel_out)
+                         __global const realv *wall_vel, __global const realv *grad_gam,
+                         __global const uint *free_surface, const real c_shift, const uint guard,
+                         const real dr0, __global const uint *id, __global realv *shift,
+                         __global realv *vel_out)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -59,8 +60,7 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
     }
     return;
   }
-  NEIGH_FOR(it, g_seg, seg_start, x, s)
-    gc -= usaw_grad_gamma_seg(g.sm, x, seg_a[s] + it.shift, seg_b[s] + it.shift, seg_n[s]);
+  gc -= grad_gam[i]; /* Σ_s ∇γ_as at these positions (usaw_gamma ran after the move) */
   const real h = R(1.0) / g.sm.inv_h;
   realv dr = -c_shift * h * h * gc / gam[i];
   /* at most ISPH_SHIFT_MAX h per step: in a sparse region next to a wall (a jet running up a

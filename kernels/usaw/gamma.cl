@@ -14,11 +14,18 @@
  * At a vertex particle itself that rule would count both adjacent segments as reach-planes, so a
  * vertex takes its own γ_v = θ_v/2π (Table 2), θ_v the fluid angle the geometry computed.
  * Segments live in their own cell grid (struct grid g_seg, binned by midpoint, cells of at least
- * (support + reach the longest segment) / GRID_SUB). */
-#ifndef USAW_GL
-#define USAW_GL 8 /* Gauss-Legendre points of the segment integral of eq 6 */
-#endif
-
+ * (support + reach the longest segment) / GRID_SUB).
+ *
+ * Only the ends that change γ are evaluated. Along a straight wall the segments' terms telescope:
+ * at a joint where two segments continue each other on one line (same normal, the vertex the end
+ * of one and the start of the other), the first segment's + sign(y) ψ(q_a0, ζ) and the second's
+ * − sign(y) ψ(q_a0, ζ) are the same number, so both take ζ = 1 there (the value at the edge of
+ * the support, where every segment outside it sits) and only the segment that holds the foot of
+ * the perpendicular and the wall's true ends (corners, free ends) are evaluated. The gradient's
+ * integral (eq 6) is written the same way, as the difference of its antiderivative at the two
+ * ends (usaw_line_w, usaw_grad_gamma_line), so a particle beside a straight wall costs one ψ and
+ * one antiderivative, not two ψ and 8 kernel values per segment in its support. joint[s]: bit 0
+ * at a, bit 1 at b (walls.c). */
 real usaw_sign(real x)
 {
   return x > R(0.0) ? R(1.0) : (x < R(0.0) ? R(-1.0) : R(0.0));
@@ -41,8 +48,22 @@ real usaw_psi(real q, real z)
          R(2.0) * atan(sqrt(fmax(R(4.0) * z * z / q2 - R(1.0), R(0.0))));
 }
 
-/* γ̃_as of the segment a→b (normal n into the fluid) seen from x (eqs 58-60, 62). */
-real usaw_gamma_seg(const struct smooth sm, realv x, realv a, realv b, realv n)
+/* Where a joint end e lies along the wall from the foot of x (the sign is all the joint's terms
+ * use): from the chain's shared normal (walls.c gives every segment of a chain the same one) and
+ * the shared end, so that both segments of the joint compute the same number, also when the foot
+ * falls on the joint. */
+real usaw_joint_y(realv e, realv x, realv t, realv n)
+{
+#pragma OPENCL FP_CONTRACT OFF
+  realv tn = (realv)(n.y, -n.x);
+  if (dot(t, tn) < R(0.0)) tn = -tn;
+  const realv r = e - x;
+  return r.x * tn.x + r.y * tn.y;
+}
+
+/* γ̃_as of the segment a→b (normal n into the fluid) seen from x (eqs 58-60, 62); an end that is a
+ * collinear joint (bits of joint) takes ζ = 1, its term cancelling the next segment's. */
+real usaw_gamma_seg(const struct smooth sm, realv x, realv a, realv b, realv n, uint joint)
 {
   const real inv_h = sm.inv_h;
   realv t = b - a;
@@ -51,10 +72,14 @@ real usaw_gamma_seg(const struct smooth sm, realv x, realv a, realv b, realv n)
   const real d = dot(x - a, n);
   const real q0 = fabs(d) * inv_h;
   if (q0 >= R(2.0)) return R(0.0);
-  const real ya = -dot(x - a, t), yb = ya + len; /* ends along t from the foot r_0 */
+  real ya = -dot(x - a, t), yb = ya + len; /* ends along t from the foot r_0 */
+  if (joint & 1u) ya = usaw_joint_y(a, x, t, n);
+  if (joint & 2u) yb = usaw_joint_y(b, x, t, n);
   if (q0 < R(1e-9)) return R(0.25) * (usaw_sign(yb) - usaw_sign(ya)); /* eq 62 */
-  const real za = fmin(R(0.5) * sqrt(q0 * q0 + ya * ya * inv_h * inv_h), R(1.0));
-  const real zb = fmin(R(0.5) * sqrt(q0 * q0 + yb * yb * inv_h * inv_h), R(1.0));
+  const real za =
+      (joint & 1u) ? R(1.0) : fmin(R(0.5) * sqrt(q0 * q0 + ya * ya * inv_h * inv_h), R(1.0));
+  const real zb =
+      (joint & 2u) ? R(1.0) : fmin(R(0.5) * sqrt(q0 * q0 + yb * yb * inv_h * inv_h), R(1.0));
   const real sa = usaw_sign(ya), sb = usaw_sign(yb);
   /* Both ends at the edge of the support (ζ = 1) on one side of the foot: the segment lies
    * outside it and its two terms cancel exactly; most segments the cell loop visits are such.
@@ -66,6 +91,10 @@ real usaw_gamma_seg(const struct smooth sm, realv x, realv a, realv b, realv n)
   return usaw_sign(d) / (R(4.0) * R(3.14159265358979323846)) *
          (sb * usaw_psi(q0, zb) - sa * usaw_psi(q0, za));
 }
+
+#ifndef USAW_GL
+#define USAW_GL 8 /* Gauss-Legendre points of the segment integral of eq 6 */
+#endif
 
 /* ∇γ_as = n ∫ w over the part of the segment inside the support (eq 6), Gauss-Legendre. */
 realv usaw_grad_gamma_seg(const struct smooth sm, realv x, realv a, realv b, realv n)
@@ -94,6 +123,48 @@ realv usaw_grad_gamma_seg(const struct smooth sm, realv x, realv a, realv b, rea
   return R(0.5) * (hi - lo) * s * n;
 }
 
+/* ∫_0^s P(√(a² + t²)) dt, with P(q) = (1 − q/2)⁴ (1 + 2q) = 1 − 5q²/2 + 5q³/2 − 15q⁴/16 + q⁵/8
+ * the Wendland C2 polynomial (w = α P(r/h)), for √(a² + s²) ≤ 2: the even powers of r are
+ * polynomials in t, the odd ones
+ *   ∫ r³ dt = t (2t² + 5a²) r / 8 + 3a⁴/8 asinh(t/a),
+ *   ∫ r⁵ dt = t (8t⁴ + 26a²t² + 33a⁴) r / 48 + 5a⁶/16 asinh(t/a)     (r = √(a² + t²)). */
+real usaw_line_w(real a, real s)
+{
+  const real a2 = a * a, a4 = a2 * a2, s2 = s * s, r = sqrt(a2 + s2);
+  const real as = a > R(0.0) ? asinh(s / a) : R(0.0); /* its factors a⁴, a⁶ vanish at a = 0 */
+  const real i2 = (a2 + s2 / R(3.0)) * s;
+  const real i4 = (a4 + (R(2.0) / R(3.0) * a2 + s2 / R(5.0)) * s2) * s;
+  const real i3 = s * (R(2.0) * s2 + R(5.0) * a2) * r / R(8.0) + R(3.0) / R(8.0) * a4 * as;
+  const real i5 = s * ((R(8.0) * s2 + R(26.0) * a2) * s2 + R(33.0) * a4) * r / R(48.0) +
+                  R(5.0) / R(16.0) * a4 * a2 * as;
+  return s - R(2.5) * i2 + R(2.5) * i3 - R(15.0) / R(16.0) * i4 + R(0.125) * i5;
+}
+
+/* The same ∇γ_as from the antiderivative along the segment's line (usaw_line_w): t = (y − y_foot)/h
+ * clipped to the support's chord ±√(4 − q_a0²); an end that is a collinear joint sits at the
+ * chord's end on its side (the same cancellation as ψ in usaw_gamma_seg). The sum Σ_s ∇γ_as of
+ * usaw_gamma takes it: one evaluation at the foot's segment and one per true end, where the
+ * quadrature above costs 8 kernel values on every segment in the support. The kernels that weight
+ * each segment's ∇γ_as by its own pressure or velocity keep the quadrature, which is cheaper per
+ * segment than two asinh (they agree to ~1e-13 of 1/h in double). */
+realv usaw_grad_gamma_line(const struct smooth sm, realv x, realv a, realv b, realv n, uint joint)
+{
+  const real inv_h = sm.inv_h;
+  realv t = b - a;
+  const real len = length(t);
+  t /= len;
+  const real q0 = fabs(dot(x - a, n)) * inv_h;
+  if (q0 >= R(2.0)) return (realv)(R(0.0));
+  const real chord = sqrt(R(4.0) - q0 * q0);
+  const real ta = -dot(x - a, t) * inv_h, tb = ta + len * inv_h; /* ends from the foot, in h */
+  const real ca =
+      (joint & 1u) ? usaw_sign(usaw_joint_y(a, x, t, n)) * chord : clamp(ta, -chord, chord);
+  const real cb =
+      (joint & 2u) ? usaw_sign(usaw_joint_y(b, x, t, n)) * chord : clamp(tb, -chord, chord);
+  if (ca == cb) return (realv)(R(0.0)); /* outside the support, or both ends cancelled */
+  return sm.alpha / inv_h * (usaw_line_w(q0, cb) - usaw_line_w(q0, ca)) * n;
+}
+
 /* γ_a and ∇γ_a = Σ_s ∇γ_as (eq 7) of every particle, from the segments near it; 1 and 0 away
  * from the walls; θ_v/2π at a vertex particle (theta > 0).
  * The same loop checks that no fluid particle has crossed a wall: a particle is on the solid side
@@ -104,9 +175,9 @@ realv usaw_grad_gamma_seg(const struct smooth sm, realv x, realv a, realv b, rea
  * wall (m) in flags[2] as the bits of a float (non-negative floats order as their bits do). */
 __kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const uint *seg_start,
                          __global const realv *seg_a, __global const realv *seg_b,
-                         __global const realv *seg_n, __global const realv *pos,
-                         __global const real *theta, __global real *gamma,
-                         __global realv *grad_gamma, __global uint *flags)
+                         __global const realv *seg_n, __global const uint *seg_joint,
+                         __global const realv *pos, __global const real *theta,
+                         __global real *gamma, __global realv *grad_gamma, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -118,8 +189,9 @@ __kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const u
   struct neigh_iter it;
   NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, nn = seg_n[s];
-    g -= usaw_gamma_seg(g_seg.sm, x, a, b, nn);
-    gg += usaw_grad_gamma_seg(g_seg.sm, x, a, b, nn);
+    const uint joint = seg_joint[s];
+    g -= usaw_gamma_seg(g_seg.sm, x, a, b, nn, joint);
+    gg += usaw_grad_gamma_line(g_seg.sm, x, a, b, nn, joint);
     const realv t = b - a;
     const real u = clamp(dot(x - a, t) / dot(t, t), R(0.0), R(1.0));
     const realv c = u <= R(0.0) ? a : (u >= R(1.0) ? b : a + u * t); /* corners bit-exact */

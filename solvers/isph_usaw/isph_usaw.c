@@ -488,6 +488,8 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
     CLSPH_TRY(arg(is->k_shift, &i, sizeof vel, &vel));
     cl_mem wall_vel = is->turb.on ? pset_mem(ps, is->turb.f_uvert) : vel;
     CLSPH_TRY(arg(is->k_shift, &i, sizeof wall_vel, &wall_vel));
+    cl_mem ggam = pset_mem(ps, is->f_ggam);
+    CLSPH_TRY(arg(is->k_shift, &i, sizeof ggam, &ggam));
     CLSPH_TRY(arg(is->k_shift, &i, sizeof fs, &fs));
     CLSPH_TRY(arg(is->k_shift, &i, sizeof c, &c));
     CLSPH_TRY(arg(is->k_shift, &i, sizeof is->guard, &is->guard));

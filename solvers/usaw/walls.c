@@ -55,6 +55,92 @@ done:
   return st;
 }
 
+struct seg_end {
+  size_t v, s;
+  int end; /* 0: a, 1: b */
+};
+
+static int seg_end_cmp(const void *x, const void *y)
+{
+  const struct seg_end *p = x, *q = y;
+  if (p->v != q->v) return p->v < q->v ? -1 : 1;
+  if (p->s != q->s) return p->s < q->s ? -1 : 1;
+  return p->end - q->end;
+}
+
+/* The collinear joints (gamma.cl): a vertex where exactly one segment ends (its b) and exactly one
+ * other starts (its a), both of one wall, at the same point in the device's precision (not across
+ * a periodic seam, where the two ends are different images), with normals within 1e-12 rad and
+ * tangents that point the same way. Bits of joint[s]: 1 at a, 2 at b. Without vertex ids there
+ * are none. normal_out (n x 2) gets the normals with each chain of joined segments taking its
+ * first segment's, so that the kernel's side of a joint (the sign of y there, from the normal and
+ * the shared end) is the same number on both segments. */
+static enum clsph_status find_joints(const struct usaw_segments *segs, cl_uint *joint,
+                                     double *normal_out, size_t *count)
+{
+  enum clsph_status st = CLSPH_OK;
+  const size_t n = segs->n;
+  struct seg_end *e = NULL;
+  size_t *next = NULL;
+  char *done = NULL;
+  *count = 0;
+  for (size_t s = 0; s < n; ++s) {
+    joint[s] = 0;
+    normal_out[2 * s] = segs->normal[2 * s];
+    normal_out[2 * s + 1] = segs->normal[2 * s + 1];
+  }
+  if (segs->v == NULL || n < 2) return CLSPH_OK;
+  e = malloc(2 * n * sizeof *e);
+  next = malloc(n * sizeof *next);
+  done = calloc(n, 1);
+  CLSPH_CHECK(e != NULL && next != NULL && done != NULL, CLSPH_E_NOMEM,
+              "out of memory for %zu segments", n);
+  for (size_t s = 0; s < n; ++s)
+    for (int k = 0; k < 2; ++k) e[2 * s + (size_t)k] = (struct seg_end){segs->v[2 * s + k], s, k};
+  qsort(e, 2 * n, sizeof *e, seg_end_cmp);
+  for (size_t i = 0; i < 2 * n;) {
+    size_t j = i;
+    while (j < 2 * n && e[j].v == e[i].v) ++j;
+    if (j - i == 2 && e[i].end != e[i + 1].end && e[i].s != e[i + 1].s) {
+      const size_t s1 = e[i].end == 1 ? e[i].s : e[i + 1].s; /* ends here */
+      const size_t s2 = e[i].end == 1 ? e[i + 1].s : e[i].s; /* starts here */
+      const double *a = segs->a, *b = segs->b, *n1 = segs->normal + 2 * s1,
+                   *n2 = segs->normal + 2 * s2;
+      const double t1[2] = {b[2 * s1] - a[2 * s1], b[2 * s1 + 1] - a[2 * s1 + 1]};
+      const double t2[2] = {b[2 * s2] - a[2 * s2], b[2 * s2 + 1] - a[2 * s2 + 1]};
+      const int same_wall = segs->wall == NULL || segs->wall[s1] == segs->wall[s2];
+      const int same_point =
+          (real)b[2 * s1] == (real)a[2 * s2] && (real)b[2 * s1 + 1] == (real)a[2 * s2 + 1];
+      const double nn = n1[0] * n2[0] + n1[1] * n2[1];
+      const double cross = n1[0] * n2[1] - n1[1] * n2[0];
+      if (same_wall && same_point && nn > 0.0 && fabs(cross) < 1e-12 &&
+          t1[0] * t2[0] + t1[1] * t2[1] > 0.0) {
+        joint[s1] |= 2u;
+        joint[s2] |= 1u;
+        next[s1] = s2;
+        *count += 2;
+      }
+    }
+    i = j;
+  }
+  /* each chain from its first segment (then the closed ones from any) */
+  for (int pass = 0; pass < 2; ++pass)
+    for (size_t s = 0; s < n; ++s) {
+      if (done[s] || (pass == 0 && (joint[s] & 1u))) continue;
+      for (size_t k = s; !done[k]; k = next[k]) {
+        done[k] = 1;
+        normal_out[2 * k] = normal_out[2 * s];
+        normal_out[2 * k + 1] = normal_out[2 * s + 1];
+        if (!(joint[k] & 2u)) break;
+      }
+    }
+done:
+  free(done);
+  free(next);
+  free(e);
+  return st;
+}
+
 enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
                                     const struct usaw_segments *segs, const struct grid_spec *box,
                                     struct usaw_walls *out)
@@ -62,7 +148,8 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   enum clsph_status st = CLSPH_OK;
   struct usaw_walls w;
   real *buf = NULL;
-  cl_uint *ids = NULL;
+  cl_uint *ids = NULL, *joint = NULL;
+  double *normal = NULL;
   const cl_uint zero = 0;
   const size_t n = segs->n, vs = (size_t)(box->dim == 2 ? 2 : 4);
   memset(&w, 0, sizeof w);
@@ -79,11 +166,15 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   gs.support = box->support + 0.5 * lmax;
   CLSPH_TRY(grid_create(dev, prog, &gs, n > 0 ? n : 1, &w.g));
   real *mid = buf, *a = buf + vs * n, *b = buf + 2 * vs * n, *nn = buf + 3 * vs * n;
+  joint = calloc(n > 0 ? n : 1, sizeof *joint);
+  normal = calloc(2 * (n > 0 ? n : 1), sizeof *normal);
+  CLSPH_CHECK(joint != NULL && normal != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(find_joints(segs, joint, normal, &w.njoints));
   for (size_t s = 0; s < n; ++s) {
     for (size_t c = 0; c < 2; ++c) {
       a[vs * s + c] = (real)segs->a[2 * s + c];
       b[vs * s + c] = (real)segs->b[2 * s + c];
-      nn[vs * s + c] = (real)segs->normal[2 * s + c];
+      nn[vs * s + c] = (real)normal[2 * s + c];
       mid[vs * s + c] = (real)(0.5 * (segs->a[2 * s + c] + segs->b[2 * s + c]));
     }
   }
@@ -103,6 +194,7 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   CLSPH_TRY(pset_add(&w.ps, dev, "v2", sizeof(cl_uint), ids + n, &w.f_v2));
   for (size_t s = 0; s < n; ++s) ids[s] = (cl_uint)s; /* the order given, kept through the sort */
   CLSPH_TRY(pset_add(&w.ps, dev, "index", sizeof(cl_uint), ids, &w.f_index));
+  CLSPH_TRY(pset_add(&w.ps, dev, "joint", sizeof(cl_uint), joint, &w.f_joint));
   /* the bits, a counter and the deepest crossing (as the sim's flags: usaw_walls_gamma may be
    * given this buffer) */
   const cl_uint zeros[3] = {0, 0, 0};
@@ -118,6 +210,8 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   memset(&w, 0, sizeof w);
 done:
   usaw_walls_destroy(&w);
+  free(normal);
+  free(joint);
   free(ids);
   free(buf);
   return st;
@@ -130,9 +224,10 @@ enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, 
   enum clsph_status st = CLSPH_OK;
   cl_uint np = (cl_uint)n;
   cl_mem a = pset_mem(&w->ps, w->f_a), b = pset_mem(&w->ps, w->f_b), nn = pset_mem(&w->ps, w->f_n);
+  cl_mem joint = pset_mem(&w->ps, w->f_joint);
   CLSPH_TRY(KERN_SET(w->k_gamma, KARG(np), KARG(w->g.geom), KARG(w->g.d_start), KARG(a), KARG(b),
-                     KARG(nn), KARG(d_pos), KARG(d_theta), KARG(d_gamma), KARG(d_grad_gamma),
-                     KARG(d_flags)));
+                     KARG(nn), KARG(joint), KARG(d_pos), KARG(d_theta), KARG(d_gamma),
+                     KARG(d_grad_gamma), KARG(d_flags)));
   CLSPH_TRY(kern_launch(dev, w->k_gamma, n, NULL));
 done:
   return st;
@@ -151,8 +246,9 @@ static void nearest_image(const struct grid_spec *box, const double c[2], double
 /* What usaw_walls_turn needs of the turning walls: the geometry at t = 0 (segment ends and vertex
  * positions as the images nearest their wall's centre), which wall each turns with, the kernels. */
 static enum clsph_status turning_create(const struct dev *dev, cl_program prog,
-                                        const struct geom *geo, const struct scene *sc,
-                                        const struct grid_spec *box, struct usaw_walls *w)
+                                        const struct geom *geo, const double *seg_normal,
+                                        const struct scene *sc, const struct grid_spec *box,
+                                        struct usaw_walls *w)
 {
   enum clsph_status st = CLSPH_OK;
   cl_int *turn = NULL;
@@ -174,8 +270,8 @@ static enum clsph_status turning_create(const struct dev *dev, cl_program prog,
       x0[6 * s + 2 * e] = (real)x[0];
       x0[6 * s + 2 * e + 1] = (real)x[1];
     }
-    x0[6 * s + 4] = (real)geo->seg_normal[2 * s];
-    x0[6 * s + 5] = (real)geo->seg_normal[2 * s + 1];
+    x0[6 * s + 4] = (real)seg_normal[2 * s];
+    x0[6 * s + 5] = (real)seg_normal[2 * s + 1];
   }
   if (!w->turning) goto done;
   CLSPH_TRY(kern_buffer(dev, ns * sizeof *turn, turn, &w->d_seg_turn, "turning segments"));
@@ -218,7 +314,9 @@ enum clsph_status usaw_walls_from_geom(const struct dev *dev, cl_program prog,
                                        const struct grid_spec *box, struct usaw_walls *out)
 {
   enum clsph_status st = CLSPH_OK;
-  double *ab = calloc(4 * (geo->nseg + 1), sizeof *ab);
+  double *ab = calloc(4 * (geo->nseg + 1), sizeof *ab), *normal = NULL;
+  cl_uint *joint = NULL;
+  size_t njoints = 0;
   CLSPH_CHECK(ab != NULL, CLSPH_E_NOMEM, "out of memory for %zu segments", geo->nseg);
   /* The ends are the vertex particles' positions. On a periodic axis those are wrapped into
    * [lo, hi), so a segment that crosses the boundary takes the image of its second end nearest
@@ -237,11 +335,20 @@ enum clsph_status usaw_walls_from_geom(const struct dev *dev, cl_program prog,
       ab[2 * s + c] = xa;
       ab[2 * geo->nseg + 2 * s + c] = xb;
     }
-  struct usaw_segments segs = {geo->nseg, ab, ab + 2 * geo->nseg, geo->seg_normal, geo->seg_v};
+  struct usaw_segments segs = {geo->nseg,       ab,         ab + 2 * geo->nseg,
+                               geo->seg_normal, geo->seg_v, geo->seg_wall};
+  joint = calloc(geo->nseg + 1, sizeof *joint);
+  normal = calloc(2 * (geo->nseg + 1), sizeof *normal);
+  CLSPH_CHECK(joint != NULL && normal != NULL, CLSPH_E_NOMEM, "out of memory for %zu segments",
+              geo->nseg);
+  /* the turning walls' segments at t = 0 take the joined chains' normals too */
+  CLSPH_TRY(find_joints(&segs, joint, normal, &njoints));
   CLSPH_TRY(usaw_walls_create(dev, prog, &segs, box, out));
-  st = turning_create(dev, prog, geo, sc, box, out);
+  st = turning_create(dev, prog, geo, normal, sc, box, out);
   if (st != CLSPH_OK) usaw_walls_destroy(out);
 done:
+  free(normal);
+  free(joint);
   free(ab);
   return st;
 }

@@ -11,19 +11,24 @@
 /** Kernel sources after the grid and smoothing sources. */
 #define USAW_SOURCES "usaw/gamma.cl"
 
-/** Segments on the host, one per entry: ends a and b, unit normal into the fluid, and the
- *  original indices (ids) of the vertex particles at a and b (or NULL). */
+/** Segments on the host, one per entry: ends a and b, unit normal into the fluid, the original
+ *  indices (ids) of the vertex particles at a and b (or NULL), and each segment's wall (or NULL:
+ *  one wall). Where one segment ends at a vertex and the next of the same wall starts there on
+ *  the same line, the joint's terms of γ and ∇γ cancel and are not evaluated (gamma.cl). */
 struct usaw_segments {
   size_t n;
   const double *a, *b, *normal; /* n x 2 each */
   const size_t *v;              /* n x 2 vertex particle ids, or NULL */
+  const int *wall;              /* n: the wall each segment belongs to, or NULL */
 };
 
 struct usaw_walls {
   struct grid g;  /* the segments' grid: cells of at least (support + max length/2)/GRID_SUB */
-  struct pset ps; /* segment fields: mid, a, b, n (realv); v1, v2, index (uint) */
+  struct pset ps; /* segment fields: mid, a, b, n (realv); v1, v2, index, joint (uint) */
   int f_mid, f_a, f_b, f_n, f_v1, f_v2;
-  int f_index; /* each segment's index in the order given (the geometry's), after the sort */
+  int f_joint;    /* bit 0: the end a is a collinear joint with the previous segment, bit 1: b */
+  size_t njoints; /* how many ends are such joints */
+  int f_index;    /* each segment's index in the order given (the geometry's), after the sort */
   cl_kernel k_gamma;
   cl_mem d_flags;
   /* walls that turn (wall { omega, centre }: the geometry rotates about the centre, θ = ω t;

@@ -4,7 +4,10 @@
  * a straight wall at several distances, a 90° corner at three points and its vertex (θ/2π).
  * Its gradient Σ_s ∇γ_as (eqs 6-7) must equal the finite-difference gradient of γ.
  * The same kernel flags a fluid particle behind a wall: checked on both sides of a straight wall,
- * of a concave and of a convex corner, and beyond the free end of an open wall. */
+ * of a concave and of a convex corner, and beyond the free end of an open wall.
+ * With the vertex ids given, the collinear joints' terms are skipped (they cancel): the joints
+ * found are counted, and γ and ∇γ at points all over the walls' supports must equal the sums
+ * over every segment's ends to round-off. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,6 +26,8 @@ struct probe {
 };
 
 /* γ and ∇γ at np points. */
+static size_t joints_found;
+
 static int evaluate(const struct dev *dev, cl_program prog, const struct usaw_segments *segs,
                     const struct grid_spec *box, size_t np, const double *xy, const double *theta,
                     double *gamma, double *grad, unsigned *flags)
@@ -55,6 +60,7 @@ static int evaluate(const struct dev *dev, cl_program prog, const struct usaw_se
     grad[2 * i + 1] = (double)buf[4 * np + 2 * i + 1];
   }
   if (flags != NULL) *flags = f;
+  joints_found = w.njoints;
   ok = 1;
 done:
   kern_release(&d_gg);
@@ -123,6 +129,56 @@ static void crossing(const struct dev *dev, cl_program prog, const char *what,
            behind ? "behind" : "not behind", f);
 }
 
+/* The same walls with their vertex ids (joints skipped) and without (every end evaluated): γ and
+ * ∇γ at a lattice of points around them and behind them. The corner's lattice ends on the row
+ * y = 10 dr, through a vertex: there the foot falls on a joint, and the two segments must agree
+ * on which side of it the foot is (an earlier form, with the side from each segment's own ends,
+ * halved ∇γ there). */
+static void joints(const struct dev *dev, cl_program prog, const char *what,
+                   const struct usaw_segments *segs, const size_t *ids, const struct grid_spec *box,
+                   double h, double x0, double x1, double y0, double y1, size_t want_joints)
+{
+  const size_t nx = 41, ny = 41, m = nx * ny;
+  double *xy = calloc(2 * m, sizeof *xy), *th = calloc(m, sizeof *th);
+  double *g = calloc(2 * m, sizeof *g), *gg = calloc(4 * m, sizeof *gg);
+  struct usaw_segments with = *segs;
+  with.v = ids;
+  if (!xy || !th || !g || !gg) goto done;
+  for (size_t i = 0; i < nx; ++i)
+    for (size_t j = 0; j < ny; ++j) {
+      xy[2 * (i * ny + j)] = x0 + (x1 - x0) * (double)i / (double)(nx - 1);
+      xy[2 * (i * ny + j) + 1] = y0 + (y1 - y0) * (double)j / (double)(ny - 1);
+    }
+  if (!evaluate(dev, prog, segs, box, m, xy, th, g, gg, NULL)) goto fail;
+  TC_CHECK(joints_found == 0, "%s: no joints without vertex ids (%zu)", what, joints_found);
+  if (!evaluate(dev, prog, &with, box, m, xy, th, g + m, gg + 2 * m, NULL)) goto fail;
+  TC_CHECK(joints_found == want_joints, "%s: %zu joint ends found, want %zu", what, joints_found,
+           want_joints);
+  /* every-end sums cancel ψ ~ 1 terms pairwise: round-off ~1e-15 a term in double, ~1e-7 in
+   * float, over up to 2 x 16 terms */
+  const double tol = CLSPH_DOUBLE ? 1e-12 : 1e-5, gtol = tol / h;
+  double dg = 0.0, dgg = 0.0;
+  for (size_t k = 0; k < m; ++k) {
+    dg = fmax(dg, fabs(g[k] - g[m + k]));
+    dgg = fmax(dgg, fmax(fabs(gg[2 * k] - gg[2 * m + 2 * k]),
+                         fabs(gg[2 * k + 1] - gg[2 * m + 2 * k + 1])));
+  }
+  TC_CHECK(dg < tol, "%s: γ with joints skipped within %g of every end's sum (%.3g)", what, tol,
+           dg);
+  TC_CHECK(dgg < gtol, "%s: ∇γ with joints skipped within %g of every end's sum (%.3g)", what, gtol,
+           dgg);
+  printf("%-7s joints %zu: largest difference γ %.3g, ∇γ %.3g (1/h = %g)\n", what, joints_found, dg,
+         dgg, 1.0 / h);
+  goto done;
+fail:
+  TC_CHECK(0, "%s: evaluation runs", what);
+done:
+  free(gg);
+  free(g);
+  free(th);
+  free(xy);
+}
+
 int main(void)
 {
   struct dev dev;
@@ -132,6 +188,8 @@ int main(void)
   static const char *const sources[] = {GRID_SOURCES, USAW_SOURCES, NULL};
   const double h = 0.02, dr = h / 2, pi = 3.14159265358979323846;
   double a[4 * NSEG], b[4 * NSEG], n[4 * NSEG];
+  size_t ids[4 * NSEG];
+  int wall_of[2 * NSEG];
   tc_open_device(&dev);
   struct grid_spec box = {.dim = 2, .lo = {-0.3, -0.3}, .hi = {0.3, 0.3}};
   if (smoothing_make(SMOOTHING_WENDLAND_C2, 2, h, &sm) || grid_define(&box, &o) ||
@@ -151,7 +209,18 @@ int main(void)
     n[2 * s] = 0.0;
     n[2 * s + 1] = 1.0;
   }
-  struct usaw_segments wall = {NSEG, a, b, n, NULL};
+  struct usaw_segments wall = {NSEG, a, b, n, NULL, NULL};
+  for (int s = 0; s < NSEG; ++s) {
+    ids[2 * s] = (size_t)s;
+    ids[2 * s + 1] = (size_t)s + 1;
+  }
+  /* a joint at each of the NSEG − 1 inner vertices, two ends each */
+  /* no lattice point on the wall's line or above a vertex: there the every-end sum is itself off
+   * in float, where a point 3e-17 past a vertex is behind the end of one segment (y_b = y_a + len
+   * rounds to 0) and past the start of the next (on the line, eq 62 then counts 3/4 of it; above
+   * it, ψ's terms ±ψ(q, q/2) that should vanish are ~1e-4) */
+  joints(&dev, prog, "wall", &wall, ids, &box, h, -0.2213, 0.2187, -0.03, 0.052,
+         2 * (size_t)(NSEG - 1));
   const struct probe wp[] = {{"d = 0", 0.003, 0.0, 0, 0.500000},
                              {"d = 0.25h", 0.003, 0.25 * h, 0, 0.678883},
                              {"d = 0.5h", 0.003, 0.5 * h, 0, 0.823497},
@@ -180,7 +249,27 @@ int main(void)
     n[2 * k] = 1.0;
     n[2 * k + 1] = 0.0;
   }
-  struct usaw_segments corner = {2 * NSEG, a, b, n, NULL};
+  struct usaw_segments corner = {2 * NSEG, a, b, n, NULL, NULL};
+  /* vertex ids: along x 0..NSEG from the corner; along y NSEG + 1 + s at (0, (s + 1) dr), the
+   * corner (id 0) ending the last segment down: no joint there (the normals differ) */
+  for (int s = 0; s < NSEG; ++s) {
+    ids[2 * s] = (size_t)s;
+    ids[2 * s + 1] = (size_t)s + 1;
+    ids[2 * (NSEG + s)] = (size_t)(NSEG + 1 + s);
+    ids[2 * (NSEG + s) + 1] = s == 0 ? 0 : (size_t)(NSEG + s);
+  }
+  joints(&dev, prog, "corner", &corner, ids, &box, h, -0.03, 0.1, -0.03, 0.1,
+         4 * (size_t)(NSEG - 1));
+  /* the two walls' segments given as different walls: still joints within each, none between */
+  for (int s = 0; s < 2 * NSEG; ++s) wall_of[s] = s < NSEG ? 0 : 1;
+  corner.wall = wall_of;
+  joints(&dev, prog, "walls", &corner, ids, &box, h, -0.03, 0.1, -0.03, 0.1,
+         4 * (size_t)(NSEG - 1));
+  /* the x wall cut in two walls at its middle vertex: that joint is no longer one */
+  for (int s = 0; s < 2 * NSEG; ++s) wall_of[s] = s < NSEG / 2 ? 0 : 1;
+  joints(&dev, prog, "cut", &corner, ids, &box, h, -0.03, 0.1, -0.03, 0.1,
+         4 * (size_t)(NSEG - 1) - 2);
+  corner.wall = NULL;
   const struct probe cp[] = {{"(0.5h, 0.5h)", 0.5 * h, 0.5 * h, 0, 0.677299},
                              {"(1.0h, 0.3h)", 1.0 * h, 0.3 * h, 0, 0.690482},
                              {"(0.2h, 1.5h)", 0.2 * h, 1.5 * h, 0, 0.644385},
