@@ -101,8 +101,9 @@ static void check(const struct dev *dev, cl_program prog, const char *what,
     if (p[i].theta > 0.0 || p[i].y < 2 * delta) continue; /* no difference across a wall */
     double fx = (g[5 * i + 1] - g[5 * i + 2]) / (2 * delta);
     double fy = (g[5 * i + 3] - g[5 * i + 4]) / (2 * delta);
-    /* 8-point Gauss-Legendre of eq 6 against a central difference of eq 60: both within
-     * ~1e-6 of |∇γ| ~ 1/h in double; float differences of γ at δ = 0.02h lose ~1e-4 */
+    /* eq 6 from its antiderivative (exact) against a central difference of eq 60 (error
+     * ~(δ/h)² ~1e-8 of |∇γ| ~ 1/h, and its rounding ~1e-12/δ) in double; float differences of γ at
+     * δ = 0.02h lose ~1e-4 */
     double scale = 1.0 / h, gtol = (CLSPH_DOUBLE ? 2e-6 : 2e-3) * scale;
     TC_NEAR(gg[2 * (5 * i)], fx, gtol, "%s: ∂γ/∂x at %s (Σ ∇γ_as vs difference)", what, p[i].name);
     TC_NEAR(gg[2 * (5 * i) + 1], fy, gtol, "%s: ∂γ/∂y at %s (Σ ∇γ_as vs difference)", what,
