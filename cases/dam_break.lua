@@ -57,11 +57,23 @@
 -- experiment's; gate_lift (a metric) is how far its lowest dummy rose. checkpoint: s between
 -- checkpoints (0: none). dyn = 1: isph-stabilized's pressure_form = "dynamic"; shift = C > 0 its
 -- particle shifting (option shifting).
+-- dim = 3 (isph-stabilized only) runs it in 3-D: the tank and the column `width` wide (150 mm,
+-- the refdata's one source: PySPH's dam_break_3d), gravity along −z, the lid at `top`, sensor 1 a
+-- disc 4.2 mm across on the downstream wall at mid-width; the gate a plate 6 dr thick (each face's
+-- dummies reach 2.4 dr behind it at h = 1.2 dr, the markers of the fluid next to it need that:
+-- a thinner plate is refused), gate_height tall (0.5 m; it lifts 0.4 m and must stay under the
+-- lid).
+-- In 3-D "the floor" and heights are z, and the bulk front counts company within 4 dr in 3-D.
 param { n = 20, t_end = 0.4, wcsph = 0, riemann = 0, every = 0.001, cfl = 1,
         tvf = 2, ard = 0, stab = 0, neumann = 1, alpha = 0.01, gate = 0, gate_speed = 4.53,
-        checkpoint = 0, dyn = 0, shift = 0 }
+        checkpoint = 0, dyn = 0, shift = 0, dim = 2, width = 0.15, top = 1.0,
+        gate_height = 0.5 }
 for k, v in pairs({ stab = stab, neumann = neumann, gate = gate, dyn = dyn }) do
   if v ~= 0 and v ~= 1 then error(("dam_break: %s must be 0 or 1, not %g"):format(k, v)) end
+end
+if dim ~= 2 and dim ~= 3 then error(("dam_break: dim must be 2 or 3, not %g"):format(dim)) end
+if dim == 3 and stab ~= 1 then
+  error("dam_break: dim = 3 needs stab = 1 (isph-stabilized runs 3-D scenes)")
 end
 if gate == 1 and stab ~= 1 then
   error("dam_break: gate = 1 needs stab = 1 (isph-stabilized moves the gate)")
@@ -76,11 +88,12 @@ if not (shift >= 0) then
   error(("dam_break: shift must be 0 (off) or a shifting coefficient C > 0, not %g"):format(shift))
 end
 
-local g, H, L, tank, top, rho = 9.81, 0.3, 0.6, 1.61, 1.0, 997
+local g, H, L, tank, rho = 9.81, 0.3, 0.6, 1.61, 997
 local dr = H / n
+local up = dim == 3 and 3 or 2 -- the vertical axis
 local U = 2 * math.sqrt(g * H) -- Ritter's front speed
 
-domain { 0, 0, tank, top }
+if dim == 3 then domain { 0, 0, 0, tank, width, top } else domain { 0, 0, tank, top } end
 particles { dr = dr }
 if stab == 1 then
   scheme { "isph-stabilized", alpha = alpha,
@@ -97,19 +110,30 @@ elseif wcsph == 1 then
 else
   scheme "isph-usaw"
 end
-fluid { density = rho, viscosity = 8.9e-7, gravity = {0, -g} }
-wall { {0, top}, {0, 0}, {tank, 0}, {tank, top}, fluid = "left", group = "tank" }
-if gate == 1 then wall { {L, 0}, {L, 0.5}, fluid = "left", group = "gate" } end
-fill { 0, 0, L, H, name = "water",
-       pressure = stab == 1 and function(x, y) return rho * g * (H - y) end or nil }
-probe { "sensor_1", {tank, 0.0009}, {tank, 0.0051} } -- its face, on the wall
+if dim == 3 then
+  fluid { density = rho, viscosity = 8.9e-7, gravity = {0, 0, -g} }
+  box_wall { 0, 0, 0, tank, width, top, group = "tank" }
+  if gate == 1 then
+    box_wall { L, 0, 0, L + 6 * dr, width, gate_height, fluid = "outside", group = "gate" }
+  end
+  fill { 0, 0, 0, L, width, H, name = "water",
+         pressure = function(x, y, z) return rho * g * (H - z) end }
+  probe { "sensor_1", {tank, width / 2, 0.003}, radius = 0.0021, normal = {-1, 0, 0} }
+else
+  fluid { density = rho, viscosity = 8.9e-7, gravity = {0, -g} }
+  wall { {0, top}, {0, 0}, {tank, 0}, {tank, top}, fluid = "left", group = "tank" }
+  if gate == 1 then wall { {L, 0}, {L, gate_height}, fluid = "left", group = "gate" } end
+  fill { 0, 0, L, H, name = "water",
+         pressure = stab == 1 and function(x, y) return rho * g * (H - y) end or nil }
+  probe { "sensor_1", {tank, 0.0009}, {tank, 0.0051} } -- its face, on the wall
+end
 run { t_end = t_end, output_every = 0.05, sample_every = every, cfl = cfl,
       checkpoint_every = checkpoint > 0 and checkpoint or nil } -- s between checkpoints
 
 function sample(sim)
-  local x, y = sim.field("pos", 1), sim.field("pos", 2)
+  local x, y = sim.field("pos", 1), sim.field("pos", up)
   local u = sim.field("vel", 1)
-  local px, py = x.value, y.value
+  local px, py, pz = x.value, y.value, x.y -- py: the height; in 3-D pz the y across the tank
   -- the fluid on the floor, furthest first
   local floor = {}
   for i = 1, #px do
@@ -124,7 +148,9 @@ function sample(sim)
   for _, i in ipairs(floor) do
     local company = 0
     for j = 1, #px do
-      if j ~= i and (px[j] - px[i]) ^ 2 + (py[j] - py[i]) ^ 2 < reach2 then company = company + 1 end
+      local d2 = (px[j] - px[i]) ^ 2 + (py[j] - py[i]) ^ 2
+      if dim == 3 then d2 = d2 + (pz[j] - pz[i]) ^ 2 end
+      if j ~= i and d2 < reach2 then company = company + 1 end
     end
     if company >= 4 then
       bulk = px[i]
@@ -246,15 +272,15 @@ function metrics(sim)
   m.floor_speed_max = largest("floor_speed")
   m.lead_ahead_max = largest("lead_ahead_dr")
   local top_speed = 0
-  for c = 1, 2 do
+  for c = 1, dim do
     top_speed = math.max(top_speed, math.abs(sim.min("vel", c)), math.abs(sim.max("vel", c)))
   end
   m.max_speed_over_sqrt_gH = top_speed / math.sqrt(g * H)
-  m.volume_ratio = #sim.field("pos", 1).value * dr * dr / (L * H)
+  m.volume_ratio = #sim.field("pos", 1).value * dr ^ dim / (L * H * (dim == 3 and width or 1))
   m.time_star = sim.time * math.sqrt(g / H)
   m.crossed_wall = sim.wall_crossing_steps -- steps with a fluid particle behind a wall
   if gate == 1 then
-    local gx, gy, low = sim.field("pos", 1, "dummy"), sim.field("pos", 2, "dummy"), math.huge
+    local gx, gy, low = sim.field("pos", 1, "dummy"), sim.field("pos", up, "dummy"), math.huge
     for i = 1, #gx.value do
       if gx.value[i] > L and gx.value[i] < L + 3 * dr and gy.value[i] > 0 then -- not the floor's
         low = math.min(low, gy.value[i])

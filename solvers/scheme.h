@@ -25,6 +25,7 @@ struct scheme_ops {
   const char *summary;           /* one line with its reference */
   const char *const *sources;    /* kernels after the common ones, NULL-terminated */
   const char *wall_model;        /* what the geometry makes: "usaw", "dummy" or "none" */
+  int three_d;                   /* runs 3-D scenes too (its kernels and host path take DIM 3) */
   const char *smoothing;         /* default smoothing function name */
   double h_over_dr;              /* default smoothing length / spacing */
   double support_skin;           /* neighbour lists with a skin: the cells of the neighbour grid

@@ -274,6 +274,11 @@ enum clsph_status render_command(const struct cli *cli)
     log_warn("%s records no domain and no walls (written by an older clsph): the frames show the "
              "particles only",
              path);
+  for (int k = 0; k < snap.narrays; ++k)
+    CLSPH_CHECK(strcmp(snap.arrays[k].name, "pos") != 0 || snap.arrays[k].ncomp == 2, CLSPH_E_INPUT,
+                "render: %s is a 3-D run (positions of %d components): frames draw 2-D runs only "
+                "for now (open snapshots.xdmf in ParaView)",
+                path, snap.arrays[k].ncomp);
   CLSPH_TRY(frame_options(cli, snap.render.on ? &snap.render : NULL, &fo));
   const char *names[PSET_MAX_FIELDS];
   int ncomp[PSET_MAX_FIELDS];

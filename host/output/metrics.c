@@ -43,6 +43,8 @@ static enum clsph_status metric_stats(void *ctx, const char *field, int comp, in
   const struct pfield *f = &sim->ps.f[idx];
   METRIC_REFUSE(comp >= 0 && comp < f->nout, "field '%s' has %d components", field, f->nout);
   size_t n = sim->ps.n;
+  METRIC_REFUSE(region == NULL || sim->scene->dim == 2,
+                "a region { x0, y0, x1, y1 } is 2-D: give none in a 3-D scene");
   v = malloc(n * f->elem + 1);
   k = malloc(n * sizeof *k + 1);
   x = region != NULL ? malloc(2 * n * sizeof *x + 1) : NULL;
@@ -118,23 +120,23 @@ static enum clsph_status metric_particles(void *ctx, const char *field, int comp
   METRIC_REFUSE(idx >= 0, "no field '%s'", field);
   const struct pfield *f = &sim->ps.f[idx];
   METRIC_REFUSE(comp >= 0 && comp < f->nout, "field '%s' has %d components", field, f->nout);
-  const size_t n = sim->ps.n;
+  const size_t n = sim->ps.n, stride = (size_t)sim->ps.f[sim->f_pos].ncomp; /* 2, or 4 in 3-D */
+  const size_t dim = (size_t)sim->scene->dim;
   v = malloc(n * f->elem);
-  x = malloc(2 * n * sizeof *x);
+  x = malloc(stride * n * sizeof *x);
   k = malloc(n * sizeof *k);
-  oxy = malloc(2 * n * sizeof *oxy + 1);
+  oxy = calloc(3 * n + 1, sizeof *oxy);
   ov = malloc(n * sizeof *ov + 1);
   CLSPH_CHECK(v != NULL && x != NULL && k != NULL && oxy != NULL && ov != NULL, CLSPH_E_NOMEM,
               "out of memory");
   CLSPH_TRY(kern_read(sim->dev, f->d, n * f->elem, v));
-  CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_pos), 2 * n * sizeof *x, x));
+  CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_pos), stride * n * sizeof *x, x));
   CLSPH_TRY(kern_read(sim->dev, pset_mem(&sim->ps, sim->f_kind), n * sizeof *k, k));
   size_t c = 0;
   for (size_t i = 0; i < n; ++i) {
     if (kind >= 0 && k[i] != (cl_uint)kind) continue;
     const size_t at = i * (size_t)f->ncomp + (size_t)comp;
-    oxy[2 * c] = (double)x[2 * i];
-    oxy[2 * c + 1] = (double)x[2 * i + 1];
+    for (size_t a = 0; a < dim; ++a) oxy[3 * c + a] = (double)x[stride * i + a];
     ov[c] = f->type == PF_REAL ? (double)v[at] : (double)((const cl_uint *)(const void *)v)[at];
     ++c;
   }
@@ -157,6 +159,8 @@ static enum clsph_status metric_sample(void *ctx, const char *field, int comp, d
   enum clsph_status st = CLSPH_OK;
   struct sim *sim = begin(ctx);
   double at[2] = {x, y}, out[4];
+  METRIC_REFUSE(sim->scene->dim == 2, "interpolation at points is 2-D only for now: a 3-D "
+                                      "scene reads its particles with sim.field");
   int idx = pset_find(&sim->ps, field);
   METRIC_REFUSE(idx >= 0, "no field '%s'", field);
   METRIC_REFUSE(comp >= 0 && comp < sim->ps.f[idx].nout, "field '%s' has %d components", field,
@@ -195,6 +199,8 @@ static enum clsph_status metric_sample_many(void *ctx, const char *field, int co
   enum clsph_status st = CLSPH_OK;
   struct sim *sim = begin(ctx);
   double *out = NULL;
+  METRIC_REFUSE(sim->scene->dim == 2, "interpolation along lines is 2-D only for now: a 3-D "
+                                      "scene reads its particles with sim.field");
   int idx = pset_find(&sim->ps, field);
   METRIC_REFUSE(idx >= 0, "no field '%s'", field);
   const struct pfield *f = &sim->ps.f[idx];

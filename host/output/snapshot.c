@@ -115,7 +115,7 @@ void snapshot_meta(const struct sim *sim, struct io_meta *m)
   m->time = sim->time;
   m->step = sim->step;
   m->dt = sim->dt;
-  m->dim = 2;
+  m->dim = sim->scene->dim;
   m->params = sim->scene->params;
   m->nparams = sim->scene->nparams;
   m->has_domain = 1;
@@ -123,8 +123,8 @@ void snapshot_meta(const struct sim *sim, struct io_meta *m)
   m->domain[1] = sim->scene->lo[1];
   m->domain[2] = sim->scene->hi[0];
   m->domain[3] = sim->scene->hi[1];
-  m->walls = sim->scene->walls;
-  m->nwalls = sim->scene->nwalls;
+  m->walls = sim->scene->walls; /* the polylines frames draw: none in 3-D (boxes) */
+  m->nwalls = sim->scene->dim == 2 ? sim->scene->nwalls : 0;
   m->render = &sim->scene->render;
 }
 
@@ -174,7 +174,7 @@ enum clsph_status snapshot_write(struct sim *sim, struct run_out *o)
   path = NULL;
   CLSPH_TRY(io_series_add(&o->series, name, sim->time, sim->ps.n));
   CLSPH_TRY(out_path(o, "snapshots.xdmf", &path));
-  CLSPH_TRY(io_xdmf_write(path, &o->series, &sim->ps, 2));
+  CLSPH_TRY(io_xdmf_write(path, &o->series, &sim->ps, sim->scene->dim));
   if (o->frames != NULL) CLSPH_TRY(write_frame(sim, o));
   /* with run { sample_every }, the time series keep their own cadence (see sim_run) */
   CLSPH_TRY(series_write(sim, o,

@@ -292,3 +292,12 @@ real2 dev_real2(double x, double y)
   v.s[1] = (real)y;
   return v;
 }
+
+struct realv_arg dev_realv(int dim, const double *x)
+{
+  struct realv_arg a;
+  memset(&a, 0, sizeof a);
+  for (int k = 0; k < dim && k < 3; ++k) a.v.s[k] = (real)x[k];
+  a.size = dim == 3 ? sizeof(real4) : sizeof(real2);
+  return a;
+}

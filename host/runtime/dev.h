@@ -23,6 +23,15 @@ typedef cl_float4 real4;
 /** @brief A real2 kernel argument from two doubles. */
 real2 dev_real2(double x, double y);
 
+/** A vector kernel argument of the program's DIM (the kernels' realv): real2 in 2-D, real4
+ *  (x, y, z, 0) in 3-D; pass it with KARGV (kern.h). */
+struct realv_arg {
+  real4 v;
+  size_t size;
+};
+/** @brief The realv argument of the first `dim` (2 or 3) components of x. */
+struct realv_arg dev_realv(int dim, const double *x);
+
 /** An open device: the context and the in-order queue every launch goes through. */
 struct dev {
   cl_platform_id platform;

@@ -14,6 +14,7 @@ struct karg {
 };
 #define KARG(x)           ((struct karg){sizeof(x), &(x)})
 #define KARG_LOCAL(bytes) ((struct karg){(bytes), NULL})
+#define KARGV(a)          ((struct karg){(a).size, &(a).v}) /* a struct realv_arg */
 
 /** @brief Set all arguments of a kernel, in signature order. */
 enum clsph_status kern_set(cl_kernel k, size_t nargs, const struct karg *args);

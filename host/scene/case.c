@@ -38,6 +38,7 @@ struct sandbox {
 struct case_script {
   lua_State *L;
   struct sandbox sb; /* the allocator's state: lives as long as L */
+  int dim;           /* the scene's: the fill functions take (x, y) or (x, y, z) */
 };
 
 enum { SANDBOX_HOOK_EVERY = 1000 };
@@ -140,8 +141,8 @@ static enum clsph_status sandbox_call(struct sandbox *sb, int nargs, int nresult
 static const char *const fill_scalar_key[4] = {"pressure", "density", "k", "epsilon"};
 static const char *const fill_scalar_reg[4] = {FILL_PRESSURE, FILL_DENSITY, FILL_K, FILL_EPS};
 
-/* scene_velocity_fn.eval: u, v = the velocity function of fill `region` at x. */
-static enum clsph_status fill_velocity(void *ctx, int region, const double x[2], double v[2])
+/* scene_velocity_fn.eval: u, v (u, v, w in 3-D) = the velocity function of fill `region` at x. */
+static enum clsph_status fill_velocity(void *ctx, int region, const double *x, double *v)
 {
   enum clsph_status st = CLSPH_OK;
   struct case_script *cs = ctx;
@@ -150,18 +151,26 @@ static enum clsph_status fill_velocity(void *ctx, int region, const double x[2],
   lua_getfield(L, LUA_REGISTRYINDEX, FILL_VELOCITY);
   CLSPH_CHECK(lua_istable(L, -1) && lua_rawgeti(L, -1, region + 1) == LUA_TFUNCTION, CLSPH_E_INPUT,
               "fill %d has no velocity function", region + 1);
-  lua_pushnumber(L, x[0]);
-  lua_pushnumber(L, x[1]);
+  const int dim = cs->dim;
+  for (int a = 0; a < dim; ++a) lua_pushnumber(L, x[a]);
   snprintf(cs->sb.phase_buf, sizeof cs->sb.phase_buf, "the velocity function of fill %d",
            region + 1);
-  CLSPH_TRY(sandbox_call(&cs->sb, 2, 2, cs->sb.phase_buf));
-  CLSPH_CHECK(lua_isnumber(L, -2) && lua_isnumber(L, -1), CLSPH_E_INPUT,
-              "the velocity function returned %s, %s: it must return two numbers u, v",
-              luaL_typename(L, -2), luaL_typename(L, -1));
-  v[0] = lua_tonumber(L, -2);
-  v[1] = lua_tonumber(L, -1);
-  CLSPH_CHECK(isfinite(v[0]) && isfinite(v[1]), CLSPH_E_INPUT,
+  CLSPH_TRY(sandbox_call(&cs->sb, dim, dim, cs->sb.phase_buf));
+  int numbers = 1, finite = 1;
+  for (int a = 0; a < dim; ++a) numbers &= lua_isnumber(L, a - dim);
+  CLSPH_CHECK(numbers, CLSPH_E_INPUT,
+              "the velocity function returned %s, %s%s%s: it must return %s",
+              luaL_typename(L, -dim), luaL_typename(L, 1 - dim), dim == 3 ? ", " : "",
+              dim == 3 ? luaL_typename(L, -1) : "",
+              dim == 3 ? "three numbers u, v, w" : "two numbers u, v");
+  for (int a = 0; a < dim; ++a) {
+    v[a] = lua_tonumber(L, a - dim);
+    finite &= isfinite(v[a]) != 0;
+  }
+  CLSPH_CHECK(finite || dim == 3, CLSPH_E_INPUT,
               "the velocity function returned (%g, %g): it must be finite", v[0], v[1]);
+  CLSPH_CHECK(finite, CLSPH_E_INPUT,
+              "the velocity function returned (%g, %g, %g): it must be finite", v[0], v[1], v[2]);
 done:
   lua_settop(L, top);
   return st;
@@ -169,7 +178,7 @@ done:
 
 /* scene_velocity_fn.scalar: the pressure (what = 0), density (1), k (2) or ε (3) function of
  * fill `region` at x. */
-static enum clsph_status fill_scalar(void *ctx, int region, int what, const double x[2], double *v)
+static enum clsph_status fill_scalar(void *ctx, int region, int what, const double *x, double *v)
 {
   enum clsph_status st = CLSPH_OK;
   struct case_script *cs = ctx;
@@ -179,11 +188,10 @@ static enum clsph_status fill_scalar(void *ctx, int region, int what, const doub
   lua_getfield(L, LUA_REGISTRYINDEX, fill_scalar_reg[what]);
   CLSPH_CHECK(lua_istable(L, -1) && lua_rawgeti(L, -1, region + 1) == LUA_TFUNCTION, CLSPH_E_INPUT,
               "fill %d has no %s function", region + 1, name);
-  lua_pushnumber(L, x[0]);
-  lua_pushnumber(L, x[1]);
+  for (int a = 0; a < cs->dim; ++a) lua_pushnumber(L, x[a]);
   snprintf(cs->sb.phase_buf, sizeof cs->sb.phase_buf, "the %s function of fill %d", name,
            region + 1);
-  CLSPH_TRY(sandbox_call(&cs->sb, 2, 1, cs->sb.phase_buf));
+  CLSPH_TRY(sandbox_call(&cs->sb, cs->dim, 1, cs->sb.phase_buf));
   CLSPH_CHECK(lua_type(L, -1) == LUA_TNUMBER, CLSPH_E_INPUT,
               "the %s function returned %s: it must return a number", name, luaL_typename(L, -1));
   *v = lua_tonumber(L, -1);
@@ -275,12 +283,58 @@ static void to_point(lua_State *L, const char *fn, const char *what, double p[2]
   p[1] = get_index_number(L, t, fn, 2, what);
 }
 
+/* The value on top of the stack as a point of the scene's dimension: {x, y}, or {x, y, z} after
+ * a 3-D domain { }. */
+static void to_vec(lua_State *L, const char *fn, const char *what, double *p)
+{
+  const int dim = loader_of(L)->s->dim, t = lua_gettop(L);
+  if (dim == 2) {
+    to_point(L, fn, what, p);
+    return;
+  }
+  if (!lua_istable(L, t) || lua_rawlen(L, t) != 3)
+    luaL_error(L, "%s: %s must be a point {x, y, z} in a 3-D scene", fn, what);
+  for (int a = 0; a < 3; ++a) p[a] = get_index_number(L, t, fn, a + 1, what);
+}
+
+/* t[key] as a point of the scene's dimension; returns 0 when absent. */
+static int get_vec(lua_State *L, int idx, const char *fn, const char *key, double *p)
+{
+  lua_getfield(L, idx, key);
+  int present = !lua_isnil(L, -1);
+  if (present) to_vec(L, fn, key, p);
+  lua_pop(L, 1);
+  return present;
+}
+
 /* t[key] as a point; returns 0 when absent. */
 static int get_point(lua_State *L, int idx, const char *fn, const char *key, double p[2])
 {
   lua_getfield(L, idx, key);
   int present = !lua_isnil(L, -1);
   if (present) to_point(L, fn, key, p);
+  lua_pop(L, 1);
+  return present;
+}
+
+/* t[key] as a vector of the scene's dimension ({x, y}, or {x, y, z} after a 3-D domain { });
+ * returns 0 when absent. */
+static int get_vector(lua_State *L, int idx, const char *fn, const char *key, double p[3])
+{
+  const int dim = loader_of(L)->s->dim;
+  lua_getfield(L, idx, key);
+  const int present = !lua_isnil(L, -1), t = lua_gettop(L);
+  if (present) {
+    const lua_Unsigned len = lua_istable(L, t) ? lua_rawlen(L, t) : 0;
+    if (len == 3 && dim == 2)
+      luaL_error(L,
+                 "%s: %s has 3 components: a 3-D scene declares its domain { x0, y0, z0, x1, "
+                 "y1, z1 } first",
+                 fn, key);
+    if (len != (lua_Unsigned)dim)
+      luaL_error(L, "%s: %s must be a vector %s", fn, key, dim == 3 ? "{x, y, z}" : "{x, y}");
+    for (int a = 0; a < dim; ++a) p[a] = get_index_number(L, t, fn, a + 1, key);
+  }
   lua_pop(L, 1);
   return present;
 }
@@ -383,23 +437,34 @@ static int l_param(lua_State *L)
 static int l_domain(lua_State *L)
 {
   static const char *const keys[] = {"periodic", NULL};
-  static const char *const periodic[] = {"none", "x", "y", "xy", NULL};
+  static const char *const periodic[] = {"none", "x", "y", "xy", "z", "xz", "yz", "xyz", NULL};
   struct loader *ld = loader_of(L);
   need_table(L, "domain");
   once(L, &ld->line_domain, "domain");
   check_keys(L, 1, "domain", keys, 1);
-  if (lua_rawlen(L, 1) != 4) luaL_error(L, "domain: give the box as { x0, y0, x1, y1 }");
+  const lua_Unsigned len = lua_rawlen(L, 1);
+  if (len != 4 && len != 6)
+    luaL_error(L,
+               "domain: give the box as { x0, y0, x1, y1 } (2-D) or { x0, y0, z0, x1, y1, z1 } "
+               "(3-D), not %d numbers",
+               (int)len);
   struct scene *s = ld->s;
-  s->lo[0] = get_index_number(L, 1, "domain", 1, "x0");
-  s->lo[1] = get_index_number(L, 1, "domain", 2, "y0");
-  s->hi[0] = get_index_number(L, 1, "domain", 3, "x1");
-  s->hi[1] = get_index_number(L, 1, "domain", 4, "y1");
-  if (!(s->hi[0] > s->lo[0] && s->hi[1] > s->lo[1]))
-    luaL_error(L, "domain: the box {%f, %f, %f, %f} is empty (x1 > x0 and y1 > y0 needed)",
-               s->lo[0], s->lo[1], s->hi[0], s->hi[1]);
+  const int dim = len == 6 ? 3 : 2;
+  static const char *const names[2][6] = {{"x0", "y0", "x1", "y1"},
+                                          {"x0", "y0", "z0", "x1", "y1", "z1"}};
+  for (int a = 0; a < dim; ++a) {
+    s->lo[a] = get_index_number(L, 1, "domain", a + 1, names[dim - 2][a]);
+    s->hi[a] = get_index_number(L, 1, "domain", dim + a + 1, names[dim - 2][dim + a]);
+    if (!(s->hi[a] > s->lo[a]))
+      luaL_error(L, "domain: the box is empty along %c: %s = %f must exceed %s = %f", "xyz"[a],
+                 names[dim - 2][dim + a], s -> hi[a], names[dim - 2][a], s -> lo[a]);
+  }
+  s->dim = dim;
   int p = get_choice(L, 1, "domain", "periodic", periodic, 0);
-  s->periodic[0] = p == 1 || p == 3;
-  s->periodic[1] = p == 2 || p == 3;
+  if (dim == 2 && p > 3) luaL_error(L, "domain: periodic along z needs a 3-D domain (6 numbers)");
+  s->periodic[0] = p & 1;
+  s->periodic[1] = (p >> 1) & 1;
+  s->periodic[2] = (p >> 2) & 1;
   return 0;
 }
 
@@ -505,8 +570,8 @@ static int l_fluid(lua_State *L)
   s->nu = get_number(L, 1, "fluid", "viscosity", 0.0);
   if (!(s->rho0 > 0.0)) luaL_error(L, "fluid: density must be positive, not %f", s->rho0);
   if (s->nu < 0.0) luaL_error(L, "fluid: viscosity must not be negative, not %f", s->nu);
-  get_point(L, 1, "fluid", "gravity", s->gravity);
-  get_point(L, 1, "fluid", "body_force", s->body_force);
+  get_vector(L, 1, "fluid", "gravity", s->gravity);
+  get_vector(L, 1, "fluid", "body_force", s->body_force);
   lua_getfield(L, 1, "flow_rate_control");
   if (!lua_isnil(L, -1)) flow_rate_control(L, lua_gettop(L), s);
   lua_pop(L, 1);
@@ -593,11 +658,16 @@ static int l_fill(lua_State *L)
     lua_rawseti(L, -2, s->nregions);
     lua_pop(L, 1);
   } else if (!lua_isnil(L, -1)) {
-    if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
+    if (s->dim == 3 && (!lua_istable(L, -1) || lua_rawlen(L, -1) != 3))
+      luaL_error(L,
+                 "fill '%s': velocity must be {u, v, w} (m/s) or a function (x, y, z) returning "
+                 "u, v, w in a 3-D scene",
+                 r->name);
+    if (s->dim == 2 && (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2))
       luaL_error(L, "fill '%s': velocity must be {u, v} (m/s) or a function (x, y) returning u, v",
                  r->name);
     r->velocity = 1;
-    to_point(L, "fill", "velocity", r->u0);
+    for (int a = 0; a < s->dim; ++a) r->u0[a] = get_index_number(L, -1, "fill", a + 1, "velocity");
   }
   lua_pop(L, 1);
   /* the initial pressure, density, k and ε: a number, or a function (x, y) -> value kept like
@@ -634,6 +704,25 @@ static int l_fill(lua_State *L)
   }
   /* points = { {x, y}, ... }: the particles' own positions (a body-fitted arrangement the
    * script computes), instead of the lattice inside a polygon or rectangle */
+  if (s->dim == 3) { /* a box: { x0, y0, z0, x1, y1, z1 } */
+    lua_getfield(L, 1, "points");
+    lua_getfield(L, 1, "polygon");
+    if (!lua_isnil(L, -1) || !lua_isnil(L, -2))
+      luaL_error(L,
+                 "fill '%s': points and polygon are 2-D; a 3-D scene fills boxes { x0, y0, z0, "
+                 "x1, y1, z1 }",
+                 r->name);
+    lua_pop(L, 2);
+    if (lua_rawlen(L, 1) != 6)
+      luaL_error(L, "fill '%s': a 3-D scene fills a box { x0, y0, z0, x1, y1, z1 }", r->name);
+    static const char *const bn[6] = {"x0", "y0", "z0", "x1", "y1", "z1"};
+    for (int k = 0; k < 6; ++k) r->box3[k] = get_index_number(L, 1, "fill", k + 1, bn[k]);
+    for (int a = 0; a < 3; ++a)
+      if (!(r->box3[3 + a] > r->box3[a]))
+        luaL_error(L, "fill '%s': the box is empty along %c (%s = %f, %s = %f)", r->name, "xyz"[a],
+                   bn[a], r -> box3[a], bn[3 + a], r -> box3[3 + a]);
+    return 0;
+  }
   lua_getfield(L, 1, "points");
   if (!lua_isnil(L, -1)) {
     int t = lua_gettop(L);
@@ -856,11 +945,35 @@ static int l_wall(lua_State *L)
 
 static int l_box_wall(lua_State *L)
 {
-  static const char *const keys[] = {"group", "lid_velocity", "lid_group", NULL};
+  static const char *const keys[] = {"group", "lid_velocity", "lid_group", "fluid", NULL};
+  static const char *const sides[] = {"inside", "outside", NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "box_wall");
   check_keys(L, 1, "box_wall", keys, 1);
+  const int side = get_choice(L, 1, "box_wall", "fluid", sides, 0);
+  if (s->dim == 3) { /* a closed box, the fluid inside (a tank) or outside (an obstacle) */
+    if (lua_rawlen(L, 1) != 6)
+      luaL_error(L, "box_wall: give the box as { x0, y0, z0, x1, y1, z1 } in a 3-D scene");
+    lua_getfield(L, 1, "lid_velocity");
+    if (!lua_isnil(L, -1)) luaL_error(L, "box_wall: lid_velocity is 2-D only for now");
+    lua_pop(L, 1);
+    static const char *const bn[6] = {"x0", "y0", "z0", "x1", "y1", "z1"};
+    struct scene_wall *w = grow(L, (void **)&s->walls, &s->nwalls, sizeof *w);
+    w->line = current_line(L);
+    get_name(L, 1, "box_wall", "group", w->group, "walls");
+    w->box3d = side == 1 ? 2 : 1;
+    w->closed = 1;
+    for (int k = 0; k < 6; ++k) w->box3[k] = get_index_number(L, 1, "box_wall", k + 1, bn[k]);
+    for (int a = 0; a < 3; ++a)
+      if (!(w->box3[3 + a] > w->box3[a]))
+        luaL_error(L, "box_wall: the box is empty along %c (%s = %f, %s = %f)", "xyz"[a], bn[a],
+                   w -> box3[a], bn[3 + a], w -> box3[3 + a]);
+    return 0;
+  }
+  if (side != 0)
+    luaL_error(L, "box_wall: fluid = \"outside\" makes a 3-D obstacle; a 2-D one is wall { ..., "
+                  "closed = true, fluid = \"outside\" }");
   if (lua_rawlen(L, 1) != 4) luaL_error(L, "box_wall: give the box as { x0, y0, x1, y1 }");
   double x0 = get_index_number(L, 1, "box_wall", 1, "x0"),
          y0 = get_index_number(L, 1, "box_wall", 2, "y0");
@@ -1139,11 +1252,16 @@ static int l_outflow(lua_State *L)
  * finish, where dr is known). */
 static int l_probe(lua_State *L)
 {
-  static const char *const keys[] = {"name", "at", "from", "to", "points", NULL};
-  static const char forms[] = "a point, { \"name\", {x, y} }, or a face, { \"name\", {x0, y0}, "
-                              "{x1, y1} [, points = N] }";
+  static const char *const keys[] = {"name",   "at",     "from",   "to",
+                                     "points", "radius", "normal", NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
+  const char *forms = s->dim == 3
+                          ? "a point, { \"name\", {x, y, z} }, a face, { \"name\", {x0, y0, z0}, "
+                            "{x1, y1, z1} [, points = N] }, or a disc, { \"name\", {x, y, z}, "
+                            "radius = R, normal = {nx, ny, nz} }"
+                          : "a point, { \"name\", {x, y} }, or a face, { \"name\", {x0, y0}, "
+                            "{x1, y1} [, points = N] }";
   need_table(L, "probe");
   check_keys(L, 1, "probe", keys, 1);
   struct scene_probe *p = grow(L, (void **)&s->probes, &s->nprobes, sizeof *p);
@@ -1156,9 +1274,9 @@ static int l_probe(lua_State *L)
   if (p->name[0] == '\0') luaL_error(L, "probe: it needs a name; give %s", forms);
   /* its points: after the name, or keyed (at = a point; from =, to = a face), not both */
   const int first = named ? 2 : 1, given = (int)lua_rawlen(L, 1) - first + 1;
-  const int has_at = get_point(L, 1, "probe", "at", p->x);
-  const int has_from = get_point(L, 1, "probe", "from", p->x);
-  const int has_to = get_point(L, 1, "probe", "to", p->b);
+  const int has_at = get_vec(L, 1, "probe", "at", p->x);
+  const int has_from = get_vec(L, 1, "probe", "from", p->x);
+  const int has_to = get_vec(L, 1, "probe", "to", p->b);
   if (given > 2) luaL_error(L, "probe '%s': %d points given; a probe is %s", p->name, given, forms);
   if (given > 0 && (has_at || has_from || has_to))
     luaL_error(L, "probe '%s': give its points after the name or as at = (from =, to =), not both",
@@ -1172,28 +1290,52 @@ static int l_probe(lua_State *L)
     luaL_error(L, "probe '%s': where? give %s", p->name, forms);
   for (int k = 0; k < given; ++k) {
     lua_geti(L, 1, first + k);
-    to_point(L, "probe", k == 0 ? "its point (or the face's first end)" : "the face's second end",
-             k == 0 ? p->x : p->b);
+    to_vec(L, "probe", k == 0 ? "its point (or the face's first end)" : "the face's second end",
+           k == 0 ? p->x : p->b);
     lua_pop(L, 1);
   }
   p->face = given == 2 || has_from;
+  /* a disc (3-D): a point, its radius and its normal */
+  const double radius = get_number(L, 1, "probe", "radius", NAN);
+  double nrm[3] = {0.0, 0.0, 0.0};
+  const int has_normal = get_vec(L, 1, "probe", "normal", nrm);
+  if (!isnan(radius) || has_normal) {
+    if (s->dim == 2)
+      luaL_error(L,
+                 "probe '%s': radius = and normal = make a disc, a face of a 3-D scene; a 2-D "
+                 "face is { \"%s\", {x0, y0}, {x1, y1} }",
+                 p->name, p->name);
+    if (p->face || isnan(radius) || !has_normal)
+      luaL_error(L, "probe '%s': a disc is its centre, radius = R and normal = {nx, ny, nz}",
+                 p->name);
+    const double len = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    if (!(radius > 0.0) || !(len > 0.0) || !isfinite(len))
+      luaL_error(L, "probe '%s': a disc needs a positive radius (not %f) and a nonzero normal",
+                 p->name, radius);
+    for (int a = 0; a < 3; ++a) p->normal[a] = nrm[a] / len;
+    p->radius = radius;
+    p->face = 2;
+  }
   const double np = get_number(L, 1, "probe", "points", 0);
-  char num[64]; /* lua_pushfstring has no %g */
+  char num[96]; /* lua_pushfstring has no %g */
   snprintf(num, sizeof num, "%g", np);
-  if (!p->face && np != 0)
+  if (p->face != 1 && np != 0)
     luaL_error(L,
                "probe '%s': points = %s belongs to a face, { \"%s\", {x0, y0}, {x1, y1}, "
                "points = N }",
                p->name, num, p->name);
   if (p->face && np != 0 && !(np >= 1 && np <= 1e4 && np == floor(np)))
     luaL_error(L, "probe '%s': points = %s must be a whole number from 1 to 10000", p->name, num);
-  snprintf(num, sizeof num, "(%g, %g)", p->x[0], p->x[1]);
-  if (p->face && p->b[0] == p->x[0] && p->b[1] == p->x[1])
+  if (s->dim == 3)
+    snprintf(num, sizeof num, "(%g, %g, %g)", p->x[0], p->x[1], p->x[2]);
+  else
+    snprintf(num, sizeof num, "(%g, %g)", p->x[0], p->x[1]);
+  if (p->face == 1 && p->b[0] == p->x[0] && p->b[1] == p->x[1] && p->b[2] == p->x[2])
     luaL_error(L,
                "probe '%s': the face's two ends are the same point %s; a point probe takes "
                "one point",
                p->name, num);
-  p->npts = p->face ? (int)np : 1; /* a face's 0: from dr, at finish */
+  p->npts = p->face == 1 ? (int)np : 1; /* a face's 0, a disc's: from dr, at finish */
   return 0;
 }
 
@@ -1456,9 +1598,9 @@ static int cmp_option(const void *a, const void *b)
 }
 
 /* Is x in the domain's box (its edges included, to a millionth of its size)? */
-static int in_domain(const struct scene *s, const double x[2])
+static int in_domain(const struct scene *s, const double *x)
 {
-  for (int a = 0; a < 2; ++a) {
+  for (int a = 0; a < s->dim; ++a) {
     const double tol = 1e-6 * (s->hi[a] - s->lo[a]);
     if (!(x[a] >= s->lo[a] - tol && x[a] <= s->hi[a] + tol)) return 0;
   }
@@ -1487,6 +1629,33 @@ static enum clsph_status finish(const char *path, struct loader *ld)
                 path, ld->set_names[k], hint);
   }
   if (!s->rho0) s->rho0 = 1000.0; /* no fluid {} declaration: water at rest */
+  if (s->dim == 3) {              /* what 3-D scenes have so far: box fills in box containers */
+    for (int w = 0; w < s->nwalls; ++w)
+      CLSPH_CHECK(s->walls[w].box3d, CLSPH_E_INPUT,
+                  "%s:%d: wall (group '%s') is a 2-D polyline (wall, arc, circle or a box_wall "
+                  "declared before the domain) in a 3-D scene: 3-D walls are box_wall { x0, y0, "
+                  "z0, x1, y1, z1 } after domain { }",
+                  path, s->walls[w].line, s->walls[w].group);
+    for (int r = 0; r < s->nregions; ++r)
+      CLSPH_CHECK(s->regions[r].npts == 0, CLSPH_E_INPUT,
+                  "%s:%d: fill '%s' is 2-D (declared before the 3-D domain?): 3-D fills are boxes "
+                  "{ x0, y0, z0, x1, y1, z1 } after domain { }",
+                  path, s->regions[r].line, s->regions[r].name);
+    const struct {
+      int count, line;
+      const char *what;
+    } only2[] = {
+        {s->nsections, s->nsections ? s->sections[0].line : 0, "inflow and outflow sections"},
+        {s->nprofiles, s->nprofiles ? s->profiles[0].line : 0, "profiles"},
+        {s->flow.on, s->flow.line, "flow_rate_control"},
+        {s->turb.on, s->turb.line, "turbulence"},
+        {s->render.on, s->render.line, "render { }"},
+    };
+    for (size_t k = 0; k < sizeof only2 / sizeof *only2; ++k)
+      CLSPH_CHECK(only2[k].count == 0, CLSPH_E_INPUT,
+                  "%s:%d: %s are 2-D only for now; this scene is 3-D (its domain gives z)", path,
+                  only2[k].line, only2[k].what);
+  }
   if (s->flow.on) { /* the slice must cut the domain: on a periodic axis, less than a period */
     const struct scene_flow_control *c = &s->flow;
     const double len = s->hi[0] - s->lo[0];
@@ -1550,25 +1719,38 @@ static enum clsph_status finish(const char *path, struct loader *ld)
   /* probes and profiles sample the fluid: outside the domain there is none (a column of NaN) */
   for (int k = 0; k < s->nprobes; ++k) {
     struct scene_probe *p = &s->probes[k];
+    char at[96], end[96], box[160];
+    if (s->dim == 3) {
+      snprintf(at, sizeof at, "(%g, %g, %g)", p->x[0], p->x[1], p->x[2]);
+      snprintf(end, sizeof end, "(%g, %g, %g)", p->b[0], p->b[1], p->b[2]);
+      snprintf(box, sizeof box, "{%g, %g, %g, %g, %g, %g}", s->lo[0], s->lo[1], s->lo[2], s->hi[0],
+               s->hi[1], s->hi[2]);
+    } else {
+      snprintf(at, sizeof at, "(%g, %g)", p->x[0], p->x[1]);
+      snprintf(end, sizeof end, "(%g, %g)", p->b[0], p->b[1]);
+      snprintf(box, sizeof box, "{%g, %g, %g, %g}", s->lo[0], s->lo[1], s->hi[0], s->hi[1]);
+    }
     CLSPH_CHECK(in_domain(s, p->x), CLSPH_E_INPUT,
-                "%s:%d: probe '%s' at (%g, %g) lies outside the domain {%g, %g, %g, %g}", path,
-                p->line, p->name, p->x[0], p->x[1], s->lo[0], s->lo[1], s->hi[0], s->hi[1]);
-    CLSPH_CHECK(!p->face || in_domain(s, p->b), CLSPH_E_INPUT,
-                "%s:%d: probe '%s': the face's end (%g, %g) lies outside the domain {%g, %g, %g, "
-                "%g}",
-                path, p->line, p->name, p->b[0], p->b[1], s->lo[0], s->lo[1], s->hi[0], s->hi[1]);
+                "%s:%d: probe '%s' at %s lies outside the domain %s", path, p->line, p->name, at,
+                box);
+    CLSPH_CHECK(p->face != 1 || in_domain(s, p->b), CLSPH_E_INPUT,
+                "%s:%d: probe '%s': the face's end %s lies outside the domain %s", path, p->line,
+                p->name, end, box);
     for (int j = 0; j < k; ++j)
       CLSPH_CHECK(strcmp(s->probes[j].name, p->name) != 0, CLSPH_E_INPUT,
                   "%s:%d: probe '%s' is declared twice (first at line %d): probes.csv names its "
                   "columns after the probe",
                   path, p->line, p->name, s->probes[j].line);
     /* a face's points dr/4 apart or closer: the interpolated field varies over h >= dr */
-    const double len = hypot(p->b[0] - p->x[0], p->b[1] - p->x[1]) / s->dr;
-    CLSPH_CHECK(!p->face || p->npts > 0 || 4.0 * len <= 1e4, CLSPH_E_INPUT,
+    double len = 0.0;
+    for (int a = 0; a < s->dim; ++a) len += (p->b[a] - p->x[a]) * (p->b[a] - p->x[a]);
+    len = sqrt(len) / s->dr;
+    CLSPH_CHECK(p->face != 1 || p->npts > 0 || 4.0 * len <= 1e4, CLSPH_E_INPUT,
                 "%s:%d: probe '%s': the face is %g dr long, more than 10000 points at dr/4; give "
                 "points = N (at most 10000)",
                 path, p->line, p->name, len);
-    if (p->face && p->npts == 0) p->npts = (int)fmax(2.0, ceil(4.0 * len));
+    if (p->face == 1 && p->npts == 0) p->npts = (int)fmax(2.0, ceil(4.0 * len));
+    if (p->face == 2) p->npts = scene_probe_points(p, 3, s->dr, NULL);
   }
   for (int k = 0; k < s->nprofiles; ++k) {
     const struct scene_profile_line *p = &s->profiles[k];
@@ -1648,6 +1830,7 @@ enum clsph_status case_load(const char *path, int nsets, char *const *sets,
     out->velocity_fn.eval = fill_velocity;
     out->velocity_fn.scalar = fill_scalar;
     out->velocity_fn.ctx = cs;
+    cs->dim = out->dim;
     *script = cs;
     cs = NULL;
   }
@@ -1827,12 +2010,12 @@ static int l_field_values(lua_State *L)
       api->field_values(api->ctx, field, comp, kind, &n, &xy, &v) != CLSPH_OK)
     return luaL_error(L, "sim.field: no values of '%s' component %d: %s", field, comp + 1,
                       why_of(api));
-  lua_createtable(L, 0, 3);
-  const char *names[] = {"x", "y", "value"};
-  for (int c = 0; c < 3; ++c) {
+  lua_createtable(L, 0, 4);
+  const char *names[] = {"x", "y", "z", "value"}; /* z: 0 in 2-D */
+  for (int c = 0; c < 4; ++c) {
     lua_createtable(L, (int)n, 0);
     for (size_t i = 0; i < n; ++i) {
-      lua_pushnumber(L, c < 2 ? xy[2 * i + (size_t)c] : v[i]);
+      lua_pushnumber(L, c < 3 ? xy[3 * i + (size_t)c] : v[i]);
       lua_rawseti(L, -2, (lua_Integer)i + 1);
     }
     lua_setfield(L, -2, names[c]);

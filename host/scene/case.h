@@ -43,8 +43,8 @@ struct case_sim_api {
   enum clsph_status (*force_history)(void *ctx, const char *group, double since, size_t *n,
                                      double **rows);
   const char *dir; /* the output folder (profile_<name>.csv for sim.profile); NULL: none */
-  /** The particles of `kind` (−1: all): their positions (n x, y pairs) and component `comp` of a
-   *  field, in arrays the caller frees. */
+  /** The particles of `kind` (−1: all): their positions (n x, y, z triples, z = 0 in 2-D) and
+   *  component `comp` of a field, in arrays the caller frees. */
   enum clsph_status (*field_values)(void *ctx, const char *field, int comp, int kind, size_t *n,
                                     double **xy, double **values);
   /** What sample() recorded under `name`: n rows of (time, value) in an array the caller frees;

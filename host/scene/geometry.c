@@ -1505,6 +1505,7 @@ static enum clsph_status emit(struct build *b, struct geom *g)
   enum clsph_status st = CLSPH_OK;
   const size_t n = b->np, ns = b->nseg;
   struct geom t = {0};
+  t.dim = 2;
   t.n = n;
   t.nfluid = b->nfluid;
   t.nseg = ns;
@@ -1572,6 +1573,7 @@ enum clsph_status geometry_build(const struct scene *s, const char *model, int l
   enum clsph_status st = CLSPH_OK;
   struct build b = {0};
   memset(out, 0, sizeof *out);
+  if (s->dim == 3) return geometry_build3(s, model, layers, out);
   b.s = s;
   b.park = park;
   b.dr = s->dr;
@@ -1653,8 +1655,9 @@ unsigned long geometry_digest(const struct scene *s, const struct geom *g)
 {
   unsigned long c = crc32(0L, Z_NULL, 0);
   c = digest_bytes(c, &g->n, sizeof g->n);
-  c = digest_bytes(c, g->x, 2 * g->n * sizeof *g->x);
-  c = digest_bytes(c, g->v, 2 * g->n * sizeof *g->v);
+  const size_t dim = g->dim == 3 ? 3 : 2;
+  c = digest_bytes(c, g->x, dim * g->n * sizeof *g->x);
+  c = digest_bytes(c, g->v, dim * g->n * sizeof *g->v);
   c = digest_bytes(c, g->kind, g->n * sizeof *g->kind);
   c = digest_bytes(c, g->group, g->n * sizeof *g->group);
   c = digest_bytes(c, &g->nseg, sizeof g->nseg);
@@ -1666,6 +1669,11 @@ unsigned long geometry_digest(const struct scene *s, const struct geom *g)
       s->gravity[0],  s->gravity[1], s->body_force[0], s->body_force[1], s->flow.velocity,
       s->flow.on};
   c = digest_bytes(c, phys, sizeof phys);
+  if (s->dim == 3) { /* z (2-D digests stay what they were) */
+    const double z[] = {s->lo[2], s->hi[2], s->periodic[2], s->gravity[2], s->body_force[2], 3.0};
+    c = digest_bytes(c, z, sizeof z);
+    for (int w = 0; w < s->nwalls; ++w) c = digest_bytes(c, s->walls[w].box3, 6 * sizeof(double));
+  }
   c = digest_bytes(c, s->smoothing, strlen(s->smoothing));
   c = digest_bytes(c, s->scheme, strlen(s->scheme));
   for (int i = 0; i < s->noptions; ++i) {

@@ -20,6 +20,7 @@ enum particle_kind {
 
 /** Particles (host arrays, double precision) and USAW segments. Fluid particles come first. */
 struct geom {
+  int dim;           /* 2, or 3: the n x 2 arrays below are then n x 3 */
   size_t n;          /* particles of every kind */
   size_t nfluid;     /* the first nfluid are KIND_FLUID */
   double *x;         /* n x 2, position, m */
@@ -63,6 +64,10 @@ struct geom_park {
  *          CLSPH_E_NOMEM */
 enum clsph_status geometry_build(const struct scene *s, const char *model, int layers,
                                  const struct geom_park *park, struct geom *out);
+/** @brief The particles of a 3-D scene (geometry3.c: box fills in box containers; no segments,
+ *  no sections); geometry_build calls it for scene.dim = 3. */
+enum clsph_status geometry_build3(const struct scene *s, const char *model, int layers,
+                                  struct geom *out);
 /** @brief A digest (CRC-32) of what defines a scene besides its parameters' names: the generated
  *  particles (positions, initial velocities, kinds, wall groups) and segments, the domain and its
  *  periodic axes, the fluid's properties, the wall motions, the scheme and its options. Two runs

@@ -135,3 +135,45 @@ void scene_group_centre(const struct scene *s, const char *group, double c[2])
       return;
     }
 }
+
+/* a unit vector normal to the unit n, and n × that: the plane of a disc */
+static void disc_axes(const double *n, double e1[3], double e2[3])
+{
+  const double t[3] = {fabs(n[0]) < 0.9 ? 1.0 : 0.0, fabs(n[0]) < 0.9 ? 0.0 : 1.0, 0.0};
+  const double d = t[0] * n[0] + t[1] * n[1] + t[2] * n[2];
+  double l = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    e1[a] = t[a] - d * n[a];
+    l += e1[a] * e1[a];
+  }
+  for (int a = 0; a < 3; ++a) e1[a] /= sqrt(l);
+  e2[0] = n[1] * e1[2] - n[2] * e1[1];
+  e2[1] = n[2] * e1[0] - n[0] * e1[2];
+  e2[2] = n[0] * e1[1] - n[1] * e1[0];
+}
+
+int scene_probe_points(const struct scene_probe *p, int dim, double dr, double *out)
+{
+  if (p->face != 2) {
+    for (int k = 0; k < p->npts && out != NULL; ++k) {
+      const double s = p->face ? (k + 0.5) / p->npts : 0.0;
+      for (int a = 0; a < dim; ++a) out[dim * k + a] = p->x[a] + s * (p->b[a] - p->x[a]);
+    }
+    return p->npts;
+  }
+  /* the disc: a square lattice in its plane (an odd count across, so the centre is a point) */
+  const double step = fmin(0.25 * dr, 0.5 * p->radius);
+  const int half = (int)fmin(50.0, floor(p->radius / step + 1e-9));
+  double e1[3], e2[3];
+  disc_axes(p->normal, e1, e2);
+  int count = 0;
+  for (int j = -half; j <= half; ++j)
+    for (int i = -half; i <= half; ++i) {
+      const double u = i * step, v = j * step;
+      if (u * u + v * v > p->radius * p->radius * (1.0 + 1e-12)) continue;
+      if (out != NULL)
+        for (int a = 0; a < 3; ++a) out[3 * count + a] = p->x[a] + u * e1[a] + v * e2[a];
+      ++count;
+    }
+  return count;
+}

@@ -1,6 +1,8 @@
 /* scene.h: the scene description a case script produces (host/scene/case.c) and the geometry
  * generator (host/scene/geometry.c) turns into particles. Plain data: every length in m, velocity
- * in m/s, time in s, SI throughout. 2-D for now (points are x, y pairs). */
+ * in m/s, time in s, SI throughout. Points are x, y pairs in 2-D; a 3-D scene (a domain with z)
+ * holds its vectors (domain, gravity, body force, velocities) as x, y, z and its fills and walls as
+ * boxes (struct scene_region's and scene_wall's box3). */
 #ifndef CLSPH_SCENE_H
 #define CLSPH_SCENE_H
 
@@ -30,10 +32,11 @@ struct scene_region {
   char name[SCENE_NAME]; /* "fill 1", or the name the case gives */
   int npts;              /* polygon vertices (a rectangle is a 4-vertex polygon) */
   double *pts;           /* npts x 2, counter-clockwise or not (either works) */
-  int given;    /* 1: pts are the particles' own positions (fill { points }), not a polygon */
-  int line;     /* line of the case script that declared it */
-  int velocity; /* initial velocity: 0 at rest, 1 u0, 2 scene.velocity_fn's */
-  double u0[2]; /* the constant initial velocity, m/s */
+  int given;      /* 1: pts are the particles' own positions (fill { points }), not a polygon */
+  int line;       /* line of the case script that declared it */
+  int velocity;   /* initial velocity: 0 at rest, 1 u0, 2 scene.velocity_fn's */
+  double u0[3];   /* the constant initial velocity, m/s */
+  double box3[6]; /* 3-D: the box x0, y0, z0, x1, y1, z1 it fills (npts is 0) */
   int pressure, density; /* initial pressure and density: 0 the scheme's, 1 the constant below,
                           * 2 scene.velocity_fn's scalar function */
   double p0, rho0;       /* the constant initial pressure (Pa) and density (kg/m^3) */
@@ -42,12 +45,13 @@ struct scene_region {
 };
 
 /** The initial velocity of a region's fluid given as a function of position by the case script
- *  (fill { velocity = function(x, y) ... }): eval fills v (m/s) at x for region `region`. */
+ *  (fill { velocity = function(x, y) ... }, function(x, y, z) in 3-D): eval fills v (m/s, the
+ *  scene's dimension's components) at x for region `region`. */
 struct scene_velocity_fn {
-  enum clsph_status (*eval)(void *ctx, int region, const double x[2], double v[2]);
+  enum clsph_status (*eval)(void *ctx, int region, const double *x, double *v);
   /** The initial pressure (what = 0, Pa), density (1, kg/m^3), k (2, m²/s²) or ε (3, m²/s³)
    *  function of region `region`. */
-  enum clsph_status (*scalar)(void *ctx, int region, int what, const double x[2], double *v);
+  enum clsph_status (*scalar)(void *ctx, int region, int what, const double *x, double *v);
   void *ctx; /* the case script's state: valid while it is open */
 };
 
@@ -72,7 +76,9 @@ struct scene_wall {
   double velocity[2]; /* sliding velocity, m/s */
   double centre[2];   /* rotation centre, m */
   double omega;       /* angular velocity, rad/s, counter-clockwise positive */
-  int line;           /* line of the case script */
+  int box3d;      /* 3-D: a box (npts 0): 1 a container, its fluid inside; 2 an obstacle, outside */
+  double box3[6]; /* x0, y0, z0, x1, y1, z1 of the box's faces, m */
+  int line;       /* line of the case script */
 };
 
 enum scene_section_kind { SCENE_INFLOW = 1, SCENE_OUTFLOW };
@@ -103,16 +109,20 @@ struct scene_section {
 };
 
 /** A probe: the interpolated fields at a point, or their mean over a face (a segment, e.g. the
- *  face of a pressure sensor): the mean over the midpoints of npts equal parts of the face, the
- *  points with no fluid within the support left out (series.c, sim_sample_probes). */
+ *  face of a pressure sensor; in 3-D also a disc): the mean over its npts points
+ *  (scene_probe_points), the points with no fluid within the support left out (series.c,
+ *  sim_sample_probes). */
 struct scene_probe {
   char name[SCENE_NAME];
-  double x[2]; /* the point, or the face's first end, m */
-  double b[2]; /* the face's second end, m (a face probe) */
-  int face;    /* 1: a face probe from x to b; 0: a point probe at x */
-  int npts;    /* points sampled: 1 for a point probe; for a face, `points =` or as many as keep
-                * them dr/4 apart or closer (at least 2) */
-  int line;    /* line of the case script */
+  double x[3];      /* the point, the face's first end or the disc's centre, m (z: 3-D) */
+  double b[3];      /* the face's second end, m (a segment face) */
+  double normal[3]; /* a disc's unit normal */
+  double radius;    /* a disc's radius, m */
+  int face;         /* 0: a point probe at x; 1: a segment face from x to b; 2: a disc (3-D) */
+  int npts;         /* points sampled: 1 for a point probe; for a segment, `points =` or as many as
+                     * keep them dr/4 apart or closer (at least 2); for a disc, those of a square
+                     * lattice dr/4 apart or closer (at most radius/2) within it */
+  int line;         /* line of the case script */
 };
 
 struct scene_profile_line {
@@ -181,16 +191,16 @@ struct scene_checks {
 struct scene {
   char case_path[1024];  /* the script */
   char name[SCENE_NAME]; /* case name: the script's file name without .lua */
-  int dim;               /* 2 */
-  double lo[2], hi[2];   /* domain box, m (periodic axes: the period) */
-  int periodic[2];
+  int dim;               /* 2, or 3 when the domain gives z */
+  double lo[3], hi[3];   /* domain box, m (periodic axes: the period); z only in 3-D */
+  int periodic[3];
   double dr;                      /* particle spacing, m */
   double h_over_dr;               /* smoothing length / dr (scheme default unless given) */
   char smoothing[SCENE_NAME];     /* smoothing function name ("" = the scheme's default) */
   double rho0;                    /* reference density, kg/m^3 */
   double nu;                      /* kinematic viscosity, m^2/s */
-  double gravity[2];              /* m/s^2 */
-  double body_force[2];           /* acceleration, m/s^2 (e.g. a pressure-gradient drive) */
+  double gravity[3];              /* m/s^2 (z: 3-D only) */
+  double body_force[3];           /* acceleration, m/s^2 (e.g. a pressure-gradient drive) */
   struct scene_flow_control flow; /* flow-rate control of the x body force (off unless given) */
   char scheme[SCENE_NAME];
   int scheme_line; /* line of the case script that names it */
@@ -229,6 +239,12 @@ struct scene {
 /** @brief An entry's tabulated value `what` (0 u, 1 k, 2 ε) at the distance s along it (linear
  *  between the samples, clamped to the section; NAN where the entry gives no table of it). */
 double scene_section_value(const struct scene_section *c, int what, double s);
+
+/** @brief The points a probe samples (points x dim values into out when it is not NULL): its
+ *  point; the midpoints of a segment face's npts equal parts; a disc's points on the square
+ *  lattice of spacing min(dr/4, radius/2) in its plane, centred on it, within the radius. Returns
+ *  their count (a disc's from dr, at most 10000 + 1; the others' npts). */
+int scene_probe_points(const struct scene_probe *p, int dim, double dr, double *out);
 
 /** @brief Free everything a scene owns (safe on a zeroed scene). */
 void scene_free(struct scene *s);

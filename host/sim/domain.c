@@ -11,9 +11,9 @@ enum clsph_status sim_domain_check(struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
-  const double g = hypot(s->gravity[0], s->gravity[1]);
+  const double g = hypot(hypot(s->gravity[0], s->gravity[1]), s->gravity[2]);
   real4 lo = {{0}}, hi = {{0}};
-  for (int a = 0; a < 2; ++a) {
+  for (int a = 0; a < s->dim; ++a) {
     /* the side gravity points away from is open (up: −g·e_a > g/2 for the upper side) */
     const int up_hi = g > 0.0 && -s->gravity[a] > 0.5 * g,
               up_lo = g > 0.0 && s->gravity[a] > 0.5 * g;

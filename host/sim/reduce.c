@@ -166,10 +166,12 @@ enum clsph_status sim_sample(struct sim *sim, int field, int order, size_t np, c
               "field '%s' cannot be interpolated", f->name);
   CLSPH_CHECK(order == 0 || sim->gspec.dim == 2, CLSPH_E_UNSUPPORTED,
               "the linear interpolation (probe.cl) is 2-D only");
-  buf = calloc(np * (2 + ncomp), sizeof *buf);
+  const size_t dim = (size_t)sim->gspec.dim, stride = dim == 3 ? 4 : 2; /* realv */
+  buf = calloc(np * (stride + ncomp), sizeof *buf);
   CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory");
-  for (size_t p = 0; p < 2 * np; ++p) buf[p] = (real)at[p];
-  CLSPH_TRY(kern_buffer(sim->dev, 2 * np * sizeof(real), buf, &d_at, "sample points"));
+  for (size_t p = 0; p < np; ++p)
+    for (size_t a = 0; a < dim; ++a) buf[stride * p + a] = (real)at[dim * p + a];
+  CLSPH_TRY(kern_buffer(sim->dev, stride * np * sizeof(real), buf, &d_at, "sample points"));
   CLSPH_TRY(kern_buffer(sim->dev, ncomp * np * sizeof(real), NULL, &d_out, "samples"));
   cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vol = pset_mem(&sim->ps, sim->f_vol);
   cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
@@ -177,8 +179,8 @@ enum clsph_status sim_sample(struct sim *sim, int field, int order, size_t np, c
                      KARG(sim->grid.d_start), KARG(pos), KARG(vol), KARG(kind), KARG(f->d),
                      KARG(ncomp), KARG(ord), KARG(d_out)));
   CLSPH_TRY(kern_launch(sim->dev, sim->k_probe, np, NULL));
-  CLSPH_TRY(kern_read(sim->dev, d_out, ncomp * np * sizeof(real), buf + 2 * np));
-  for (size_t k = 0; k < ncomp * np; ++k) out[k] = (double)buf[2 * np + k];
+  CLSPH_TRY(kern_read(sim->dev, d_out, ncomp * np * sizeof(real), buf + stride * np));
+  for (size_t k = 0; k < ncomp * np; ++k) out[k] = (double)buf[stride * np + k];
 done:
   kern_release(&d_out);
   kern_release(&d_at);
@@ -193,19 +195,18 @@ enum clsph_status sim_sample_probes(struct sim *sim, int field, int np,
   const size_t ncomp = (size_t)sim->ps.f[field].ncomp;
   size_t total = 0;
   double *at = NULL, *v = NULL;
+  const int dim = sim->gspec.dim;
   for (int p = 0; p < np; ++p) total += (size_t)probes[p].npts;
-  at = calloc(2 * total + 1, sizeof *at);
+  at = calloc((size_t)dim * total + 1, sizeof *at);
   v = malloc(ncomp * total * sizeof *v + 1);
   CLSPH_CHECK(at != NULL && v != NULL, CLSPH_E_NOMEM, "out of memory");
-  /* every probe's points: a point, or the midpoints of a face's npts equal parts */
+  /* every probe's points: a point, the midpoints of a face's npts equal parts, a disc's lattice */
   double *q = at;
   for (int p = 0; p < np; ++p) {
-    const struct scene_probe *pr = &probes[p];
-    for (int k = 0; k < pr->npts; ++k, q += 2) {
-      const double s = pr->face ? (k + 0.5) / pr->npts : 0.0;
-      q[0] = pr->x[0] + s * (pr->b[0] - pr->x[0]);
-      q[1] = pr->x[1] + s * (pr->b[1] - pr->x[1]);
-    }
+    const int k = scene_probe_points(&probes[p], dim, sim->scene->dr, q);
+    CLSPH_CHECK(k == probes[p].npts, CLSPH_E_INPUT, "probe '%s': %d points, not the %d counted",
+                probes[p].name, k, probes[p].npts);
+    q += (size_t)dim * (size_t)k;
   }
   CLSPH_TRY(sim_sample(sim, field, 0, total, at, v));
   /* each probe's mean over its wet points (a dry point interpolates to NaN) */

@@ -79,17 +79,17 @@ static enum clsph_status add_fields(struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
   const struct geom *g = &sim->geom;
-  const size_t n = g->n, stride = 2;
+  const size_t n = g->n, dim = (size_t)g->dim, stride = dim == 3 ? 4 : 2; /* realv */
   real *xv = calloc(2 * stride * n + n, sizeof *xv);
   cl_uint *u = calloc(2 * n, sizeof *u);
   CLSPH_CHECK(xv != NULL && u != NULL, CLSPH_E_NOMEM, "out of memory for %zu particles", n);
   real *v = xv + stride * n, *vol = xv + 2 * stride * n;
   for (size_t i = 0; i < n; ++i) {
-    for (size_t a = 0; a < 2; ++a) {
-      xv[stride * i + a] = (real)g->x[2 * i + a];
-      v[stride * i + a] = (real)g->v[2 * i + a];
+    for (size_t a = 0; a < dim; ++a) {
+      xv[stride * i + a] = (real)g->x[dim * i + a];
+      v[stride * i + a] = (real)g->v[dim * i + a];
     }
-    vol[i] = (real)(sim->scene->dr * sim->scene->dr);
+    vol[i] = (real)pow(sim->scene->dr, (double)dim);
     u[i] = (cl_uint)g->kind[i];
     u[n + i] = (cl_uint)i;
   }
@@ -99,6 +99,10 @@ static enum clsph_status add_fields(struct sim *sim)
   CLSPH_TRY(pset_add(&sim->ps, sim->dev, "kind", sizeof(cl_uint), u, &sim->f_kind));
   CLSPH_TRY(pset_add(&sim->ps, sim->dev, "id", sizeof(cl_uint), u + n, &sim->f_id));
   CLSPH_TRY(pset_add(&sim->ps, sim->dev, "vol", sizeof(real), vol, &sim->f_vol));
+  if (dim == 3) { /* x, y, z of the real4 */
+    pset_describe(&sim->ps, sim->f_pos, PF_REAL, 3, 1);
+    pset_describe(&sim->ps, sim->f_vel, PF_REAL, 3, 1);
+  }
   pset_describe(&sim->ps, sim->f_kind, PF_UINT, 1, 1);
   pset_describe(&sim->ps, sim->f_id, PF_UINT, 1, 1);
 done:
@@ -127,12 +131,20 @@ static double velocity_scale(const struct scene *s, const struct geom *g)
   for (int k = 0; k < s->nsections; ++k)
     u2 = fmax(u2, s->sections[k].velocity * s->sections[k].velocity);
   if (s->flow.on) u2 = fmax(u2, s->flow.velocity * s->flow.velocity);
-  for (size_t i = 0; i < g->nfluid; ++i)
-    u2 = fmax(u2, g->v[2 * i] * g->v[2 * i] + g->v[2 * i + 1] * g->v[2 * i + 1]);
-  const double L = hypot(s->hi[0] - s->lo[0], s->hi[1] - s->lo[1]);
-  const double f = hypot(s->body_force[0], s->body_force[1]);
-  u2 =
-      fmax(u2, 2.0 * hypot(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]) * L);
+  const size_t dim = (size_t)g->dim;
+  for (size_t i = 0; i < g->nfluid; ++i) {
+    double v2 = 0.0;
+    for (size_t a = 0; a < dim; ++a) v2 += g->v[dim * i + a] * g->v[dim * i + a];
+    u2 = fmax(u2, v2);
+  }
+  /* (2-D: hypot(., 0) is exact, the figures as they were) */
+  const double lz = dim == 3 ? s->hi[2] - s->lo[2] : 0.0;
+  const double L = hypot(hypot(s->hi[0] - s->lo[0], s->hi[1] - s->lo[1]), lz);
+  const double f = hypot(hypot(s->body_force[0], s->body_force[1]), s->body_force[2]);
+  const double acc =
+      hypot(hypot(s->gravity[0] + s->body_force[0], s->gravity[1] + s->body_force[1]),
+            s->gravity[2] + s->body_force[2]);
+  u2 = fmax(u2, 2.0 * acc * L);
   if (s->nu > 0.0) u2 = fmax(u2, (f * L * L / s->nu) * (f * L * L / s->nu));
   return sqrt(u2);
 }
@@ -178,8 +190,15 @@ static enum clsph_status check_fluid_count(const struct sim *sim)
     }
     area += 0.5 * fabs(a);
   }
-  area = fmin(area, (s->hi[0] - s->lo[0]) * (s->hi[1] - s->lo[1]));
-  const double n = area / (s->dr * s->dr), bytes = n * (5.0 * sizeof(real) + 8.0);
+  double domain = 1.0;
+  for (int a = 0; a < s->dim; ++a) domain *= s->hi[a] - s->lo[a];
+  for (int r = 0; r < s->nregions && s->dim == 3; ++r) { /* 3-D: boxes */
+    const double *bx = s->regions[r].box3;
+    area += (bx[3] - bx[0]) * (bx[4] - bx[1]) * (bx[5] - bx[2]);
+  }
+  area = fmin(area, domain);
+  const double n = area / pow(s->dr, s->dim),
+               bytes = n * ((s->dim == 3 ? 9.0 : 5.0) * sizeof(real) + 8.0);
   CLSPH_CHECK(bytes <= (double)sim->dev->mem_limit, CLSPH_E_INPUT,
               "%s: the fluid regions hold about %.3g particles at dr = %g: their positions and "
               "velocities alone need %.0f MiB of device memory, more than the %.0f MiB the run "
@@ -205,6 +224,13 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   snprintf(where, sizeof where, "%s:%d", scene->case_path, scene->scheme_line);
   CLSPH_TRY(scheme_find(scene->scheme, where, &sim.scheme));
   CLSPH_TRY(check_options(scene, sim.scheme));
+  CLSPH_CHECK(scene->dim == 2 || sim.scheme->three_d, CLSPH_E_INPUT,
+              "%s: scheme %s runs 2-D scenes only%s; this scene is 3-D (its domain gives z): "
+              "isph-stabilized runs it",
+              where, sim.scheme->name,
+              strcmp(sim.scheme->wall_model, "usaw") == 0
+                  ? " (its semi-analytical walls are 2-D: segments and vertex particles)"
+                  : "");
   if (scene->turb.on) { /* a model the scheme has */
     int has = 0;
     for (const char *const *m = sim.scheme->turbulence; m != NULL && *m != NULL; ++m)
@@ -234,7 +260,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(smoothing_kind_from_name(scene->smoothing[0] ? scene->smoothing : sim.scheme->smoothing,
                                      &kind));
   double hr = scene->h_over_dr > 0.0 ? scene->h_over_dr : sim.scheme->h_over_dr;
-  CLSPH_TRY(smoothing_make(kind, 2, hr * scene->dr, &sim.sm));
+  CLSPH_TRY(smoothing_make(kind, scene->dim, hr * scene->dr, &sim.sm));
   /* particles */
   const char *model = sim.scheme->wall_model;
   const struct scene_option *wo = find_option(scene, "walls");
@@ -272,28 +298,30 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
               "scheme holds it at the fluid's density: give the weakly-compressible schemes one)",
               scene->case_path, sim.geom.has_rho0, sim.scheme->name);
   /* the cell grid: the domain, with room for wall and section layers on non-periodic axes */
-  sim.gspec.dim = 2;
+  const int dim = scene->dim;
+  sim.gspec.dim = dim;
   sim.gspec.sm = sim.sm;
   sim.gspec.support = sim.sm.support * (1.0 + sim.scheme->support_skin * fmax(scene->cfl, 1.0));
   double margin = (layers + 4) * scene->dr + sim.sm.support;
-  for (int a = 0; a < 2; ++a) {
+  for (int a = 0; a < dim; ++a) {
     sim.gspec.periodic[a] = scene->periodic[a];
     sim.gspec.lo[a] = scene->lo[a] - (scene->periodic[a] ? 0.0 : margin);
     sim.gspec.hi[a] = scene->hi[a] + (scene->periodic[a] ? 0.0 : margin);
   }
   /* and the particles parked behind the exits, with a cell to spare */
   for (size_t i = 0; i < sim.geom.n && sim.park.fraction > 0.0; ++i)
-    for (int a = 0; a < 2; ++a)
+    for (int a = 0; a < dim; ++a)
       if (!scene->periodic[a] && sim.geom.kind[i] == KIND_PARKED) {
-        sim.gspec.lo[a] = fmin(sim.gspec.lo[a], sim.geom.x[2 * i + a] - sim.gspec.support);
-        sim.gspec.hi[a] = fmax(sim.gspec.hi[a], sim.geom.x[2 * i + a] + sim.gspec.support);
+        sim.gspec.lo[a] = fmin(sim.gspec.lo[a], sim.geom.x[dim * i + a] - sim.gspec.support);
+        sim.gspec.hi[a] = fmax(sim.gspec.hi[a], sim.geom.x[dim * i + a] + sim.gspec.support);
       }
   for (size_t i = 0; i < sim.geom.n; ++i)
-    for (int a = 0; a < 2; ++a)
-      CLSPH_CHECK(scene->periodic[a] || (sim.geom.x[2 * i + a] >= sim.gspec.lo[a] &&
-                                         sim.geom.x[2 * i + a] < sim.gspec.hi[a]),
-                  CLSPH_E_INPUT, "%s: a particle at (%g, %g) lies outside the domain",
-                  scene->case_path, sim.geom.x[2 * i], sim.geom.x[2 * i + 1]);
+    for (int a = 0; a < dim; ++a)
+      CLSPH_CHECK(scene->periodic[a] || (sim.geom.x[dim * i + a] >= sim.gspec.lo[a] &&
+                                         sim.geom.x[dim * i + a] < sim.gspec.hi[a]),
+                  CLSPH_E_INPUT, "%s: a particle at (%g, %g%s) lies outside the domain",
+                  scene->case_path, sim.geom.x[dim * i], sim.geom.x[dim * i + 1],
+                  dim == 3 ? ", z beyond" : "");
   /* device state */
   CLSPH_TRY(build_program(&sim));
   CLSPH_TRY(add_fields(&sim));
@@ -321,8 +349,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   sim.h_deferred = malloc(SIM_DEFERRED * SIM_REDUCE_MAX_GROUPS * sizeof *sim.h_deferred);
   CLSPH_CHECK(sim.h_deferred != NULL, CLSPH_E_NOMEM, "out of memory");
   sim.speed_kind = SIM_KIND_UNSET;
-  sim.body_force[0] = scene->body_force[0];
-  sim.body_force[1] = scene->body_force[1];
+  for (int a = 0; a < 3; ++a) sim.body_force[a] = scene->body_force[a];
   sim.flow.force = scene->body_force[0];
   if (sim.scheme->create != NULL) CLSPH_TRY(sim.scheme->create(&sim, &sim.state));
   CLSPH_TRY(check_memory(&sim));
@@ -375,16 +402,18 @@ enum clsph_status sim_info(struct sim *sim)
          sim->digest);
   printf("spacing dr = %g m, smoothing %s, h = %g m (%g dr), support %g m\n", s->dr,
          smoothing_name(sim->sm.kind), sim->sm.h, sim->sm.h / s->dr, sim->sm.support);
-  printf("active: walls %s, periodic %s%s%s, gravity %s, body force %s, probes %d, profiles %d, "
+  printf("dimensions: %d\n", s->dim);
+  printf("active: walls %s, periodic %s%s%s%s, gravity %s, body force %s, probes %d, profiles %d, "
          "forces %d\n",
          sim->geom.nseg ? "usaw"
          : count[2]     ? "dummy"
                         : "none",
-         s->periodic[0] || s->periodic[1] ? "" : "none", s->periodic[0] ? "x" : "",
-         s->periodic[1] ? "y" : "", s->gravity[0] || s->gravity[1] ? "on" : "off",
-         s->flow.on                             ? "flow-rate control"
-         : s->body_force[0] || s->body_force[1] ? "on"
-                                                : "off",
+         s->periodic[0] || s->periodic[1] || s->periodic[2] ? "" : "none",
+         s->periodic[0] ? "x" : "", s->periodic[1] ? "y" : "", s->periodic[2] ? "z" : "",
+         s->gravity[0] || s->gravity[1] || s->gravity[2] ? "on" : "off",
+         s->flow.on                                                 ? "flow-rate control"
+         : s->body_force[0] || s->body_force[1] || s->body_force[2] ? "on"
+                                                                    : "off",
          s->nprobes, s->nprofiles, s->nforces);
   for (int i = 0; i < s->noptions; ++i) {
     if (s->options[i].is_number)
@@ -427,7 +456,8 @@ enum clsph_status sim_psolve_options(const struct sim *sim, struct psolve_option
   psolve_defaults(o);
   /* the neighbours within the support: the nonzeros of a row of the operator */
   const double q = sim->sm.support / s->dr;
-  o->row_estimate = 3.14159265358979 * q * q + 1.0;
+  o->row_estimate =
+      (s->dim == 3 ? 4.0 / 3.0 * 3.14159265358979 * q * q * q : 3.14159265358979 * q * q) + 1.0;
   for (int i = 0; i < s->noptions; ++i) {
     const struct scene_option *opt = &s->options[i];
     const char *key = NULL;

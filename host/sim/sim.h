@@ -62,7 +62,7 @@ struct sim {
   cl_kernel k_domain;   /* fluid outside the domain's box (domain.c) */
   cl_kernel k_invert;   /* inv[id[k]] = k */
   cl_mem d_inv;         /* current index of each original particle index (after sim_sort) */
-  double body_force[2]; /* body force now, m/s²: the scene's, x under flow-rate control */
+  double body_force[3]; /* body force now, m/s²: the scene's, x under flow-rate control */
   struct sim_flow flow; /* flow-rate control state (scene->flow.on) */
   cl_kernel k_slice;    /* reduction: x velocity and count of the fluid in the control slice */
   double time, dt;      /* simulated time and last step, s */
@@ -182,13 +182,14 @@ enum clsph_status sim_slice_velocity(struct sim *sim, double x0, double x1, doub
                                      double *count);
 /** @brief Number of nonzero entries of a uint field, reduced on the device. */
 enum clsph_status sim_count(struct sim *sim, cl_mem d_field, double *count);
-/** @brief Interpolate a real field at np points (host array of 2 doubles per point); `out` gets
+/** @brief Interpolate a real field at np points (host array of dim doubles per point); `out` gets
  *  ncomp values per point. order 0: Shepard; 1: first-order moving least squares, exact for a
  *  linear field (kernels/common/probe.cl). */
 enum clsph_status sim_sample(struct sim *sim, int field, int order, size_t np, const double *at,
                              double *out);
 /** @brief A real field at np probes (struct scene_probe): at a point probe, its interpolated value;
- *  at a face, the mean over its points (the midpoints of npts equal parts) of the points with
+ *  at a face, the mean over its points (scene_probe_points: a segment's npts midpoints, a disc's
+ *  lattice) of the points with
  *  fluid within the support (NaN, the interpolation's value where there is none, only when the
  *  whole face is dry). `out` gets ncomp values per probe. */
 enum clsph_status sim_sample_probes(struct sim *sim, int field, int np,

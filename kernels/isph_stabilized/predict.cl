@@ -65,6 +65,16 @@ realv stab_xstar(uint j, __global const realv *pos, __global const uint *kind,
   return pos[j] + dt * (kind[j] == STAB_FLUID ? ustar[j] : wall_vel[j]);
 }
 
+/* |n⊥·r|: r's distance from the line along the unit n (in 3-D, from the axis of the scan's cone) */
+real stab_across(realv nrm, realv r)
+{
+#if DIM == 3
+  return length(cross(nrm, r));
+#else
+  return fabs(nrm.x * r.y - nrm.y * r.x);
+#endif
+}
+
 /* Is the scan region of fluid i at x*_i empty (Marrone et al. 2010, CMAME 199:2734 sec 3.2)?
  * n = −∇s* / |∇s*| (the outward normal of the kernel sum at x*), T = x*_i + h n; a neighbour j
  * (fluid or dummy, at x*_j) fills it when |x_ji| ≥ √2 h and |x_j − T| < h, or |x_ji| < √2 h and
@@ -89,7 +99,7 @@ uint stab_scan_empty(uint i, realv xs, realv gss, const struct grid *gg,
     if (r2 >= gg->sm.support2) continue;
     if (r2 >= R(2.0) * h * h) {
       if (dot(rt, rt) < h * h) return 0u;
-    } else if (fabs(nrm.x * rj.y - nrm.y * rj.x) + fabs(dot(nrm, rt)) < h) {
+    } else if (stab_across(nrm, rj) + fabs(dot(nrm, rt)) < h) {
       return 0u;
     }
   }

@@ -24,6 +24,14 @@
 #ifndef STAB_DYNAMIC /* isph_stabilized.c stab_define: pressure_form = "dynamic" */
 #define STAB_DYNAMIC 0
 #endif
+#ifndef STAB_APPROACH_IMPACT /* stab_define: wall_approach = "impact" (ppe.cl) */
+#define STAB_APPROACH_IMPACT 0
+#endif
+/* wall_approach = "impact": a neighbour's approach counts when it reaches the wall within this many
+ * steps (isph-usaw's ISPH_IMPACT_STEPS, free_surface.cl) */
+#ifndef STAB_IMPACT_STEPS
+#define STAB_IMPACT_STEPS 10
+#endif
 #define STAB_FLUID 0u
 #define STAB_DUMMY 2u
 

@@ -28,12 +28,13 @@
  * Options: alpha (α, 0 to 1, default 0.01: S "around 1% or less"), wall_pressure ("neumann",
  * S sec 3.3, the default, or "pseudo_neumann", S sec 3.2), wall_velocity ("no_slip" or "slip")
  * or slip_ratio (β_s from 0 to 1, S eq 13), surface_threshold (β_fs, 0.8 to 0.995, default
- * 0.97), surface_detection ("density", the default, or "scan": Marrone et al. 2010's scan region
- * must be empty too, for walls that cut the lattice; predict.cl), pressure_form ("total", the
- * paper's symmetric gradient of the pressure, the default, or "dynamic": the pressure equation
- * solved for p − ρ0 a·x, the hydrostatic part exact; project.cl, with the modified virtual marker
- * only), shifting (C, 0 off: particle shifting after the motion, not the paper's; shift.cl),
- * wall_layers (checked against the
+ * 0.97 in 2-D, 0.9 in 3-D), surface_detection ("density", the default, or "scan": Marrone et al.
+ * 2010's scan region must be empty too, for walls that cut the lattice; predict.cl), pressure_form
+ * ("total", the paper's symmetric gradient of the pressure, the default, or "dynamic": the pressure
+ * equation solved for p − ρ0 a·x, the hydrostatic part exact; project.cl, with the modified virtual
+ * marker only), wall_approach ("particles", the 2-D default, or "impact", the 3-D one: which
+ * approaches to a wall the modified virtual marker counts; ppe.cl), shifting (C, 0 off:
+ * particle shifting after the motion, not the paper's; shift.cl), wall_layers (checked against the
  * support the markers need) and the pressure solver's. The gate (options gate, a wall group,
  * gate_speed, gate_start, gate_stop): that group's dummies lift against gravity from gate_start to
  * gate_stop (gate_step), and the modified virtual marker carries their acceleration, f = g − a_W
@@ -67,13 +68,14 @@ struct stab {
   double beta_s;  /* slip ratio: 0 no-slip, 1 free slip (S eq 13) */
   double sigma0;  /* Σ dr² W over the full lattice support, in the build's precision */
   double umax;    /* largest fluid speed at the last max_dt, m/s */
+  int dim;        /* the scene's dimension */
   /* the gate: the dummies of the walls of group `gate` lift along −g/|g| at gate_speed from
    * gate_start to gate_stop (Lobovsky et al.'s set-up, S sec 4.2) */
   int has_gate;
   char gate[SCENE_NAME];
-  double gate_speed, gate_start, gate_stop, gate_dir[2];
-  double v_prev[2]; /* the gate's velocity over the last step (persisted) */
-  real2 a_gate;     /* its acceleration over this step */
+  double gate_speed, gate_start, gate_stop, gate_dir[3];
+  double v_prev[3];        /* the gate's velocity over the last step (persisted) */
+  struct realv_arg a_gate; /* its acceleration over this step */
   int f_p, f_fs, f_rhostar, f_dist, f_normal, f_uwall, f_ustar, f_div, f_rhs, f_dir, f_acc, f_gate,
       f_pshift;
   cl_kernel k_lattice, k_wall_vel, k_wall_p, k_predict, k_source, k_project, k_move, k_diag0,
@@ -94,11 +96,22 @@ static const char *const sources[] = {"common/blas1.cl",
                                       "isph_stabilized/project.cl",
                                       "isph_stabilized/shift.cl",
                                       NULL};
-static const char *const options[] = {"alpha",         "wall_pressure",     "wall_velocity",
-                                      "slip_ratio",    "surface_threshold", "surface_detection",
-                                      "pressure_form", "shifting",          "wall_layers",
-                                      "gate",          "gate_speed",        "gate_start",
-                                      "gate_stop",     PSOLVE_OPTION_NAMES, NULL};
+static const char *const options[] = {"alpha",
+                                      "wall_pressure",
+                                      "wall_velocity",
+                                      "slip_ratio",
+                                      "surface_threshold",
+                                      "surface_detection",
+                                      "pressure_form",
+                                      "shifting",
+                                      "wall_layers",
+                                      "gate",
+                                      "gate_speed",
+                                      "gate_start",
+                                      "gate_stop",
+                                      "wall_approach",
+                                      PSOLVE_OPTION_NAMES,
+                                      NULL};
 
 static const struct scene_option *option(const struct scene *s, const char *key)
 {
@@ -181,7 +194,12 @@ static enum clsph_status read_options(const struct sim *sim, struct stab *b)
   CLSPH_TRY(option_number(sc, "slip_ratio", 0.0, 1.0,
                           "the slip ratio β_s of the walls (Asai et al. 2013, S eq 13)",
                           " (0 no-slip, 1 free slip)", &b->beta_s));
-  b->beta_fs = 0.97; /* the top row of a lattice reads 0.78 at h = 1.2 dr, the second 0.997 */
+  /* 2-D: the top row of a lattice reads 0.78 at h = 1.2 dr, the second 0.997. 3-D, measured
+   * (cases/hydrostatic3d.lua): the top row 0.79-0.81, but the jostle of the fluid below opens
+   * gaps that read 0.963 (dr = H/20: four particles 0.1 dr off the lattice at t = 0.25 s), which
+   * 0.97 takes for free surface (p = 0 in the water, 88% off); at H/10 over 2 s the pressure RMS
+   * is 0.063 with 0.97 and particles cross the walls at 18 steps, 0.0234 over 4 s with 0.9 */
+  b->beta_fs = sc->dim == 3 ? 0.9 : 0.97;
   CLSPH_TRY(option_number(sc, "surface_threshold", 0.8, 0.995, "the free-surface threshold β_fs",
                           " (free surface where ρ* / ρ0 < β_fs)", &b->beta_fs));
   static const char *const detect_names[] = {"density", "scan", NULL};
@@ -202,12 +220,12 @@ static enum clsph_status read_options(const struct sim *sim, struct stab *b)
               "mapped from the last step's and does not hold the hydrostatic part exactly",
               sc->case_path, sc->scheme_line);
   /* P = p − ρ0 a·x jumps by ρ0 a·L across a periodic axis along which a pushes */
-  for (int a = 0; a < 2 && b->dynamic; ++a)
+  for (int a = 0; a < sc->dim && b->dynamic; ++a)
     CLSPH_CHECK(!sc->periodic[a] || sc->gravity[a] + sc->body_force[a] == 0.0, CLSPH_E_INPUT,
                 "%s:%d: isph-stabilized option pressure_form = \"dynamic\" cannot run with gravity "
                 "or a body force along the periodic %c axis (%g m/s²): its unknown p − ρ0 a·x "
                 "would jump across the period",
-                sc->case_path, sc->scheme_line, "xy"[a], sc -> gravity[a] + sc -> body_force[a]);
+                sc->case_path, sc->scheme_line, "xyz"[a], sc -> gravity[a] + sc -> body_force[a]);
   /* the gate */
   const struct scene_option *go = option(sc, "gate");
   static const char *const gate_keys[] = {"gate_speed", "gate_start", "gate_stop"};
@@ -248,9 +266,10 @@ static enum clsph_status read_options(const struct sim *sim, struct stab *b)
     CLSPH_CHECK(b->gate_stop > b->gate_start, CLSPH_E_INPUT,
                 "%s:%d: isph-stabilized option gate_stop = %g s must come after gate_start = %g s",
                 sc->case_path, sc->scheme_line, b->gate_stop, b->gate_start);
-    const double gx = sc->gravity[0], gy = sc->gravity[1], gn = hypot(gx, gy);
-    b->gate_dir[0] = gn > 0.0 ? -gx / gn : 0.0; /* against gravity, +y without it */
-    b->gate_dir[1] = gn > 0.0 ? -gy / gn : 1.0;
+    const double *g = sc->gravity;
+    const double gn = hypot(hypot(g[0], g[1]), g[2]);
+    for (int a = 0; a < 3; ++a) /* against gravity, +y without it */
+      b->gate_dir[a] = gn > 0.0 ? -g[a] / gn : a == 1;
   }
   /* the dummies fill layers dr behind the wall; the fluid's first row, dr/2 in front of it, sees
    * support − dr/2 behind it */
@@ -286,10 +305,12 @@ done:
   return st;
 }
 
-static real2 body_accel(const struct sim *sim)
+static struct realv_arg body_accel(const struct sim *sim)
 {
   const struct scene *sc = sim->scene;
-  return dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
+  double a[3];
+  for (int k = 0; k < 3; ++k) a[k] = sc->gravity[k] + sim->body_force[k];
+  return dev_realv(sc->dim, a);
 }
 
 /* p of the dummies by the pseudo-Neumann mapping (walls.cl); into rhs too when write_rhs */
@@ -299,13 +320,13 @@ static enum clsph_status wall_pressure(struct sim *sim, struct stab *b, cl_uint 
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n;
   const real rho = (real)sim->scene->rho0, d0 = (real)b->d0;
-  const real2 accel = body_accel(sim);
+  const struct realv_arg accel = body_accel(sim);
   cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
   cl_mem kind = pset_mem(ps, sim->f_kind), dist = pset_mem(ps, b->f_dist);
   cl_mem normal = pset_mem(ps, b->f_normal), p = pset_mem(ps, b->f_p);
   cl_mem rhs = pset_mem(ps, b->f_rhs);
   CLSPH_TRY(KERN_SET(b->k_wall_p, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
-                     KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(rho), KARG(accel),
+                     KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(rho), KARGV(accel),
                      KARG(write_rhs), KARG(d0), KARG(p), KARG(rhs), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_wall_p, n, NULL));
 done:
@@ -390,9 +411,9 @@ static enum clsph_status hydro_shift(struct sim *sim, struct stab *b, double sig
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n;
   const real rho = (real)sim->scene->rho0, sg = (real)sign;
-  const real2 accel = body_accel(sim);
+  const struct realv_arg accel = body_accel(sim);
   cl_mem pos = pset_mem(ps, sim->f_pos), p = pset_mem(ps, b->f_p);
-  CLSPH_TRY(KERN_SET(b->k_shift, KARG(n), KARG(pos), KARG(rho), KARG(accel), KARG(sg), KARG(p)));
+  CLSPH_TRY(KERN_SET(b->k_shift, KARG(n), KARG(pos), KARG(rho), KARGV(accel), KARG(sg), KARG(p)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_shift, n, NULL));
 done:
   return st;
@@ -405,7 +426,7 @@ static enum clsph_status wall_neumann(struct sim *sim, struct stab *b, double dt
   struct pset *ps = &sim->ps;
   const cl_uint n = (cl_uint)ps->n;
   const real rho = (real)sim->scene->rho0, d0 = (real)b->d0, rdt = (real)dt;
-  const real2 force = body_accel(sim); /* f = g − a_W: a_W of the gate in the kernel */
+  const struct realv_arg force = body_accel(sim); /* f = g − a_W: a_W of the gate in the kernel */
   cl_mem pos = pset_mem(ps, sim->f_pos), vol = pset_mem(ps, sim->f_vol);
   cl_mem kind = pset_mem(ps, sim->f_kind), dist = pset_mem(ps, b->f_dist);
   cl_mem normal = pset_mem(ps, b->f_normal), rhs = pset_mem(ps, b->f_rhs);
@@ -415,35 +436,65 @@ static enum clsph_status wall_neumann(struct sim *sim, struct stab *b, double dt
   cl_mem gate = b->has_gate ? pset_mem(ps, b->f_gate) : NULL;
   CLSPH_TRY(KERN_SET(b->k_neumann, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
                      KARG(pos), KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(rho),
-                     KARG(force), KARG(d0), KARG(p), KARG(vel), KARG(uwall), KARG(rdt), KARG(gate),
-                     KARG(b->a_gate), KARG(dir), KARG(rhs), KARG(sim->d_flags)));
+                     KARGV(force), KARG(d0), KARG(p), KARG(vel), KARG(uwall), KARG(rdt), KARG(gate),
+                     KARGV(b->a_gate), KARG(dir), KARG(rhs), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_neumann, n, NULL));
 done:
   return st;
 }
 
-/* A dummy of wall w within 0.75 dr of (x, y) whose normal does not face away from n (at most 90°
- * from it: behind one face of a solid's convex right-angled corner lie the dummies of the other
- * face, turned by 90°; a plate's far face turns them by 180°)? The dummies are binned in cells of
- * side dr from (x0, y0), nx x ny of them (first[c] .. first[c + 1] in `order`). */
-static int dummy_near(const struct geom *geo, const size_t *order, const size_t *first, int nx,
-                      int ny, double x0, double y0, double dr, double x, double y, int w,
+/* The dummies binned in cells of side dr from lo: nc[0] x nc[1] x nc[2] of them (nc[2] = 1 in
+ * 2-D), first[c] .. first[c + 1] in `order`. */
+struct dummy_bins {
+  int dim;
+  double lo[3], dr;
+  long nc[3];
+  size_t *order, *first;
+};
+
+static long bin_of(const struct dummy_bins *db, const double *x, int a)
+{
+  return (long)floor((x[a] - db->lo[a]) / db->dr);
+}
+
+/* A dummy of wall w within 0.75 dr of y whose normal does not face away from n (at most 90° from
+ * it: behind one face of a solid's convex right-angled corner lie the dummies of the other face,
+ * turned by 90°; a plate's far face turns them by 180°)? */
+static int dummy_near(const struct geom *geo, const struct dummy_bins *db, const double *y, int w,
                       const double *n)
 {
-  const int cx = (int)floor((x - x0) / dr), cy = (int)floor((y - y0) / dr);
-  for (int b = cy - 1; b <= cy + 1; ++b)
-    for (int a = cx - 1; a <= cx + 1; ++a) {
-      if (a < 0 || b < 0 || a >= nx || b >= ny) continue;
-      const size_t c = (size_t)b * (size_t)nx + (size_t)a;
-      for (size_t k = first[c]; k < first[c + 1]; ++k) {
-        const size_t d = order[k];
-        const double *q = geo->x + 2 * d, *m = geo->normal + 2 * d;
-        if (geo->group[d] == w && hypot(q[0] - x, q[1] - y) < 0.75 * dr &&
-            m[0] * n[0] + m[1] * n[1] > -1e-6)
-          return 1;
+  const int dim = db->dim;
+  long c[3] = {0, 0, 0};
+  for (int a = 0; a < dim; ++a) c[a] = bin_of(db, y, a);
+  for (long kz = dim == 3 ? c[2] - 1 : 0; kz <= (dim == 3 ? c[2] + 1 : 0); ++kz)
+    for (long ky = c[1] - 1; ky <= c[1] + 1; ++ky)
+      for (long kx = c[0] - 1; kx <= c[0] + 1; ++kx) {
+        if (kx < 0 || ky < 0 || kz < 0 || kx >= db->nc[0] || ky >= db->nc[1] || kz >= db->nc[2])
+          continue;
+        const size_t cell =
+            ((size_t)kz * (size_t)db->nc[1] + (size_t)ky) * (size_t)db->nc[0] + (size_t)kx;
+        for (size_t k = db->first[cell]; k < db->first[cell + 1]; ++k) {
+          const size_t d = db->order[k];
+          const double *q = geo->x + (size_t)dim * d, *m = geo->normal + (size_t)dim * d;
+          double r2 = 0.0, mn = 0.0;
+          for (int a = 0; a < dim; ++a) {
+            r2 += (q[a] - y[a]) * (q[a] - y[a]);
+            mn += m[a] * n[a];
+          }
+          if (geo->group[d] == w && r2 < 0.5625 * db->dr * db->dr && mn > -1e-6) return 1;
+        }
       }
-    }
   return 0;
+}
+
+/* a point as "(x, y)" or "(x, y, z)" */
+static const char *point_text(char *buf, size_t size, const double *x, int dim)
+{
+  if (dim == 3)
+    snprintf(buf, size, "(%g, %g, %g)", x[0], x[1], x[2]);
+  else
+    snprintf(buf, size, "(%g, %g)", x[0], x[1]);
+  return buf;
 }
 
 /* The walls' geometry against what the virtual markers need (host, in double, once):
@@ -459,86 +510,94 @@ static enum clsph_status check_walls(const struct sim *sim, const struct stab *b
   enum clsph_status st = CLSPH_OK;
   const struct scene *sc = sim->scene;
   const struct geom *geo = &sim->geom;
+  const int dim = sc->dim;
   const double dr = sc->dr, tol = 1e-9 * dr;
-  size_t *order = NULL, *first = NULL;
-  double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+  struct dummy_bins db = {.dim = dim, .dr = dr, .nc = {1, 1, 1}};
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  char t0[96], t1[96], t2[96];
   size_t nd = 0;
   for (size_t i = 0; i < geo->n; ++i) {
     if (geo->kind[i] != KIND_DUMMY) continue;
     ++nd;
-    const double *x0 = geo->x + 2 * i, *n = geo->normal + 2 * i;
+    const double *x0 = geo->x + (size_t)dim * i, *n = geo->normal + (size_t)dim * i;
     const struct scene_wall *w = &sc->walls[geo->group[i]];
     const int gate = b->has_gate && strcmp(w->group, b->gate) == 0;
     const double lift = gate ? b->gate_speed * (b->gate_stop - b->gate_start) : 0.0;
-    const double x1[2] = {x0[0] + lift * b->gate_dir[0], x0[1] + lift * b->gate_dir[1]};
-    for (int a = 0; a < 2; ++a) {
+    double x1[3] = {0.0, 0.0, 0.0}, m[3] = {0.0, 0.0, 0.0};
+    for (int a = 0; a < dim; ++a) x1[a] = x0[a] + lift * b->gate_dir[a];
+    for (int a = 0; a < dim; ++a) {
       lo[a] = fmin(lo[a], x0[a]);
       hi[a] = fmax(hi[a], x0[a]);
       CLSPH_CHECK(!gate || sc->periodic[a] ||
                       (x1[a] >= sim->gspec.lo[a] && x1[a] < sim->gspec.hi[a]),
                   CLSPH_E_INPUT,
                   "%s:%d: isph-stabilized: the gate (group '%s') leaves the domain: after its "
-                  "lift of %g m its dummy from (%g, %g) is at (%g, %g); lower gate_speed or "
-                  "gate_stop",
-                  sc->case_path, w->line, w->group, lift, x0[0], x0[1], x1[0], x1[1]);
+                  "lift of %g m its dummy from %s is at %s; lower gate_speed or gate_stop",
+                  sc->case_path, w->line, w->group, lift, point_text(t0, sizeof t0, x0, dim),
+                  point_text(t1, sizeof t1, x1, dim));
     }
-    for (int e = 0; e < (gate ? 2 : 1); ++e)
-      for (int a = 0; a < 2; ++a) {
-        const double *x = e == 0 ? x0 : x1;
-        const double m = x[a] + 2.0 * geo->dist[i] * n[a];
-        CLSPH_CHECK(
-            sc->periodic[a] || (m >= sc->lo[a] - tol && m <= sc->hi[a] + tol), CLSPH_E_INPUT,
-            "%s:%d: wall (group '%s'): the virtual marker of the dummy at (%g, %g)%s "
-            "falls at (%g, %g), outside the domain [%g, %g] x [%g, %g]: the wall's fluid "
-            "side faces the domain's edge closer than the %.3g m (twice the dummy's "
-            "depth) its markers reach",
-            sc->case_path, w->line, w->group, x[0], x[1], e == 1 ? " after the gate's lift" : "",
-            x[0] + 2.0 * geo->dist[i] * n[0], x[1] + 2.0 * geo->dist[i] * n[1], sc->lo[0],
-            sc->hi[0], sc->lo[1], sc->hi[1], 2.0 * geo->dist[i]);
-      }
+    for (int e = 0; e < (gate ? 2 : 1); ++e) {
+      const double *x = e == 0 ? x0 : x1;
+      for (int a = 0; a < dim; ++a) m[a] = x[a] + 2.0 * geo->dist[i] * n[a];
+      for (int a = 0; a < dim; ++a)
+        CLSPH_CHECK(sc->periodic[a] || (m[a] >= sc->lo[a] - tol && m[a] <= sc->hi[a] + tol),
+                    CLSPH_E_INPUT,
+                    "%s:%d: wall (group '%s'): the virtual marker of the dummy at %s%s falls at "
+                    "%s, outside the domain along %c ([%g, %g]): the wall's fluid side faces the "
+                    "domain's edge closer than the %.3g m (twice the dummy's depth) its markers "
+                    "reach",
+                    sc->case_path, w->line, w->group, point_text(t0, sizeof t0, x, dim),
+                    e == 1 ? " after the gate's lift" : "", point_text(t1, sizeof t1, m, dim),
+                    "xyz"[a], sc -> lo[a], sc -> hi[a], 2.0 * geo -> dist[i]);
+    }
   }
   if (nd == 0) goto done;
   /* bin the dummies in cells of side dr */
-  const int nx = (int)floor((hi[0] - lo[0]) / dr) + 1, ny = (int)floor((hi[1] - lo[1]) / dr) + 1;
-  const size_t ncell = (size_t)nx * (size_t)ny;
-  order = malloc(nd * sizeof *order);
-  first = calloc(ncell + 1, sizeof *first);
-  CLSPH_CHECK(order != NULL && first != NULL, CLSPH_E_NOMEM, "out of memory");
+  size_t ncell = 1;
+  for (int a = 0; a < dim; ++a) {
+    db.lo[a] = lo[a];
+    db.nc[a] = (long)floor((hi[a] - lo[a]) / dr) + 1;
+    ncell *= (size_t)db.nc[a];
+  }
+  db.order = malloc(nd * sizeof *db.order);
+  db.first = calloc(ncell + 1, sizeof *db.first);
+  CLSPH_CHECK(db.order != NULL && db.first != NULL, CLSPH_E_NOMEM, "out of memory");
 #define CELL(i)                                                                                    \
-  ((size_t)floor((geo->x[2 * (i) + 1] - lo[1]) / dr) * (size_t)nx +                                \
-   (size_t)floor((geo->x[2 * (i)] - lo[0]) / dr))
+  (((size_t)(dim == 3 ? bin_of(&db, geo->x + 3 * (i), 2) : 0) * (size_t)db.nc[1] +                 \
+    (size_t)bin_of(&db, geo->x + (size_t)dim * (i), 1)) *                                          \
+       (size_t)db.nc[0] +                                                                          \
+   (size_t)bin_of(&db, geo->x + (size_t)dim * (i), 0))
   for (size_t i = 0; i < geo->n; ++i)
-    if (geo->kind[i] == KIND_DUMMY) ++first[CELL(i) + 1];
-  for (size_t c = 0; c < ncell; ++c) first[c + 1] += first[c];
+    if (geo->kind[i] == KIND_DUMMY) ++db.first[CELL(i) + 1];
+  for (size_t c = 0; c < ncell; ++c) db.first[c + 1] += db.first[c];
   for (size_t i = 0; i < geo->n; ++i) /* first[c] moves to the cell's end; restored below */
-    if (geo->kind[i] == KIND_DUMMY) order[first[CELL(i)]++] = i;
-  for (size_t c = ncell; c > 0; --c) first[c] = first[c - 1];
-  first[0] = 0;
+    if (geo->kind[i] == KIND_DUMMY) db.order[db.first[CELL(i)]++] = i;
+  for (size_t c = ncell; c > 0; --c) db.first[c] = db.first[c - 1];
+  db.first[0] = 0;
 #undef CELL
   const double reach = sim->sm.support - 0.5 * dr;
   const int steps = (int)ceil(reach / dr - 1e-9);
   for (size_t i = 0; i < geo->n; ++i) {
     if (geo->kind[i] != KIND_DUMMY || geo->dist[i] > dr) continue;
-    const double *x = geo->x + 2 * i, *n = geo->normal + 2 * i;
-    const double q[2] = {x[0] + geo->dist[i] * n[0], x[1] + geo->dist[i] * n[1]};
+    const double *x = geo->x + (size_t)dim * i, *n = geo->normal + (size_t)dim * i;
+    double q[3] = {0.0, 0.0, 0.0}, y[3] = {0.0, 0.0, 0.0};
+    for (int a = 0; a < dim; ++a) q[a] = x[a] + geo->dist[i] * n[a];
     for (int k = 1; k <= steps; ++k) {
       const double depth = fmin(k * dr, reach) + 0.5 * dr;
-      const double y[2] = {q[0] - depth * n[0], q[1] - depth * n[1]};
+      for (int a = 0; a < dim; ++a) y[a] = q[a] - depth * n[a];
       const struct scene_wall *w = &sc->walls[geo->group[i]];
-      CLSPH_CHECK(
-          dummy_near(geo, order, first, nx, ny, lo[0], lo[1], dr, y[0], y[1], geo->group[i], n),
-          CLSPH_E_INPUT,
-          "%s:%d: wall (group '%s') is too thin for the virtual markers: behind (%g, %g) "
-          "the solid holds no dummy of this side %.3g m deep, and the fluid next to it "
-          "reaches %.3g m behind the wall (the kernel support %.3g m less half a spacing, "
-          "dr = %g): make it at least %.3g m thick",
-          sc->case_path, w->line, w->group, q[0], q[1], depth, reach, sim->sm.support, dr,
-          2.0 * reach);
+      CLSPH_CHECK(dummy_near(geo, &db, y, geo->group[i], n), CLSPH_E_INPUT,
+                  "%s:%d: wall (group '%s') is too thin for the virtual markers: behind %s "
+                  "the solid holds no dummy of this side %.3g m deep, and the fluid next to it "
+                  "reaches %.3g m behind the wall (the kernel support %.3g m less half a spacing, "
+                  "dr = %g): make it at least %.3g m thick",
+                  sc->case_path, w->line, w->group, point_text(t2, sizeof t2, q, dim), depth, reach,
+                  sim->sm.support, dr, 2.0 * reach);
     }
   }
 done:
-  free(order);
-  free(first);
+  free(db.order);
+  free(db.first);
   return st;
 }
 
@@ -563,19 +622,27 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
     CLSPH_CHECK(geo->kind[i] == KIND_FLUID || geo->kind[i] == KIND_DUMMY, CLSPH_E_UNSUPPORTED,
                 "%s: isph-stabilized has a particle of kind %d (fluid and dummy walls only)",
                 sc->case_path, geo->kind[i]);
+  b->dim = sc->dim;
+  const double still[3] = {0.0, 0.0, 0.0};
+  b->a_gate = dev_realv(sc->dim, still); /* until a gate moves (gate_step) */
   CLSPH_TRY(read_options(sim, b));
   CLSPH_TRY(check_walls(sim, b));
   CLSPH_TRY(sim_psolve_options(sim, &b->popt));
   /* fields: the wall geometry of the dummies, then the scheme's state */
   struct pset *ps = &sim->ps;
-  const size_t rv = 2 * sizeof(real);
-  host = calloc(2 * geo->n + 1, sizeof *host);
+  const size_t dim = (size_t)sc->dim, stride = dim == 3 ? 4 : 2; /* realv */
+  const size_t rv = stride * sizeof(real);
+  host = calloc(stride * geo->n + 1, sizeof *host);
   CLSPH_CHECK(host != NULL, CLSPH_E_NOMEM, "out of memory");
   for (size_t i = 0; i < geo->n; ++i) host[i] = (real)geo->dist[i];
   CLSPH_TRY(pset_add(ps, sim->dev, "wall_dist", sizeof(real), host, &b->f_dist));
-  for (size_t i = 0; i < 2 * geo->n; ++i) host[i] = (real)geo->normal[i];
+  /* (the padding of a 3-D real4 stays 0: every length and dot product reads it) */
+  memset(host, 0, (stride * geo->n + 1) * sizeof *host);
+  for (size_t i = 0; i < geo->n; ++i)
+    for (size_t a = 0; a < dim; ++a) host[stride * i + a] = (real)geo->normal[dim * i + a];
   CLSPH_TRY(pset_add(ps, sim->dev, "wall_normal", rv, host, &b->f_normal));
-  for (size_t i = 0; i < 2 * geo->n; ++i) host[i] = (real)geo->v[i];
+  for (size_t i = 0; i < geo->n; ++i)
+    for (size_t a = 0; a < dim; ++a) host[stride * i + a] = (real)geo->v[dim * i + a];
   CLSPH_TRY(pset_add(ps, sim->dev, "wall_vel", rv, host, &b->f_uwall));
   for (size_t i = 0; i < geo->n; ++i) /* fill { pressure }: the first guess and wall mapping */
     host[i] = i < geo->nfluid && isfinite(geo->p0[i]) ? (real)geo->p0[i] : 0;
@@ -606,8 +673,8 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
     pset_describe(ps, b->f_gate, PF_UINT, 0, 0);
   }
   if (b->c_shift > 0.0) {
-    CLSPH_TRY(pset_add(ps, sim->dev, "shift", 2 * sizeof(real), NULL, &b->f_pshift));
-    pset_describe(ps, b->f_pshift, PF_REAL, 2, 0);
+    CLSPH_TRY(pset_add(ps, sim->dev, "shift", rv, NULL, &b->f_pshift));
+    pset_describe(ps, b->f_pshift, PF_REAL, (int)dim, 0);
   }
   CLSPH_TRY(pset_add(ps, sim->dev, "dirichlet", sizeof(cl_uint), NULL, &b->f_dir));
   pset_describe(ps, b->f_dir, PF_UINT, 0, 0);
@@ -672,21 +739,27 @@ static enum clsph_status gate_step(struct sim *sim, struct stab *b, double dt)
   enum clsph_status st = CLSPH_OK;
   const double t0 = sim->time, t1 = t0 + dt;
   const double moving = fmax(0.0, fmin(t1, b->gate_stop) - fmax(t0, b->gate_start));
-  double v[2];
-  for (int a = 0; a < 2; ++a) v[a] = b->gate_speed * moving / dt * b->gate_dir[a];
-  b->a_gate = dev_real2((v[0] - b->v_prev[0]) / dt, (v[1] - b->v_prev[1]) / dt);
-  if (moving > 0.0 || v[0] != b->v_prev[0] || v[1] != b->v_prev[1]) {
+  const int dim = sim->scene->dim;
+  double v[3], acc[3], disp[3];
+  int changed = moving > 0.0;
+  for (int a = 0; a < 3; ++a) {
+    v[a] = b->gate_speed * moving / dt * b->gate_dir[a];
+    acc[a] = (v[a] - b->v_prev[a]) / dt;
+    disp[a] = v[a] * dt;
+    changed |= v[a] != b->v_prev[a];
+  }
+  b->a_gate = dev_realv(dim, acc);
+  if (changed) {
     struct pset *ps = &sim->ps;
     const cl_uint n = (cl_uint)ps->n;
-    const real2 disp = dev_real2(v[0] * dt, v[1] * dt), rv = dev_real2(v[0], v[1]);
+    const struct realv_arg dv = dev_realv(dim, disp), rv = dev_realv(dim, v);
     cl_mem gate = pset_mem(ps, b->f_gate), pos = pset_mem(ps, sim->f_pos);
     cl_mem uwall = pset_mem(ps, b->f_uwall);
-    CLSPH_TRY(KERN_SET(b->k_wall_move, KARG(n), KARG(gate), KARG(disp), KARG(rv), KARG(pos),
+    CLSPH_TRY(KERN_SET(b->k_wall_move, KARG(n), KARG(gate), KARGV(dv), KARGV(rv), KARG(pos),
                        KARG(uwall)));
     CLSPH_TRY(kern_launch(sim->dev, b->k_wall_move, n, NULL));
   }
-  b->v_prev[0] = v[0];
-  b->v_prev[1] = v[1];
+  for (int a = 0; a < 3; ++a) b->v_prev[a] = v[a];
 done:
   return st;
 }
@@ -717,7 +790,7 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   const real rdt = (real)dt, rho = (real)sc->rho0, nu = (real)sc->nu;
   const real beta_s = (real)b->beta_s, beta_fs = (real)b->beta_fs, alpha = (real)b->alpha;
   const real inv_sigma0 = (real)(1.0 / b->sigma0);
-  const real2 accel = body_accel(sim);
+  const struct realv_arg accel = body_accel(sim);
   const real fs_offset = (real)(0.5 * sc->dr), d0 = (real)b->d0;
   const int neumann = b->mode == 1;
 
@@ -728,24 +801,25 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   n = (cl_uint)ps->n;
   CLSPH_TRY(KERN_SET(b->k_wall_vel, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
                      KARG(pos), KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(uwall),
-                     KARG(beta_s), KARG(rdt), KARG(accel), KARG(vel), KARG(ustar),
+                     KARG(beta_s), KARG(rdt), KARGV(accel), KARG(vel), KARG(ustar),
                      KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, b->k_wall_vel, n, NULL));
   /* 2. the prediction */
   CLSPH_TRY(op_prefix(sim, b->k_predict, &n));
   {
-    const struct karg a[] = {KARG(kind),  KARG(vel),   KARG(nu),          KARG(rdt),
-                             KARG(accel), KARG(ustar), KARG(sim->d_flags)};
+    const struct karg a[] = {KARG(kind),   KARG(vel),   KARG(nu),          KARG(rdt),
+                             KARGV(accel), KARG(ustar), KARG(sim->d_flags)};
     CLSPH_TRY(set_from(b->k_predict, 6, sizeof a / sizeof *a, a));
   }
   CLSPH_TRY(kern_launch(sim->dev, b->k_predict, n, NULL));
   /* 3. s* at x*, the free surface and the source (A12, S eq 8) */
   CLSPH_TRY(op_prefix(sim, b->k_source, &n));
   {
-    const struct karg a[] = {
-        KARG(kind),    KARG(ustar), KARG(uwall), KARG(rdt),   KARG(inv_sigma0), KARG(beta_fs),
-        KARG(b->scan), KARG(alpha), KARG(rho),   KARG(accel), KARG(fs_offset),  KARG(d0),
-        KARG(rhostar), KARG(fs),    KARG(dir),   KARG(div),   KARG(rhs),        KARG(sim->d_flags)};
+    const struct karg a[] = {KARG(kind),       KARG(ustar),       KARG(uwall),     KARG(rdt),
+                             KARG(inv_sigma0), KARG(beta_fs),     KARG(b->scan),   KARG(alpha),
+                             KARG(rho),        KARGV(accel),      KARG(fs_offset), KARG(d0),
+                             KARG(rhostar),    KARG(fs),          KARG(dir),       KARG(div),
+                             KARG(rhs),        KARG(sim->d_flags)};
     CLSPH_TRY(set_from(b->k_source, 6, sizeof a / sizeof *a, a));
   }
   CLSPH_TRY(kern_launch(sim->dev, b->k_source, n, NULL));
@@ -776,8 +850,8 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   const real coef = (real)(dt / sc->rho0), band = (real)(0.5 * sc->dr);
   CLSPH_TRY(op_prefix(sim, b->k_project, &n));
   {
-    const struct karg a[] = {KARG(kind),  KARG(ustar), KARG(p),   KARG(coef), KARG(rdt),
-                             KARG(accel), KARG(vel),   KARG(acc), KARG(fs),   KARG(sim->d_flags)};
+    const struct karg a[] = {KARG(kind),   KARG(ustar), KARG(p),   KARG(coef), KARG(rdt),
+                             KARGV(accel), KARG(vel),   KARG(acc), KARG(fs),   KARG(sim->d_flags)};
     CLSPH_TRY(set_from(b->k_project, 6, sizeof a / sizeof *a, a));
   }
   CLSPH_TRY(kern_launch(sim->dev, b->k_project, n, NULL));
@@ -824,8 +898,10 @@ static enum clsph_status stab_max_dt(struct sim *sim, void *state, double *dt)
   for (int w = 0; w < s->nwalls; ++w) /* a sliding wall drives the fluid */
     u = fmax(u, hypot(s->walls[w].velocity[0], s->walls[w].velocity[1]));
   if (b->has_gate && sim->time < b->gate_stop) u = fmax(u, b->gate_speed); /* the gate's moves */
-  const double a = hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]);
-  double am = 0.0; /* the last step's largest acceleration */
+  const double a =
+      hypot(hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]),
+            s->gravity[2] + sim->body_force[2]); /* (2-D: hypot(., 0) is exact) */
+  double am = 0.0;                               /* the last step's largest acceleration */
   if (sim->step > 0) CLSPH_TRY(sim_max_norm(sim, pset_mem(&sim->ps, b->f_acc), KIND_FLUID, &am));
   double d = HUGE_VAL;
   if (u > 0.0) d = fmin(d, 0.25 * h / u);
@@ -843,7 +919,7 @@ done:
 static double *stab_persist(void *state, int *count)
 {
   struct stab *b = state;
-  *count = 2;
+  *count = b->dim; /* the gate's velocity: 2-D checkpoints keep their 2 values */
   return b->v_prev;
 }
 
@@ -862,13 +938,18 @@ static void stab_destroy(void *state)
   free(b);
 }
 
-/* -D switches: the pressure form (pressure_form = "dynamic": STAB_DYNAMIC 1) */
+/* -D switches: the pressure form (pressure_form = "dynamic": STAB_DYNAMIC 1) and the walls'
+ * approach term (wall_approach = "impact": STAB_APPROACH_IMPACT 1, the default in 3-D; ppe.cl) */
 static enum clsph_status stab_define(const struct sim *sim, struct prog_opts *o)
 {
   static const char *const form_names[] = {"total", "dynamic", NULL};
-  int dynamic = 0;
+  static const char *const approach_names[] = {"particles", "impact", NULL};
+  int dynamic = 0, impact = 0;
   enum clsph_status st = option_choice(sim->scene, "pressure_form", form_names, 0, &dynamic);
+  if (st == CLSPH_OK)
+    st = option_choice(sim->scene, "wall_approach", approach_names, sim->scene->dim == 3, &impact);
   if (st == CLSPH_OK) st = prog_opts_define_int(o, "STAB_DYNAMIC", dynamic);
+  if (st == CLSPH_OK) st = prog_opts_define_int(o, "STAB_APPROACH_IMPACT", impact);
   return st;
 }
 
@@ -879,6 +960,7 @@ const struct scheme_ops scheme_isph_stabilized = {
                "(Asai et al. 2012, 2013)",
     .sources = sources,
     .wall_model = "dummy",
+    .three_d = 1,
     .smoothing = "cubic_spline",
     .h_over_dr = 1.2,
     .support_skin = 0.25,

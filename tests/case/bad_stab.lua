@@ -5,7 +5,7 @@
 -- plate 0.15 m thick in the water (the markers need 0.38 m); 8, a wall near the top whose fluid
 -- side faces the domain's edge (its markers fall above it); 9, a gate naming no wall group; 10,
 -- gate_speed alone; 11, gate_stop before gate_start; 12, a gate lifted out; 13, pressure_form
--- "split"; 14, pressure_form "dynamic" with a body force along a periodic axis; 15, shifting 3.
+-- "split"; 14, pressure_form "dynamic" with a body force along a periodic axis; 15, shifting 3; 16 wall_approach "x".
 param { what = 1 }
 local opts = ({ { alpha = "small" }, { wall_pressure = "dirichlet" },
                 { wall_velocity = "slip", slip_ratio = 0.5 }, { surface_threshold = 1.2 },
@@ -13,7 +13,7 @@ local opts = ({ { alpha = "small" }, { wall_pressure = "dirichlet" },
                 { gate = "door", gate_speed = 1, gate_stop = 0.1 }, { gate_speed = 1 },
                 { gate = "walls", gate_speed = 1, gate_start = 0.5, gate_stop = 0.2 },
                 { gate = "walls", gate_speed = 10, gate_stop = 1 }, { pressure_form = "split" },
-                { pressure_form = "dynamic" }, { shifting = 3 } })[what]
+                { pressure_form = "dynamic" }, { shifting = 3 }, { wall_approach = "x" } })[what]
 domain { 0, 0, 1, 1.5, periodic = what == 14 and "x" or nil }
 particles { dr = 0.1 }
 opts[1] = "isph-stabilized"
