@@ -170,8 +170,9 @@ enum clsph_status field_values(const struct field_spec *f, const struct render_i
   case FIELD_COMPONENT:
     for (size_t i = 0; i < n; ++i) out[i] = a->v[i * nc + (size_t)f->comp];
     break;
-  case FIELD_SPEED:
-    for (size_t i = 0; i < n; ++i) out[i] = hypot(a->v[i * nc], a->v[i * nc + 1]);
+  case FIELD_SPEED: /* (a 3-D slice's velocities keep their three components) */
+    for (size_t i = 0; i < n; ++i)
+      out[i] = hypot(hypot(a->v[i * nc], a->v[i * nc + 1]), nc > 2 ? a->v[i * nc + 2] : 0.0);
     break;
   case FIELD_VORTICITY: {
     const struct render_array *pos = field_array(in, "pos"), *vol = field_array(in, "vol");

@@ -1628,11 +1628,26 @@ clsph_add_test(restart_stab3d LABELS case COMMAND ${CMAKE_COMMAND}
                -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
                -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart_stab3d
                "-DSETS=t_end=0.1|checkpoint=0.05" -P ${CASE_DIR}/restart.cmake)
-# clsph render refuses a 3-D run's snapshots, naming the file
+# clsph render of a 3-D run: without --slice it names the file and the option; with a slice
+# through the tank's middle (y = 0.55 m: the lattice layer there) it draws a frame per snapshot;
+# a plane off every particle is refused
 clsph_cli_test(three_d_render FRESH_DIR ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_render RC 2
                FIRST_ARGS run ${bad_3d} --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_render
                ARGS render ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_render
-               REGEX "snap_000000.h5 is a 3-D run \\(positions of 3 components\\): frames draw 2-D runs only")
+               REGEX "snap_000000.h5 is a 3-D run \\(positions of 3 components\\): frames draw a slice of it, --slice AXIS=VALUE")
+clsph_cli_test(three_d_render_slice FRESH_DIR ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_slice RC 0
+               FIRST_ARGS run ${bad_3d} --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_slice
+               ARGS render ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_slice --slice y=0.55 --no-movie
+                    --field kind
+               REGEX "frames: .*three_d_slice/frames/kind_000000.png .. 000001.png \\(2\\)")
+clsph_cli_test(three_d_render_off FRESH_DIR ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_off RC 2
+               FIRST_ARGS run ${bad_3d} --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_off
+               ARGS render ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_off --slice z=5 --no-movie
+               REGEX "--slice z=5: no particle of .*snap_000000.h5 lies within half a spacing of the plane")
+clsph_cli_test(three_d_slice_syntax ARGS render /tmp --slice w=1 RC 2
+               REGEX "--slice: 'w=1' is not AXIS=VALUE with AXIS x, y or z")
+clsph_cli_test(three_d_slice_run ARGS run ${bad_3d} --slice y=0.5 RC 2
+               REGEX "--slice belongs to `clsph render OUTDIR`")
 # An obstacle: the tank twice as wide (0.4 m) with a block 6 dr wide and tall on the middle of its
 # floor (box_wall { ..., fluid = "outside" }: its top and sides face the water, its bottom lies on
 # the floor), pressure_form = "dynamic", 1 s: largest error 0.0017 (double and float), the floor

@@ -66,6 +66,8 @@ void cli_usage(FILE *f)
         "  --fps N               frames per second of the movie (default 10)\n"
         "  --no-movie            frames only\n"
         "  --font FILE           TrueType font of frames (default $CLSPH_FONT, else DejaVu Sans)\n"
+        "  --slice AXIS=VALUE    render of a 3-D run: the particles within half a spacing of the\n"
+        "                        plane AXIS = VALUE (m), seen along AXIS\n"
         "  --device N            device index from `clsph devices` (default: $CLSPH_DEVICE, else\n"
         "                        the first GPU, else the first CPU)\n"
         "  --device-memory MIB   run, info: the most device memory a run may use (default: the\n"
@@ -257,6 +259,17 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
         CLSPH_TRY(parse_int(a, val, 1, 240, &c.fps));
       } else if (strcmp(a, "--font") == 0) {
         c.font = val;
+      } else if (strcmp(a, "--slice") == 0) {
+        char *end = NULL;
+        const char *axes = "xyz", *at = strchr(axes, val[0]);
+        CLSPH_CHECK(val[0] != '\0' && at != NULL && val[1] == '=', CLSPH_E_INPUT,
+                    "--slice: '%s' is not AXIS=VALUE with AXIS x, y or z (e.g. --slice y=0.075)",
+                    val);
+        c.slice_at = strtod(val + 2, &end);
+        CLSPH_CHECK(end != val + 2 && *end == '\0' && isfinite(c.slice_at), CLSPH_E_INPUT,
+                    "--slice: '%s': the plane's position '%s' is not a number (m)", val, val + 2);
+        c.slice_axis = (int)(at - axes);
+        c.slice_set = 1;
       } else {
         CLSPH_CHECK(0, CLSPH_E_INPUT, "unknown option %s (see clsph --help)", a);
       }
@@ -308,6 +321,8 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
     const int takes_frames =
         (strcmp(c.command, "run") == 0 && c.frames) || strcmp(c.command, "render") == 0 ||
         (strcmp(c.command, "bench") == 0 && c.target != NULL && strcmp(c.target, "render") == 0);
+    CLSPH_CHECK(!c.slice_set || strcmp(c.command, "render") == 0, CLSPH_E_INPUT,
+                "--slice belongs to `clsph render OUTDIR` (of a 3-D run)");
     const char *given = c.field       ? "--field"
                         : c.range_set ? "--range"
                         : c.colormap  ? "--colormap"

@@ -45,6 +45,9 @@ struct cli {
   int fps;              /* --fps N (0: 10) */
   int no_movie;         /* --no-movie */
   const char *font;     /* --font FILE (NULL: $CLSPH_FONT, else DejaVu Sans) */
+  int slice_set;        /* --slice AXIS=VALUE given (render of a 3-D run): */
+  int slice_axis;       /*   0, 1, 2: x, y, z */
+  double slice_at;      /*   the plane's position, m */
 };
 
 /** @brief Parse argv; bad input is reported with the offending argument. */

@@ -250,6 +250,67 @@ done:
   return st;
 }
 
+/* A 3-D snapshot as the 2-D one frames draw (--slice AXIS=VALUE): the particles within half a
+ * spacing (from their volume, dr³) of the plane, their positions the two other axes in order
+ * (x, z for a slice along y), their volumes the areas dr² the splats are drawn by, the other
+ * arrays' rows kept alike. A snapshot read without its
+ * arrays' values (the first, for the fields) only takes the 2-D shape. */
+static enum clsph_status slice_snapshot(struct io_snapshot *s, const struct cli *cli,
+                                        const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct io_array *pos = NULL, *vol = NULL;
+  for (int k = 0; k < s->narrays; ++k) {
+    if (strcmp(s->arrays[k].name, "pos") == 0) pos = &s->arrays[k];
+    if (strcmp(s->arrays[k].name, "vol") == 0) vol = &s->arrays[k];
+  }
+  CLSPH_CHECK(pos != NULL, CLSPH_E_INPUT, "render: %s has no particle positions", path);
+  CLSPH_CHECK(pos->ncomp == 3 || !cli->slice_set, CLSPH_E_INPUT,
+              "render: --slice is for 3-D runs; %s is 2-D", path);
+  CLSPH_CHECK(pos->ncomp == 2 || cli->slice_set, CLSPH_E_INPUT,
+              "render: %s is a 3-D run (positions of %d components): frames draw a slice of it, "
+              "--slice AXIS=VALUE (e.g. --slice y=0.075: the particles within half a spacing of "
+              "the plane y = 0.075 m; or open snapshots.xdmf in ParaView)",
+              path, pos->ncomp);
+  if (pos->ncomp == 2) goto done;
+  const int ax = cli->slice_axis, u = ax == 0 ? 1 : 0, w = ax == 2 ? 1 : 2;
+  s->has_domain = 0; /* the view: the drawn particles' box */
+  const size_t len = strlen(s->case_name);
+  snprintf(s->case_name + len, sizeof s->case_name - len, " (%c = %g m)", "xyz"[ax],
+           cli -> slice_at);
+  if (pos->v == NULL) { /* the shape only */
+    pos->ncomp = 2;
+    goto done;
+  }
+  CLSPH_CHECK(vol != NULL && vol->v != NULL, CLSPH_E_INPUT, "render: %s has no particle volumes",
+              path);
+  size_t kept = 0;
+  for (size_t i = 0; i < s->n; ++i) {
+    const double half = 0.5 * cbrt(vol->v[i]), d = pos->v[3 * i + (size_t)ax] - cli->slice_at;
+    if (!(d >= -half && d < half)) continue;
+    for (int k = 0; k < s->narrays; ++k) {
+      struct io_array *a = &s->arrays[k];
+      if (a->v == NULL || a == pos) continue;
+      memmove(a->v + kept * (size_t)a->ncomp, a->v + i * (size_t)a->ncomp,
+              (size_t)a->ncomp * sizeof *a->v);
+    }
+    const double pu = pos->v[3 * i + (size_t)u], pw = pos->v[3 * i + (size_t)w];
+    pos->v[2 * kept] = pu;
+    pos->v[2 * kept + 1] = pw;
+    ++kept;
+  }
+  pos->ncomp = 2;
+  s->n = kept;
+  for (size_t i = 0; i < kept; ++i)
+    vol->v[i] = pow(vol->v[i], 2.0 / 3.0); /* dr³ to dr²: the
+                                            * splats' size */
+  CLSPH_CHECK(kept > 0, CLSPH_E_INPUT,
+              "render: --slice %c=%g: no particle of %s lies within half a spacing of the plane",
+              "xyz"[ax], cli -> slice_at, path);
+done:
+  return st;
+}
+
 enum clsph_status render_command(const struct cli *cli)
 {
   enum clsph_status st = CLSPH_OK;
@@ -274,11 +335,7 @@ enum clsph_status render_command(const struct cli *cli)
     log_warn("%s records no domain and no walls (written by an older clsph): the frames show the "
              "particles only",
              path);
-  for (int k = 0; k < snap.narrays; ++k)
-    CLSPH_CHECK(strcmp(snap.arrays[k].name, "pos") != 0 || snap.arrays[k].ncomp == 2, CLSPH_E_INPUT,
-                "render: %s is a 3-D run (positions of %d components): frames draw 2-D runs only "
-                "for now (open snapshots.xdmf in ParaView)",
-                path, snap.arrays[k].ncomp);
+  CLSPH_TRY(slice_snapshot(&snap, cli, path));
   CLSPH_TRY(frame_options(cli, snap.render.on ? &snap.render : NULL, &fo));
   const char *names[PSET_MAX_FIELDS];
   int ncomp[PSET_MAX_FIELDS];
@@ -301,6 +358,7 @@ enum clsph_status render_command(const struct cli *cli)
     for (int k = 0; k < count; ++k) {
       CLSPH_TRY(snapshot_path(cli->snap_dir, num[k], &path));
       CLSPH_TRY(io_snapshot_read(path, only, &snap));
+      CLSPH_TRY(slice_snapshot(&snap, cli, path));
       CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
       const struct render_array *kind = field_array(&in, "kind");
       CLSPH_CHECK(kind != NULL, CLSPH_E_INPUT, "%s has no particle kinds", path);
@@ -323,6 +381,7 @@ enum clsph_status render_command(const struct cli *cli)
   for (int k = 0; k < count; ++k) {
     CLSPH_TRY(snapshot_path(cli->snap_dir, num[k], &path));
     CLSPH_TRY(io_snapshot_read(path, only, &snap));
+    CLSPH_TRY(slice_snapshot(&snap, cli, path));
     CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
     CLSPH_TRY(frames_write(fr, &in, num[k]));
     io_snapshot_free(&snap);

@@ -82,8 +82,9 @@ static enum clsph_status start(struct sim *sim, const struct loop_options *opt, 
     CLSPH_CHECK(found, CLSPH_E_INPUT, "%s: force: no wall group '%s'", s->case_path, s->forces[g]);
   }
   CLSPH_CHECK(opt->frames == NULL || s->dim == 2, CLSPH_E_INPUT,
-              "%s: --frames draws 2-D runs only for now; this scene is 3-D (its snapshots open in "
-              "ParaView through snapshots.xdmf)",
+              "%s: --frames draws 2-D runs only for now; this scene is 3-D (`clsph render OUTDIR "
+              "--slice AXIS=VALUE` draws a plane of its snapshots, and ParaView opens them "
+              "through snapshots.xdmf)",
               s->case_path);
   if (opt->frames != NULL) { /* the field of frames exists, before anything is written */
     const char *names[PSET_MAX_FIELDS];
