@@ -1651,6 +1651,9 @@ static enum clsph_status finish(const char *path, struct loader *ld)
         {s->turb.on, s->turb.line, "turbulence"},
         {s->render.on, s->render.line, "render { }"},
     };
+    CLSPH_CHECK(s->nforces == 0, CLSPH_E_INPUT,
+                "%s: force { \"%s\" }: wall forces are 2-D only for now; this scene is 3-D", path,
+                s->nforces > 0 ? s->forces[0] : "");
     for (size_t k = 0; k < sizeof only2 / sizeof *only2; ++k)
       CLSPH_CHECK(only2[k].count == 0, CLSPH_E_INPUT,
                   "%s:%d: %s are 2-D only for now; this scene is 3-D (its domain gives z)", path,

@@ -226,7 +226,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(check_options(scene, sim.scheme));
   CLSPH_CHECK(scene->dim == 2 || sim.scheme->three_d, CLSPH_E_INPUT,
               "%s: scheme %s runs 2-D scenes only%s; this scene is 3-D (its domain gives z): "
-              "isph-stabilized runs it",
+              "isph-stabilized and isph-rotational run it",
               where, sim.scheme->name,
               strcmp(sim.scheme->wall_model, "usaw") == 0
                   ? " (its semi-analytical walls are 2-D: segments and vertex particles)"

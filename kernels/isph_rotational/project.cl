@@ -75,6 +75,9 @@ __kernel void rot_move(const uint n, const struct grid g, __global const uint *c
 #if PERIODIC_Y
   x.y = rot_wrap(x.y, g.lo.y, g.len.y);
 #endif
+#if PERIODIC_Z && DIM == 3
+  x.z = rot_wrap(x.z, g.lo.z, g.len.z);
+#endif
   if (!all(isfinite(x))) flags_raise(flags, CLSPH_FLAG_NAN);
   pos_new[i] = x;
 }

@@ -59,6 +59,9 @@ __kernel void rot_apply_shift(const uint n, const struct grid g, __global const 
 #if PERIODIC_Y
   x.y = rot_wrap(x.y, g.lo.y, g.len.y);
 #endif
+#if PERIODIC_Z && DIM == 3
+  x.z = rot_wrap(x.z, g.lo.z, g.len.z);
+#endif
   const realv u = vel_new[i];
   if (!all(isfinite(x)) || !all(isfinite(u))) flags_raise(flags, CLSPH_FLAG_NAN);
   pos[i] = x;

@@ -145,7 +145,11 @@ __kernel void rot_visc_gather(const uint n, __global const uint *kind, __global 
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ROT_FLUID) return;
+#if DIM == 2
   const realv u = (realv)(x[i], y[i]);
+#else /* (the implicit prediction is 2-D only: isph_rotational.c refuses it in 3-D) */
+  const realv u = (realv)(x[i], y[i], R(0.0), R(0.0));
+#endif
   if (!all(isfinite(u))) flags_raise(flags, CLSPH_FLAG_NAN);
   ustar[i] = u;
 }

@@ -329,6 +329,10 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
     r->xsph = o->number;
   }
   if ((o = option(sc, "viscous")) != NULL) r->implicit = strcmp(o->text, "implicit") == 0;
+  CLSPH_CHECK(!r->implicit || sc->dim == 2, CLSPH_E_INPUT,
+              "%s:%d: isph-rotational option viscous = \"implicit\" is 2-D only for now (its solve "
+              "splits the velocity into x and y): this scene is 3-D",
+              sc->case_path, sc->scheme_line);
   for (size_t i = 0; i < geo->n; ++i)
     CLSPH_CHECK(geo->kind[i] == KIND_FLUID || geo->kind[i] == KIND_DUMMY ||
                     geo->kind[i] == KIND_INFLOW || geo->kind[i] == KIND_OUTFLOW,
@@ -337,14 +341,19 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
   CLSPH_TRY(sim_psolve_options(sim, &r->popt));
   /* fields: the wall geometry of the dummies, then the scheme's state */
   struct pset *ps = &sim->ps;
-  const size_t rv = 2 * sizeof(real);
-  host = calloc(2 * geo->n, sizeof *host);
+  const size_t dim = (size_t)sc->dim, stride = dim == 3 ? 4 : 2; /* realv */
+  const size_t rv = stride * sizeof(real);
+  host = calloc(stride * geo->n + 1, sizeof *host);
   CLSPH_CHECK(host != NULL, CLSPH_E_NOMEM, "out of memory");
   for (size_t i = 0; i < geo->n; ++i) host[i] = (real)geo->dist[i];
   CLSPH_TRY(pset_add(ps, sim->dev, "wall_dist", sizeof(real), host, &r->f_dist));
-  for (size_t i = 0; i < 2 * geo->n; ++i) host[i] = (real)geo->normal[i];
+  /* (the padding of a 3-D real4 stays 0: every length and dot product reads it) */
+  memset(host, 0, (stride * geo->n + 1) * sizeof *host);
+  for (size_t i = 0; i < geo->n; ++i)
+    for (size_t a = 0; a < dim; ++a) host[stride * i + a] = (real)geo->normal[dim * i + a];
   CLSPH_TRY(pset_add(ps, sim->dev, "wall_normal", rv, host, &r->f_normal));
-  for (size_t i = 0; i < 2 * geo->n; ++i) host[i] = (real)geo->v[i];
+  for (size_t i = 0; i < geo->n; ++i)
+    for (size_t a = 0; a < dim; ++a) host[stride * i + a] = (real)geo->v[dim * i + a];
   CLSPH_TRY(pset_add(ps, sim->dev, "wall_vel", rv, host, &r->f_uwall));
   for (size_t i = 0; i < geo->n; ++i) /* fill { pressure }, the p^k of the first prediction */
     host[i] = i < geo->nfluid && isfinite(geo->p0[i]) ? (real)geo->p0[i] : 0;
@@ -354,10 +363,14 @@ static enum clsph_status rot_create(struct sim *sim, void **state)
     const char *name;
     size_t elem;
     int *f;
-  } hidden[] = {{"phi", sizeof(real), &r->f_phi}, {"vel_prev", rv, &r->f_uprev},
-                {"ustar", rv, &r->f_ustar},       {"rhs", sizeof(real), &r->f_rhs},
-                {"L", 4 * sizeof(real), &r->f_L}, {"shift", rv, &r->f_shift},
-                {"vel_new", rv, &r->f_vnew},      {"pos_new", rv, &r->f_posn}};
+  } hidden[] = {{"phi", sizeof(real), &r->f_phi},
+                {"vel_prev", rv, &r->f_uprev},
+                {"ustar", rv, &r->f_ustar},
+                {"rhs", sizeof(real), &r->f_rhs},
+                {"L", (dim == 3 ? 8 : 4) * sizeof(real), &r->f_L}, /* realm */
+                {"shift", rv, &r->f_shift},
+                {"vel_new", rv, &r->f_vnew},
+                {"pos_new", rv, &r->f_posn}};
   for (size_t k = 0; k < sizeof hidden / sizeof *hidden; ++k) {
     CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
@@ -504,8 +517,9 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   const real a0 = (real)b0, a1 = (real)(1.0 + w), a2 = (real)(w * w / (1.0 + w));
   const real rdt = (real)dt, rho = (real)sc->rho0;
   const real nu = r->implicit ? (real)0 : (real)sc->nu; /* implicit: ν∇²ũ solved for below */
-  const real2 accel =
-      dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
+  double body[3];
+  for (int a = 0; a < 3; ++a) body[a] = sc->gravity[a] + sim->body_force[a];
+  const struct realv_arg accel = dev_realv(sc->dim, body);
 
   /* 1. the Oger correction matrices (eq 25) */
   CLSPH_TRY(ops_apply(&r->ops, OP_CORRECTION, sim->dev, &sim->grid, ps->n, pos, vol, NULL, NULL, L,
@@ -521,9 +535,9 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(op_prefix(sim, r, r->k_predict, &np));
   {
     cl_uint i = 7;
-    const struct karg a[] = {KARG(vel),   KARG(uprev), KARG(p),           KARG(uwall), KARG(rdt),
-                             KARG(a0),    KARG(a1),    KARG(a2),          KARG(nu),    KARG(rho),
-                             KARG(accel), KARG(ustar), KARG(sim->d_flags)};
+    const struct karg a[] = {KARG(vel),    KARG(uprev), KARG(p),           KARG(uwall), KARG(rdt),
+                             KARG(a0),     KARG(a1),    KARG(a2),          KARG(nu),    KARG(rho),
+                             KARGV(accel), KARG(ustar), KARG(sim->d_flags)};
     for (size_t k = 0; k < sizeof a / sizeof *a; ++k)
       CLSPH_TRY(kern_set_at(r->k_predict, i++, a[k]));
   }
@@ -570,7 +584,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
     CLSPH_TRY(op_prefix(sim, r, r->k_open_p, &np));
     cl_uint k = 7;
     const struct karg a[] = {KARG(section), KARG(r->open.d_sec), KARG(pnear), KARG(vel), KARG(rho),
-                             KARG(mu),      KARG(accel),         KARG(p)};
+                             KARG(mu),      KARGV(accel),        KARG(p)};
     for (size_t q = 0; q < sizeof a / sizeof *a; ++q)
       CLSPH_TRY(kern_set_at(r->k_open_p, k++, a[q]));
     CLSPH_TRY(kern_launch(sim->dev, r->k_open_p, n, NULL));
@@ -585,7 +599,7 @@ static enum clsph_status rot_step(struct sim *sim, void *state, double dt)
                      KARG(vol), KARG(kind), KARG(vel), KARG(rdt), KARG(xs), KARG(posn),
                      KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, r->k_move, n, NULL));
-  CLSPH_TRY(kern_copy(sim->dev, pos, posn, ps->n * 2 * sizeof(real)));
+  CLSPH_TRY(kern_copy(sim->dev, pos, posn, ps->n * (sc->dim == 3 ? 4 : 2) * sizeof(real)));
   if (r->c_shift > 0.0) {
     CLSPH_TRY(sim_sort(sim));
     pos = pset_mem(ps, sim->f_pos);
@@ -620,7 +634,8 @@ static enum clsph_status rot_max_dt(struct sim *sim, void *state, double *dt)
    * behind an entry would otherwise get only the viscous bound: at Re = 100 that is 0.8 h/U0 and
    * the run failed at its third step) */
   double u = fmax(r->umax, open_speed(s));
-  double a = hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]);
+  double a = hypot(hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]),
+                   s->gravity[2] + sim->body_force[2]); /* (2-D: hypot(., 0) is exact) */
   double d = HUGE_VAL;
   if (u > 0.0) d = fmin(d, 0.25 * h / u);
   if (s->nu > 0.0 && !r->implicit) d = fmin(d, 0.125 * h * h / s->nu);
@@ -675,6 +690,7 @@ const struct scheme_ops scheme_isph_rotational = {
     .summary = "ISPH, rotational pressure correction, BDF2, dummy walls (Hosseini & Feng 2011)",
     .sources = sources,
     .wall_model = "dummy",
+    .three_d = 1,
     .smoothing = "gaussian",
     .h_over_dr = 1.2,
     .fill_fields = SCHEME_FILL_PRESSURE,

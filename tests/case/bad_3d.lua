@@ -3,9 +3,11 @@
 -- probe at a 2-D point; 5, gravity {x, y, z} before the domain; 6, a fill past the tank's walls; 7,
 -- a domain of five numbers; 8, an empty fill box; 9, a 2-D rectangle fill; 10, a tank past the
 -- domain; 11, a velocity of two components; 12, a disc probe without its normal; 13, an obstacle
--- 2 dr thick in the water (the markers need 3.8 dr).
+-- 2 dr thick in the water (the markers need 3.8 dr); 14, a wall force; 15, isph-rotational's
+-- implicit viscous prediction.
 param { what = 0 }
-local scheme_name = ({ [1] = "isph-usaw", [2] = "wcsph-riemann" })[what] or "isph-stabilized"
+local scheme_name = ({ [1] = "isph-usaw", [2] = "wcsph-riemann", [15] = "isph-rotational" })[what]
+                    or "isph-stabilized"
 if what == 5 then fluid { gravity = {0, 0, -9.81} } end
 if what == 7 then
   domain { 0, 0, 0, 1, 1 }
@@ -13,7 +15,7 @@ else
   domain { 0, 0, 0, 1, 1, 1 }
 end
 particles { dr = 0.1 }
-scheme { scheme_name }
+scheme { scheme_name, viscous = what == 15 and "implicit" or nil }
 if what ~= 5 then fluid { density = 1000, viscosity = 1e-6, gravity = {0, 0, -9.81} } end
 if what == 10 then
   box_wall { 0, 0, 0, 1, 1, 1.2, group = "tank" }
@@ -23,6 +25,7 @@ end
 if what == 3 then wall { {0, 0.5}, {1, 0.5} } end
 if what == 4 then probe { "bottom", {0.5, 0.1} } end
 if what == 12 then probe { "sensor", {1, 0.5, 0.1}, radius = 0.01 } end
+if what == 14 then force { "tank" } end
 if what == 13 then box_wall { 0.4, 0, 0, 0.6, 1, 0.3, fluid = "outside", group = "plate" } end
 if what == 6 then
   fill { 0, 0, 0, 1, 1.5, 0.5, name = "water" }
