@@ -102,6 +102,13 @@ done:
   return st;
 }
 
+/* The lattice point lo + (k + 1/2) dr. */
+static void lattice_point(const struct scene *s, long kx, long ky, long kz, double x[3])
+{
+  const long k[3] = {kx, ky, kz};
+  for (int a = 0; a < 3; ++a) x[a] = s->lo[a] + ((double)k[a] + 0.5) * s->dr;
+}
+
 static int in_box(const double *box, const double x[3])
 {
   return x[0] >= box[0] && x[0] < box[3] && x[1] >= box[1] && x[1] < box[4] && x[2] >= box[2] &&
@@ -150,9 +157,8 @@ static enum clsph_status fluid3(struct build3 *b)
   for (long kz = k0[2]; kz <= k1[2]; ++kz)
     for (long ky = k0[1]; ky <= k1[1]; ++ky)
       for (long kx = k0[0]; kx <= k1[0]; ++kx) {
-        const double x[3] = {s->lo[0] + ((double)kx + 0.5) * s->dr,
-                             s->lo[1] + ((double)ky + 0.5) * s->dr,
-                             s->lo[2] + ((double)kz + 0.5) * s->dr};
+        double x[3];
+        lattice_point(s, kx, ky, kz, x);
         int first = -1;
         for (int r = 0; r < s->nregions && first < 0; ++r)
           if (in_box(s->regions[r].box3, x)) first = r;
@@ -267,9 +273,8 @@ static enum clsph_status dummy3(struct build3 *b, int layers)
   for (long kz = k0[2]; kz <= k1[2]; ++kz)
     for (long ky = k0[1]; ky <= k1[1]; ++ky)
       for (long kx = k0[0]; kx <= k1[0]; ++kx) {
-        const double x[3] = {s->lo[0] + ((double)kx + 0.5) * s->dr,
-                             s->lo[1] + ((double)ky + 0.5) * s->dr,
-                             s->lo[2] + ((double)kz + 0.5) * s->dr};
+        double x[3];
+        lattice_point(s, kx, ky, kz, x);
         int wall = -1, inside = 0;
         double best = HUGE_VAL, q[3] = {0, 0, 0};
         for (int w = 0; w < s->nwalls && !inside; ++w) {
