@@ -1576,37 +1576,39 @@ clsph_cli_test(three_d_info ARGS info ${bad_3d} RC 0
                REGEX "particles: 3596 \\(fluid 500, wall vertices 0, dummy 3096,"
                REGEX2 "dimensions: 3")
 clsph_cli_test(three_d_usaw ARGS info ${bad_3d} --set what=1 RC 2
-               REGEX "bad_3d.lua:18: scheme isph-usaw runs 2-D scenes only \\(its semi-analytical walls are 2-D")
+               REGEX "bad_3d.lua:20: scheme isph-usaw runs 2-D scenes only \\(its semi-analytical walls are 2-D")
 clsph_cli_test(three_d_riemann ARGS info ${bad_3d} --set what=2 RC 2
-               REGEX "bad_3d.lua:18: scheme wcsph-riemann runs 2-D scenes only; this scene is 3-D")
+               REGEX "bad_3d.lua:20: scheme wcsph-riemann runs 2-D scenes only; this scene is 3-D")
 clsph_cli_test(three_d_polyline ARGS info ${bad_3d} --set what=3 RC 2
-               REGEX "bad_3d.lua:25: wall \\(group 'walls'\\) is a 2-D polyline")
+               REGEX "bad_3d.lua:27: wall \\(group 'walls'\\) is a 2-D polyline")
 clsph_cli_test(three_d_probe ARGS info ${bad_3d} --set what=4 RC 2
-               REGEX "bad_3d.lua:26: probe: its point .* must be a point \\{x, y, z\\} in a 3-D scene")
+               REGEX "bad_3d.lua:28: probe: its point .* must be a point \\{x, y, z\\} in a 3-D scene")
 clsph_cli_test(three_d_disc ARGS info ${bad_3d} --set what=12 RC 2
-               REGEX "bad_3d.lua:27: probe 'sensor': a disc is its centre, radius = R and normal")
+               REGEX "bad_3d.lua:29: probe 'sensor': a disc is its centre, radius = R and normal")
 # an obstacle across the tank 2 dr thick: its two faces' markers need 3.8 dr (its floor and side
 # faces lie on the tank's and face no fluid)
 clsph_cli_test(three_d_thin ARGS info ${bad_3d} --set what=13 RC 2
-               REGEX "bad_3d.lua:29: wall \\(group 'plate'\\) is too thin for the virtual markers: behind \\(0.4, 0.05, 0.05\\)")
+               REGEX "bad_3d.lua:31: wall \\(group 'plate'\\) is too thin for the virtual markers: behind \\(0.4, 0.05, 0.05\\)")
 clsph_cli_test(three_d_vector_first ARGS info ${bad_3d} --set what=5 RC 2
                REGEX "bad_3d.lua:11: fluid: gravity has 3 components: a 3-D scene declares its domain")
 clsph_cli_test(three_d_fill_past ARGS info ${bad_3d} --set what=6 RC 2
-               REGEX "bad_3d.lua:31: fluid region 'water' extends past the walls: the particle at \\(0.05, 1.05, 0.05\\)")
+               REGEX "bad_3d.lua:33: fluid region 'water' extends past the walls: the particle at \\(0.05, 1.05, 0.05\\)")
 clsph_cli_test(three_d_domain ARGS info ${bad_3d} --set what=7 RC 2
                REGEX "bad_3d.lua:13: domain: give the box as .* not 5 numbers")
 clsph_cli_test(three_d_empty_fill ARGS info ${bad_3d} --set what=8 RC 2
-               REGEX "bad_3d.lua:33: fill 'water': the box is empty along z")
+               REGEX "bad_3d.lua:35: fill 'water': the box is empty along z")
 clsph_cli_test(three_d_rectangle ARGS info ${bad_3d} --set what=9 RC 2
-               REGEX "bad_3d.lua:35: fill 'water': a 3-D scene fills a box")
+               REGEX "bad_3d.lua:37: fill 'water': a 3-D scene fills a box")
 clsph_cli_test(three_d_tank_past ARGS info ${bad_3d} --set what=10 RC 2
-               REGEX "bad_3d.lua:21: box_wall \\(group 'tank'\\) reaches past the domain along z")
+               REGEX "bad_3d.lua:23: box_wall \\(group 'tank'\\) reaches past the domain along z")
 clsph_cli_test(three_d_velocity ARGS info ${bad_3d} --set what=11 RC 2
-               REGEX "bad_3d.lua:37: fill 'water': velocity must be \\{u, v, w\\}")
+               REGEX "bad_3d.lua:39: fill 'water': velocity must be \\{u, v, w\\}")
 clsph_cli_test(three_d_force ARGS info ${bad_3d} --set what=14 RC 2
                REGEX "bad_3d.lua: force \\{ \"tank\" \\}: wall forces are 2-D only for now")
 clsph_cli_test(three_d_rot_implicit ARGS info ${bad_3d} --set what=15 RC 2
-               REGEX "bad_3d.lua:18: isph-rotational option viscous = \"implicit\" is 2-D only for now")
+               REGEX "bad_3d.lua:20: isph-rotational option viscous = \"implicit\" is 2-D only for now")
+clsph_cli_test(three_d_domain_nan ARGS info ${bad_3d} --set what=16 RC 2
+               REGEX "bad_3d.lua:15: domain: z1 must be finite")
 clsph_cli_test(three_d_frames ARGS run ${bad_3d} --frames --out ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_frames
                RC 2 REGEX "--frames draws 2-D runs only for now; this scene is 3-D")
 # The tank in 3-D (cases/hydrostatic3d.lua: 0.2 m of water in a 0.2 m box, dr = H/10, gravity
@@ -1650,6 +1652,8 @@ clsph_cli_test(three_d_render_off FRESH_DIR ${CMAKE_CURRENT_BINARY_DIR}/runs/thr
                REGEX "--slice z=5: no particle of .*snap_000000.h5 lies within half a spacing of the plane")
 clsph_cli_test(three_d_slice_syntax ARGS render /tmp --slice w=1 RC 2
                REGEX "--slice: 'w=1' is not AXIS=VALUE with AXIS x, y or z")
+clsph_cli_test(three_d_slice_nan ARGS render /tmp --slice y=nan RC 2
+               REGEX "--slice: 'y=nan': the plane's position 'nan' is not a number")
 clsph_cli_test(three_d_slice_run ARGS run ${bad_3d} --slice y=0.5 RC 2
                REGEX "--slice belongs to `clsph render OUTDIR`")
 # An obstacle: the tank twice as wide (0.4 m) with a block 6 dr wide and tall on the middle of its

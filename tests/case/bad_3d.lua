@@ -4,13 +4,15 @@
 -- a domain of five numbers; 8, an empty fill box; 9, a 2-D rectangle fill; 10, a tank past the
 -- domain; 11, a velocity of two components; 12, a disc probe without its normal; 13, an obstacle
 -- 2 dr thick in the water (the markers need 3.8 dr); 14, a wall force; 15, isph-rotational's
--- implicit viscous prediction.
+-- implicit viscous prediction; 16, a domain whose z1 is not a number.
 param { what = 0 }
 local scheme_name = ({ [1] = "isph-usaw", [2] = "wcsph-riemann", [15] = "isph-rotational" })[what]
                     or "isph-stabilized"
 if what == 5 then fluid { gravity = {0, 0, -9.81} } end
 if what == 7 then
   domain { 0, 0, 0, 1, 1 }
+elseif what == 16 then
+  domain { 0, 0, 0, 1, 1, 0 / 0 }
 else
   domain { 0, 0, 0, 1, 1, 1 }
 end
