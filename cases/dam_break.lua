@@ -57,7 +57,7 @@
 -- experiment's; gate_lift (a metric) is how far its lowest dummy rose. checkpoint: s between
 -- checkpoints (0: none). dyn = 1: isph-stabilized's pressure_form = "dynamic"; shift = C > 0 its
 -- particle shifting (option shifting).
--- dim = 3 (isph-stabilized only) runs it in 3-D: the tank and the column `width` wide (150 mm,
+-- dim = 3 (isph-stabilized or wcsph-riemann) runs it in 3-D: the tank and the column `width` wide (150 mm,
 -- the refdata's one source: PySPH's dam_break_3d), gravity along −z, the lid at `top`, sensor 1 a
 -- disc 4.2 mm across on the downstream wall at mid-width; the gate a plate 6 dr thick (each face's
 -- dummies reach 2.4 dr behind it at h = 1.2 dr, the markers of the fluid next to it need that:
@@ -72,8 +72,9 @@ for k, v in pairs({ stab = stab, neumann = neumann, gate = gate, dyn = dyn }) do
   if v ~= 0 and v ~= 1 then error(("dam_break: %s must be 0 or 1, not %g"):format(k, v)) end
 end
 if dim ~= 2 and dim ~= 3 then error(("dam_break: dim must be 2 or 3, not %g"):format(dim)) end
-if dim == 3 and stab ~= 1 then
-  error("dam_break: dim = 3 needs stab = 1 (isph-stabilized runs 3-D scenes)")
+if dim == 3 and stab ~= 1 and riemann ~= 1 then
+  error("dam_break: dim = 3 needs stab = 1 or riemann = 1 (isph-stabilized and wcsph-riemann run "
+        .. "3-D scenes)")
 end
 if gate == 1 and stab ~= 1 then
   error("dam_break: gate = 1 needs stab = 1 (isph-stabilized moves the gate)")

@@ -16,28 +16,54 @@
 -- (0: the scheme's, 0.9 in 3-D), checkpoint the seconds between checkpoints (0: at the end only),
 -- block = 1 the block on the floor (below). With the block, "the floor" of bottom_* is the tank's
 -- floor and the block's top (particles within 3 dr above either), its error relative to ρ g H.
+-- Curved walls: round = 1 makes the tank a vertical cylinder `width` across (cylinder_wall, the
+-- water a cylinder fill); sphere = 1 holds a sphere depth/2 across at mid-depth (sphere_wall {
+-- fluid = "outside" }), pillar = 1 a cylinder 0.4 width across from the floor to the lid (its caps
+-- lie on the tank's faces and face no water). The floor of bottom_* stays the tank's.
+-- riemann = 1 runs wcsph-riemann instead (its dummy walls, c0 = 10 √(2 g H), the density re-set
+-- as a free-surface flow's; the other scheme options do not apply to it).
 param { dr = 0.02, t_end = 1, depth = 0.2, width = 0.2, neumann = 1, alpha = 0.01, layers = 3,
-        cfl = 1, start_p = 1, shift = 0, scan = 0, beta_fs = 0, dyn = 0, checkpoint = 0, block = 0 }
-for k, v in pairs({ neumann = neumann, start_p = start_p, scan = scan, dyn = dyn, block = block }) do
+        cfl = 1, start_p = 1, shift = 0, scan = 0, beta_fs = 0, dyn = 0, checkpoint = 0, block = 0,
+        riemann = 0, round = 0, sphere = 0, pillar = 0 }
+for k, v in pairs({ neumann = neumann, start_p = start_p, scan = scan, dyn = dyn, block = block,
+                    riemann = riemann, round = round, sphere = sphere, pillar = pillar }) do
   if v ~= 0 and v ~= 1 then error(("hydrostatic3d: %s must be 0 or 1, not %g"):format(k, v)) end
 end
 
 local g = 9.81
 domain { 0, 0, 0, width, width, 1.5 * depth }
 particles { dr = dr }
-scheme { "isph-stabilized", alpha = alpha,
-         wall_pressure = neumann == 1 and "neumann" or "pseudo_neumann", wall_layers = layers,
-         shifting = shift > 0 and shift or nil, surface_detection = scan == 1 and "scan" or "density",
-         surface_threshold = beta_fs > 0 and beta_fs or nil,
-         pressure_form = dyn == 1 and "dynamic" or "total" }
+if riemann == 1 then
+  scheme { "wcsph-riemann", wall_layers = layers }
+else
+  scheme { "isph-stabilized", alpha = alpha,
+           wall_pressure = neumann == 1 and "neumann" or "pseudo_neumann", wall_layers = layers,
+           shifting = shift > 0 and shift or nil,
+           surface_detection = scan == 1 and "scan" or "density",
+           surface_threshold = beta_fs > 0 and beta_fs or nil,
+           pressure_form = dyn == 1 and "dynamic" or "total" }
+end
 fluid { density = 1000, viscosity = 1e-6, gravity = {0, 0, -g} }
-box_wall { 0, 0, 0, width, width, 1.5 * depth, group = "tank" }
+local c = width / 2
+if round == 1 then
+  cylinder_wall { c, c, 0, c, c, 1.5 * depth, c, group = "tank" }
+else
+  box_wall { 0, 0, 0, width, width, 1.5 * depth, group = "tank" }
+end
+if sphere == 1 then sphere_wall { c, c, depth / 2, depth / 4, fluid = "outside", group = "ball" } end
+if pillar == 1 then
+  cylinder_wall { c, c, 0, c, c, 1.5 * depth, width / 5, fluid = "outside", group = "pillar" }
+end
 -- block = 1: a block 6 dr wide and tall on the middle of the floor (an obstacle: its top and
 -- sides face the water, its bottom lies on the floor)
 local b0, b1 = width / 2 - 3 * dr, width / 2 + 3 * dr
 if block == 1 then box_wall { b0, b0, 0, b1, b1, 6 * dr, fluid = "outside", group = "block" } end
-fill { 0, 0, 0, width, width, depth, name = "water",
-       pressure = start_p == 1 and function(x, y, z) return 1000 * g * (depth - z) end or nil }
+local p_start = start_p == 1 and function(x, y, z) return 1000 * g * (depth - z) end or nil
+if round == 1 then
+  fill { cylinder = { c, c, 0, c, c, depth, c }, name = "water", pressure = p_start }
+else
+  fill { 0, 0, 0, width, width, depth, name = "water", pressure = p_start }
+end
 run { t_end = t_end, output_every = t_end / 4, cfl = cfl, sample_every = t_end / 20,
       checkpoint_every = checkpoint }
 
@@ -72,10 +98,22 @@ function metrics(sim)
     speed = math.max(speed, math.abs(sim.min("vel", c, "fluid")), math.abs(sim.max("vel", c, "fluid")))
   end
   local crossed = sim.wall_crossing_steps
-  for c = 1, 3 do
-    local top = c == 3 and 1.5 * depth or width
-    if sim.min("pos", c, "fluid") < 0 or sim.max("pos", c, "fluid") > top then
+  for a = 1, 3 do
+    local top = a == 3 and 1.5 * depth or width
+    if sim.min("pos", a, "fluid") < 0 or sim.max("pos", a, "fluid") > top then
       crossed = crossed + 1
+    end
+  end
+  if round + sphere + pillar > 0 then -- a fluid particle outside the round tank or in a solid
+    local f = sim.field("p", 1, "fluid")
+    for i = 1, #f.value do
+      local r = math.sqrt((f.x[i] - c) ^ 2 + (f.y[i] - c) ^ 2)
+      local rs = math.sqrt(r * r + (f.z[i] - depth / 2) ^ 2)
+      if (round == 1 and r > c) or (pillar == 1 and r < width / 5)
+         or (sphere == 1 and rs < depth / 4) then
+        crossed = crossed + 1
+        break
+      end
     end
   end
   if block == 1 then -- a fluid particle inside the block

@@ -1,6 +1,7 @@
 /* case.c: the case-script loader. A case is a Lua 5.4 script run in a sandbox (base, math,
  * string and table only; no io, os, package, debug, load, loadfile or dofile) whose declarations
- * (param, domain, particles, scheme, fluid, fill, wall, box_wall, arc, circle, inflow, outflow,
+ * (param, domain, particles, scheme, fluid, fill, wall, box_wall, sphere_wall, cylinder_wall, arc,
+ * circle, inflow, outflow,
  * probe, profile, force, run, render) fill a struct scene. Every declaration checks its keys: an
  * unknown key is an error naming the script line and the nearest known key. */
 #include "case.h"
@@ -295,6 +296,42 @@ static void to_vec(lua_State *L, const char *fn, const char *what, double *p)
   if (!lua_istable(L, t) || lua_rawlen(L, t) != 3)
     luaL_error(L, "%s: %s must be a point {x, y, z} in a 3-D scene", fn, what);
   for (int a = 0; a < 3; ++a) p[a] = get_index_number(L, t, fn, a + 1, what);
+}
+
+/* A sphere { cx, cy, cz, R } or a cylinder { x0, y0, z0, x1, y1, z1, R } (its axis' ends and
+ * radius; flat caps) from the sequence at idx, into sh, and its bounding box into box (a cylinder's
+ * reaches R √(1 − (d_a/L)²) past its ends along axis a, d the axis and L its length). */
+static void get_shape3(lua_State *L, int idx, const char *fn, enum scene_shape3 kind, double sh[7],
+                       double box[6])
+{
+  static const char *const sn[4] = {"cx", "cy", "cz", "R"};
+  static const char *const cn[7] = {"x0", "y0", "z0", "x1", "y1", "z1", "R"};
+  const int m = kind == SCENE_SPHERE ? 4 : 7;
+  if (!lua_istable(L, idx) || (int)lua_rawlen(L, idx) != m)
+    luaL_error(L, "%s: give the %s as { %s }", fn, kind == SCENE_SPHERE ? "sphere" : "cylinder",
+               kind == SCENE_SPHERE ? "cx, cy, cz, R"
+                                    : "x0, y0, z0, x1, y1, z1, R (the axis' ends "
+                                      "and the radius)");
+  for (int k = 0; k < m; ++k)
+    sh[k] = get_index_number(L, idx, fn, k + 1, kind == SCENE_SPHERE ? sn[k] : cn[k]);
+  const double r = sh[m - 1];
+  if (!(r > 0.0)) luaL_error(L, "%s: the radius R must be positive, not %f", fn, r);
+  if (kind == SCENE_SPHERE) {
+    for (int a = 0; a < 3; ++a) {
+      box[a] = sh[a] - r;
+      box[3 + a] = sh[a] + r;
+    }
+    return;
+  }
+  const double d[3] = {sh[3] - sh[0], sh[4] - sh[1], sh[5] - sh[2]};
+  const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(len > 0.0))
+    luaL_error(L, "%s: the cylinder's axis has no length: its ends are one point", fn);
+  for (int a = 0; a < 3; ++a) {
+    const double c = d[a] / len, e = r * sqrt(fmax(1.0 - c * c, 0.0));
+    box[a] = fmin(sh[a], sh[3 + a]) - e;
+    box[3 + a] = fmax(sh[a], sh[3 + a]) + e;
+  }
 }
 
 /* t[key] as a point of the scene's dimension; returns 0 when absent. */
@@ -632,8 +669,9 @@ static int l_turbulence(lua_State *L)
 
 static int l_fill(lua_State *L)
 {
-  static const char *const keys[] = {"polygon", "points", "name",    "velocity", "pressure",
-                                     "density", "k",      "epsilon", NULL};
+  static const char *const keys[] = {"polygon",  "points",   "name", "velocity",
+                                     "pressure", "density",  "k",    "epsilon",
+                                     "sphere",   "cylinder", NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "fill");
@@ -704,15 +742,36 @@ static int l_fill(lua_State *L)
   }
   /* points = { {x, y}, ... }: the particles' own positions (a body-fitted arrangement the
    * script computes), instead of the lattice inside a polygon or rectangle */
-  if (s->dim == 3) { /* a box: { x0, y0, z0, x1, y1, z1 } */
+  const int sphere = lua_getfield(L, 1, "sphere") != LUA_TNIL;
+  const int cylinder = lua_getfield(L, 1, "cylinder") != LUA_TNIL;
+  lua_pop(L, 2);
+  if ((sphere || cylinder) && s->dim != 3)
+    luaL_error(L, "fill '%s': a %s is 3-D (declare the domain { x0, y0, z0, x1, y1, z1 } first)",
+               r->name, sphere ? "sphere" : "cylinder");
+  if (s->dim == 3) { /* a box { x0, y0, z0, x1, y1, z1 }, sphere = { ... } or cylinder = { ... } */
     lua_getfield(L, 1, "points");
     lua_getfield(L, 1, "polygon");
     if (!lua_isnil(L, -1) || !lua_isnil(L, -2))
       luaL_error(L,
                  "fill '%s': points and polygon are 2-D; a 3-D scene fills boxes { x0, y0, z0, "
-                 "x1, y1, z1 }",
+                 "x1, y1, z1 }, sphere = { cx, cy, cz, R } or cylinder = { x0, y0, z0, x1, y1, "
+                 "z1, R }",
                  r->name);
     lua_pop(L, 2);
+    if (sphere || cylinder) {
+      if (sphere && cylinder)
+        luaL_error(L, "fill '%s': give a sphere or a cylinder, not both", r->name);
+      if (lua_rawlen(L, 1) != 0)
+        luaL_error(L, "fill '%s': a box's numbers and a %s: give one solid", r->name,
+                   sphere ? "sphere" : "cylinder");
+      char fn[SCENE_NAME + 16];
+      snprintf(fn, sizeof fn, "fill '%s'", r->name);
+      r->shape = sphere ? SCENE_SPHERE : SCENE_CYLINDER;
+      lua_getfield(L, 1, sphere ? "sphere" : "cylinder");
+      get_shape3(L, lua_gettop(L), fn, r->shape, r->shape3, r->box3);
+      lua_pop(L, 1);
+      return 0;
+    }
     if (lua_rawlen(L, 1) != 6)
       luaL_error(L, "fill '%s': a 3-D scene fills a box { x0, y0, z0, x1, y1, z1 }", r->name);
     static const char *const bn[6] = {"x0", "y0", "z0", "x1", "y1", "z1"};
@@ -941,6 +1000,41 @@ static int l_wall(lua_State *L)
   check_simple(L, "wall", w);
   orient(L, "wall", w, get_choice(L, 1, "wall", "fluid", fluid_sides, 0));
   return 0;
+}
+
+/* sphere_wall { cx, cy, cz, R, ... } and cylinder_wall { x0, y0, z0, x1, y1, z1, R, ... }: a
+ * closed 3-D solid, the fluid inside (a container: fluid = "inside", the default) or outside (an
+ * obstacle) */
+static int shape_wall(lua_State *L, enum scene_shape3 kind)
+{
+  static const char *const keys[] = {"group", "fluid", NULL};
+  static const char *const sides[] = {"inside", "outside", NULL};
+  const char *fn = kind == SCENE_SPHERE ? "sphere_wall" : "cylinder_wall";
+  struct scene *s = loader_of(L)->s;
+  need_table(L, fn);
+  check_keys(L, 1, fn, keys, 1);
+  if (s->dim != 3)
+    luaL_error(L, "%s is 3-D: declare the domain { x0, y0, z0, x1, y1, z1 } first%s", fn,
+               kind == SCENE_SPHERE ? " (a 2-D circle is circle { })" : "");
+  const int side = get_choice(L, 1, fn, "fluid", sides, 0);
+  struct scene_wall *w = grow(L, (void **)&s->walls, &s->nwalls, sizeof *w);
+  w->line = current_line(L);
+  get_name(L, 1, fn, "group", w->group, "walls");
+  w->box3d = side == 1 ? 2 : 1;
+  w->closed = 1;
+  w->shape = kind;
+  get_shape3(L, 1, fn, kind, w->shape3, w->box3);
+  return 0;
+}
+
+static int l_sphere_wall(lua_State *L)
+{
+  return shape_wall(L, SCENE_SPHERE);
+}
+
+static int l_cylinder_wall(lua_State *L)
+{
+  return shape_wall(L, SCENE_CYLINDER);
 }
 
 static int l_box_wall(lua_State *L)
@@ -1568,6 +1662,8 @@ static void register_api(lua_State *L, struct loader *ld)
       {"fill", l_fill},
       {"wall", l_wall},
       {"box_wall", l_box_wall},
+      {"sphere_wall", l_sphere_wall},
+      {"cylinder_wall", l_cylinder_wall},
       {"arc", l_arc},
       {"circle", l_circle},
       {"inflow", l_inflow},
@@ -1629,12 +1725,12 @@ static enum clsph_status finish(const char *path, struct loader *ld)
                 path, ld->set_names[k], hint);
   }
   if (!s->rho0) s->rho0 = 1000.0; /* no fluid {} declaration: water at rest */
-  if (s->dim == 3) {              /* what 3-D scenes have so far: box fills in box containers */
+  if (s->dim == 3) { /* what 3-D scenes have: box, sphere and cylinder walls and fills */
     for (int w = 0; w < s->nwalls; ++w)
       CLSPH_CHECK(s->walls[w].box3d, CLSPH_E_INPUT,
                   "%s:%d: wall (group '%s') is a 2-D polyline (wall, arc, circle or a box_wall "
                   "declared before the domain) in a 3-D scene: 3-D walls are box_wall { x0, y0, "
-                  "z0, x1, y1, z1 } after domain { }",
+                  "z0, x1, y1, z1 }, sphere_wall { } and cylinder_wall { } after domain { }",
                   path, s->walls[w].line, s->walls[w].group);
     for (int r = 0; r < s->nregions; ++r)
       CLSPH_CHECK(s->regions[r].npts == 0, CLSPH_E_INPUT,

@@ -1672,7 +1672,10 @@ unsigned long geometry_digest(const struct scene *s, const struct geom *g)
   if (s->dim == 3) { /* z (2-D digests stay what they were) */
     const double z[] = {s->lo[2], s->hi[2], s->periodic[2], s->gravity[2], s->body_force[2], 3.0};
     c = digest_bytes(c, z, sizeof z);
-    for (int w = 0; w < s->nwalls; ++w) c = digest_bytes(c, s->walls[w].box3, 6 * sizeof(double));
+    for (int w = 0; w < s->nwalls; ++w) {
+      c = digest_bytes(c, s->walls[w].box3, 6 * sizeof(double));
+      c = digest_bytes(c, s->walls[w].shape3, 7 * sizeof(double));
+    }
   }
   c = digest_bytes(c, s->smoothing, strlen(s->smoothing));
   c = digest_bytes(c, s->scheme, strlen(s->scheme));

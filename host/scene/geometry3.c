@@ -1,6 +1,8 @@
 /* geometry3.c: the particles of a 3-D scene (geometry_build with scene.dim = 3). What 3-D scenes
- * hold so far: box fills (fill { x0, y0, z0, x1, y1, z1 }) in closed box containers (box_wall in
- * 3-D, the fluid inside), with the 2-D conventions carried over:
+ * hold: fills of boxes (fill { x0, y0, z0, x1, y1, z1 }), spheres and finite cylinders (fill {
+ * sphere = ... }, fill { cylinder = ... }) in closed containers of the same three solids
+ * (box_wall, sphere_wall, cylinder_wall, the fluid inside), around obstacles of the same solids
+ * (fluid = "outside"), with the 2-D conventions carried over:
  *  - fluid on the lattice lo + (k + 1/2) dr of the domain, a point belonging to the first fill
  *    that holds it (x0 <= x < x1 on each axis), and inside some container when there is one, none
  *    within dr/2 of an obstacle;
@@ -13,6 +15,14 @@
  *    corners), each with its distance to the nearest point q of its container's faces and the
  *    unit normal (q − x)/|q − x| into the fluid (across an edge or corner, diagonal; the
  *    virtual marker x + 2 d n then mirrors it through q, as in 2-D).
+ * Spheres and cylinders: a container's dummies lie within `layers` spacings of it in the Euclidean
+ * distance (a rounded rim: the points the max norm adds beyond a cylinder's rim are farther than
+ * any fluid particle's support reaches), each with its distance to the nearest surface point q and
+ * the normal (q − x)/|q − x|; an obstacle's are its points within `layers` spacings below its
+ * surface, with the outward normal there (radial on a sphere and a cylinder's side, along the
+ * axis on a cap) and their depth. A cylinder obstacle's cap that lies on a container's face (a
+ * pillar from the floor) or, without a container, on the domain's boundary faces no fluid, as a
+ * box obstacle's face on its container's.
  * Positions, velocities and normals are n x 3. */
 #include <math.h>
 #include <stdlib.h>
@@ -137,6 +147,123 @@ static double box_nearest(const double *box, const double x[3], double q[3], dou
   return cheb;
 }
 
+/* A cylinder's coordinates of x: along the axis from its first end (t, of length len), the
+ * distance from the axis (r) and the unit vectors of the axis (a) and from the axis to x (u; any
+ * unit vector across the axis when r = 0). */
+struct cyl3 {
+  double t, len, r, a[3], u[3];
+};
+
+static void cyl_coords(const double *sh, const double x[3], struct cyl3 *c)
+{
+  double d[3], len2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    d[k] = sh[3 + k] - sh[k];
+    len2 += d[k] * d[k];
+  }
+  c->len = sqrt(len2);
+  c->t = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    c->a[k] = d[k] / c->len;
+    c->t += (x[k] - sh[k]) * c->a[k];
+  }
+  double r2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    c->u[k] = x[k] - sh[k] - c->t * c->a[k];
+    r2 += c->u[k] * c->u[k];
+  }
+  c->r = sqrt(r2);
+  if (c->r > 0.0) {
+    for (int k = 0; k < 3; ++k) c->u[k] /= c->r;
+  } else { /* on the axis: a unit vector across it */
+    const int m = fabs(c->a[0]) < 0.9 ? 0 : 1;
+    double e[3] = {0.0, 0.0, 0.0}, n = 0.0;
+    e[m] = 1.0;
+    for (int k = 0; k < 3; ++k) {
+      c->u[k] = e[k] - c->a[m] * c->a[k];
+      n += c->u[k] * c->u[k];
+    }
+    for (int k = 0; k < 3; ++k) c->u[k] /= sqrt(n);
+  }
+}
+
+static double dist3(const double x[3], const double y[3])
+{
+  return sqrt((x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) +
+              (x[2] - y[2]) * (x[2] - y[2]));
+}
+
+/* Is x in the solid (kind, box, sh) grown by `grow` (a box on each face, a sphere's and a
+ * cylinder's radius and each cap)? strict: inside only (the fluid side of a container; an
+ * obstacle's grown solid); else the boxes' half-open [x0, x1) of fills and the surface included
+ * for spheres and cylinders. */
+static int shape_in(enum scene_shape3 kind, const double *box, const double *sh, const double x[3],
+                    double grow, int strict)
+{
+  if (kind == SCENE_SPHERE) {
+    const double d = dist3(x, sh), r = sh[3] + grow;
+    return strict ? d < r : d <= r;
+  }
+  if (kind == SCENE_CYLINDER) {
+    struct cyl3 c;
+    cyl_coords(sh, x, &c);
+    const double r = sh[6] + grow;
+    if (strict) return c.t > -grow && c.t < c.len + grow && c.r < r;
+    return c.t >= -grow && c.t < c.len + grow && c.r < r;
+  }
+  const double g[6] = {box[0] - grow, box[1] - grow, box[2] - grow,
+                       box[3] + grow, box[4] + grow, box[5] + grow};
+  return strict ? inside_box(g, x) : in_box(g, x);
+}
+
+/* For x outside a container (kind, box, sh): the nearest point q of its surface, the Euclidean
+ * distance in *d; returns the distance that decides the layers (the max norm of a box, whose
+ * layers are mitred at its edges and corners; the Euclidean one of a sphere or cylinder). */
+static double shape_nearest(enum scene_shape3 kind, const double *box, const double *sh,
+                            const double x[3], double q[3], double *d)
+{
+  if (kind == SCENE_SPHERE) {
+    const double r = dist3(x, sh);
+    for (int k = 0; k < 3; ++k) q[k] = r > 0.0 ? sh[k] + sh[3] * (x[k] - sh[k]) / r : sh[k];
+    *d = dist3(x, q);
+    return *d;
+  }
+  if (kind == SCENE_CYLINDER) {
+    struct cyl3 c;
+    cyl_coords(sh, x, &c);
+    const double t = fmin(fmax(c.t, 0.0), c.len), r = fmin(c.r, sh[6]);
+    for (int k = 0; k < 3; ++k) q[k] = sh[k] + t * c.a[k] + r * c.u[k];
+    *d = dist3(x, q);
+    return *d;
+  }
+  return box_nearest(box, x, q, d);
+}
+
+/* The inward normal (into the fluid) of a container at a point x on its surface (within tol):
+ * the sum of the normals of the faces it lies on, normalised; 0 when it lies on none. */
+static void shape_surface_normal(const struct scene_wall *w, const double x[3], double tol,
+                                 double nrm[3])
+{
+  const double *bx = w->box3, *sh = w->shape3;
+  if (w->shape == SCENE_SPHERE) {
+    const double r = dist3(x, sh);
+    for (int a = 0; a < 3; ++a) nrm[a] = r > 0.0 ? (sh[a] - x[a]) / r : 0.0;
+    return;
+  }
+  if (w->shape == SCENE_CYLINDER) {
+    struct cyl3 c;
+    cyl_coords(sh, x, &c);
+    const double side = fabs(c.r - sh[6]) <= tol, cap0 = fabs(c.t) <= tol,
+                 cap1 = fabs(c.t - c.len) <= tol;
+    for (int a = 0; a < 3; ++a) nrm[a] = -side * c.u[a] + (cap0 - cap1) * c.a[a];
+  } else {
+    for (int a = 0; a < 3; ++a)
+      nrm[a] = (fabs(x[a] - bx[a]) <= tol) - (fabs(x[a] - bx[3 + a]) <= tol);
+  }
+  const double nn = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+  for (int a = 0; a < 3; ++a) nrm[a] = nn > 0.0 ? nrm[a] / nn : 0.0;
+}
+
 static enum clsph_status fluid3(struct build3 *b)
 {
   enum clsph_status st = CLSPH_OK;
@@ -160,24 +287,22 @@ static enum clsph_status fluid3(struct build3 *b)
         double x[3];
         lattice_point(s, kx, ky, kz, x);
         int first = -1;
-        for (int r = 0; r < s->nregions && first < 0; ++r)
-          if (in_box(s->regions[r].box3, x)) first = r;
+        for (int r = 0; r < s->nregions && first < 0; ++r) {
+          const struct scene_region *g = &s->regions[r];
+          if (shape_in(g->shape, g->box3, g->shape3, x, 0.0, g->shape != SCENE_BOX3)) first = r;
+        }
         if (first < 0) continue;
         const struct scene_region *g = &s->regions[first];
         int held = ncont == 0, carved = 0;
         for (int w = 0; w < s->nwalls; ++w) {
-          const double *bx = s->walls[w].box3;
-          if (s->walls[w].box3d == 1) held |= inside_box(bx, x);
-          if (s->walls[w].box3d == 2) {
-            const double grown[6] = {bx[0] - clear, bx[1] - clear, bx[2] - clear,
-                                     bx[3] + clear, bx[4] + clear, bx[5] + clear};
-            carved |= inside_box(grown, x);
-          }
+          const struct scene_wall *wl = &s->walls[w];
+          if (wl->box3d == 1) held |= shape_in(wl->shape, wl->box3, wl->shape3, x, 0.0, 1);
+          if (wl->box3d == 2) carved |= shape_in(wl->shape, wl->box3, wl->shape3, x, clear, 1);
         }
         if (carved) continue;
         CLSPH_CHECK(held, CLSPH_E_INPUT,
                     "%s:%d: fluid region '%s' extends past the walls: the particle at (%g, %g, "
-                    "%g) is inside no box_wall",
+                    "%g) is inside no container (box_wall, sphere_wall or cylinder_wall)",
                     s->case_path, g->line, g->name, x[0], x[1], x[2]);
         const double zero[3] = {0.0, 0.0, 0.0};
         double u[3] = {0.0, 0.0, 0.0}, val[2] = {NAN, NAN};
@@ -219,35 +344,79 @@ done:
   return st;
 }
 
-/* A lattice point x inside an obstacle box within `thick` of its surface becomes a dummy of it,
- * its normal the outward normal of the nearest face (the first axis of the nearest, on a tie), its
- * distance the depth below that face. */
+/* Does an obstacle's face or cap at point c face fluid? Not when it lies on the face of the
+ * container that holds the obstacle's centre `mid` (a gate across the tank, a block or a pillar on
+ * the floor), nor, without any container, on the domain's boundary. */
+static int faces_fluid(const struct scene *s, const double mid[3], const double c[3])
+{
+  const double tol = tol3 * s->dr;
+  int any = 0;
+  for (int k = 0; k < s->nwalls; ++k) {
+    const struct scene_wall *wl = &s->walls[k];
+    if (wl->box3d != 1) continue;
+    any = 1;
+    if (shape_in(wl->shape, wl->box3, wl->shape3, mid, 0.0, 1))
+      return shape_in(wl->shape, wl->box3, wl->shape3, c, -tol, 1);
+  }
+  if (any) return 1;
+  for (int a = 0; a < 3; ++a)
+    if (fabs(c[a] - s->lo[a]) <= tol || fabs(c[a] - s->hi[a]) <= tol) return 0;
+  return 1;
+}
+
+/* A lattice point x inside an obstacle within `thick` of its surface becomes a dummy of it: in a
+ * box, its normal the outward normal of the nearest face (the first axis of the nearest, on a
+ * tie), its distance the depth below that face; in a sphere or cylinder, the depth below the
+ * nearest of its side and its caps and the outward normal there. */
 static enum clsph_status obstacle_dummy(struct build3 *b, const double x[3], double thick)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = b->s;
   for (int w = 0; w < s->nwalls; ++w) {
-    const double *bx = s->walls[w].box3;
-    if (s->walls[w].box3d != 2 || !in_box(bx, x)) continue;
-    /* its container: the first that holds its centre; a face on or beyond the container's
-     * (a gate across the tank's width, a block on the floor) faces no fluid */
-    const double c[3] = {0.5 * (bx[0] + bx[3]), 0.5 * (bx[1] + bx[4]), 0.5 * (bx[2] + bx[5])};
-    const double *cb = NULL, tol = tol3 * s->dr;
-    for (int k = 0; k < s->nwalls && cb == NULL; ++k)
-      if (s->walls[k].box3d == 1 && inside_box(s->walls[k].box3, c)) cb = s->walls[k].box3;
+    const struct scene_wall *wl = &s->walls[w];
+    const double *bx = wl->box3, *sh = wl->shape3;
+    if (wl->box3d != 2 || !shape_in(wl->shape, bx, sh, x, 0.0, 0)) continue;
     double depth = HUGE_VAL, nrm[3] = {0.0, 0.0, 0.0};
-    int axis = -1;
-    double sign = 0.0;
-    for (int a = 0; a < 3; ++a) {
-      const double lo = x[a] - bx[a], hi = bx[3 + a] - x[a];
-      if (lo < depth && (cb == NULL || bx[a] > cb[a] + tol)) depth = lo, axis = a, sign = -1.0;
-      if (hi < depth && (cb == NULL || bx[3 + a] < cb[3 + a] - tol))
-        depth = hi, axis = a, sign = 1.0;
+    if (wl->shape == SCENE_SPHERE) {
+      const double r = dist3(x, sh);
+      depth = sh[3] - r;
+      for (int a = 0; a < 3; ++a) nrm[a] = r > 0.0 ? (x[a] - sh[a]) / r : a == 2;
+    } else if (wl->shape == SCENE_CYLINDER) {
+      struct cyl3 c;
+      cyl_coords(sh, x, &c);
+      const double mid[3] = {0.5 * (sh[0] + sh[3]), 0.5 * (sh[1] + sh[4]), 0.5 * (sh[2] + sh[5])};
+      depth = sh[6] - c.r;
+      memcpy(nrm, c.u, sizeof nrm);
+      for (int e = 0; e < 2; ++e) {
+        const double dc = e ? c.len - c.t : c.t;
+        if (dc < depth && faces_fluid(s, mid, sh + 3 * e)) {
+          depth = dc;
+          for (int a = 0; a < 3; ++a) nrm[a] = (e ? 1.0 : -1.0) * c.a[a];
+        }
+      }
+    } else {
+      /* its container: the first that holds its centre; a face on or beyond the container's
+       * (a gate across the tank's width, a block on the floor) faces no fluid */
+      const double c[3] = {0.5 * (bx[0] + bx[3]), 0.5 * (bx[1] + bx[4]), 0.5 * (bx[2] + bx[5])};
+      const double *cb = NULL, tol = tol3 * s->dr;
+      for (int k = 0; k < s->nwalls && cb == NULL; ++k)
+        if (s->walls[k].box3d == 1 && s->walls[k].shape == SCENE_BOX3 &&
+            inside_box(s->walls[k].box3, c))
+          cb = s->walls[k].box3;
+      int axis = -1;
+      double sign = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        const double lo = x[a] - bx[a], hi = bx[3 + a] - x[a];
+        if (lo < depth && (cb == NULL || bx[a] > cb[a] + tol)) depth = lo, axis = a, sign = -1.0;
+        if (hi < depth && (cb == NULL || bx[3 + a] < cb[3 + a] - tol))
+          depth = hi, axis = a, sign = 1.0;
+      }
+      if (axis < 0) return st;
+      nrm[axis] = sign;
     }
-    if (axis < 0 || depth > thick) return st;
-    nrm[axis] = sign;
+    if (!(depth <= thick)) return st;
     const double zero[3] = {0.0, 0.0, 0.0};
-    return push3(b, x, zero, nrm, depth, KIND_DUMMY, w, (double)NAN, (double)NAN);
+    return push3(b, x, zero, nrm, fmax(depth, 0.0), KIND_DUMMY, w, (double)NAN, (double)NAN);
   }
   return st;
 }
@@ -278,14 +447,15 @@ static enum clsph_status dummy3(struct build3 *b, int layers)
         int wall = -1, inside = 0;
         double best = HUGE_VAL, q[3] = {0, 0, 0};
         for (int w = 0; w < s->nwalls && !inside; ++w) {
-          if (s->walls[w].box3d != 1) continue;
-          if (inside_box(s->walls[w].box3, x)) {
+          const struct scene_wall *wl = &s->walls[w];
+          if (wl->box3d != 1) continue;
+          if (shape_in(wl->shape, wl->box3, wl->shape3, x, 0.0, 1)) {
             inside = 1; /* the fluid side of a container */
             break;
           }
           double qw[3], d;
-          const double cheb = box_nearest(s->walls[w].box3, x, qw, &d);
-          if (cheb <= thick && d < best) {
+          const double layer = shape_nearest(wl->shape, wl->box3, wl->shape3, x, qw, &d);
+          if (layer <= thick && d < best) {
             best = d;
             wall = w;
             memcpy(q, qw, sizeof q);
@@ -300,15 +470,8 @@ static enum clsph_status dummy3(struct build3 *b, int layers)
         if (best > tol3 * s->dr) {
           for (int a = 0; a < 3; ++a) nrm[a] = (q[a] - x[a]) / best;
         } else { /* on a face, an edge or a corner: the faces' inward normals, summed */
-          const double *bx = s->walls[wall].box3;
-          double nn = 0.0;
-          for (int a = 0; a < 3; ++a) {
-            nrm[a] =
-                (fabs(x[a] - bx[a]) <= tol3 * s->dr) - (fabs(x[a] - bx[3 + a]) <= tol3 * s->dr);
-            nn += nrm[a] * nrm[a];
-          }
-          if (nn == 0.0) continue;
-          for (int a = 0; a < 3; ++a) nrm[a] /= sqrt(nn);
+          shape_surface_normal(&s->walls[wall], x, tol3 * s->dr, nrm);
+          if (nrm[0] == 0.0 && nrm[1] == 0.0 && nrm[2] == 0.0) continue;
         }
         const double zero[3] = {0.0, 0.0, 0.0};
         CLSPH_TRY(push3(b, x, zero, nrm, best, KIND_DUMMY, wall, (double)NAN, (double)NAN));
@@ -337,10 +500,11 @@ enum clsph_status geometry_build3(const struct scene *s, const char *model, int 
       CLSPH_CHECK(s->periodic[a] || (wl->box3[a] >= s->lo[a] - tol3 * s->dr &&
                                      wl->box3[3 + a] <= s->hi[a] + tol3 * s->dr),
                   CLSPH_E_INPUT,
-                  "%s:%d: box_wall (group '%s') reaches past the domain along %c: [%g, %g] "
+                  "%s:%d: %s (group '%s') reaches past the domain along %c: [%g, %g] "
                   "against [%g, %g]",
-                  s->case_path, wl->line, wl->group, "xyz"[a], wl -> box3[a], wl -> box3[3 + a],
-                  s -> lo[a], s -> hi[a]);
+                  s->case_path, wl->line,
+                  (const char *[]){"box_wall", "sphere_wall", "cylinder_wall"}[wl->shape],
+                  wl->group, "xyz"[a], wl -> box3[a], wl -> box3[3 + a], s -> lo[a], s -> hi[a]);
   }
   CLSPH_TRY(fluid3(&b));
   const size_t nfluid = b.n;

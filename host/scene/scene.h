@@ -27,6 +27,13 @@ struct scene_option {
   char text[SCENE_NAME];
 };
 
+/** The solid of a 3-D wall or fill: a box (box3), a sphere or a finite cylinder (shape3). */
+enum scene_shape3 {
+  SCENE_BOX3 = 0,
+  SCENE_SPHERE,   /* shape3: cx, cy, cz, R */
+  SCENE_CYLINDER, /* shape3: the axis' ends x0, y0, z0, x1, y1, z1, and R; closed by flat caps */
+};
+
 /** A fluid region filled at spacing dr on the lattice lo + (k + 1/2) dr. */
 struct scene_region {
   char name[SCENE_NAME]; /* "fill 1", or the name the case gives */
@@ -36,7 +43,10 @@ struct scene_region {
   int line;       /* line of the case script that declared it */
   int velocity;   /* initial velocity: 0 at rest, 1 u0, 2 scene.velocity_fn's */
   double u0[3];   /* the constant initial velocity, m/s */
-  double box3[6]; /* 3-D: the box x0, y0, z0, x1, y1, z1 it fills (npts is 0) */
+  double box3[6]; /* 3-D: the box x0, y0, z0, x1, y1, z1 it fills (npts is 0); for a sphere or a
+                   * cylinder its bounding box */
+  enum scene_shape3 shape;
+  double shape3[7];
   int pressure, density; /* initial pressure and density: 0 the scheme's, 1 the constant below,
                           * 2 scene.velocity_fn's scalar function */
   double p0, rho0;       /* the constant initial pressure (Pa) and density (kg/m^3) */
@@ -76,9 +86,12 @@ struct scene_wall {
   double velocity[2]; /* sliding velocity, m/s */
   double centre[2];   /* rotation centre, m */
   double omega;       /* angular velocity, rad/s, counter-clockwise positive */
-  int box3d;      /* 3-D: a box (npts 0): 1 a container, its fluid inside; 2 an obstacle, outside */
-  double box3[6]; /* x0, y0, z0, x1, y1, z1 of the box's faces, m */
-  int line;       /* line of the case script */
+  int box3d; /* 3-D: a solid (npts 0): 1 a container, its fluid inside; 2 an obstacle, outside */
+  double box3[6]; /* x0, y0, z0, x1, y1, z1 of the box's faces (a sphere's or cylinder's bounding
+                   * box), m */
+  enum scene_shape3 shape;
+  double shape3[7];
+  int line; /* line of the case script */
 };
 
 enum scene_section_kind { SCENE_INFLOW = 1, SCENE_OUTFLOW };

@@ -192,9 +192,18 @@ static enum clsph_status check_fluid_count(const struct sim *sim)
   }
   double domain = 1.0;
   for (int a = 0; a < s->dim; ++a) domain *= s->hi[a] - s->lo[a];
-  for (int r = 0; r < s->nregions && s->dim == 3; ++r) { /* 3-D: boxes */
-    const double *bx = s->regions[r].box3;
-    area += (bx[3] - bx[0]) * (bx[4] - bx[1]) * (bx[5] - bx[2]);
+  for (int r = 0; r < s->nregions && s->dim == 3; ++r) { /* 3-D: boxes, spheres, cylinders */
+    const double *bx = s->regions[r].box3, *sh = s->regions[r].shape3, pi = 3.141592653589793;
+    if (s->regions[r].shape == SCENE_SPHERE) {
+      area += 4.0 / 3.0 * pi * sh[3] * sh[3] * sh[3];
+    } else if (s->regions[r].shape == SCENE_CYLINDER) {
+      const double len =
+          sqrt((sh[3] - sh[0]) * (sh[3] - sh[0]) + (sh[4] - sh[1]) * (sh[4] - sh[1]) +
+               (sh[5] - sh[2]) * (sh[5] - sh[2]));
+      area += pi * sh[6] * sh[6] * len;
+    } else {
+      area += (bx[3] - bx[0]) * (bx[4] - bx[1]) * (bx[5] - bx[2]);
+    }
   }
   area = fmin(area, domain);
   const double n = area / pow(s->dr, s->dim),
@@ -226,7 +235,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(check_options(scene, sim.scheme));
   CLSPH_CHECK(scene->dim == 2 || sim.scheme->three_d, CLSPH_E_INPUT,
               "%s: scheme %s runs 2-D scenes only%s; this scene is 3-D (its domain gives z): "
-              "isph-stabilized and isph-rotational run it",
+              "isph-stabilized, isph-rotational and wcsph-riemann run it",
               where, sim.scheme->name,
               strcmp(sim.scheme->wall_model, "usaw") == 0
                   ? " (its semi-analytical walls are 2-D: segments and vertex particles)"

@@ -108,6 +108,10 @@ __kernel void wcr_drift(const uint n, const struct grid g, __global const uint *
   x.y = g.lo.y + (x.y - g.lo.y) - g.len.y * floor((x.y - g.lo.y) / g.len.y);
   if (x.y >= g.lo.y + g.len.y) x.y = g.lo.y;
 #endif
+#if PERIODIC_Z && DIM == 3
+  x.z = g.lo.z + (x.z - g.lo.z) - g.len.z * floor((x.z - g.lo.z) / g.len.z);
+  if (x.z >= g.lo.z + g.len.z) x.z = g.lo.z;
+#endif
   const real r = rho[i] + dt_rho * drho[i];
   if (!all(isfinite(x)) || !all(isfinite(v)) || !isfinite(r) || !(r > R(0.0)))
     flags_raise(flags, CLSPH_FLAG_NAN);
@@ -133,7 +137,7 @@ realv wcr_pressure_gradient(realv x, real pi, const struct grid *g, __global con
   uint near = 0; /* a dummy among the neighbours: most particles have none, and stop here */
   for (uint k = 0; k < c && !near; ++k) near = kind[row[k]] == WCR_DUMMY;
   if (!near) return (realv)(R(0.0));
-  real axx = R(0.0), axy = R(0.0), ayy = R(0.0);
+  wcr_mat a = WCR_MAT_ZERO;
   realv s = (realv)(R(0.0));
   for (uint k = 0; k < c; ++k) {
     const uint j = row[k];
@@ -147,12 +151,10 @@ realv wcr_pressure_gradient(realv x, real pi, const struct grid *g, __global con
     (void)rho;
     (void)tk;
 #endif
-    axx -= f * r.x * r.x;
-    axy -= f * r.x * r.y;
-    ayy -= f * r.y * r.y;
+    a = wcr_moment(a, f, r);
     s += f * (pj - pi) * r;
   }
-  return wcr_apply(wcr_correction(axx, axy, ayy), s);
+  return wcr_apply(wcr_correction(a), s);
 }
 
 /* dv/dt = a_prior + a^p (eq 19), and with ARD the Riemann viscosity (eq 31-32); fluid only */
@@ -160,7 +162,7 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
                            __global const realv *vel, __global const real *vol,
                            __global const uint *kind, __global const real *rho,
                            __global const real *p, __global const uint *nlist,
-                           __global const uint *ncount, __global const real4 *bmat,
+                           __global const uint *ncount, __global const wcr_mat *bmat,
                            __global const realv *acc_prior, const real rho0, const real c0,
                            const real p_bg, const real mu, const real h, __global realv *acc,
                            __global const real *tk, __global const real *nu_t,
@@ -184,7 +186,7 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
   (void)nu_t;
   const real pi = p[i] + p_bg, ri = rho[i];
 #endif
-  const real4 bi = bmat[i];
+  const wcr_mat bi = bmat[i];
   realv sum = (realv)(R(0.0)); /* Σ V_j [(p_i B_j + p_j B_i) ∇W + ρ0 β U ∇W], p with p_bg */
 #if WCR_ARD
   realv visc = (realv)(R(0.0));
@@ -205,7 +207,7 @@ __kernel void wcr_momentum(const uint n, const struct grid g, __global const rea
     const uint kj = kind[j], wall = kj == WCR_DUMMY;
     realv vj;
     real pj;
-    real4 bj;
+    wcr_mat bj;
     if (wall) {
 #if WCR_TURB
       /* the wall model carries the wall's shear (eq 39): the Riemann problem sees the normal

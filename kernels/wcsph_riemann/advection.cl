@@ -57,7 +57,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
                             __global const uint *kind, __global const real *rho,
                             __global const real *wall_dist, __global const realv *wall_normal,
                             __global const uint *nlist, __global const uint *ncount,
-                            __global const real4 *bmat, __global const real *sigma, const real dr,
+                            __global const wcr_mat *bmat, __global const real *sigma, const real dr,
                             const real mu, const real inv_lambda, const realv accel,
                             const real tvf_a, const real tvf_m, const real bulk, const real rho0,
                             const real c0, const real h, __global realv *acc_prior,
@@ -68,7 +68,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
   const realv x = pos[i], vi = vel[i];
-  const real4 bi = bmat[i];
+  const wcr_mat bi = bmat[i];
   realv visc = (realv)(R(0.0)), res = (realv)(R(0.0));
   real count = R(0.0), smin = sigma[i];
   const uint c = ncount[i];
@@ -99,7 +99,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
     const real mij = mu;
     visc += f * wcr_visc_jump(kj, x, x - r, vi, vel[j], wall_dist[j], wall_normal[j], dr);
 #endif
-    const real4 bj = kj == WCR_DUMMY ? bi : bmat[j];
+    const wcr_mat bj = kj == WCR_DUMMY ? bi : bmat[j];
     res += f * wcr_apply(bi + bj, r); /* (B_i + B_j) ∇W V */
 #if WCR_ARD
     const realv vij = vi - (kj == WCR_DUMMY ? R(2.0) * vel[j] - vi : vel[j]);

@@ -72,17 +72,62 @@ realv wcr_sep(realv xi, realv xj, const struct grid *g)
 #if PERIODIC_Y
   r.y -= g->len.y * rint(r.y / g->len.y);
 #endif
+#if PERIODIC_Z && DIM == 3
+  r.z -= g->len.z * rint(r.z / g->len.z);
+#endif
   return r;
 }
 
-/* B = w A^−1 + (1 − w) I for the symmetric A = (axx, axy; axy, ayy); stored as (xx, xy, yx, yy) */
-real4 wcr_correction(real axx, real axy, real ayy)
+/* The matrices A = −Σ r_ij ⊗ ∇W_ij V_j and B = A^−1 of eq 20, symmetric: in 2-D a real4
+ * (xx, xy, yx, yy), in 3-D a real8 (xx, xy, xz, yy, yz, zz, 0, 0) */
+#if DIM == 2
+typedef real4 wcr_mat;
+#define WCR_MAT_ZERO ((real4)(R(0.0)))
+#define WCR_MAT_I    ((real4)(R(1.0), R(0.0), R(0.0), R(1.0)))
+#else
+typedef real8 wcr_mat;
+#define WCR_MAT_ZERO ((real8)(R(0.0)))
+#define WCR_MAT_I    ((real8)(R(1.0), R(0.0), R(0.0), R(1.0), R(0.0), R(1.0), R(0.0), R(0.0)))
+#endif
+
+/* a − f r ⊗ r: one pair's term of A (f = F V_j, ∇W_ij = F r_ij) */
+wcr_mat wcr_moment(wcr_mat a, real f, realv r)
 {
+#if DIM == 2
+  a.x -= f * r.x * r.x;
+  a.y -= f * r.x * r.y;
+  a.w -= f * r.y * r.y;
+  a.z = a.y;
+#else
+  a.s0 -= f * r.x * r.x;
+  a.s1 -= f * r.x * r.y;
+  a.s2 -= f * r.x * r.z;
+  a.s3 -= f * r.y * r.y;
+  a.s4 -= f * r.y * r.z;
+  a.s5 -= f * r.z * r.z;
+#endif
+  return a;
+}
+
+/* B = w A^−1 + (1 − w) I for the symmetric A */
+wcr_mat wcr_correction(wcr_mat a)
+{
+#if DIM == 2
+  const real axx = a.x, axy = a.y, ayy = a.w;
   const real det = axx * ayy - axy * axy;
-  if (!(det > R(1e-12))) return (real4)(R(1.0), R(0.0), R(0.0), R(1.0));
-  const real lack = fmax(WCR_B_DET - det, R(0.0)), w = det / (det + lack);
+  if (!(det > R(1e-12))) return WCR_MAT_I;
   const real4 inv = (real4)(ayy, -axy, -axy, axx) / det;
-  return w * inv + (R(1.0) - w) * (real4)(R(1.0), R(0.0), R(0.0), R(1.0));
+#else
+  const real c00 = a.s3 * a.s5 - a.s4 * a.s4, c01 = a.s2 * a.s4 - a.s1 * a.s5;
+  const real c02 = a.s1 * a.s4 - a.s2 * a.s3;
+  const real det = a.s0 * c00 + a.s1 * c01 + a.s2 * c02;
+  if (!(det > R(1e-12))) return WCR_MAT_I;
+  const real8 inv = (real8)(c00, c01, c02, a.s0 * a.s5 - a.s2 * a.s2, a.s1 * a.s2 - a.s0 * a.s4,
+                            a.s0 * a.s3 - a.s1 * a.s1, R(0.0), R(0.0)) /
+                    det;
+#endif
+  const real lack = fmax(WCR_B_DET - det, R(0.0)), w = det / (det + lack);
+  return w * inv + (R(1.0) - w) * WCR_MAT_I;
 }
 
 /* A dummy particle's pressure, extrapolated from fluid particle i (r = x_i − x_w, a_prior the
@@ -131,9 +176,14 @@ real wcr_pair_mean(real a, real b)
 }
 
 /* B applied to a vector */
-realv wcr_apply(real4 b, realv v)
+realv wcr_apply(wcr_mat b, realv v)
 {
+#if DIM == 2
   return (realv)(b.x * v.x + b.y * v.y, b.z * v.x + b.w * v.y);
+#else
+  return (realv)(b.s0 * v.x + b.s1 * v.y + b.s2 * v.z, b.s1 * v.x + b.s3 * v.y + b.s4 * v.z,
+                 b.s2 * v.x + b.s4 * v.y + b.s5 * v.z, R(0.0));
+#endif
 }
 
 /* The configuration of the fluid and layer particles: list, B, ρ, the normalised kernel sum
@@ -144,7 +194,7 @@ __kernel void wcr_config(const uint n, const struct grid g, __global const uint 
                          __global const realv *pos, __global const real *vol,
                          __global const uint *kind, const real rlist2, const real dr,
                          const real sigma0, const real rho0, const uint reinit,
-                         __global uint *nlist, __global uint *ncount, __global real4 *bmat,
+                         __global uint *nlist, __global uint *ncount, __global wcr_mat *bmat,
                          __global real *sigma, __global real *rho, __global real *wall_dist,
                          __global uint *flags)
 {
@@ -155,7 +205,8 @@ __kernel void wcr_config(const uint n, const struct grid g, __global const uint 
     return;
   }
   const realv x = pos[i];
-  real axx = R(0.0), axy = R(0.0), ayy = R(0.0), s = smoothing_w(g.sm, R(0.0)), dmin = INFINITY;
+  wcr_mat a = WCR_MAT_ZERO;
+  real s = smoothing_w(g.sm, R(0.0)), dmin = INFINITY;
   uint c = 0u;
   __global uint *row = nlist + (size_t)i * WCR_MAXN;
   struct neigh_iter it;
@@ -167,9 +218,7 @@ __kernel void wcr_config(const uint n, const struct grid g, __global const uint 
     ++c;
     if (r2 >= g.sm.support2) continue;
     const real rr = sqrt(r2), vj = vol[j], f = smoothing_f(g.sm, rr) * vj;
-    axx -= f * r.x * r.x; /* −Σ r ⊗ ∇W V (eq 20) */
-    axy -= f * r.x * r.y;
-    ayy -= f * r.y * r.y;
+    a = wcr_moment(a, f, r); /* −Σ r ⊗ ∇W V (eq 20) */
     s += smoothing_w(g.sm, rr);
     if (kind[j] == WCR_DUMMY) dmin = fmin(dmin, rr);
   }
@@ -178,8 +227,12 @@ __kernel void wcr_config(const uint n, const struct grid g, __global const uint 
     c = WCR_MAXN;
   }
   ncount[i] = c;
-  bmat[i] = wcr_correction(axx, axy, ayy);
+  bmat[i] = wcr_correction(a);
+#if DIM == 2
   const real sn = s * dr * dr / sigma0;
+#else
+  const real sn = s * dr * dr * dr / sigma0;
+#endif
   sigma[i] = sn;
   wall_dist[i] = isfinite(dmin) ? fmax(dmin - R(0.5) * dr, R(0.0)) : R(-1.0);
   if (kind[i] != WCR_FLUID) return;

@@ -12,7 +12,7 @@ __kernel void wcr_wall_force(
     const uint n, const struct grid g, __global const realv *pos, __global const realv *vel,
     __global const real *vol, __global const uint *kind, __global const real *rho,
     __global const real *wall_dist, __global const realv *wall_normal, __global const real *p,
-    __global const uint *nlist, __global const uint *ncount, __global const real4 *bmat,
+    __global const uint *nlist, __global const uint *ncount, __global const wcr_mat *bmat,
     __global const realv *acc_prior, __global const uint *wall, __global const uint *mask,
     const uint nmask, const real dr, const real rho0, const real c0, const real p_bg, const real mu,
     const real inv_lambda, const real h, __global real4 *out, __global const real *tk,
@@ -49,7 +49,7 @@ __kernel void wcr_wall_force(
   const real pi = p[i], ri = rho[i], vol_i = vol[i];
   const real mui = mu;
 #endif
-  const real4 bi = bmat[i];
+  const wcr_mat bi = bmat[i];
   realv fp = (realv)(R(0.0)), fv = (realv)(R(0.0));
   const uint c = ncount[i];
   __global const uint *row = nlist + (size_t)i * WCR_MAXN;

@@ -114,17 +114,15 @@ __kernel void wcr_turb_transport(const uint n, const struct grid g, __global con
   const uint c = ncount[i];
   __global const uint *row = nlist + (size_t)i * WCR_MAXN;
   /* B^in: eq 20 over the fluid (and layer) neighbours */
-  real axx = R(0.0), axy = R(0.0), ayy = R(0.0);
+  wcr_mat a = WCR_MAT_ZERO;
   for (uint m = 0; m < c; ++m) {
     const uint j = row[m];
     if (kind[j] == WCR_DUMMY) continue;
     const realv r = wcr_sep(x, pos[j], &g);
     const real f = smoothing_f(g.sm, sqrt(dot(r, r))) * vol[j];
-    axx -= f * r.x * r.x;
-    axy -= f * r.x * r.y;
-    ayy -= f * r.y * r.y;
+    a = wcr_moment(a, f, r);
   }
-  const real4 b = wcr_correction(axx, axy, ayy);
+  const wcr_mat b = wcr_correction(a);
   /* ∇v (eqs 22, 40) and the diffusion sums (eqs 23-24) */
   real gxx = R(0.0), gxy = R(0.0), gyx = R(0.0), gyy = R(0.0), dk = R(0.0), de = R(0.0);
   const real dki = nu + nti / KE_SK, dei = nu + nti / KE_SE;

@@ -457,9 +457,12 @@ static long bin_of(const struct dummy_bins *db, const double *x, int a)
   return (long)floor((x[a] - db->lo[a]) / db->dr);
 }
 
-/* A dummy of wall w within 0.75 dr of y whose normal does not face away from n (at most 90° from
- * it: behind one face of a solid's convex right-angled corner lie the dummies of the other face,
- * turned by 90°; a plate's far face turns them by 180°)? */
+/* A dummy of wall w within 0.75 dr of y (0.9 dr in 3-D) whose normal does not face away from n
+ * (at most 90° from it: behind one face of a solid's convex right-angled corner lie the dummies of
+ * the other face, turned by 90°; a plate's far face turns them by 180°)? The radius holds a
+ * lattice point wherever y falls: the square lattice's farthest point from its nodes is 0.71 dr
+ * away, the cubic's 0.87 dr (a point behind a sphere's or a cylinder's curved face falls
+ * anywhere). */
 static int dummy_near(const struct geom *geo, const struct dummy_bins *db, const double *y, int w,
                       const double *n)
 {
@@ -481,7 +484,8 @@ static int dummy_near(const struct geom *geo, const struct dummy_bins *db, const
             r2 += (q[a] - y[a]) * (q[a] - y[a]);
             mn += m[a] * n[a];
           }
-          if (geo->group[d] == w && r2 < 0.5625 * db->dr * db->dr && mn > -1e-6) return 1;
+          const double near = dim == 3 ? 0.81 : 0.5625;
+          if (geo->group[d] == w && r2 < near * db->dr * db->dr && mn > -1e-6) return 1;
         }
       }
   return 0;

@@ -44,17 +44,25 @@ void sound_velocity_scale(const struct scene *s, const struct geom *g, struct so
     u = fabs(s->flow.velocity);
     what = "the flow-rate control's target";
   }
-  for (size_t i = 0; i < g->nfluid; ++i)
-    if (hypot(g->v[2 * i], g->v[2 * i + 1]) > u) {
-      u = hypot(g->v[2 * i], g->v[2 * i + 1]);
+  const size_t dim = g->dim == 3 ? 3 : 2; /* the geometry's arrays are n x dim */
+  for (size_t i = 0; i < g->nfluid; ++i) {
+    const double *v = g->v + dim * i;
+    const double vi = hypot(hypot(v[0], v[1]), dim == 3 ? v[2] : 0.0);
+    if (vi > u) {
+      u = vi;
       what = "the initial fluid speed";
     }
+  }
   snprintf(vs->what, sizeof vs->what, "%s", what);
-  const double gn = hypot(s->gravity[0], s->gravity[1]);
+  const double gz = dim == 3 ? s->gravity[2] : 0.0;
+  const double gn = hypot(hypot(s->gravity[0], s->gravity[1]), gz);
   if (gn > 0.0 && g->nfluid > 0) {
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (size_t i = 0; i < g->nfluid; ++i) {
-      const double z = -(s->gravity[0] * g->x[2 * i] + s->gravity[1] * g->x[2 * i + 1]) / gn;
+      const double *x = g->x + dim * i;
+      double gx = s->gravity[0] * x[0] + s->gravity[1] * x[1];
+      if (dim == 3) gx += gz * x[2];
+      const double z = -gx / gn;
       lo = fmin(lo, z);
       hi = fmax(hi, z);
     }

@@ -163,7 +163,7 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   static const char *const tvf_names[] = {"off", "full", "limited", NULL};
   static const char *const dens_names[] = {"continuity", "summation", "free_surface", NULL};
   static const char *const wall_names[] = {"limited", "full", NULL};
-  const int gravity = hypot(sc->gravity[0], sc->gravity[1]) > 0.0;
+  const int gravity = hypot(hypot(sc->gravity[0], sc->gravity[1]), sc->gravity[2]) > 0.0;
   int reinit = 0;
   CLSPH_TRY(option_choice(sc, "transport_velocity", tvf_names, WCR_TVF_LIMITED, &w->tvf));
   /* the density's default: re-set by summation without a free surface, to max(ρ, ρ_sum) under
@@ -277,12 +277,16 @@ static double list_skin(const struct sim *sim, double v, double dt)
 }
 
 /* the stride of the neighbour list: twice the neighbours of a full list radius (support and the
- * largest skin) on the lattice (π q², q = radius/dr: 40 at h = 1.3 dr), and 8, to a multiple of
- * 4 */
+ * largest skin) on the lattice (π q², q = radius/dr: 35 at h = 1.3 dr), and 8, to a multiple of
+ * 4. In 3-D 1.6 times the ball's (4/3) π q³ (153 at h = 1.3 dr): the list is most of a 3-D
+ * particle's memory (twice the 2-D margin would be 1.3 KB a particle), and a fluid compressed by
+ * 1% holds 3% more neighbours; a list that overflows stops the run with its flag. */
 static long list_stride(const struct sim *sim)
 {
   const double q = (sim->sm.support + list_skin(sim, HUGE_VAL, 1.0)) / sim->scene->dr;
-  return 4 * (((long)ceil(2.0 * 3.141592653589793 * q * q) + 8 + 3) / 4);
+  const double pi = 3.141592653589793;
+  const double fill = sim->scene->dim == 3 ? 1.6 * 4.0 / 3.0 * pi * q * q * q : 2.0 * pi * q * q;
+  return 4 * (((long)ceil(fill) + 8 + 3) / 4);
 }
 
 static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
@@ -372,23 +376,27 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
                 "(particle kind %d)",
                 sc->case_path, geo->kind[i]);
   w->maxn = (cl_uint)list_stride(sim);
-  w->mass = sc->rho0 * sc->dr * sc->dr;
+  const size_t dim = (size_t)sc->dim, stride = dim == 3 ? 4 : 2;             /* realv */
+  const double vol0 = dim == 3 ? sc->dr * sc->dr * sc->dr : sc->dr * sc->dr; /* dr^DIM */
+  w->mass = sc->rho0 * vol0;
   w->cap = ps->cap;
   /* fields: ρ and p from the hydrostatic state under gravity (or fill { pressure/density }),
    * dρ/dt (carried from one step's last sub-step to the next's first), the wall each dummy
    * particle belongs to, the distance to the wall, the ARD indicator */
-  buf = calloc(2 * geo->n + 1, sizeof *buf);
+  buf = calloc(stride * geo->n + 1, sizeof *buf);
   ubuf = calloc(geo->n + 1, sizeof *ubuf);
   CLSPH_CHECK(buf != NULL && ubuf != NULL, CLSPH_E_NOMEM, "out of memory");
-  double gn = hypot(sc->gravity[0], sc->gravity[1]), up[2] = {0.0, 0.0}, ztop = -HUGE_VAL;
-  if (gn > 0.0) {
-    up[0] = -sc->gravity[0] / gn;
-    up[1] = -sc->gravity[1] / gn;
+  const double gn = hypot(hypot(sc->gravity[0], sc->gravity[1]), sc->gravity[2]);
+  double up[3] = {0.0, 0.0, 0.0}, ztop = -HUGE_VAL;
+  for (size_t a = 0; a < dim && gn > 0.0; ++a) up[a] = -sc->gravity[a] / gn;
+  for (size_t i = 0; i < geo->nfluid; ++i) {
+    double z = 0.5 * sc->dr;
+    for (size_t a = 0; a < dim; ++a) z += up[a] * geo->x[dim * i + a];
+    ztop = fmax(ztop, z);
   }
-  for (size_t i = 0; i < geo->nfluid; ++i)
-    ztop = fmax(ztop, up[0] * geo->x[2 * i] + up[1] * geo->x[2 * i + 1] + 0.5 * sc->dr);
   for (size_t i = 0; i < geo->n; ++i) {
-    const double z = up[0] * geo->x[2 * i] + up[1] * geo->x[2 * i + 1];
+    double z = 0.0;
+    for (size_t a = 0; a < dim; ++a) z += up[a] * geo->x[dim * i + a];
     double ph = geo->kind[i] == KIND_FLUID && gn > 0.0 ? sc->rho0 * gn * (ztop - z) : 0.0;
     if (i < geo->nfluid && isfinite(geo->rho0[i]))
       ph = w->c0 * w->c0 * (geo->rho0[i] - sc->rho0);
@@ -399,19 +407,21 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   }
   CLSPH_TRY(add_field(sim, "rho", buf, 1, &w->f_rho));
   CLSPH_TRY(add_field(sim, "p", buf + geo->n, 1, &w->f_p));
-  /* volumes: m/ρ for the fluid, dr² for the dummy particles */
+  /* volumes: m/ρ for the fluid, dr^DIM for the dummy particles */
   for (size_t i = 0; i < geo->n; ++i)
-    buf[i] =
-        geo->kind[i] == KIND_FLUID ? (real)(w->mass / (double)buf[i]) : (real)(sc->dr * sc->dr);
+    buf[i] = geo->kind[i] == KIND_FLUID ? (real)(w->mass / (double)buf[i]) : (real)vol0;
   CLSPH_TRY(kern_write(sim->dev, pset_mem(ps, sim->f_vol), geo->n * sizeof(real), buf));
   CLSPH_TRY(add_field(sim, "drho", NULL, 0, &w->f_drho));
   /* wall_dist: the depth of a dummy particle behind its wall; a fluid particle's distance from
    * the nearest wall (config.cl); wall_normal: a dummy particle's normal into the fluid */
   for (size_t i = 0; i < geo->n; ++i) buf[i] = (real)geo->dist[i];
   CLSPH_TRY(add_field(sim, "wall_dist", buf, 1, &w->f_wdist));
-  for (size_t i = 0; i < 2 * geo->n; ++i) buf[i] = (real)geo->normal[i];
-  CLSPH_TRY(pset_add(ps, sim->dev, "wall_normal", 2 * sizeof(real), buf, &w->f_wnormal));
-  pset_describe(ps, w->f_wnormal, PF_REAL, 2, 0);
+  /* (the padding of a 3-D real4 stays 0: every length and dot product reads it) */
+  memset(buf, 0, (stride * geo->n + 1) * sizeof *buf);
+  for (size_t i = 0; i < geo->n; ++i)
+    for (size_t a = 0; a < dim; ++a) buf[stride * i + a] = (real)geo->normal[dim * i + a];
+  CLSPH_TRY(pset_add(ps, sim->dev, "wall_normal", stride * sizeof(real), buf, &w->f_wnormal));
+  pset_describe(ps, w->f_wnormal, PF_REAL, (int)stride, 0);
   w->f_ard = -1;
   if (w->ard) CLSPH_TRY(add_field(sim, "ard", NULL, 1, &w->f_ard));
   w->ke.f_k = w->ke.f_eps = w->ke.f_nut = w->f_yplus = -1;
@@ -431,11 +441,12 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
     w->ubar0 = open_initial_outflow(sim);
   }
   /* the advection step's buffers (the particles' current order; remade every step) */
-  const size_t cap = ps->cap, rv = 2 * sizeof(real), groups = sim_reduce_groups(cap);
+  const size_t cap = ps->cap, rv = stride * sizeof(real), groups = sim_reduce_groups(cap);
+  const size_t rm = (dim == 3 ? 8 : 4) * sizeof(real); /* B: wcr_mat (config.cl) */
   CLSPH_TRY(
       kern_buffer(sim->dev, cap * w->maxn * sizeof(cl_uint), NULL, &w->d_nlist, "neighbour list"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(cl_uint), NULL, &w->d_ncount, "neighbour counts"));
-  CLSPH_TRY(kern_buffer(sim->dev, cap * 4 * sizeof(real), NULL, &w->d_bmat, "correction B"));
+  CLSPH_TRY(kern_buffer(sim->dev, cap * rm, NULL, &w->d_bmat, "correction B"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(real), NULL, &w->d_sigma, "kernel sums"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * rv, NULL, &w->d_prior, "prior acceleration"));
   CLSPH_TRY(kern_buffer(sim->dev, cap * rv, NULL, &w->d_shift, "transport correction"));
@@ -567,8 +578,9 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   const double h = sim->sm.h;
   const real mu = (real)(sc->rho0 * sc->nu), rho0 = (real)sc->rho0, c0 = (real)w->c0;
   const real rh = (real)h, rdr = (real)sc->dr, ilam = (real)(1.0 / w->lambda);
-  const real2 accel =
-      dev_real2(sc->gravity[0] + sim->body_force[0], sc->gravity[1] + sim->body_force[1]);
+  double body[3];
+  for (int a = 0; a < 3; ++a) body[a] = sc->gravity[a] + sim->body_force[a];
+  const struct realv_arg accel = dev_realv(sc->dim, body);
   /* eq 25: α h², α = 0.2; eq 33: m h², m = 1000 (0: the full correction) */
   const real tvf_a = w->tvf == WCR_TVF_OFF ? 0 : (real)(w->tvf_alpha * h * h);
   const real tvf_m = w->tvf == WCR_TVF_LIMITED ? (real)(1000.0 * h * h) : 0;
@@ -587,7 +599,7 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   CLSPH_TRY(KERN_SET(w->k_adv, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_sigma), KARG(rdr), KARG(mu), KARG(ilam),
-                     KARG(accel), KARG(tvf_a), KARG(tvf_m), KARG(bulk), KARG(rho0), KARG(c0),
+                     KARGV(accel), KARG(tvf_a), KARG(tvf_m), KARG(bulk), KARG(rho0), KARG(c0),
                      KARG(rh), KARG(w->d_prior), KARG(w->d_shift), KARG(ard), KARG(nut),
                      KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_adv, ps->n, NULL));
@@ -627,7 +639,7 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   const cl_uint n = (cl_uint)ps->n;
   const real rho0 = (real)sc->rho0, c0 = (real)w->c0, mu = (real)(sc->rho0 * sc->nu);
   const real h = (real)sim->sm.h, rdt = (real)dt, pbg = (real)w->p_bg;
-  const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
+  const struct realv_arg grav = dev_realv(sc->dim, sc->gravity);
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem rho = pset_mem(ps, w->f_rho), p = pset_mem(ps, w->f_p);
@@ -639,13 +651,13 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(pbg), KARG(mu),
-                     KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn), KARG(grav), KARG(grad),
-                     KARG(gradp)));
+                     KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn), KARGV(grav),
+                     KARG(grad), KARG(gradp)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
   CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(w->d_acc),
                      KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist),
                      KARG(w->d_ncount), KARG(w->d_prior), KARG(wn), KARG(rho0), KARG(c0),
-                     KARG(grav), KARG(drho)));
+                     KARGV(grav), KARG(drho)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_cont, ps->n, NULL));
 done:
   return st;
@@ -854,14 +866,14 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   cl_mem frame = w->turb ? w->d_frame : w->d_none, wallv = w->turb ? w->d_wallv : w->d_none;
   const real r_ext = (real)(2.0 * sim->sm.h - sc->dr);
   const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
-  const real2 grav = dev_real2(sc->gravity[0], sc->gravity[1]);
+  const struct realv_arg grav = dev_realv(sc->dim, sc->gravity);
   cl_mem gradp = w->wall_pgrad ? w->d_gradp : w->d_none;
-  CLSPH_TRY(KERN_SET(w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
-                     KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist),
-                     KARG(w->d_ncount), KARG(w->d_bmat), KARG(w->d_prior), KARG(wall),
-                     KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0), KARG(pbg),
-                     KARG(mu), KARG(ilam), KARG(h), KARG(w->d_force), KARG(tk), KARG(nut),
-                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(grav), KARG(gradp)));
+  CLSPH_TRY(KERN_SET(
+      w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol), KARG(kind),
+      KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
+      KARG(w->d_prior), KARG(wall), KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0),
+      KARG(pbg), KARG(mu), KARG(ilam), KARG(h), KARG(w->d_force), KARG(tk), KARG(nut), KARG(frame),
+      KARG(wallv), KARG(r_ext), KARG(wmodel), KARGV(grav), KARG(gradp)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
   /* the torque about the group's centre, each dummy particle's force at its own position */
@@ -916,6 +928,7 @@ const struct scheme_ops scheme_wcsph_riemann = {
                "Sun & Hu)",
     .sources = sources,
     .wall_model = "dummy",
+    .three_d = 1,
     .smoothing = "wendland",
     .h_over_dr = 1.3,
     .support_skin = WCR_SKIN,

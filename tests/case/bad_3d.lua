@@ -1,14 +1,14 @@
 -- A 3-D scene and what it refuses: what = 0, a valid tank (isph-stabilized); 1, isph-usaw (its
--- semi-analytical walls are 2-D); 2, wcsph-riemann (2-D only so far); 3, a polyline wall; 4, a
+-- semi-analytical walls are 2-D); 2, wcsph-usaw (the same walls); 3, a polyline wall; 4, a
 -- probe at a 2-D point; 5, gravity {x, y, z} before the domain; 6, a fill past the tank's walls; 7,
 -- a domain of five numbers; 8, an empty fill box; 9, a 2-D rectangle fill; 10, a tank past the
 -- domain; 11, a velocity of two components; 12, a disc probe without its normal; 13, an obstacle
 -- 2 dr thick in the water (the markers need 3.8 dr); 14, a wall force; 15, isph-rotational's
 -- implicit viscous prediction; 16, a domain whose z1 is not a number.
 param { what = 0 }
-local scheme_name = ({ [1] = "isph-usaw", [2] = "wcsph-riemann", [15] = "isph-rotational" })[what]
+local scheme_name = ({ [1] = "isph-usaw", [2] = "wcsph-usaw", [15] = "isph-rotational" })[what]
                     or "isph-stabilized"
-if what == 5 then fluid { gravity = {0, 0, -9.81} } end
+if what == 5 then fluid { gravity = {0, 0, -9.81} } elseif what == 22 then sphere_wall { 0.5, 0.5, 0.5, 0.1 } end
 if what == 7 then
   domain { 0, 0, 0, 1, 1 }
 elseif what == 16 then
@@ -40,4 +40,12 @@ elseif what == 11 then
 else
   fill { 0, 0, 0, 1, 1, 0.5, name = "water" }
 end
+-- the curved solids: 17, a sphere of radius 0; 18, a cylinder whose ends are one point; 19, a fill
+-- of a box and a sphere at once; 20, a sphere past the domain's top; 21, a cylinder 2 dr across
+-- (the markers need 3.8 dr); 22 (line 11), a sphere before the 3-D domain
+if what == 17 then sphere_wall { 0.5, 0.5, 0.25, 0, fluid = "outside", group = "ball" } end
+if what == 18 then cylinder_wall { 0.5, 0.5, 0, 0.5, 0.5, 0, 0.2, fluid = "outside" } end
+if what == 19 then fill { 0, 0, 0, 1, 1, 0.5, sphere = {0.5, 0.5, 0.5, 0.2}, name = "ball" } end
+if what == 20 then sphere_wall { 0.5, 0.5, 0.9, 0.3, fluid = "outside", group = "ball" } end
+if what == 21 then cylinder_wall { 0.5, 0.5, 0, 0.5, 0.5, 1, 0.1, fluid = "outside", group = "pole" } end
 run { t_end = 0.1 }
