@@ -9,7 +9,10 @@
 --     within 3 dr of the floor; *_avg their means over the samples of the run's second half;
 --   speed_ratio: the largest speed over √(g H);
 --   crossed_wall: steps at which a fluid particle was behind a wall, plus 1 when one is outside
---     the tank's box at the end.
+--     the tank's box at the end (and, with round, sphere or pillar, 1 when one is inside a solid);
+--   inside_depth: with round, sphere or pillar, how far the deepest fluid particle lies past the
+--     curved face into its solid at the end, in dr (0: none; wcsph-riemann has no crossing check
+--     of its own).
 -- neumann = 0 takes the pseudo-Neumann walls (S sec 3.2), alpha the relaxation coefficient, dyn = 1
 -- the pressure form "dynamic" (the pressure equation solved for p − ρ0 g·x), shift = C > 0 the
 -- particle shifting, scan = 1 the scan-region free-surface test, beta_fs the free-surface threshold
@@ -104,17 +107,17 @@ function metrics(sim)
       crossed = crossed + 1
     end
   end
-  if round + sphere + pillar > 0 then -- a fluid particle outside the round tank or in a solid
+  local inside = 0
+  if round + sphere + pillar > 0 then -- fluid outside the round tank or in a solid
     local f = sim.field("p", 1, "fluid")
     for i = 1, #f.value do
       local r = math.sqrt((f.x[i] - c) ^ 2 + (f.y[i] - c) ^ 2)
       local rs = math.sqrt(r * r + (f.z[i] - depth / 2) ^ 2)
-      if (round == 1 and r > c) or (pillar == 1 and r < width / 5)
-         or (sphere == 1 and rs < depth / 4) then
-        crossed = crossed + 1
-        break
-      end
+      if round == 1 then inside = math.max(inside, r - c) end
+      if pillar == 1 then inside = math.max(inside, width / 5 - r) end
+      if sphere == 1 then inside = math.max(inside, depth / 4 - rs) end
     end
+    if inside > 0 then crossed = crossed + 1 end
   end
   if block == 1 then -- a fluid particle inside the block
     local f = sim.field("p", 1, "fluid")
@@ -132,5 +135,6 @@ function metrics(sim)
   return { pressure_error = worst, pressure_rms = rms, bottom_error = bworst, bottom_bias = bias,
            bottom_bias_avg = bb[1] / math.max(bb[3], 1),
            bottom_error_avg = bb[2] / math.max(bb[3], 1),
-           speed_ratio = speed / math.sqrt(g * depth), crossed_wall = crossed }
+           speed_ratio = speed / math.sqrt(g * depth), crossed_wall = crossed,
+           inside_depth = inside / dr }
 end

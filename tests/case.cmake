@@ -1679,13 +1679,14 @@ clsph_run_test(run_dam_break_stab3d ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
 # the round tank (cases/hydrostatic3d.lua round = 1: a vertical cylinder 0.2 m across, the water a
 # cylinder fill, dr = H/10) holds π 5² 10 ≈ 785 lattice points, 800 of them, and the dummies of its
 # rounded shell; a sphere 0.1 m across at mid-depth in the 0.4 m tank and a pillar 0.16 m across
-# from the floor to the lid (its caps on the tank's faces, facing no water) carve theirs.
+# from the floor to the lid (its caps on the tank's faces, facing no water) take the lattice points
+# inside them from the tank's 4000: 56 (the sphere's volume is 65 dr³) and 52 a layer (π 4² = 50).
 clsph_cli_test(three_d_round_tank ARGS info ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua --set round=1
                RC 0 REGEX "particles: 3776 \\(fluid 800, wall vertices 0, dummy 2976,")
 clsph_cli_test(three_d_sphere ARGS info ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua --set sphere=1
-               --set width=0.4 RC 0 REGEX "particles: 12116 \\(fluid 3864, wall vertices 0, dummy 8252,")
+               --set width=0.4 RC 0 REGEX "particles: 12196 \\(fluid 3944, wall vertices 0, dummy 8252,")
 clsph_cli_test(three_d_pillar ARGS info ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua --set pillar=1
-               --set width=0.4 RC 0 REGEX "particles: 12316 \\(fluid 3400, wall vertices 0, dummy 8916,")
+               --set width=0.4 RC 0 REGEX "particles: 12396 \\(fluid 3480, wall vertices 0, dummy 8916,")
 clsph_cli_test(three_d_sphere_radius ARGS info ${bad_3d} --set what=17 RC 2
                REGEX "bad_3d.lua:46: sphere_wall: the radius R must be positive")
 clsph_cli_test(three_d_cylinder_axis ARGS info ${bad_3d} --set what=18 RC 2
@@ -1705,6 +1706,28 @@ clsph_run_test(run_stab3d_round_tank ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
                SETS t_end=1 dyn=1 round=1
                BOUNDS "pressure_error<0.01" "bottom_error_avg<0.0016" "speed_ratio<5e-4"
                       "crossed_wall<0.5")
+# The sphere (0.1 m across, its centre at mid-depth, in the 0.4 m tank) and the pillar (0.16 m
+# across, floor to lid) as obstacles, the same run: largest error 0.0017 and 0.0017 (double), 0.0018
+# and 0.0017 (float), the floor 4.5e-4 and 4.4e-4 (5.6e-4 and 4.9e-4), speed 1.4e-4 and 1.0e-4
+# (1.4e-4, 1.8e-4) √(gH), no particle behind a wall nor inside the solid: the box tank's figures
+# and bounds. (With the dr/2 shell around the sphere left empty, as around a box obstacle, the
+# water next to it ran into it at 0.5 m/s: geometry3.c.)
+clsph_run_test(run_stab3d_sphere ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
+               SETS t_end=1 dyn=1 sphere=1 width=0.4
+               BOUNDS "pressure_error<0.01" "bottom_error_avg<0.0017" "speed_ratio<5e-4"
+                      "crossed_wall<0.5")
+clsph_run_test(run_stab3d_pillar ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
+               SETS t_end=1 dyn=1 pillar=1 width=0.4
+               BOUNDS "pressure_error<0.01" "bottom_error_avg<0.0017" "speed_ratio<5e-4"
+                      "crossed_wall<0.5")
+# The sphere with wcsph-riemann (c0 = 10 √(2 g H)), 0.5 s (156 steps): pressure RMS 0.026 and
+# speed 0.145 √(gH) in double and float, as the box tank's jostle; no particle inside the sphere
+# (at 1 s the deepest is 0.02 dr past its face in double, 0.011 in float: wcsph-riemann checks no
+# crossing itself, its dummies extrapolate the state pair by pair). Bounds: 1.5 times measured, and
+# nothing a quarter spacing inside.
+clsph_run_test(run_riemann3d_sphere ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
+               SETS t_end=0.5 riemann=1 sphere=1 width=0.4
+               BOUNDS "pressure_rms<0.04" "speed_ratio<0.22" "inside_depth<0.25")
 # wcsph-riemann in 3-D: the tank of cases/hydrostatic3d.lua (dr = H/10, 1 s, 308 steps, c0 =
 # 10 √(2 g H)): the largest error deeper than 3 dr 0.1225 (double) and 0.1227 (float), RMS 0.054
 # and 0.057, the floor's bottom_error_avg 0.036 and 0.041, the surface rows jostling at 0.16 √(gH)

@@ -5,7 +5,7 @@
  * (fluid = "outside"), with the 2-D conventions carried over:
  *  - fluid on the lattice lo + (k + 1/2) dr of the domain, a point belonging to the first fill
  *    that holds it (x0 <= x < x1 on each axis), and inside some container when there is one, none
- *    within dr/2 of an obstacle;
+ *    within dr/2 of a box obstacle (nor inside a curved one: below);
  *  - an obstacle's dummies: its lattice points within `layers` spacings of its faces, each with
  *    the outward normal of its nearest face and its depth below it (the faces that lie on its
  *    container's, a gate's across the tank or a block's on the floor, face no fluid and count
@@ -15,7 +15,16 @@
  *    corners), each with its distance to the nearest point q of its container's faces and the
  *    unit normal (q − x)/|q − x| into the fluid (across an edge or corner, diagonal; the
  *    virtual marker x + 2 d n then mirrors it through q, as in 2-D).
- * Spheres and cylinders: a container's dummies lie within `layers` spacings of it in the Euclidean
+ * Spheres and cylinders: every lattice point outside the solid is fluid (a sphere or cylinder
+ * obstacle carves no dr/2 around itself): the lattice meets a curved face at every distance, and a
+ * shell of dr/2 left empty around it is half a layer of fluid missing from the supports next to
+ * it, which drew the water into the solid: a sphere 5 dr across in a tank at rest
+ * (cases/hydrostatic3d.lua sphere = 1, isph-stabilized) took the water next to it towards its
+ * centre at 0.5 m/s within 0.04 s (particles 0.6 dr past its surface by 1 s); with the shell left
+ * dr/4 thick at 0.16 m/s; without it at 3e-4 m/s, and the tank's pressure is as accurate as the box
+ * tank's. A box's faces lie between the lattice's planes, where the shell holds no point, and a
+ * container holds the fluid strictly inside it in every shape (no shell either).
+ * Their dummies: a container's lie within `layers` spacings of it in the Euclidean
  * distance (a rounded rim: the points the max norm adds beyond a cylinder's rim are farther than
  * any fluid particle's support reaches), each with its distance to the nearest surface point q and
  * the normal (q − x)/|q − x|; an obstacle's are its points within `layers` spacings below its
@@ -280,7 +289,7 @@ static enum clsph_status fluid3(struct build3 *b)
   CLSPH_TRY(lattice3(s, bb, k0, k1));
   int ncont = 0;
   for (int w = 0; w < s->nwalls; ++w) ncont += s->walls[w].box3d == 1;
-  const double clear = (0.5 - tol3) * s->dr; /* fluid keeps dr/2 from an obstacle */
+  const double clear = (0.5 - tol3) * s->dr; /* fluid keeps dr/2 from a box obstacle */
   for (long kz = k0[2]; kz <= k1[2]; ++kz)
     for (long ky = k0[1]; ky <= k1[1]; ++ky)
       for (long kx = k0[0]; kx <= k1[0]; ++kx) {
@@ -297,7 +306,9 @@ static enum clsph_status fluid3(struct build3 *b)
         for (int w = 0; w < s->nwalls; ++w) {
           const struct scene_wall *wl = &s->walls[w];
           if (wl->box3d == 1) held |= shape_in(wl->shape, wl->box3, wl->shape3, x, 0.0, 1);
-          if (wl->box3d == 2) carved |= shape_in(wl->shape, wl->box3, wl->shape3, x, clear, 1);
+          if (wl->box3d == 2)
+            carved |= shape_in(wl->shape, wl->box3, wl->shape3, x,
+                               wl->shape == SCENE_BOX3 ? clear : 0.0, 1);
         }
         if (carved) continue;
         CLSPH_CHECK(held, CLSPH_E_INPUT,
