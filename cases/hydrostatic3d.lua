@@ -22,14 +22,16 @@
 -- Curved walls: round = 1 makes the tank a vertical cylinder `width` across (cylinder_wall, the
 -- water a cylinder fill); sphere = 1 holds a sphere depth/2 across at mid-depth (sphere_wall {
 -- fluid = "outside" }), pillar = 1 a cylinder 0.4 width across from the floor to the lid (its caps
--- lie on the tank's faces and face no water). The floor of bottom_* stays the tank's.
+-- lie on the tank's faces and face no water). stl = 1 makes the sphere of sphere = 1 from a
+-- triangulated surface instead (stl_wall: cases/stl/sphere.stl, 1280 facets on the unit sphere,
+-- scaled and placed). The floor of bottom_* stays the tank's.
 -- riemann = 1 runs wcsph-riemann instead (its dummy walls, c0 = 10 √(2 g H), the density re-set
 -- as a free-surface flow's; the other scheme options do not apply to it).
 param { dr = 0.02, t_end = 1, depth = 0.2, width = 0.2, neumann = 1, alpha = 0.01, layers = 3,
         cfl = 1, start_p = 1, shift = 0, scan = 0, beta_fs = 0, dyn = 0, checkpoint = 0, block = 0,
-        riemann = 0, round = 0, sphere = 0, pillar = 0 }
+        riemann = 0, round = 0, sphere = 0, pillar = 0, stl = 0 }
 for k, v in pairs({ neumann = neumann, start_p = start_p, scan = scan, dyn = dyn, block = block,
-                    riemann = riemann, round = round, sphere = sphere, pillar = pillar }) do
+                    riemann = riemann, round = round, sphere = sphere, pillar = pillar, stl = stl }) do
   if v ~= 0 and v ~= 1 then error(("hydrostatic3d: %s must be 0 or 1, not %g"):format(k, v)) end
 end
 
@@ -53,7 +55,12 @@ if round == 1 then
 else
   box_wall { 0, 0, 0, width, width, 1.5 * depth, group = "tank" }
 end
-if sphere == 1 then sphere_wall { c, c, depth / 2, depth / 4, fluid = "outside", group = "ball" } end
+if sphere == 1 and stl == 1 then
+  stl_wall { "stl/sphere.stl", scale = depth / 4, offset = {c, c, depth / 2}, fluid = "outside",
+             group = "ball" }
+elseif sphere == 1 then
+  sphere_wall { c, c, depth / 2, depth / 4, fluid = "outside", group = "ball" }
+end
 if pillar == 1 then
   cylinder_wall { c, c, 0, c, c, 1.5 * depth, width / 5, fluid = "outside", group = "pillar" }
 end

@@ -1728,6 +1728,44 @@ clsph_run_test(run_stab3d_pillar ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
 clsph_run_test(run_riemann3d_sphere ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
                SETS t_end=0.5 riemann=1 sphere=1 width=0.4
                BOUNDS "pressure_rms<0.04" "speed_ratio<0.22" "inside_depth<0.25")
+# STL walls (stl_wall: ADMesh reads the file, host/scene/mesh.c checks and places it). The tank of
+# tests/case/bad_stl.lua is the unit cube of cases/stl/cube.stl, the block 0.4 m across on its floor
+# the same cube scaled and placed (its bottom facets lie on the floor: they face no water), dr =
+# 0.05: 20 x 20 x 10 lattice points of water less the block's 8 x 8 x 8, 3488; the tank's dummies
+# lie within 3 dr of it in the Euclidean distance (a box_wall's mitred layers hold 320 more). Its
+# 11 steps to t = 0.1 s put no particle behind a wall.
+set(bad_stl ${CASE_DIR}/bad_stl.lua)
+clsph_cli_test(stl_tank_info ARGS info ${bad_stl} RC 0
+               REGEX "particles: 13236 \\(fluid 3488, wall vertices 0, dummy 9748,")
+clsph_cli_test(stl_tank_run RC 0
+               ARGS run ${bad_stl} --out ${CMAKE_CURRENT_BINARY_DIR}/runs/stl_tank --overwrite
+               REGEX "done: t = 0.1 s in 11 steps")
+clsph_cli_test(stl_open ARGS info ${bad_stl} --set what=1 RC 2
+               REGEX "bad_stl.lua:15: stl_wall: .*stl/open.stl is not closed: 3 of its 11 facets have an edge that no other facet shares")
+clsph_cli_test(stl_inverted ARGS info ${bad_stl} --set what=2 RC 2
+               REGEX "bad_stl.lua:15: stl_wall: .*stl/inverted.stl: its normals point inward")
+clsph_cli_test(stl_flipped ARGS info ${bad_stl} --set what=3 RC 2
+               REGEX "bad_stl.lua:15: stl_wall: .*stl/flipped.stl: its facets are not consistently oriented: 1 of 12")
+clsph_cli_test(stl_junk ARGS info ${bad_stl} --set what=4 RC 2
+               REGEX "bad_stl.lua:15: stl_wall: .*stl/junk.stl is not an STL file that holds facets")
+clsph_cli_test(stl_missing ARGS info ${bad_stl} --set what=5 RC 2
+               REGEX "bad_stl.lua:15: stl_wall: cannot open .*stl/none.stl: No such file")
+clsph_cli_test(stl_2d ARGS info ${bad_stl} --set what=6 RC 2
+               REGEX "bad_stl.lua:7: stl_wall is 3-D: declare the domain")
+clsph_cli_test(stl_scale ARGS info ${bad_stl} --set what=7 RC 2
+               REGEX "bad_stl.lua:16: stl_wall: scale must be positive")
+clsph_cli_test(stl_no_file ARGS info ${bad_stl} --set what=8 RC 2
+               REGEX "bad_stl.lua:17: stl_wall: give the file as its first entry")
+clsph_cli_test(stl_past ARGS info ${bad_stl} --set what=9 RC 2
+               REGEX "bad_stl.lua:18: stl_wall \\(group 'walls'\\) reaches past the domain along x: \\[0.5, 1.5\\]")
+# The sphere of cases/hydrostatic3d.lua as a triangulated surface (stl = 1: cases/stl/sphere.stl,
+# 1280 facets, scaled to 0.05 m): the same 3944 fluid and 8252 dummy particles as sphere_wall's,
+# and at rest (pressure_form = "dynamic", 1 s) the same figures: largest error 0.0017, the floor
+# 4.5e-4, speed 1.4e-4 √(gH); bounds as the sphere's.
+clsph_run_test(run_stab3d_stl_sphere ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
+               SETS t_end=1 dyn=1 sphere=1 stl=1 width=0.4
+               BOUNDS "pressure_error<0.01" "bottom_error_avg<0.0017" "speed_ratio<5e-4"
+                      "crossed_wall<0.5")
 # wcsph-riemann in 3-D: the tank of cases/hydrostatic3d.lua (dr = H/10, 1 s, 308 steps, c0 =
 # 10 √(2 g H)): the largest error deeper than 3 dr 0.1225 (double) and 0.1227 (float), RMS 0.054
 # and 0.057, the floor's bottom_error_avg 0.036 and 0.041, the surface rows jostling at 0.16 √(gH)

@@ -1,9 +1,9 @@
 /* case.c: the case-script loader. A case is a Lua 5.4 script run in a sandbox (base, math,
  * string and table only; no io, os, package, debug, load, loadfile or dofile) whose declarations
- * (param, domain, particles, scheme, fluid, fill, wall, box_wall, sphere_wall, cylinder_wall, arc,
- * circle, inflow, outflow,
- * probe, profile, force, run, render) fill a struct scene. Every declaration checks its keys: an
- * unknown key is an error naming the script line and the nearest known key. */
+ * (param, domain, particles, scheme, fluid, fill, wall, box_wall, sphere_wall, cylinder_wall,
+ * stl_wall, arc, circle, inflow, outflow, probe, profile, force, run, render) fill a struct
+ * scene. Every declaration checks its keys: an unknown key is an error naming the script line and
+ * the nearest known key. */
 #include "case.h"
 
 #include <cjson/cJSON.h>
@@ -1027,6 +1027,46 @@ static int shape_wall(lua_State *L, enum scene_shape3 kind)
   return 0;
 }
 
+/* stl_wall { "file.stl", fluid = "inside" | "outside", group =, scale = 1, offset = {x, y, z} }:
+ * the solid a closed STL surface bounds (read and checked in finish: mesh.c), the fluid inside it
+ * (the default, as a box_wall's) or outside (an obstacle); the file's path is relative to the
+ * case script's folder unless absolute */
+static int l_stl_wall(lua_State *L)
+{
+  static const char *const keys[] = {"group", "fluid", "scale", "offset", NULL};
+  static const char *const sides[] = {"inside", "outside", NULL};
+  struct scene *s = loader_of(L)->s;
+  need_table(L, "stl_wall");
+  check_keys(L, 1, "stl_wall", keys, 1);
+  if (s->dim != 3)
+    luaL_error(L, "stl_wall is 3-D: declare the domain { x0, y0, z0, x1, y1, z1 } first");
+  if (lua_rawlen(L, 1) != 1 || lua_rawgeti(L, 1, 1) != LUA_TSTRING)
+    luaL_error(L, "stl_wall: give the file as its first entry, stl_wall { \"body.stl\", ... }");
+  const char *file = lua_tostring(L, -1);
+  const int side = get_choice(L, 1, "stl_wall", "fluid", sides, 0);
+  const double scale = get_number(L, 1, "stl_wall", "scale", 1.0);
+  if (!(scale > 0.0)) luaL_error(L, "stl_wall: scale must be positive, not %f", scale);
+  double offset[3] = {0.0, 0.0, 0.0};
+  get_vector(L, 1, "stl_wall", "offset", offset);
+  struct scene_wall *w = grow(L, (void **)&s->walls, &s->nwalls, sizeof *w);
+  w->line = current_line(L);
+  get_name(L, 1, "stl_wall", "group", w->group, "walls");
+  w->box3d = side == 1 ? 2 : 1;
+  w->closed = 1;
+  w->shape = SCENE_MESH;
+  w->stl_scale = scale;
+  memcpy(w->stl_offset, offset, sizeof offset);
+  /* beside the case script unless absolute */
+  const char *slash = strrchr(s->case_path, '/');
+  const int dirlen = file[0] == '/' || slash == NULL ? 0 : (int)(slash - s->case_path) + 1;
+  const size_t size = (size_t)dirlen + strlen(file) + 1;
+  w->stl = malloc(size);
+  if (w->stl == NULL) luaL_error(L, "out of memory");
+  snprintf(w->stl, size, "%.*s%s", dirlen, s->case_path, file);
+  lua_pop(L, 1);
+  return 0;
+}
+
 static int l_sphere_wall(lua_State *L)
 {
   return shape_wall(L, SCENE_SPHERE);
@@ -1664,6 +1704,7 @@ static void register_api(lua_State *L, struct loader *ld)
       {"box_wall", l_box_wall},
       {"sphere_wall", l_sphere_wall},
       {"cylinder_wall", l_cylinder_wall},
+      {"stl_wall", l_stl_wall},
       {"arc", l_arc},
       {"circle", l_circle},
       {"inflow", l_inflow},
@@ -1724,13 +1765,24 @@ static enum clsph_status finish(const char *path, struct loader *ld)
     CLSPH_CHECK(0, CLSPH_E_INPUT, "--set %s: %s declares no parameter '%s'%s", ld->set_names[k],
                 path, ld->set_names[k], hint);
   }
-  if (!s->rho0) s->rho0 = 1000.0; /* no fluid {} declaration: water at rest */
+  if (!s->rho0) s->rho0 = 1000.0;       /* no fluid {} declaration: water at rest */
+  for (int w = 0; w < s->nwalls; ++w) { /* the STL surfaces: read, placed and checked */
+    struct scene_wall *wl = &s->walls[w];
+    if (wl->shape != SCENE_MESH) continue;
+    char where[1200];
+    snprintf(where, sizeof where, "%s:%d: stl_wall", path, wl->line);
+    wl->mesh = calloc(1, sizeof *wl->mesh);
+    CLSPH_CHECK(wl->mesh != NULL, CLSPH_E_NOMEM, "out of memory");
+    CLSPH_TRY(mesh_load(wl->stl, where, wl->stl_scale, wl->stl_offset, wl->mesh));
+    memcpy(wl->box3, wl->mesh->box, sizeof wl->box3);
+  }
   if (s->dim == 3) { /* what 3-D scenes have: box, sphere and cylinder walls and fills */
     for (int w = 0; w < s->nwalls; ++w)
       CLSPH_CHECK(s->walls[w].box3d, CLSPH_E_INPUT,
                   "%s:%d: wall (group '%s') is a 2-D polyline (wall, arc, circle or a box_wall "
                   "declared before the domain) in a 3-D scene: 3-D walls are box_wall { x0, y0, "
-                  "z0, x1, y1, z1 }, sphere_wall { } and cylinder_wall { } after domain { }",
+                  "z0, x1, y1, z1 }, sphere_wall { }, cylinder_wall { } and stl_wall { } after "
+                  "domain { }",
                   path, s->walls[w].line, s->walls[w].group);
     for (int r = 0; r < s->nregions; ++r)
       CLSPH_CHECK(s->regions[r].npts == 0, CLSPH_E_INPUT,

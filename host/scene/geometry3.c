@@ -32,6 +32,11 @@
  * axis on a cap) and their depth. A cylinder obstacle's cap that lies on a container's face (a
  * pillar from the floor) or, without a container, on the domain's boundary faces no fluid, as a
  * box obstacle's face on its container's.
+ * STL surfaces (stl_wall, mesh.c): fluid on the lattice points inside a container's or outside
+ * an obstacle's surface (no shell), dummies within `layers` spacings of the surface in the
+ * Euclidean distance, each with its distance to the nearest surface point q and the normal
+ * (q − x)/|q − x| into the fluid (on the surface: the facet's); an obstacle's facets whose centre
+ * lies on a container's face (a block's bottom on the floor) face no fluid and count not.
  * Positions, velocities and normals are n x 3. */
 #include <math.h>
 #include <stdlib.h>
@@ -45,6 +50,7 @@ static const double tol3 = 1e-9;        /* in dr: slack on layer thicknesses and
 
 struct build3 {
   const struct scene *s;
+  struct mesh_index *mi; /* nwalls: the search grids of the STL walls' surfaces */
   size_t n, cap;
   double *x, *v, *normal, *dist, *p0, *rho0;
   int *kind, *group;
@@ -273,6 +279,26 @@ static void shape_surface_normal(const struct scene_wall *w, const double x[3], 
   for (int a = 0; a < 3; ++a) nrm[a] = nn > 0.0 ? nrm[a] / nn : 0.0;
 }
 
+/* shape_in of wall w (an STL surface: inside it, whatever grow and strict) */
+static int wall_in(const struct build3 *b, int w, const double x[3], double grow, int strict)
+{
+  const struct scene_wall *wl = &b->s->walls[w];
+  if (wl->shape == SCENE_MESH) return mesh_inside(wl->mesh, &b->mi[w], x);
+  return shape_in(wl->shape, wl->box3, wl->shape3, x, grow, strict);
+}
+
+/* shape_nearest of container w (an STL surface: the Euclidean distance within the grid's reach,
+ * HUGE_VAL beyond) */
+static double wall_nearest(const struct build3 *b, int w, const double x[3], double q[3], double *d)
+{
+  const struct scene_wall *wl = &b->s->walls[w];
+  if (wl->shape == SCENE_MESH) {
+    *d = mesh_nearest(wl->mesh, &b->mi[w], x, q, NULL);
+    return *d;
+  }
+  return shape_nearest(wl->shape, wl->box3, wl->shape3, x, q, d);
+}
+
 static enum clsph_status fluid3(struct build3 *b)
 {
   enum clsph_status st = CLSPH_OK;
@@ -305,10 +331,8 @@ static enum clsph_status fluid3(struct build3 *b)
         int held = ncont == 0, carved = 0;
         for (int w = 0; w < s->nwalls; ++w) {
           const struct scene_wall *wl = &s->walls[w];
-          if (wl->box3d == 1) held |= shape_in(wl->shape, wl->box3, wl->shape3, x, 0.0, 1);
-          if (wl->box3d == 2)
-            carved |= shape_in(wl->shape, wl->box3, wl->shape3, x,
-                               wl->shape == SCENE_BOX3 ? clear : 0.0, 1);
+          if (wl->box3d == 1) held |= wall_in(b, w, x, 0.0, 1);
+          if (wl->box3d == 2) carved |= wall_in(b, w, x, wl->shape == SCENE_BOX3 ? clear : 0.0, 1);
         }
         if (carved) continue;
         CLSPH_CHECK(held, CLSPH_E_INPUT,
@@ -358,16 +382,20 @@ done:
 /* Does an obstacle's face or cap at point c face fluid? Not when it lies on the face of the
  * container that holds the obstacle's centre `mid` (a gate across the tank, a block or a pillar on
  * the floor), nor, without any container, on the domain's boundary. */
-static int faces_fluid(const struct scene *s, const double mid[3], const double c[3])
+static int faces_fluid(const struct build3 *b, const double mid[3], const double c[3])
 {
+  const struct scene *s = b->s;
   const double tol = tol3 * s->dr;
   int any = 0;
   for (int k = 0; k < s->nwalls; ++k) {
     const struct scene_wall *wl = &s->walls[k];
     if (wl->box3d != 1) continue;
     any = 1;
-    if (shape_in(wl->shape, wl->box3, wl->shape3, mid, 0.0, 1))
-      return shape_in(wl->shape, wl->box3, wl->shape3, c, -tol, 1);
+    if (wall_in(b, k, mid, 0.0, 1)) {
+      if (wl->shape != SCENE_MESH) return shape_in(wl->shape, wl->box3, wl->shape3, c, -tol, 1);
+      double q[3], d;
+      return wall_in(b, k, c, 0.0, 1) && wall_nearest(b, k, c, q, &d) > tol;
+    }
   }
   if (any) return 1;
   for (int a = 0; a < 3; ++a)
@@ -386,9 +414,15 @@ static enum clsph_status obstacle_dummy(struct build3 *b, const double x[3], dou
   for (int w = 0; w < s->nwalls; ++w) {
     const struct scene_wall *wl = &s->walls[w];
     const double *bx = wl->box3, *sh = wl->shape3;
-    if (wl->box3d != 2 || !shape_in(wl->shape, bx, sh, x, 0.0, 0)) continue;
+    if (wl->box3d != 2 || !wall_in(b, w, x, 0.0, 0)) continue;
     double depth = HUGE_VAL, nrm[3] = {0.0, 0.0, 0.0};
-    if (wl->shape == SCENE_SPHERE) {
+    if (wl->shape == SCENE_MESH) { /* the nearest surface point q: n = (q − x)/|q − x| */
+      double q[3];
+      size_t t = 0;
+      depth = mesh_nearest(wl->mesh, &b->mi[w], x, q, &t);
+      for (int a = 0; a < 3; ++a)
+        nrm[a] = depth > tol3 * s->dr ? (q[a] - x[a]) / depth : wl->mesh->nrm[3 * t + a];
+    } else if (wl->shape == SCENE_SPHERE) {
       const double r = dist3(x, sh);
       depth = sh[3] - r;
       for (int a = 0; a < 3; ++a) nrm[a] = r > 0.0 ? (x[a] - sh[a]) / r : a == 2;
@@ -400,7 +434,7 @@ static enum clsph_status obstacle_dummy(struct build3 *b, const double x[3], dou
       memcpy(nrm, c.u, sizeof nrm);
       for (int e = 0; e < 2; ++e) {
         const double dc = e ? c.len - c.t : c.t;
-        if (dc < depth && faces_fluid(s, mid, sh + 3 * e)) {
+        if (dc < depth && faces_fluid(b, mid, sh + 3 * e)) {
           depth = dc;
           for (int a = 0; a < 3; ++a) nrm[a] = (e ? 1.0 : -1.0) * c.a[a];
         }
@@ -460,12 +494,12 @@ static enum clsph_status dummy3(struct build3 *b, int layers)
         for (int w = 0; w < s->nwalls && !inside; ++w) {
           const struct scene_wall *wl = &s->walls[w];
           if (wl->box3d != 1) continue;
-          if (shape_in(wl->shape, wl->box3, wl->shape3, x, 0.0, 1)) {
+          if (wall_in(b, w, x, 0.0, 1)) {
             inside = 1; /* the fluid side of a container */
             break;
           }
           double qw[3], d;
-          const double layer = shape_nearest(wl->shape, wl->box3, wl->shape3, x, qw, &d);
+          const double layer = wall_nearest(b, w, x, qw, &d);
           if (layer <= thick && d < best) {
             best = d;
             wall = w;
@@ -481,7 +515,14 @@ static enum clsph_status dummy3(struct build3 *b, int layers)
         if (best > tol3 * s->dr) {
           for (int a = 0; a < 3; ++a) nrm[a] = (q[a] - x[a]) / best;
         } else { /* on a face, an edge or a corner: the faces' inward normals, summed */
-          shape_surface_normal(&s->walls[wall], x, tol3 * s->dr, nrm);
+          if (s->walls[wall].shape == SCENE_MESH) { /* into the fluid: against the facet's */
+            double qs[3];
+            size_t t = 0;
+            mesh_nearest(s->walls[wall].mesh, &b->mi[wall], x, qs, &t);
+            for (int a = 0; a < 3; ++a) nrm[a] = -s->walls[wall].mesh->nrm[3 * t + a];
+          } else {
+            shape_surface_normal(&s->walls[wall], x, tol3 * s->dr, nrm);
+          }
           if (nrm[0] == 0.0 && nrm[1] == 0.0 && nrm[2] == 0.0) continue;
         }
         const double zero[3] = {0.0, 0.0, 0.0};
@@ -508,14 +549,38 @@ enum clsph_status geometry_build3(const struct scene *s, const char *model, int 
   for (int w = 0; w < s->nwalls; ++w) { /* the domain holds the container and its layers */
     const struct scene_wall *wl = &s->walls[w];
     for (int a = 0; a < 3 && strcmp(model, "dummy") == 0; ++a)
-      CLSPH_CHECK(s->periodic[a] || (wl->box3[a] >= s->lo[a] - tol3 * s->dr &&
-                                     wl->box3[3 + a] <= s->hi[a] + tol3 * s->dr),
-                  CLSPH_E_INPUT,
-                  "%s:%d: %s (group '%s') reaches past the domain along %c: [%g, %g] "
-                  "against [%g, %g]",
-                  s->case_path, wl->line,
-                  (const char *[]){"box_wall", "sphere_wall", "cylinder_wall"}[wl->shape],
-                  wl->group, "xyz"[a], wl -> box3[a], wl -> box3[3 + a], s -> lo[a], s -> hi[a]);
+      CLSPH_CHECK(
+          s->periodic[a] || (wl->box3[a] >= s->lo[a] - tol3 * s->dr &&
+                             wl->box3[3 + a] <= s->hi[a] + tol3 * s->dr),
+          CLSPH_E_INPUT,
+          "%s:%d: %s (group '%s') reaches past the domain along %c: [%g, %g] "
+          "against [%g, %g]",
+          s->case_path, wl->line,
+          (const char *[]){"box_wall", "sphere_wall", "cylinder_wall", "stl_wall"}[wl->shape],
+          wl->group, "xyz"[a], wl -> box3[a], wl -> box3[3 + a], s -> lo[a], s -> hi[a]);
+  }
+  b.mi = calloc((size_t)s->nwalls + 1, sizeof *b.mi);
+  CLSPH_CHECK(b.mi != NULL, CLSPH_E_NOMEM, "geometry: out of memory");
+  for (int w = 0; w < s->nwalls; ++w) /* the dummies lie within `layers` spacings */
+    if (s->walls[w].shape == SCENE_MESH)
+      CLSPH_TRY(mesh_index_build(s->walls[w].mesh, (layers + 1) * s->dr, &b.mi[w]));
+  for (int w = 0; w < s->nwalls; ++w) { /* an obstacle's facets on a container face no fluid */
+    const struct scene_wall *wl = &s->walls[w];
+    if (wl->shape != SCENE_MESH || wl->box3d != 2) continue;
+    const double *bx = wl->mesh->box;
+    const double mid[3] = {0.5 * (bx[0] + bx[3]), 0.5 * (bx[1] + bx[4]), 0.5 * (bx[2] + bx[5])};
+    size_t hidden = 0;
+    for (size_t t = 0; t < wl->mesh->ntri; ++t) {
+      const double *v = wl->mesh->tri + 9 * t;
+      const double c[3] = {(v[0] + v[3] + v[6]) / 3.0, (v[1] + v[4] + v[7]) / 3.0,
+                           (v[2] + v[5] + v[8]) / 3.0};
+      b.mi[w].hidden[t] = (unsigned char)!faces_fluid(&b, mid, c);
+      hidden += b.mi[w].hidden[t];
+    }
+    CLSPH_CHECK(hidden < wl->mesh->ntri, CLSPH_E_INPUT,
+                "%s:%d: stl_wall (group '%s'): none of its facets faces the fluid: every one lies "
+                "on a container's face",
+                s->case_path, wl->line, wl->group);
   }
   CLSPH_TRY(fluid3(&b));
   const size_t nfluid = b.n;
@@ -532,7 +597,9 @@ enum clsph_status geometry_build3(const struct scene *s, const char *model, int 
   out->rho0 = b.rho0;
   out->kind = b.kind;
   out->group = b.group;
+  struct mesh_index *mi = b.mi;
   memset(&b, 0, sizeof b); /* the geometry owns them now */
+  b.mi = mi;
   out->k0 = malloc((n + 1) * sizeof *out->k0);
   out->eps0 = malloc((n + 1) * sizeof *out->eps0);
   out->theta = calloc(n + 1, sizeof *out->theta);
@@ -554,5 +621,7 @@ done:
   free(b.rho0);
   free(b.kind);
   free(b.group);
+  for (int w = 0; b.mi != NULL && w < s->nwalls; ++w) mesh_index_free(&b.mi[w]);
+  free(b.mi);
   return st;
 }

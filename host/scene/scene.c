@@ -8,7 +8,12 @@
 void scene_free(struct scene *s)
 {
   for (int i = 0; i < s->nregions; ++i) free(s->regions[i].pts);
-  for (int i = 0; i < s->nwalls; ++i) free(s->walls[i].pts);
+  for (int i = 0; i < s->nwalls; ++i) {
+    free(s->walls[i].pts);
+    if (s->walls[i].mesh != NULL) mesh_free(s->walls[i].mesh);
+    free(s->walls[i].mesh);
+    free(s->walls[i].stl);
+  }
   free(s->regions);
   free(s->walls);
   for (int i = 0; i < s->nsections; ++i) free(s->sections[i].prof);

@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 
+#include "mesh.h"
 #include "status.h"
 
 #define SCENE_NAME 64 /* longest name (group, probe, parameter, option) + 1 */
@@ -32,6 +33,7 @@ enum scene_shape3 {
   SCENE_BOX3 = 0,
   SCENE_SPHERE,   /* shape3: cx, cy, cz, R */
   SCENE_CYLINDER, /* shape3: the axis' ends x0, y0, z0, x1, y1, z1, and R; closed by flat caps */
+  SCENE_MESH,     /* a closed triangulated surface (stl_wall; walls only): scene_wall.mesh */
 };
 
 /** A fluid region filled at spacing dr on the lattice lo + (k + 1/2) dr. */
@@ -91,7 +93,10 @@ struct scene_wall {
                    * box), m */
   enum scene_shape3 shape;
   double shape3[7];
-  int line; /* line of the case script */
+  struct mesh3 *mesh; /* SCENE_MESH: the surface (owned by the scene) */
+  char *stl;          /* SCENE_MESH: its file (beside the case script unless absolute) */
+  double stl_scale, stl_offset[3]; /* its placement: x' = scale x + offset */
+  int line;                        /* line of the case script */
 };
 
 enum scene_section_kind { SCENE_INFLOW = 1, SCENE_OUTFLOW };
