@@ -13,9 +13,14 @@
 -- (eq 38); floor sets the USAW schemes' wall_distance_floor, the least wall distance of the
 -- viscous wall term in spacings (0: the scheme's, δr/2 for isph-usaw) (the study
 -- cavity_re100_causes in tests/harness/studies.txt measures each).
+-- dim = 3 (with riemann = 1) runs it in 3-D: the box `span` spacings deep along z, periodic
+-- there, its lid the face y = 1 sliding at {U, 0, 0} (box_wall { ..., lid_velocity, lid_face }):
+-- a 2-D flow in a 3-D code, which must reproduce the 2-D run. Its metrics are the particles' own
+-- (u_rms_particles, u_lid_rows and u_rms_rows, over every z; sim.sample and the profiles are 2-D)
+-- and w_rms, the RMS spanwise velocity over U (0 in the 2-D flow).
 param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, riemann = 0, ard = 0, tvf = 2, dens = 0, c0 = 10, alpha = 0.2,
         shift = 0.7, checkpoint = 0, hdr = 0, guard = 0, corners = 0, shift_velocity = 1,
-        floor = 0 }
+        floor = 0, dim = 2, span = 9 }
 
 local U = 1
 for _, sw in ipairs({{"guard", guard}, {"corners", corners}, {"shift_velocity", shift_velocity}}) do
@@ -30,7 +35,13 @@ if not (floor == 0 or (floor > 0 and floor <= 1)) then
   error(("cavity: floor (in δr) must be 0 (the scheme's) or in (0, 1], not %g"):format(floor))
 end
 local wall_floor = floor > 0 and floor or nil
-domain { 0, 0, 1, 1 }
+if dim ~= 2 and dim ~= 3 then error(("cavity: dim must be 2 or 3, not %g"):format(dim)) end
+if dim == 3 and riemann ~= 1 then error("cavity: dim = 3 needs riemann = 1 (wcsph-riemann)") end
+if dim == 3 then
+  domain { 0, 0, 0, 1, 1, span / n, periodic = "z" }
+else
+  domain { 0, 0, 1, 1 }
+end
 particles { dr = 1 / n, h_over_dr = hdr > 0 and hdr or nil }
 if riemann == 1 then -- Riemann WCSPH with the limited transport velocity (c0 = 10 U)
   scheme { "wcsph-riemann", sound_speed = c0 * U, ard = ard, transport_coefficient = alpha,
@@ -45,18 +56,24 @@ else
            wall_distance_floor = wall_floor }
 end
 fluid { density = 1, viscosity = U / re }
-if corners == 1 then -- the lid first: walls that share an end point share its vertex particle,
+if dim == 3 then -- the box, its lid the face y = 1 (its edges' dummies at rest, geometry3.c)
+  box_wall { 0, 0, 0, 1, 1, span / n, lid_velocity = {U, 0, 0}, lid_face = "y1" }
+elseif corners == 1 then -- the lid first: walls that share an end point share its vertex particle,
   -- which takes the velocity of the wall declared first (host/scene/geometry.c)
   wall { {1, 1}, {0, 1}, velocity = {U, 0}, group = "lid" }
   wall { {0, 1}, {0, 0}, {1, 0}, {1, 1} }
 else -- box_wall's corners belong to the side walls, at rest
   box_wall { 0, 0, 1, 1, lid_velocity = {U, 0} }
 end
-fill { 0, 0, 1, 1, name = "fluid" }
-profile { "u_centreline", from = {0.5, 0}, to = {0.5, 1}, points = 101 }
-profile { "v_centreline", from = {0, 0.5}, to = {1, 0.5}, points = 101 }
-profile { "diagonal", from = {0, 0}, to = {1, 1}, points = 101 }  -- pressure along the diagonal
-force { "lid" }
+if dim == 3 then
+  fill { 0, 0, 0, 1, 1, span / n, name = "fluid" }
+else
+  fill { 0, 0, 1, 1, name = "fluid" }
+  profile { "u_centreline", from = {0.5, 0}, to = {0.5, 1}, points = 101 }
+  profile { "v_centreline", from = {0, 0.5}, to = {1, 0.5}, points = 101 }
+  profile { "diagonal", from = {0, 0}, to = {1, 1}, points = 101 } -- pressure along the diagonal
+  force { "lid" }
+end
 run { t_end = t_end, output_every = t_end / 10, cfl = cfl,
       checkpoint_every = checkpoint > 0 and checkpoint or nil }
 
@@ -110,10 +127,43 @@ local function particle_errors(sim, column)
   return nu_ > 0 and math.sqrt(su / nu_) or nan, nl > 0 and sl / nl or nan
 end
 
+-- The same by rows: the fluid particles within δr of x = 1/2 (the two lattice columns either
+-- side of it at even n, every z in 3-D) binned by y in rows δr high; each row's mean u against
+-- Ghia's u at the row's mean y, RMS over the rows (the mean of the two columns is u(1/2) to
+-- O(δr²); the particles' own metric above counts those within δr/2 of x = 1/2, a set that at even
+-- n rounding decides while they sit on the lattice).
+local function row_errors(sim, column)
+  local dr = 1 / n
+  local x, y = sim.field("pos", 1).value, sim.field("pos", 2).value
+  local u = sim.field("vel", 1).value
+  local su, sy, c = {}, {}, {}
+  for i = 1, #x do
+    if math.abs(x[i] - 0.5) < dr then
+      local k = math.min(n - 1, math.max(0, math.floor(y[i] / dr)))
+      su[k], sy[k], c[k] = (su[k] or 0) + u[i], (sy[k] or 0) + y[i], (c[k] or 0) + 1
+    end
+  end
+  local sq, rows = 0, 0
+  for k = 0, n - 1 do
+    if c[k] then
+      local e = su[k] / c[k] / U - ghia_at("u_" .. column, sy[k] / c[k])
+      sq, rows = sq + e * e, rows + 1
+    end
+  end
+  return rows > 0 and math.sqrt(sq / rows) or 0 / 0
+end
+
 function metrics(sim)
   local column = "Re" .. math.floor(re + 0.5)
   if column ~= "Re100" and column ~= "Re400" and column ~= "Re1000" then -- Ghia's other Re: not
     return { wall_crossing_steps = sim.wall_crossing_steps }             -- in tests/data
+  end
+  if dim == 3 then -- the particles' own, and the spanwise velocity
+    local up_rms, u_lid = particle_errors(sim, column)
+    local w, sq = sim.field("vel", 3).value, 0
+    for i = 1, #w do sq = sq + w[i] * w[i] end
+    return { u_rms_particles = up_rms, u_lid_rows = u_lid, w_rms = math.sqrt(sq / #w) / U,
+             u_rms_rows = row_errors(sim, column), wall_crossing_steps = sim.wall_crossing_steps }
   end
   local u_rms, u_max = sim.profile_error { field = "vel", component = 1, x = 0.5,
     csv = "tests/data/ghia1982_u_centreline.csv", coordinate = "y", value = "u_" .. column }
@@ -132,6 +182,6 @@ function metrics(sim)
   return { u_rms_vs_ghia = u_rms, u_max_vs_ghia = u_max, v_rms_vs_ghia = v_rms,
            v_max_vs_ghia = v_max, u_rms_linear = ul_rms, u_max_linear = ul_max,
            v_rms_linear = vl_rms, v_max_linear = vl_max, u_rms_particles = up_rms,
-           u_lid_rows = u_lid,
+           u_lid_rows = u_lid, u_rms_rows = row_errors(sim, column),
            wall_crossing_steps = sim.wall_crossing_steps }
 end

@@ -1789,6 +1789,21 @@ clsph_run_test(run_dam_break_riemann3d ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
                SETS riemann=1 dim=3 n=20 top=0.6 t_end=0.1
                BOUNDS "front_over_ritter>0.21" "front_over_ritter<0.34" "floor_speed_max<1"
                       "volume_ratio>0.999" "crossed_wall<0.5")
+# The lid-driven cavity in 3-D (cases/cavity.lua dim=3 riemann=1: the box 9 δr deep along z,
+# periodic there, its lid the face y = 1 sliding at {U, 0, 0}, Re = 100), n = 20, to t = 5 (310
+# steps, 26 s): the rows' mean u at x = 1/2 (every z) against Ghia's 0.035 U RMS in double, where
+# the 2-D run reads 0.031 (0.032 in float); the spanwise velocity 0.0013 U RMS (0.02 U at most).
+# In float the spanwise noise grows from t = 1.5 (0.11 U at most at t = 4, RMS 0.0043 U at t = 5)
+# and the 3-D flow leaves the 2-D one: its rows read 0.010 U, its kinetic energy 2% over the
+# double run's. (At n = 30 to t = 10, double: 0.0099 U by the particles' own metric against the 2-D
+# run's 0.013, w 0.0033 U RMS; 183 s.) Bounds: 0.045 (the 2-D run's error and a half), spanwise
+# 0.01 U RMS, no particle behind a wall.
+clsph_run_test(run_cavity_riemann3d ${CMAKE_SOURCE_DIR}/cases/cavity.lua
+               SETS dim=3 riemann=1 n=20 t_end=5
+               BOUNDS "u_rms_rows<0.045" "w_rms<0.01" "wall_crossing_steps<0.5")
+# box_wall's lid in 3-D: it slides along its face and belongs to a container
+clsph_cli_test(three_d_lid_across ARGS info ${CMAKE_SOURCE_DIR}/tests/case/bad_3d.lua --set what=23 RC 2
+               REGEX "bad_3d.lua:51: box_wall: lid_velocity \\{0.0, 1.0, 0.0\\} crosses the lid face y1: its y component must be 0")
 # Poiseuille flow in 3-D (cases/poiseuille3d.lua: plates at z = 0 and H, periodic along x and y,
 # Re = 1, the pseudo-Neumann walls), dr = H/10, to t = 1 (556 steps, steady): u within 2.17% of
 # the series solution RMS and 2.75% at worst (of U0) in double and float, the cross-flow 7.3e-4

@@ -1079,8 +1079,10 @@ static int l_cylinder_wall(lua_State *L)
 
 static int l_box_wall(lua_State *L)
 {
-  static const char *const keys[] = {"group", "lid_velocity", "lid_group", "fluid", NULL};
+  static const char *const keys[] = {"group",    "lid_velocity", "lid_group",
+                                     "lid_face", "fluid",        NULL};
   static const char *const sides[] = {"inside", "outside", NULL};
+  static const char *const faces[] = {"x0", "x1", "y0", "y1", "z0", "z1", NULL};
   struct loader *ld = loader_of(L);
   struct scene *s = ld->s;
   need_table(L, "box_wall");
@@ -1089,15 +1091,33 @@ static int l_box_wall(lua_State *L)
   if (s->dim == 3) { /* a closed box, the fluid inside (a tank) or outside (an obstacle) */
     if (lua_rawlen(L, 1) != 6)
       luaL_error(L, "box_wall: give the box as { x0, y0, z0, x1, y1, z1 } in a 3-D scene");
-    lua_getfield(L, 1, "lid_velocity");
-    if (!lua_isnil(L, -1)) luaL_error(L, "box_wall: lid_velocity is 2-D only for now");
-    lua_pop(L, 1);
+    /* a sliding face (the lid of a cavity): its dummies move at lid_velocity, along the face */
+    double lid[3] = {0.0, 0.0, 0.0};
+    const int has_lid = get_vector(L, 1, "box_wall", "lid_velocity", lid);
+    const int face = get_choice(L, 1, "box_wall", "lid_face", faces, 5);
+    lua_getfield(L, 1, "lid_group");
+    if (!lua_isnil(L, -1))
+      luaL_error(L, "box_wall: lid_group is 2-D (a 3-D lid's dummies stay in the box's group)");
+    lua_getfield(L, 1, "lid_face");
+    if (!lua_isnil(L, -1) && !has_lid) luaL_error(L, "box_wall: lid_face needs lid_velocity");
+    lua_pop(L, 2);
+    if (has_lid && side == 1)
+      luaL_error(L, "box_wall: lid_velocity belongs to a container (fluid = \"inside\")");
+    if (has_lid && lid[face / 2] != 0.0)
+      luaL_error(L,
+                 "box_wall: lid_velocity {%f, %f, %f} crosses the lid face %s: its %c component "
+                 "must be 0 (the lid slides along its face)",
+                 lid[0], lid[1], lid[2], faces[face], "xyz"[face / 2]);
     static const char *const bn[6] = {"x0", "y0", "z0", "x1", "y1", "z1"};
     struct scene_wall *w = grow(L, (void **)&s->walls, &s->nwalls, sizeof *w);
     w->line = current_line(L);
     get_name(L, 1, "box_wall", "group", w->group, "walls");
     w->box3d = side == 1 ? 2 : 1;
     w->closed = 1;
+    if (has_lid) {
+      w->lid3 = 1 + face;
+      memcpy(w->velocity, lid, sizeof lid);
+    }
     for (int k = 0; k < 6; ++k) w->box3[k] = get_index_number(L, 1, "box_wall", k + 1, bn[k]);
     for (int a = 0; a < 3; ++a)
       if (!(w->box3[3 + a] > w->box3[a]))

@@ -37,6 +37,10 @@
  * Euclidean distance, each with its distance to the nearest surface point q and the normal
  * (q − x)/|q − x| into the fluid (on the surface: the facet's); an obstacle's facets whose centre
  * lies on a container's face (a block's bottom on the floor) face no fluid and count not.
+ * A box container's sliding face (box_wall { ..., lid_velocity, lid_face }): the dummies whose
+ * nearest wall point lies on it and that lie within its span (across the side walls' planes, or
+ * along a periodic axis) move at the lid's velocity; those beyond its edges, the side walls', stay
+ * at rest (the 2-D box_wall's corners, geometry.c).
  * Positions, velocities and normals are n x 3. */
 #include <math.h>
 #include <stdlib.h>
@@ -525,8 +529,16 @@ static enum clsph_status dummy3(struct build3 *b, int layers)
           }
           if (nrm[0] == 0.0 && nrm[1] == 0.0 && nrm[2] == 0.0) continue;
         }
-        const double zero[3] = {0.0, 0.0, 0.0};
-        CLSPH_TRY(push3(b, x, zero, nrm, best, KIND_DUMMY, wall, (double)NAN, (double)NAN));
+        double v[3] = {0.0, 0.0, 0.0};
+        const struct scene_wall *wl = &s->walls[wall];
+        if (wl->lid3 > 0) { /* on the sliding face, within its span: the lid's velocity */
+          const int a = (wl->lid3 - 1) / 2, hi = (wl->lid3 - 1) % 2;
+          int on = fabs(q[a] - wl->box3[3 * hi + a]) <= tol3 * s->dr;
+          for (int e = 0; e < 3; ++e)
+            if (e != a && !s->periodic[e]) on = on && x[e] > wl->box3[e] && x[e] < wl->box3[3 + e];
+          if (on) memcpy(v, wl->velocity, sizeof v);
+        }
+        CLSPH_TRY(push3(b, x, v, nrm, best, KIND_DUMMY, wall, (double)NAN, (double)NAN));
       }
 done:
   return st;

@@ -85,7 +85,7 @@ struct scene_wall {
   int fitted; /* dummy layers in rows along the wall (wall { dummies = "fitted" }), not on the
                * lattice */
   enum scene_motion motion;
-  double velocity[2]; /* sliding velocity, m/s */
+  double velocity[3]; /* sliding velocity, m/s (z: 3-D only) */
   double centre[2];   /* rotation centre, m */
   double omega;       /* angular velocity, rad/s, counter-clockwise positive */
   int box3d; /* 3-D: a solid (npts 0): 1 a container, its fluid inside; 2 an obstacle, outside */
@@ -94,7 +94,9 @@ struct scene_wall {
   enum scene_shape3 shape;
   double shape3[7];
   struct mesh3 *mesh; /* SCENE_MESH: the surface (owned by the scene) */
-  char *stl;          /* SCENE_MESH: its file (beside the case script unless absolute) */
+  int lid3;  /* 3-D box container: 1 + the face whose dummies slide at `velocity` (2 a + side: 0 x0,
+              * 1 x1, 2 y0, 3 y1, 4 z0, 5 z1); 0: none */
+  char *stl; /* SCENE_MESH: its file (beside the case script unless absolute) */
   double stl_scale, stl_offset[3]; /* its placement: x' = scale x + offset */
   int line;                        /* line of the case script */
 };

@@ -122,7 +122,8 @@ static double velocity_scale(const struct scene *s, const struct geom *g)
   double u2 = 0.0;
   for (int w = 0; w < s->nwalls; ++w) {
     const struct scene_wall *wl = &s->walls[w];
-    u2 = fmax(u2, wl->velocity[0] * wl->velocity[0] + wl->velocity[1] * wl->velocity[1]);
+    u2 = fmax(u2, wl->velocity[0] * wl->velocity[0] + wl->velocity[1] * wl->velocity[1] +
+                      wl->velocity[2] * wl->velocity[2]);
     for (int k = 0; k < wl->npts && wl->omega != 0.0; ++k) {
       double r = hypot(wl->pts[2 * k] - wl->centre[0], wl->pts[2 * k + 1] - wl->centre[1]);
       u2 = fmax(u2, wl->omega * wl->omega * r * r);

@@ -900,7 +900,8 @@ static enum clsph_status stab_max_dt(struct sim *sim, void *state, double *dt)
   CLSPH_TRY(sim_max_speed(sim, 0, &b->umax));
   double u = b->umax;
   for (int w = 0; w < s->nwalls; ++w) /* a sliding wall drives the fluid */
-    u = fmax(u, hypot(s->walls[w].velocity[0], s->walls[w].velocity[1]));
+    u = fmax(
+        u, hypot(hypot(s->walls[w].velocity[0], s->walls[w].velocity[1]), s->walls[w].velocity[2]));
   if (b->has_gate && sim->time < b->gate_stop) u = fmax(u, b->gate_speed); /* the gate's moves */
   const double a =
       hypot(hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]),

@@ -26,7 +26,7 @@ void sound_velocity_scale(const struct scene *s, const struct geom *g, struct so
   const char *what = "nothing: no drive";
   for (int w = 0; w < s->nwalls; ++w) {
     const struct scene_wall *wl = &s->walls[w];
-    double uw = hypot(wl->velocity[0], wl->velocity[1]);
+    double uw = hypot(hypot(wl->velocity[0], wl->velocity[1]), wl->velocity[2]);
     for (int k = 0; k < wl->npts && wl->omega != 0.0; ++k)
       uw = fmax(uw, fabs(wl->omega) *
                         hypot(wl->pts[2 * k] - wl->centre[0], wl->pts[2 * k + 1] - wl->centre[1]));

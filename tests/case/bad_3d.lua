@@ -40,12 +40,13 @@ elseif what == 11 then
 else
   fill { 0, 0, 0, 1, 1, 0.5, name = "water" }
 end
--- the curved solids: 17, a sphere of radius 0; 18, a cylinder whose ends are one point; 19, a fill
--- of a box and a sphere at once; 20, a sphere past the domain's top; 21, a cylinder 2 dr across
--- (the markers need 3.8 dr); 22 (line 11), a sphere before the 3-D domain
+-- the curved solids: 17, a sphere of radius 0; 18, a cylinder whose ends are one point; 19, a box
+-- and a sphere in one fill; 20, a sphere past the top; 21, a cylinder 2 dr across (the markers
+-- need 3.8 dr); 22 (line 11), a sphere before the 3-D domain; 23, a lid sliding across its face
 if what == 17 then sphere_wall { 0.5, 0.5, 0.25, 0, fluid = "outside", group = "ball" } end
 if what == 18 then cylinder_wall { 0.5, 0.5, 0, 0.5, 0.5, 0, 0.2, fluid = "outside" } end
 if what == 19 then fill { 0, 0, 0, 1, 1, 0.5, sphere = {0.5, 0.5, 0.5, 0.2}, name = "ball" } end
 if what == 20 then sphere_wall { 0.5, 0.5, 0.9, 0.3, fluid = "outside", group = "ball" } end
 if what == 21 then cylinder_wall { 0.5, 0.5, 0, 0.5, 0.5, 1, 0.1, fluid = "outside", group = "pole" } end
+if what == 23 then box_wall { 0.2, 0.2, 0.2, 0.8, 0.8, 0.8, lid_velocity = {0, 1, 0}, lid_face = "y1" } end
 run { t_end = 0.1 }
