@@ -27,6 +27,8 @@ struct draw {
   unsigned char *buf; /* OSMesa's colour buffer, w x h x 4 (RGBA), bottom row first */
   GLuint prog;        /* the disc shader */
   GLint a_diam;       /* its attribute: the disc's diameter, pixels */
+  GLuint sphere;      /* the lit sphere shader (3-D views) */
+  GLint s_diam;       /* its diameter attribute */
   char renderer[128]; /* GL_RENDERER and GL_VERSION */
 };
 
@@ -51,6 +53,29 @@ static const char *const disc_fs =
     "  float a = clamp(0.5 * v_diam + 0.5 - r, 0.0, 1.0);\n"
     "  if (a <= 0.0) discard;\n"
     "  gl_FragColor = vec4(gl_Color.rgb, a);\n"
+    "}\n";
+
+/* A lit sphere on a point sprite (3-D views: render.c draws them back to front): the sprite's
+ * disc is the sphere seen from the camera, its normal n = (u, v, √(1 − u² − v²)) at the disc
+ * point (u, v) (v up), lit by a light from the upper left behind the camera, L = (−0.40, 0.50,
+ * 0.77): colour c (0.35 + 0.65 max(n·L, 0)) plus a white highlight 0.25 max(n·h, 0)^40 (h the
+ * half-way vector of L and the view (0, 0, 1)), the edge anti-aliased as the disc's. */
+static const char *const sphere_fs =
+    "#version 120\n"
+    "varying float v_diam;\n"
+    "void main()\n"
+    "{\n"
+    "  vec2 q = (gl_PointCoord - vec2(0.5)) * (v_diam + 2.0);\n"
+    "  float r = length(q);\n"
+    "  float a = clamp(0.5 * v_diam + 0.5 - r, 0.0, 1.0);\n"
+    "  if (a <= 0.0) discard;\n"
+    "  vec2 uv = min(r / (0.5 * v_diam), 1.0) * normalize(vec2(q.x, -q.y) + vec2(1e-9, 0.0));\n"
+    "  vec3 n = vec3(uv, sqrt(max(1.0 - dot(uv, uv), 0.0)));\n"
+    "  vec3 l = normalize(vec3(-0.40, 0.50, 0.77));\n"
+    "  vec3 h = normalize(l + vec3(0.0, 0.0, 1.0));\n"
+    "  float shade = 0.35 + 0.65 * max(dot(n, l), 0.0);\n"
+    "  float spec = 0.25 * pow(max(dot(n, h), 0.0), 40.0);\n"
+    "  gl_FragColor = vec4(min(gl_Color.rgb * shade + vec3(spec), vec3(1.0)), a);\n"
     "}\n";
 
 static enum clsph_status compile(GLenum type, const char *src, GLuint *out)
@@ -118,6 +143,17 @@ enum clsph_status draw_create(int w, int h, struct draw **out)
   CLSPH_CHECK(ok, CLSPH_E_UNSUPPORTED, "OSMesa: the disc shader does not link");
   d->a_diam = glGetAttribLocation(d->prog, "a_diam");
   CLSPH_CHECK(d->a_diam >= 0, CLSPH_E_UNSUPPORTED, "OSMesa: the disc shader lost its attribute");
+  glDeleteShader(fs);
+  fs = 0;
+  CLSPH_TRY(compile(GL_FRAGMENT_SHADER, sphere_fs, &fs));
+  d->sphere = glCreateProgram();
+  glAttachShader(d->sphere, vs);
+  glAttachShader(d->sphere, fs);
+  glLinkProgram(d->sphere);
+  glGetProgramiv(d->sphere, GL_LINK_STATUS, &ok);
+  CLSPH_CHECK(ok, CLSPH_E_UNSUPPORTED, "OSMesa: the sphere shader does not link");
+  d->s_diam = glGetAttribLocation(d->sphere, "a_diam");
+  CLSPH_CHECK(d->s_diam >= 0, CLSPH_E_UNSUPPORTED, "OSMesa: the sphere shader lost its attribute");
   /* pixel coordinates, y down */
   glViewport(0, 0, w, h);
   glMatrixMode(GL_PROJECTION);
@@ -180,6 +216,27 @@ void draw_discs(struct draw *d, size_t n, const float *xy, const float *diam,
   glVertexAttribPointer((GLuint)d->a_diam, 1, GL_FLOAT, GL_FALSE, 0, diam);
   glDrawArrays(GL_POINTS, 0, (GLsizei)n);
   glDisableVertexAttribArray((GLuint)d->a_diam);
+  arrays_off();
+  glUseProgram(0);
+  glDisable(GL_VERTEX_PROGRAM_POINT_SIZE);
+  glDisable(GL_POINT_SPRITE);
+  glDisable(GL_BLEND);
+}
+
+void draw_spheres(struct draw *d, size_t n, const float *xy, const float *diam,
+                  const unsigned char *rgb)
+{
+  if (n == 0) return;
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_POINT_SPRITE);
+  glEnable(GL_VERTEX_PROGRAM_POINT_SIZE);
+  glUseProgram(d->sphere);
+  arrays_on(xy, rgb);
+  glEnableVertexAttribArray((GLuint)d->s_diam);
+  glVertexAttribPointer((GLuint)d->s_diam, 1, GL_FLOAT, GL_FALSE, 0, diam);
+  glDrawArrays(GL_POINTS, 0, (GLsizei)n);
+  glDisableVertexAttribArray((GLuint)d->s_diam);
   arrays_off();
   glUseProgram(0);
   glDisable(GL_VERTEX_PROGRAM_POINT_SIZE);
@@ -298,6 +355,7 @@ void draw_destroy(struct draw *d)
   if (d == NULL) return;
   if (d->ctx != NULL) {
     if (d->prog != 0) glDeleteProgram(d->prog);
+    if (d->sphere != 0) glDeleteProgram(d->sphere);
     OSMesaDestroyContext(d->ctx);
   }
   free(d->buf);

@@ -17,6 +17,10 @@ enum clsph_status draw_begin(struct draw *d, const unsigned char rgb[3]);
 /** @brief Anti-aliased discs: centres xy (n x 2), diameters (n), colours rgb (n x 3). */
 void draw_discs(struct draw *d, size_t n, const float *xy, const float *diam,
                 const unsigned char *rgb);
+/** @brief Lit spheres (3-D views), drawn in the order given (back to front): centres xy (n x 2),
+ *  diameters (n), colours rgb (n x 3). */
+void draw_spheres(struct draw *d, size_t n, const float *xy, const float *diam,
+                  const unsigned char *rgb);
 /** @brief Square points of `size` pixels (1 or 2): centres xy (n x 2), colours rgb (n x 3). */
 void draw_points(struct draw *d, size_t n, const float *xy, int size, const unsigned char *rgb);
 /** @brief Triangles (ntri x 3 vertices of xy) in one colour. */

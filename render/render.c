@@ -45,6 +45,11 @@ struct render {
   /* wall triangles and lines, pixel coordinates */
   float *tri, *lines;
   size_t tri_cap, lines_cap, ntri, nlines;
+  /* 3-D frames: the camera (the options', or the first frame's default, kept) and the depths */
+  int have_camera;
+  struct render_camera cam;
+  struct render_depth *depth;
+  size_t depth_cap;
 };
 
 static double now(void)
@@ -58,6 +63,57 @@ enum colormap_kind render_map_for(const struct field_spec *f, enum colormap_kind
 {
   if (asked != COLORMAP_AUTO) return asked;
   return f->how == FIELD_KIND ? COLORMAP_KIND : f->is_signed ? COLORMAP_COOLWARM : COLORMAP_VIRIDIS;
+}
+
+static double dot3(const double *a, const double *b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double *a, const double *b, double *c)
+{
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+void render_default_camera(const double box[6], double fov, struct render_camera *c)
+{
+  static const double dir[3] = {0.55, -0.75, 0.45};
+  const double nd = sqrt(dot3(dir, dir));
+  double half = 0.0;
+  memset(c, 0, sizeof *c);
+  c->fov = fov > 0.0 ? fov : 30.0;
+  c->up[2] = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    c->at[a] = 0.5 * (box[a] + box[3 + a]);
+    half += 0.25 * (box[3 + a] - box[a]) * (box[3 + a] - box[a]);
+  }
+  /* the box's bounding sphere fills the field of view's height */
+  const double dist = fmax(sqrt(half), 1e-9) / sin(0.5 * c->fov * 3.141592653589793 / 180.0);
+  for (int a = 0; a < 3; ++a) c->eye[a] = c->at[a] + dist * dir[a] / nd;
+}
+
+enum clsph_status render_check_camera(const struct render_camera *c, const char *what)
+{
+  enum clsph_status st = CLSPH_OK;
+  int finite = isfinite(c->fov);
+  for (int a = 0; a < 3; ++a)
+    finite &= isfinite(c->eye[a]) && isfinite(c->at[a]) && isfinite(c->up[a]);
+  CLSPH_CHECK(finite, CLSPH_E_INPUT, "%s: the camera's numbers must be finite", what);
+  const double v[3] = {c->at[0] - c->eye[0], c->at[1] - c->eye[1], c->at[2] - c->eye[2]};
+  double x[3];
+  cross3(v, c->up, x);
+  CLSPH_CHECK(dot3(v, v) > 0.0, CLSPH_E_INPUT,
+              "%s: the camera looks at its own eye (%g, %g, %g): look_at must be elsewhere", what,
+              c->eye[0], c->eye[1], c->eye[2]);
+  CLSPH_CHECK(dot3(x, x) > 1e-12 * dot3(v, v) * dot3(c->up, c->up), CLSPH_E_INPUT,
+              "%s: the camera's up (%g, %g, %g) is along its view (or zero): give an up across it",
+              what, c->up[0], c->up[1], c->up[2]);
+  CLSPH_CHECK(c->fov > 1.0 && c->fov < 170.0, CLSPH_E_INPUT,
+              "%s: the field of view fov = %g must be between 1 and 170 degrees", what, c->fov);
+done:
+  return st;
 }
 
 void render_defaults(struct render_opts *o)
@@ -137,6 +193,7 @@ void render_destroy(struct render *r)
   free(r->order);
   free(r->tri);
   free(r->lines);
+  free(r->depth);
   free(r);
 }
 
@@ -616,6 +673,112 @@ static void particle_arrays(struct render *r, const struct field_spec *f,
   tm->disc_px = nd > 0 ? dsum / (double)nd : 0.0;
 }
 
+/* 3-D frames: the drawn particles seen by the camera, in perspective, as spheres of diameter ∛V
+ * (a lattice's spheres touch), sorted back to front (the farthest first; a tie in the order of the
+ * arrays) so that the nearer ones cover them. The view area [px0, px1] x [py0, py1] holds the
+ * camera's field of view vertically (the horizontal follows the pixels), its centre the camera's
+ * axis; particles behind the camera or whose sphere leaves no pixel in the area are not drawn.
+ * Returns how many are drawn (r->xy, r->diam, r->col in drawing order); *scale: pixels per metre
+ * at the target's distance. */
+struct render_depth {
+  double z; /* distance along the camera's axis */
+  size_t i; /* the particle */
+};
+
+static int cmp_depth(const void *a, const void *b)
+{
+  const struct render_depth *p = a, *q = b;
+  if (p->z != q->z) return p->z > q->z ? -1 : 1;
+  return p->i < q->i ? -1 : p->i > q->i;
+}
+
+static enum clsph_status sphere_arrays(struct render *r, const struct field_spec *f,
+                                       const struct render_input *in, double px0, double px1,
+                                       double py0, double py1, enum colormap_kind map, double lo,
+                                       double hi, size_t *drawn, double *scale, double centre[2],
+                                       struct render_times *tm)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct render_array *pos = field_array(in, "pos"), *vol = field_array(in, "vol");
+  const struct render_array *kind = field_array(in, "kind");
+  if (in->n > r->depth_cap) {
+    free(r->depth);
+    r->depth = malloc(in->n * sizeof *r->depth);
+    r->depth_cap = r->depth != NULL ? in->n : 0;
+    CLSPH_CHECK(r->depth != NULL, CLSPH_E_NOMEM, "out of memory drawing %zu particles", in->n);
+  }
+  if (!r->have_camera) { /* the options' camera, or one that sees the drawn particles whole */
+    if (r->o.camera_set) {
+      r->cam = r->o.camera;
+    } else {
+      double box[6] = {HUGE_VAL, HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+      for (size_t i = 0; i < in->n; ++i) {
+        if (!field_drawn(f, (int)kind->v[i])) continue;
+        for (int a = 0; a < 3; ++a) {
+          const double x = pos->v[3 * i + (size_t)a];
+          if (!isfinite(x)) continue;
+          box[a] = fmin(box[a], x);
+          box[3 + a] = fmax(box[3 + a], x);
+        }
+      }
+      if (!(box[3] >= box[0])) box[0] = box[1] = box[2] = 0.0, box[3] = box[4] = box[5] = 1.0;
+      render_default_camera(box, r->o.fov_only, &r->cam);
+    }
+    CLSPH_TRY(render_check_camera(&r->cam, "render"));
+    r->have_camera = 1;
+  }
+  const struct render_camera *c = &r->cam;
+  double fwd[3], right[3], up[3];
+  for (int a = 0; a < 3; ++a) fwd[a] = c->at[a] - c->eye[a];
+  const double dist = sqrt(dot3(fwd, fwd));
+  for (int a = 0; a < 3; ++a) fwd[a] /= dist;
+  cross3(fwd, c->up, right);
+  const double nr = sqrt(dot3(right, right));
+  for (int a = 0; a < 3; ++a) right[a] /= nr;
+  cross3(right, fwd, up);
+  const double focal = 0.5 * (py1 - py0) / tan(0.5 * c->fov * 3.141592653589793 / 180.0);
+  const double cx = 0.5 * (px0 + px1), cy = 0.5 * (py0 + py1), inv = 1.0 / (hi - lo);
+  size_t nd = 0;
+  double dsum = 0.0;
+  for (size_t i = 0; i < in->n; ++i) {
+    if (!field_drawn(f, (int)kind->v[i])) continue;
+    const double d[3] = {pos->v[3 * i] - c->eye[0], pos->v[3 * i + 1] - c->eye[1],
+                         pos->v[3 * i + 2] - c->eye[2]};
+    const double z = dot3(d, fwd);
+    const double size = vol->v[i] > 0.0 && isfinite(vol->v[i]) ? cbrt(vol->v[i]) : 0.0;
+    if (!(z > 0.5 * size) || !isfinite(z)) continue; /* behind the camera, or at its eye */
+    const double u = cx + focal * dot3(d, right) / z, v = cy - focal * dot3(d, up) / z;
+    const double diam = fmax(1.0, focal * size / z);
+    if (u + 0.5 * diam < px0 || u - 0.5 * diam > px1 || v + 0.5 * diam < py0 ||
+        v - 0.5 * diam > py1)
+      continue;
+    r->depth[nd++] = (struct render_depth){z, i};
+  }
+  qsort(r->depth, nd, sizeof *r->depth, cmp_depth);
+  for (size_t k = 0; k < nd; ++k) {
+    const size_t i = r->depth[k].i;
+    const double d[3] = {pos->v[3 * i] - c->eye[0], pos->v[3 * i + 1] - c->eye[1],
+                         pos->v[3 * i + 2] - c->eye[2]};
+    const double z = r->depth[k].z;
+    const double size = vol->v[i] > 0.0 && isfinite(vol->v[i]) ? cbrt(vol->v[i]) : 0.0;
+    const double diam = fmin(fmax(1.0, focal * size / z), 253.0);
+    r->xy[2 * k] = (float)(cx + focal * dot3(d, right) / z);
+    r->xy[2 * k + 1] = (float)(cy - focal * dot3(d, up) / z);
+    r->diam[k] = (float)diam;
+    dsum += diam;
+    const double tv = map == COLORMAP_KIND ? r->val[i] : (r->val[i] - lo) * inv;
+    colormap_rgb(map, tv, r->col + 3 * k);
+  }
+  *drawn = nd;
+  *scale = focal / dist;
+  centre[0] = cx;
+  centre[1] = cy;
+  tm->drawn = nd;
+  tm->disc_px = nd > 0 ? dsum / (double)nd : 0.0;
+done:
+  return st;
+}
+
 enum clsph_status render_frame(struct render *r, const struct field_spec *f,
                                const struct render_input *in, const char *png_path, double lo_hi[2],
                                struct render_times *t)
@@ -632,9 +795,10 @@ enum clsph_status render_frame(struct render *r, const struct field_spec *f,
   const int W = r->o.width, H = r->o.height;
   const struct render_array *pos = field_array(in, "pos"), *vol = field_array(in, "vol");
   const struct render_array *kind = field_array(in, "kind");
-  CLSPH_CHECK(pos != NULL && pos->ncomp == 2 && vol != NULL && vol->ncomp == 1 && kind != NULL &&
-                  kind->ncomp == 1,
-              CLSPH_E_INPUT, "a frame needs the arrays pos (2 components), vol and kind");
+  CLSPH_CHECK(pos != NULL && (pos->ncomp == 2 || pos->ncomp == 3) && vol != NULL &&
+                  vol->ncomp == 1 && kind != NULL && kind->ncomp == 1,
+              CLSPH_E_INPUT, "a frame needs the arrays pos (2 or 3 components), vol and kind");
+  const int three = pos->ncomp == 3;
   CLSPH_TRY(reserve(r, in->n));
 
   /* the values, the map and the range */
@@ -652,34 +816,47 @@ enum clsph_status render_frame(struct render *r, const struct field_spec *f,
   for (size_t i = 0; i < in->n && !novol; ++i)
     novol = field_drawn(f, (int)kind->v[i]) && !(vol->v[i] > 0.0 && isfinite(vol->v[i]));
   const double spacing = novol ? field_spacing(f, in->n, vol->v, kind->v) : 0.0;
-  double box[4];
-  if (in->view[0] != 0.0 || in->view[1] != 0.0 || in->view[2] != 0.0 || in->view[3] != 0.0)
-    memcpy(box, in->view, sizeof box);
-  else
-    view_box(f, in, pos->v, vol->v, kind->v, spacing, box);
+  double box[4] = {0.0, 0.0, 0.0, 0.0};
   const double px0 = z.margin, px1 = b.x0 - 2 * z.margin, py0 = z.header, py1 = H - z.margin;
-  const double pad = z.band_px + z.line_px, vw = box[2] - box[0], vh = box[3] - box[1];
-  x.s = fmax(1e-12, fmin((px1 - px0 - 2 * pad) / vw, (py1 - py0 - 2 * pad) / vh));
-  x.ox = px0 + 0.5 * (px1 - px0 - x.s * vw);
-  x.oy = py0 + 0.5 * (py1 - py0 - x.s * vh);
-  x.vx0 = box[0];
-  x.vy1 = box[3];
-  x.band = z.band_px / x.s;
-
-  /* pixel positions and colours */
-  particle_arrays(r, f, in, &x, spacing, map, lo, hi, group, &tm);
-  CLSPH_TRY(wall_geometry(r, in, &x));
+  size_t nspheres = 0;
+  memset(&x, 0, sizeof x);
+  if (three) { /* a 3-D run: lit spheres seen by the camera (no walls: they would hide it) */
+    double centre[2];
+    CLSPH_TRY(
+        sphere_arrays(r, f, in, px0, px1, py0, py1, map, lo, hi, &nspheres, &x.s, centre, &tm));
+    x.ox = centre[0];
+    x.oy = centre[1];
+  } else {
+    if (in->view[0] != 0.0 || in->view[1] != 0.0 || in->view[2] != 0.0 || in->view[3] != 0.0)
+      memcpy(box, in->view, sizeof box);
+    else
+      view_box(f, in, pos->v, vol->v, kind->v, spacing, box);
+    const double pad = z.band_px + z.line_px, vw = box[2] - box[0], vh = box[3] - box[1];
+    x.s = fmax(1e-12, fmin((px1 - px0 - 2 * pad) / vw, (py1 - py0 - 2 * pad) / vh));
+    x.ox = px0 + 0.5 * (px1 - px0 - x.s * vw);
+    x.oy = py0 + 0.5 * (py1 - py0 - x.s * vh);
+    x.vx0 = box[0];
+    x.vy1 = box[3];
+    x.band = z.band_px / x.s;
+    /* pixel positions and colours */
+    particle_arrays(r, f, in, &x, spacing, map, lo, hi, group, &tm);
+    CLSPH_TRY(wall_geometry(r, in, &x));
+  }
   const double t1 = now();
 
   /* OpenGL: the solid side of the walls, the particles, the wall lines, the colour bar */
   CLSPH_TRY(draw_begin(r->draw, render_colour_bg));
-  draw_triangles(r->draw, r->ntri, r->tri, render_colour_solid);
-  CLSPH_TRY(fill_solids(r, in, &x));
-  const size_t n1 = group[0], n12 = group[0] + group[1];
-  draw_points(r->draw, group[0], r->xy, 1, r->col);
-  draw_points(r->draw, group[1], r->xy + 2 * n1, 2, r->col + 3 * n1);
-  draw_discs(r->draw, group[2], r->xy + 2 * n12, r->diam + n12, r->col + 3 * n12);
-  draw_lines(r->draw, r->nlines, r->lines, z.line_px, 1, render_colour_wall);
+  if (three) {
+    draw_spheres(r->draw, nspheres, r->xy, r->diam, r->col);
+  } else {
+    draw_triangles(r->draw, r->ntri, r->tri, render_colour_solid);
+    CLSPH_TRY(fill_solids(r, in, &x));
+    const size_t n1 = group[0], n12 = group[0] + group[1];
+    draw_points(r->draw, group[0], r->xy, 1, r->col);
+    draw_points(r->draw, group[1], r->xy + 2 * n1, 2, r->col + 3 * n1);
+    draw_discs(r->draw, group[2], r->xy + 2 * n12, r->diam + n12, r->col + 3 * n12);
+    draw_lines(r->draw, r->nlines, r->lines, z.line_px, 1, render_colour_wall);
+  }
   draw_bar(r, &b, &z, map);
   CLSPH_TRY(draw_read(r->draw, r->rgb));
   const double t2 = now();

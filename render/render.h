@@ -132,6 +132,13 @@ void field_auto_range(const struct field_spec *f, enum colormap_kind map, size_t
 
 /* ---- frames (render.c) ---- */
 
+/** A camera for 3-D frames: the particles seen in perspective from `eye`, looking at `at`, `up`
+ *  upward in the picture, `fov` the vertical field of view, degrees. */
+struct render_camera {
+  double eye[3], at[3], up[3];
+  double fov;
+};
+
 /** How frames are drawn: the command line's and the case's choices. */
 struct render_opts {
   char field[RENDER_NAME]; /* field name (field_find) */
@@ -140,7 +147,19 @@ struct render_opts {
   double lo, hi;           /* the fixed range, in the field's unit */
   enum colormap_kind map;  /* COLORMAP_AUTO: by the field */
   const char *font;        /* a TrueType file; NULL: $CLSPH_FONT, else DejaVu Sans (fontconfig) */
+  int camera_set;          /* 3-D frames: 1, the camera below; 0, render_default_camera's of the
+                            * first frame, kept for the frames after it */
+  struct render_camera camera;
+  double fov_only; /* > 0 without camera_set: the default camera with this field of view */
 };
+
+/** @brief A camera that sees a box (x0, y0, z0, x1, y1, z1) whole: from the front, right and above
+ *  (the direction (0.55, −0.75, 0.45) from its centre), z up, a field of view of `fov` degrees
+ *  (0: 30). */
+void render_default_camera(const double box[6], double fov, struct render_camera *c);
+/** @brief Check a camera: finite, its eye off its target, `up` not along the view, 1° < fov < 170°;
+ *  the message names `what` (e.g. "--camera"). */
+enum clsph_status render_check_camera(const struct render_camera *c, const char *what);
 
 /** Where the time of a frame went, s. */
 struct render_times {
@@ -174,9 +193,10 @@ enum clsph_status render_frame(struct render *r, const struct field_spec *f,
                                struct render_times *t);
 /** Where things are in the last frame (for tests and tools). */
 struct render_layout {
-  double scale;           /* pixels per metre */
-  double view[4];         /* the view box x0, y0, x1, y1, m */
-  double origin[2];       /* pixel position of the view's top-left corner (x0, y1) */
+  double scale;           /* pixels per metre (3-D: at the distance of the camera's target) */
+  double view[4];         /* the view box x0, y0, x1, y1, m (3-D: 0) */
+  double origin[2];       /* pixel position of the view's top-left corner (x0, y1) (3-D: of the
+                           * camera's target, the view's centre) */
   int band_px;            /* width of the solid band behind a wall, pixels */
   float line_px;          /* width of a wall line, pixels */
   int bar[4];             /* the colour bar's pixels [x0, x1) x [y0, y1): x0, y0, x1, y1 */

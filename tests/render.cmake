@@ -13,7 +13,8 @@ clsph_add_test(render_movie COMMAND test_movie ${RENDER_OUT} LABELS render)
 
 clsph_add_test(render_run_and_snapshots LABELS render case COMMAND ${CMAKE_COMMAND}
                -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
-               -DCHOICE=${RENDER_DIR}/render_choice.lua -DOUT=${RENDER_OUT}/runs
+               -DCHOICE=${RENDER_DIR}/render_choice.lua
+               -DCHOICE3=${RENDER_DIR}/render_camera3d.lua -DOUT=${RENDER_OUT}/runs
                -P ${RENDER_DIR}/run_and_render.cmake)
 
 clsph_add_test(render_turbulence_fields LABELS render case COMMAND ${CMAKE_COMMAND}

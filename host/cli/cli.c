@@ -49,43 +49,48 @@ void cli_usage(FILE *f)
         "                        into it (top level, a fill's velocity, metrics(); default 1e9)\n"
         "  --case-memory MIB     the most memory the case script may hold (default 512)\n",
         f);
-  fputs("  --quiet               no progress line (and no --profile table)\n"
-        "  --profile             time every kernel launch and transfer of `run` on the device\n"
-        "                        (OpenCL profiling events): a table by kernel at the end, and\n"
-        "                        \"profile\" in summary.json\n"
-        "  --frames              run: a frame (PNG) with each snapshot in OUT/frames, and a\n"
-        "                        movie OUT/FIELD.mp4 at the end (ffmpeg)\n"
-        "  --field NAME          the field frames show: speed, vorticity, p, vel_x, vel_y, kind,\n"
-        "                        or any field the scheme stores (default: the case's render {\n"
-        "                        field }, else speed)\n"
-        "  --range LO,HI|auto    colour range of frames (default: the case's, else auto: each\n"
-        "                        frame's 0.5th to 99.5th percentile in a run, over every snapshot\n"
-        "                        in `render`)\n"
-        "  --colormap NAME       auto, viridis (magnitudes), coolwarm (signed), kind\n"
-        "  --size WxH            frame size in pixels (default 1280x720)\n"
-        "  --fps N               frames per second of the movie (default 10)\n"
-        "  --no-movie            frames only\n"
-        "  --font FILE           TrueType font of frames (default $CLSPH_FONT, else DejaVu Sans)\n"
-        "  --slice AXIS=VALUE    render of a 3-D run: the particles within half a spacing of the\n"
-        "                        plane AXIS = VALUE (m), seen along AXIS\n"
-        "  --device N            device index from `clsph devices` (default: $CLSPH_DEVICE, else\n"
-        "                        the first GPU, else the first CPU)\n"
-        "  --device-memory MIB   run, info: the most device memory a run may use (default: the\n"
-        "                        device's); a scene that needs more is refused before it runs\n"
-        "  --kernel-dir DIR      read OpenCL sources from DIR instead of the embedded copy\n"
-        "  --prog-cache-dir DIR  cache of built programs (default ~/.cache/clsph; '' disables)\n"
-        "  --fast-math           allow -cl-fast-relaxed-math (off by default)\n"
-        "  --bench-sizes LIST    particle counts for `bench`, e.g. 1e4,1e5 (default 1e4,1e5,1e6)\n"
-        "  --bench-reps N        repetitions per figure; the median is printed (default 7; 1\n"
-        "                        for bench dambreak, a run of minutes)\n"
-        "  --case FILE           bench dambreak: the case script to time (default\n"
-        "                        cases/dam_break_dsph.lua); outputs go to a temporary folder,\n"
-        "                        removed afterwards, unless --out DIR\n"
-        "  --bench-direct-max N  largest UMFPACK solve of `bench psolve` (default 2e5)\n"
-        "  --demo-dr DR          lattice spacing of the demo on the unit square (default 0.01)\n"
-        "  --verbose             debug messages (build options, cache hits)\n"
-        "  -h, --help            this text\n",
-        f);
+  fputs(
+      "  --quiet               no progress line (and no --profile table)\n"
+      "  --profile             time every kernel launch and transfer of `run` on the device\n"
+      "                        (OpenCL profiling events): a table by kernel at the end, and\n"
+      "                        \"profile\" in summary.json\n"
+      "  --frames              run: a frame (PNG) with each snapshot in OUT/frames, and a\n"
+      "                        movie OUT/FIELD.mp4 at the end (ffmpeg)\n"
+      "  --field NAME          the field frames show: speed, vorticity, p, vel_x, vel_y, kind,\n"
+      "                        or any field the scheme stores (default: the case's render {\n"
+      "                        field }, else speed)\n"
+      "  --range LO,HI|auto    colour range of frames (default: the case's, else auto: each\n"
+      "                        frame's 0.5th to 99.5th percentile in a run, over every snapshot\n"
+      "                        in `render`)\n"
+      "  --colormap NAME       auto, viridis (magnitudes), coolwarm (signed), kind\n"
+      "  --size WxH            frame size in pixels (default 1280x720)\n"
+      "  --fps N               frames per second of the movie (default 10)\n"
+      "  --no-movie            frames only\n"
+      "  --font FILE           TrueType font of frames (default $CLSPH_FONT, else DejaVu Sans)\n"
+      "  --slice AXIS=VALUE    render of a 3-D run: the particles within half a spacing of the\n"
+      "                        plane AXIS = VALUE (m), seen along AXIS\n"
+      "  --camera E,A[,U]      frames of a 3-D run: the eye EX,EY,EZ, the point AX,AY,AZ it looks\n"
+      "                        at and up UX,UY,UZ (default 0,0,1), m (default: the case's\n"
+      "                        render { camera }, else one that sees the fluid whole)\n"
+      "  --fov DEG             the camera's vertical field of view (default 30)\n"
+      "  --device N            device index from `clsph devices` (default: $CLSPH_DEVICE, else\n"
+      "                        the first GPU, else the first CPU)\n"
+      "  --device-memory MIB   run, info: the most device memory a run may use (default: the\n"
+      "                        device's); a scene that needs more is refused before it runs\n"
+      "  --kernel-dir DIR      read OpenCL sources from DIR instead of the embedded copy\n"
+      "  --prog-cache-dir DIR  cache of built programs (default ~/.cache/clsph; '' disables)\n"
+      "  --fast-math           allow -cl-fast-relaxed-math (off by default)\n"
+      "  --bench-sizes LIST    particle counts for `bench`, e.g. 1e4,1e5 (default 1e4,1e5,1e6)\n"
+      "  --bench-reps N        repetitions per figure; the median is printed (default 7; 1\n"
+      "                        for bench dambreak, a run of minutes)\n"
+      "  --case FILE           bench dambreak: the case script to time (default\n"
+      "                        cases/dam_break_dsph.lua); outputs go to a temporary folder,\n"
+      "                        removed afterwards, unless --out DIR\n"
+      "  --bench-direct-max N  largest UMFPACK solve of `bench psolve` (default 2e5)\n"
+      "  --demo-dr DR          lattice spacing of the demo on the unit square (default 0.01)\n"
+      "  --verbose             debug messages (build options, cache hits)\n"
+      "  -h, --help            this text\n",
+      f);
   /* a second string: ISO C keeps a literal under 4095 characters */
   fputs("\n"
         "examples:\n"
@@ -259,6 +264,27 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
         CLSPH_TRY(parse_int(a, val, 1, 240, &c.fps));
       } else if (strcmp(a, "--font") == 0) {
         c.font = val;
+      } else if (strcmp(a, "--camera") == 0) {
+        int k = 0;
+        const char *p = val;
+        for (; k < 9 && *p != '\0'; ++k) {
+          char *end = NULL;
+          c.camera[k] = strtod(p, &end);
+          CLSPH_CHECK(end != p && isfinite(c.camera[k]) && (*end == ',' || *end == '\0'),
+                      CLSPH_E_INPUT,
+                      "--camera: '%s' is not EX,EY,EZ,AX,AY,AZ[,UX,UY,UZ] (the eye, the point "
+                      "it looks at and, optionally, up; m)",
+                      val);
+          p = *end == ',' ? end + 1 : end;
+        }
+        CLSPH_CHECK((k == 6 || k == 9) && *p == '\0', CLSPH_E_INPUT,
+                    "--camera: '%s' gives %d numbers: give 6 (eye, look-at) or 9 (and up)", val, k);
+        if (k == 6) c.camera[6] = c.camera[7] = 0.0, c.camera[8] = 1.0;
+        c.camera_set = 1;
+      } else if (strcmp(a, "--fov") == 0) {
+        CLSPH_TRY(parse_real(a, val, &c.fov));
+        CLSPH_CHECK(c.fov > 1.0 && c.fov < 170.0, CLSPH_E_INPUT,
+                    "--fov: %s is not a field of view between 1 and 170 degrees", val);
       } else if (strcmp(a, "--slice") == 0) {
         char *end = NULL;
         const char *axes = "xyz", *at = strchr(axes, val[0]);
@@ -323,14 +349,16 @@ enum clsph_status cli_parse(int argc, char **argv, struct cli *out)
         (strcmp(c.command, "bench") == 0 && c.target != NULL && strcmp(c.target, "render") == 0);
     CLSPH_CHECK(!c.slice_set || strcmp(c.command, "render") == 0, CLSPH_E_INPUT,
                 "--slice belongs to `clsph render OUTDIR` (of a 3-D run)");
-    const char *given = c.field       ? "--field"
-                        : c.range_set ? "--range"
-                        : c.colormap  ? "--colormap"
-                        : c.width     ? "--size"
-                        : c.fps       ? "--fps"
-                        : c.no_movie  ? "--no-movie"
-                        : c.font      ? "--font"
-                                      : NULL;
+    const char *given = c.field        ? "--field"
+                        : c.range_set  ? "--range"
+                        : c.colormap   ? "--colormap"
+                        : c.width      ? "--size"
+                        : c.fps        ? "--fps"
+                        : c.no_movie   ? "--no-movie"
+                        : c.font       ? "--font"
+                        : c.camera_set ? "--camera"
+                        : c.fov > 0.0  ? "--fov"
+                                       : NULL;
     CLSPH_CHECK(given == NULL || takes_frames, CLSPH_E_INPUT,
                 "%s is an option of frames: use it with `clsph run CASE --frames` or `clsph "
                 "render OUTDIR`",

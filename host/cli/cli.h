@@ -45,6 +45,9 @@ struct cli {
   int fps;              /* --fps N (0: 10) */
   int no_movie;         /* --no-movie */
   const char *font;     /* --font FILE (NULL: $CLSPH_FONT, else DejaVu Sans) */
+  int camera_set;       /* --camera EX,EY,EZ,AX,AY,AZ[,UX,UY,UZ] given (3-D frames): */
+  double camera[9];     /*   eye, look-at point, up (default 0, 0, 1) */
+  double fov;           /* --fov DEG (0: the case's, else 30) */
   int slice_set;        /* --slice AXIS=VALUE given (render of a 3-D run): */
   int slice_axis;       /*   0, 1, 2: x, y, z */
   double slice_at;      /*   the plane's position, m */

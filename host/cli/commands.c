@@ -97,11 +97,11 @@ done:
 /* The options of frames: the defaults, then the case's render { } choices (`r`, NULL: none), then
  * the command line. */
 static enum clsph_status frame_options(const struct cli *cli, const struct scene_render *r,
-                                       struct frames_opts *fo)
+                                       const char *where, struct frames_opts *fo)
 {
   enum clsph_status st = CLSPH_OK;
   frames_defaults(fo);
-  if (r != NULL) CLSPH_TRY(frames_apply_case(r, fo));
+  if (r != NULL) CLSPH_TRY(frames_apply_case(r, where, fo));
   if (cli->field != NULL) snprintf(fo->render.field, sizeof fo->render.field, "%s", cli->field);
   if (cli->range_set) {
     fo->render.fixed = !cli->range_auto;
@@ -116,6 +116,21 @@ static enum clsph_status frame_options(const struct cli *cli, const struct scene
   if (cli->fps > 0) fo->fps = cli->fps;
   if (cli->no_movie) fo->movie = 0;
   fo->render.font = cli->font;
+  if (cli->camera_set) { /* the command line's camera, with the case's field of view or 30° */
+    struct render_camera *c = &fo->render.camera;
+    const double fov = fo->render.camera_set ? c->fov : 30.0;
+    memcpy(c->eye, cli->camera, sizeof c->eye);
+    memcpy(c->at, cli->camera + 3, sizeof c->at);
+    memcpy(c->up, cli->camera + 6, sizeof c->up);
+    c->fov = fov;
+    fo->render.camera_set = 1;
+  }
+  if (cli->fov > 0.0 && !fo->render.camera_set) { /* the default camera's eye, this fov */
+    fo->render.fov_only = cli->fov;
+  } else if (cli->fov > 0.0) {
+    fo->render.camera.fov = cli->fov;
+  }
+  if (fo->render.camera_set) CLSPH_TRY(render_check_camera(&fo->render.camera, "--camera"));
 done:
   return st;
 }
@@ -140,7 +155,7 @@ enum clsph_status run_command(const struct cli *cli)
            scene.name, sim.scheme->name, sim.ps.n, sim.geom.nfluid, CLSPH_PRECISION_NAME, dev.name,
            out);
   struct frames_opts fo;
-  if (cli->frames) CLSPH_TRY(frame_options(cli, &scene.render, &fo));
+  if (cli->frames) CLSPH_TRY(frame_options(cli, &scene.render, scene.case_path, &fo));
   struct loop_options opt = {.out_dir = out,
                              .restart = cli->restart,
                              .overwrite = cli->overwrite,
@@ -267,12 +282,7 @@ static enum clsph_status slice_snapshot(struct io_snapshot *s, const struct cli 
   CLSPH_CHECK(pos != NULL, CLSPH_E_INPUT, "render: %s has no particle positions", path);
   CLSPH_CHECK(pos->ncomp == 3 || !cli->slice_set, CLSPH_E_INPUT,
               "render: --slice is for 3-D runs; %s is 2-D", path);
-  CLSPH_CHECK(pos->ncomp == 2 || cli->slice_set, CLSPH_E_INPUT,
-              "render: %s is a 3-D run (positions of %d components): frames draw a slice of it, "
-              "--slice AXIS=VALUE (e.g. --slice y=0.075: the particles within half a spacing of "
-              "the plane y = 0.075 m; or open snapshots.xdmf in ParaView)",
-              path, pos->ncomp);
-  if (pos->ncomp == 2) goto done;
+  if (pos->ncomp == 2 || !cli->slice_set) goto done; /* (3-D without a slice: the camera's view) */
   const int ax = cli->slice_axis, u = ax == 0 ? 1 : 0, w = ax == 2 ? 1 : 2;
   s->has_domain = 0; /* the view: the drawn particles' box */
   const size_t len = strlen(s->case_name);
@@ -336,7 +346,7 @@ enum clsph_status render_command(const struct cli *cli)
              "particles only",
              path);
   CLSPH_TRY(slice_snapshot(&snap, cli, path));
-  CLSPH_TRY(frame_options(cli, snap.render.on ? &snap.render : NULL, &fo));
+  CLSPH_TRY(frame_options(cli, snap.render.on ? &snap.render : NULL, path, &fo));
   const char *names[PSET_MAX_FIELDS];
   int ncomp[PSET_MAX_FIELDS];
   for (int k = 0; k < snap.narrays; ++k) {

@@ -81,11 +81,19 @@ static enum clsph_status start(struct sim *sim, const struct loop_options *opt, 
     for (int w = 0; w < s->nwalls; ++w) found |= strcmp(s->walls[w].group, s->forces[g]) == 0;
     CLSPH_CHECK(found, CLSPH_E_INPUT, "%s: force: no wall group '%s'", s->case_path, s->forces[g]);
   }
-  CLSPH_CHECK(opt->frames == NULL || s->dim == 2, CLSPH_E_INPUT,
-              "%s: --frames draws 2-D runs only for now; this scene is 3-D (`clsph render OUTDIR "
-              "--slice AXIS=VALUE` draws a plane of its snapshots, and ParaView opens them "
-              "through snapshots.xdmf)",
-              s->case_path);
+  if (opt->frames != NULL && s->dim == 3) { /* the camera sees the fluid, from outside the walls */
+    CLSPH_CHECK(strcmp(opt->frames->render.field, "vorticity") != 0, CLSPH_E_INPUT,
+                "%s: --field vorticity is 2-D (ω = ∂v/∂x − ∂u/∂y); this scene is 3-D",
+                s->case_path);
+    const struct render_camera *c = &opt->frames->render.camera;
+    int wall = -1;
+    if (opt->frames->render.camera_set) CLSPH_TRY(geometry3_solid_at(s, c->eye, &wall));
+    CLSPH_CHECK(wall < 0, CLSPH_E_INPUT,
+                "%s:%d: the camera's eye (%g, %g, %g) is inside the wall of group '%s': it would "
+                "see nothing; move it (render { camera } or --camera)",
+                s->case_path, wall >= 0 ? s->walls[wall].line : 0, c->eye[0], c->eye[1], c->eye[2],
+                wall >= 0 ? s->walls[wall].group : "");
+  }
   if (opt->frames != NULL) { /* the field of frames exists, before anything is written */
     const char *names[PSET_MAX_FIELDS];
     int ncomp[PSET_MAX_FIELDS];

@@ -32,7 +32,8 @@ void frames_defaults(struct frames_opts *o)
   o->fps = 10;
 }
 
-enum clsph_status frames_apply_case(const struct scene_render *r, struct frames_opts *o)
+enum clsph_status frames_apply_case(const struct scene_render *r, const char *where,
+                                    struct frames_opts *o)
 {
   enum clsph_status st = CLSPH_OK;
   if (!r->on) goto done;
@@ -47,6 +48,17 @@ enum clsph_status frames_apply_case(const struct scene_render *r, struct frames_
     o->render.hi = r->range[1];
   }
   if (r->colormap[0] != '\0') CLSPH_TRY(colormap_from_name(r->colormap, &o->render.map));
+  if (r->camera) {
+    struct render_camera *c = &o->render.camera;
+    memcpy(c->eye, r->eye, sizeof c->eye);
+    memcpy(c->at, r->look_at, sizeof c->at);
+    memcpy(c->up, r->up, sizeof c->up);
+    c->fov = r->fov;
+    char what[1100];
+    snprintf(what, sizeof what, "%s:%d: render camera", where, r->line);
+    CLSPH_TRY(render_check_camera(c, what));
+    o->render.camera_set = 1;
+  }
 done:
   return st;
 }

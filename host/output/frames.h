@@ -17,8 +17,10 @@ struct frames;
 
 /** @brief Defaults: speed, 1280 x 720, automatic range and map, a movie at 10 frames/s. */
 void frames_defaults(struct frames_opts *o);
-/** @brief Apply a case's render { } choices (field, range, colour map) to o. */
-enum clsph_status frames_apply_case(const struct scene_render *r, struct frames_opts *o);
+/** @brief Apply a case's render { } choices (field, range, colour map, camera) to o; `where` (the
+ *  case or the snapshot) heads the message of a camera that cannot see. */
+enum clsph_status frames_apply_case(const struct scene_render *r, const char *where,
+                                    struct frames_opts *o);
 /** @brief Start the frames of a run: resolve the field against the arrays there are (an unknown
  *  field lists the fields), create OUT/frames and open the renderer. Nothing is drawn yet. */
 enum clsph_status frames_open(const struct frames_opts *o, const char *out_dir, int narrays,

@@ -16,7 +16,8 @@
  *   /walls/wall_NNN   the wall polylines as declared, doubles (npts, 2), the fluid on their left;
  *                     attribute closed (int32, 1: the last point joins the first)
  *   /render           the case's render { } choices as attributes: field (string), colormap
- *                     (string), range (2 doubles, only when fixed); absent without render { }
+ *                     (string), range (2 doubles, only when fixed), camera (10 doubles: eye,
+ *                     look_at, up, fov; 3-D, only when given); absent without render { }
  *
  * XDMF (Version 3.0): a temporal collection with one uniform grid per snapshot that points into
  * the snapshot files ("snap_000001.h5:/particles/vel"); the HDF5 files hold all the data.
@@ -386,6 +387,12 @@ static enum clsph_status write_frame_meta(hid_t file, const struct io_meta *m, c
     CLSPH_TRY(attr_write_str(grp, "colormap", m->render->colormap, path));
     if (m->render->fixed)
       CLSPH_TRY(attr_write_array(grp, "range", H5T_NATIVE_DOUBLE, 2, m->render->range, path));
+    if (m->render->camera) { /* eye, look_at, up, fov */
+      const struct scene_render *r = m->render;
+      const double cam[10] = {r->eye[0],     r->eye[1], r->eye[2], r->look_at[0], r->look_at[1],
+                              r->look_at[2], r->up[0],  r->up[1],  r->up[2],      r->fov};
+      CLSPH_TRY(attr_write_array(grp, "camera", H5T_NATIVE_DOUBLE, 10, cam, path));
+    }
     CLSPH_TRY(h5_close_checked(&grp, path));
   }
 done:
@@ -1225,6 +1232,15 @@ static enum clsph_status read_render(hid_t file, struct io_snapshot *s, const ch
   CLSPH_TRY(attr_read_array(grp, "range", H5T_NATIVE_DOUBLE, 2, s->render.range, &found, path));
   s->render.on = 1;
   s->render.fixed = found;
+  double cam[10];
+  CLSPH_TRY(attr_read_array(grp, "camera", H5T_NATIVE_DOUBLE, 10, cam, &found, path));
+  if (found) {
+    s->render.camera = 1;
+    memcpy(s->render.eye, cam, 3 * sizeof *cam);
+    memcpy(s->render.look_at, cam + 3, 3 * sizeof *cam);
+    memcpy(s->render.up, cam + 6, 3 * sizeof *cam);
+    s->render.fov = cam[9];
+  }
   copy_name(s->render.field, sizeof s->render.field, field);
   copy_name(s->render.colormap, sizeof s->render.colormap, map);
 done:

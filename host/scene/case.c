@@ -1636,8 +1636,9 @@ static int l_run(lua_State *L)
  * field's name is checked against the scheme's fields when a run starts. */
 static int l_render(lua_State *L)
 {
-  static const char *const keys[] = {"field", "range", "colormap", NULL};
+  static const char *const keys[] = {"field", "range", "colormap", "camera", NULL};
   static const char *const maps[] = {"auto", "viridis", "coolwarm", "kind", NULL};
+  static const char *const cam_keys[] = {"eye", "look_at", "up", "fov", NULL};
   struct loader *ld = loader_of(L);
   struct scene_render *r = &ld->s->render;
   need_table(L, "render");
@@ -1661,6 +1662,26 @@ static int l_render(lua_State *L)
   lua_pop(L, 1);
   int m = get_choice(L, 1, "render", "colormap", maps, 0);
   snprintf(r->colormap, SCENE_NAME, "%s", maps[m]);
+  /* camera = { eye = {x, y, z}, look_at = {x, y, z}, up = {0, 0, 1}, fov = 30 }: 3-D frames */
+  if (lua_getfield(L, 1, "camera") != LUA_TNIL) {
+    if (ld->s->dim != 3)
+      luaL_error(L, "render: camera is for 3-D scenes (declare the domain { x0, y0, z0, x1, y1, "
+                    "z1 } first); 2-D frames show the whole domain");
+    const int t = lua_gettop(L);
+    if (!lua_istable(L, t))
+      luaL_error(L, "render: camera must be { eye = {x, y, z}, look_at = {x, y, z}, up = ..., "
+                    "fov = ... }");
+    check_keys(L, t, "render camera", cam_keys, 0);
+    if (!get_vector(L, t, "render camera", "eye", r->eye) ||
+        !get_vector(L, t, "render camera", "look_at", r->look_at))
+      luaL_error(L, "render: camera needs eye = {x, y, z} and look_at = {x, y, z}");
+    r->up[0] = r->up[1] = 0.0;
+    r->up[2] = 1.0;
+    get_vector(L, t, "render camera", "up", r->up);
+    r->fov = get_number(L, t, "render camera", "fov", 30.0);
+    r->camera = 1; /* (checked with the frames' options: render_check_camera) */
+  }
+  lua_pop(L, 1);
   return 0;
 }
 
@@ -1817,7 +1838,6 @@ static enum clsph_status finish(const char *path, struct loader *ld)
         {s->nprofiles, s->nprofiles ? s->profiles[0].line : 0, "profiles"},
         {s->flow.on, s->flow.line, "flow_rate_control"},
         {s->turb.on, s->turb.line, "turbulence"},
-        {s->render.on, s->render.line, "render { }"},
     };
     CLSPH_CHECK(s->nforces == 0, CLSPH_E_INPUT,
                 "%s: force { \"%s\" }: wall forces are 2-D only for now; this scene is 3-D", path,

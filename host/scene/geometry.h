@@ -64,10 +64,14 @@ struct geom_park {
  *          CLSPH_E_NOMEM */
 enum clsph_status geometry_build(const struct scene *s, const char *model, int layers,
                                  const struct geom_park *park, struct geom *out);
-/** @brief The particles of a 3-D scene (geometry3.c: box fills in box containers; no segments,
+/** @brief The particles of a 3-D scene (geometry3.c: box, sphere and cylinder fills, box, sphere,
+ *  cylinder and STL walls; no segments,
  *  no sections); geometry_build calls it for scene.dim = 3. */
 enum clsph_status geometry_build3(const struct scene *s, const char *model, int layers,
                                   struct geom *out);
+/** @brief The obstacle (a 3-D wall with its fluid outside: box, sphere, cylinder or STL solid)
+ *  that holds the point x, into *wall (−1: none); for a camera's eye. */
+enum clsph_status geometry3_solid_at(const struct scene *s, const double x[3], int *wall);
 /** @brief A digest (CRC-32) of what defines a scene besides its parameters' names: the generated
  *  particles (positions, initial velocities, kinds, wall groups) and segments, the domain and its
  *  periodic axes, the fluid's properties, the wall motions, the scheme and its options. Two runs

@@ -544,6 +544,27 @@ done:
   return st;
 }
 
+enum clsph_status geometry3_solid_at(const struct scene *s, const double x[3], int *wall)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct build3 b;
+  memset(&b, 0, sizeof b);
+  b.s = s;
+  *wall = -1;
+  b.mi = calloc((size_t)s->nwalls + 1, sizeof *b.mi);
+  CLSPH_CHECK(b.mi != NULL, CLSPH_E_NOMEM, "geometry: out of memory");
+  for (int w = 0; w < s->nwalls && *wall < 0; ++w) {
+    const struct scene_wall *wl = &s->walls[w];
+    if (wl->box3d != 2) continue;
+    if (wl->shape == SCENE_MESH) CLSPH_TRY(mesh_index_build(wl->mesh, s->dr, &b.mi[w]));
+    if (wall_in(&b, w, x, 0.0, 0)) *wall = w;
+  }
+done:
+  for (int w = 0; b.mi != NULL && w < s->nwalls; ++w) mesh_index_free(&b.mi[w]);
+  free(b.mi);
+  return st;
+}
+
 enum clsph_status geometry_build3(const struct scene *s, const char *model, int layers,
                                   struct geom *out)
 {

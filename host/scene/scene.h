@@ -184,12 +184,14 @@ struct scene_turbulence {
 /** How frames show this case (`render { field = "p", range = {0, 1e4}, colormap = "viridis" }`):
  *  the defaults of `clsph run --frames` and `clsph render`, which the command line overrides. */
 struct scene_render {
-  int on;                    /* the case declares render { } */
-  char field[SCENE_NAME];    /* field name ("" : the default, speed) */
-  int fixed;                 /* a fixed colour range */
-  double range[2];           /* low and high end, in the field's unit */
-  char colormap[SCENE_NAME]; /* "auto", "viridis", "coolwarm", "kind" ("": auto) */
-  int line;                  /* line of the case script */
+  int on;                                /* the case declares render { } */
+  char field[SCENE_NAME];                /* field name ("" : the default, speed) */
+  int fixed;                             /* a fixed colour range */
+  double range[2];                       /* low and high end, in the field's unit */
+  char colormap[SCENE_NAME];             /* "auto", "viridis", "coolwarm", "kind" ("": auto) */
+  int camera;                            /* 3-D: 1 when the camera below is given */
+  double eye[3], look_at[3], up[3], fov; /* the camera: eye, target, up, field of view (deg) */
+  int line;                              /* line of the case script */
 };
 
 /** Thresholds of the health checks of the time loop (run { checks = { ... } }; the defaults,

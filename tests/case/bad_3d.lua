@@ -6,7 +6,8 @@
 -- 2 dr thick in the water (the markers need 3.8 dr); 14, a wall force; 15, isph-rotational's
 -- implicit viscous prediction; 16, a domain whose z1 is not a number.
 param { what = 0 }
-local scheme_name = ({ [1] = "isph-usaw", [2] = "wcsph-usaw", [15] = "isph-rotational" })[what]
+local scheme_name = ({ [1] = "isph-usaw", [2] = "wcsph-usaw", [15] = "isph-rotational",
+                       [24] = "wcsph-riemann" })[what]
                     or "isph-stabilized"
 if what == 5 then fluid { gravity = {0, 0, -9.81} } elseif what == 22 then sphere_wall { 0.5, 0.5, 0.5, 0.1 } end
 if what == 7 then
@@ -42,11 +43,13 @@ else
 end
 -- the curved solids: 17, a sphere of radius 0; 18, a cylinder whose ends are one point; 19, a box
 -- and a sphere in one fill; 20, a sphere past the top; 21, a cylinder 2 dr across (the markers
--- need 3.8 dr); 22 (line 11), a sphere before the 3-D domain; 23, a lid sliding across its face
+-- need 3.8 dr); 22 (line 11), a sphere before the 3-D domain; 23, a lid sliding across its face;
+-- 24, a block in the water (wcsph-riemann), for a camera inside it
 if what == 17 then sphere_wall { 0.5, 0.5, 0.25, 0, fluid = "outside", group = "ball" } end
 if what == 18 then cylinder_wall { 0.5, 0.5, 0, 0.5, 0.5, 0, 0.2, fluid = "outside" } end
 if what == 19 then fill { 0, 0, 0, 1, 1, 0.5, sphere = {0.5, 0.5, 0.5, 0.2}, name = "ball" } end
 if what == 20 then sphere_wall { 0.5, 0.5, 0.9, 0.3, fluid = "outside", group = "ball" } end
 if what == 21 then cylinder_wall { 0.5, 0.5, 0, 0.5, 0.5, 1, 0.1, fluid = "outside", group = "pole" } end
 if what == 23 then box_wall { 0.2, 0.2, 0.2, 0.8, 0.8, 0.8, lid_velocity = {0, 1, 0}, lid_face = "y1" } end
+if what == 24 then box_wall { 0.3, 0, 0, 0.7, 1, 0.3, fluid = "outside", group = "block" } end
 run { t_end = 0.1 }

@@ -1,5 +1,6 @@
 # Frames of a run against frames of its snapshots, and the render command's messages.
-#   cmake -DCLSPH=exe -DCASE=hydrostatic.lua -DCHOICE=render_choice.lua -DOUT=dir -P this
+#   cmake -DCLSPH=exe -DCASE=hydrostatic.lua -DCHOICE=render_choice.lua
+#         -DCHOICE3=render_camera3d.lua -DOUT=dir -P this
 # 1. `clsph run --frames` (fixed range) and `clsph render` of its snapshots draw the same frames,
 #    byte for byte: the device state a frame was drawn from is the state the snapshot holds.
 # 2. A case's render { } choices (field, range, map) serve both commands, and travel in the
@@ -68,5 +69,29 @@ endif()
 clsph_run(2 render ${OUT}/run --field temperature --out ${OUT}/bad ${small})
 if(NOT out MATCHES "unknown field 'temperature'; fields: speed, vorticity, vel_x, vel_y, .*p")
   message(FATAL_ERROR "the message does not list the fields")
+endif()
+# 5: 3-D frames (lit spheres): the case's render { camera } travels in the snapshots, and the
+#    default camera (from the first frame's fluid) is the same in both
+foreach(cam 1 0)
+  clsph_run(0 run ${CHOICE3} --set cam=${cam} --out ${OUT}/cam${cam} --frames ${small})
+  clsph_run(0 render ${OUT}/cam${cam} --out ${OUT}/cam${cam}_again ${small})
+  same_frames(${OUT}/cam${cam} ${OUT}/cam${cam}_again "p_*.png" 3)
+endforeach()
+file(SHA256 ${OUT}/cam1/frames/p_000000.png h1)
+file(SHA256 ${OUT}/cam0/frames/p_000000.png h0)
+if(h1 STREQUAL h0)
+  message(FATAL_ERROR "the case's camera and the default one drew the same frame")
+endif()
+clsph_run(2 info ${CHOICE3} --set bad=1)
+if(NOT out MATCHES "render_camera3d.lua:9: render: camera is for 3-D scenes")
+  message(FATAL_ERROR "a camera in a 2-D scene: no message")
+endif()
+clsph_run(2 run ${CHOICE3} --set bad=2 --frames --out ${OUT}/bad2 ${small})
+if(NOT out MATCHES "render_camera3d.lua:11: render camera: the camera looks at its own eye")
+  message(FATAL_ERROR "a blind camera: no message")
+endif()
+clsph_run(2 info ${CHOICE3} --set bad=3)
+if(NOT out MATCHES "render_camera3d.lua:13: render: camera needs eye = \\{x, y, z\\} and look_at")
+  message(FATAL_ERROR "a camera without look_at: no message")
 endif()
 message("run and render agree; the messages are there")

@@ -379,6 +379,87 @@ done:
   render_destroy(r2);
 }
 
+/* A 3-D frame (pos of 3 components): the camera at (0, −1.5, 0) looking at the origin, z up, 30°;
+ * particles of volume 1e-3 (spheres 0.1 across) at the origin (A, p = 0), 0.3 to its right (B,
+ * p = 100) and, in a second frame, a third in front of A on the axis (C, p = 100). Checked:
+ *   - A's centre lies at the view's centre (the layout's origin), B's 0.3 m times the scale to its
+ *     right: the perspective projection, to a pixel;
+ *   - A's centre pixel is its map colour times the shader's light at the sphere's front, n =
+ *     (0, 0, 1): 0.35 + 0.65 L_z plus the highlight 0.25 (n·h)^40, L = (−0.40, 0.50, 0.77)/|L|,
+ *     h = (L + (0, 0, 1))/|L + (0, 0, 1)|, to 2 levels (llvmpipe's float shading, 8-bit out);
+ *   - the upper left of a sphere (towards the light) is brighter than its lower right;
+ *   - the nearer sphere covers the farther: with C in front, A's centre pixel is C's colour;
+ *   - a camera looking at its own eye, or with up along its view, is refused. */
+static void check_frame3(const char *dir)
+{
+  double pos3[9] = {0, 0, 0, 0.3, 0, 0, 0, -0.5, 0}, vol3[3] = {1e-3, 1e-3, 1e-3},
+         kind3[3] = {0, 0, 0}, p3[3] = {0, 100, 100};
+  struct render_array arrays[4] = {
+      {"pos", 3, pos3}, {"vol", 1, vol3}, {"kind", 1, kind3}, {"p", 1, p3}};
+  struct render_input in;
+  memset(&in, 0, sizeof in);
+  in.n = 2;
+  in.narrays = 4;
+  in.arrays = arrays;
+  in.case_name = "spheres";
+  struct render_opts o;
+  render_defaults(&o);
+  o.width = W;
+  o.height = H;
+  o.fixed = 1;
+  o.lo = 0.0;
+  o.hi = 100.0;
+  o.camera_set = 1;
+  o.camera = (struct render_camera){{0, -1.5, 0}, {0, 0, 0}, {0, 0, 1}, 30.0};
+  const char *names[] = {"pos", "vol", "kind", "p"};
+  const int ncomp[] = {3, 1, 1, 1};
+  struct field_spec f;
+  TC_CHECK(field_find("p", 4, names, ncomp, &f) == CLSPH_OK, "field p");
+  struct render *r = NULL;
+  if (render_create(&o, &r) != CLSPH_OK) {
+    TC_CHECK(0, "no renderer");
+    return;
+  }
+  char path[1024];
+  snprintf(path, sizeof path, "%s/spheres.png", dir);
+  TC_CHECK(render_frame(r, &f, &in, path, NULL, NULL) == CLSPH_OK, "the 3-D frame");
+  struct render_layout l;
+  render_layout(r, &l);
+  int w = 0, h = 0;
+  const unsigned char *rgb = render_pixels(r, &w, &h);
+  const int ax = (int)floor(l.origin[0]), ay = (int)floor(l.origin[1]);
+  const int bx = (int)floor(l.origin[0] + 0.3 * l.scale);
+  const double rad = 0.5 * 0.1 * l.scale; /* A's radius, pixels */
+  TC_CHECK(rad > 12.0, "spheres of %.1f pixels", 2.0 * rad);
+  const double lz = 0.77 / sqrt(0.40 * 0.40 + 0.50 * 0.50 + 0.77 * 0.77);
+  const double hz = (lz + 1.0) / sqrt(2.0 + 2.0 * lz);
+  const double shade = 0.35 + 0.65 * lz, spec = 0.25 * pow(hz, 40.0);
+  unsigned char base[3];
+  colormap_rgb(COLORMAP_VIRIDIS, 0.0, base);
+  const unsigned char *pa = px_at(rgb, ax, ay);
+  for (int k = 0; k < 3; ++k) {
+    const double want = fmin(255.0, base[k] * shade + 255.0 * spec);
+    TC_NEAR(pa[k], want, 2.0, "A's centre, channel %d (base %d)", k, base[k]);
+  }
+  colormap_rgb(COLORMAP_VIRIDIS, 1.0, base);
+  const unsigned char *pb = px_at(rgb, bx, ay);
+  TC_NEAR(pb[1], fmin(255.0, base[1] * shade + 255.0 * spec), 2.0, "B's centre, green");
+  const int d = (int)lround(0.4 * rad);
+  const unsigned char *ul = px_at(rgb, ax - d, ay - d), *lr = px_at(rgb, ax + d, ay + d);
+  TC_CHECK(ul[0] + ul[1] + ul[2] > lr[0] + lr[1] + lr[2], "lit from the upper left (%d > %d)",
+           ul[0] + ul[1] + ul[2], lr[0] + lr[1] + lr[2]);
+  in.n = 3; /* C in front of A */
+  TC_CHECK(render_frame(r, &f, &in, NULL, NULL, NULL) == CLSPH_OK, "the frame with C");
+  rgb = render_pixels(r, &w, &h);
+  TC_NEAR(px_at(rgb, ax, ay)[1], fmin(255.0, base[1] * shade + 255.0 * spec), 2.0,
+          "C covers A: A's centre shows C's colour");
+  render_destroy(r);
+  struct render_camera bad = {{1, 2, 3}, {1, 2, 3}, {0, 0, 1}, 30.0};
+  TC_CHECK(render_check_camera(&bad, "test") == CLSPH_E_INPUT, "a camera looking at its eye");
+  bad = (struct render_camera){{0, 0, 5}, {0, 0, 0}, {0, 0, 1}, 30.0};
+  TC_CHECK(render_check_camera(&bad, "test") == CLSPH_E_INPUT, "up along the view");
+}
+
 int main(int argc, char **argv)
 {
   const char *dir = argc > 1 ? argv[1] : ".";
@@ -386,5 +467,6 @@ int main(int argc, char **argv)
   check_fields();
   check_vorticity();
   check_frame(dir);
+  check_frame3(dir);
   return tc_finish("test_render");
 }
