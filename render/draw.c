@@ -202,20 +202,21 @@ static void arrays_off(void)
   glDisableClientState(GL_COLOR_ARRAY);
 }
 
-void draw_discs(struct draw *d, size_t n, const float *xy, const float *diam,
-                const unsigned char *rgb)
+/* point sprites of a program with a diameter attribute, blended over what is there */
+static void sprites(GLuint prog, GLint attr, size_t n, const float *xy, const float *diam,
+                    const unsigned char *rgb)
 {
   if (n == 0) return;
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_POINT_SPRITE);
   glEnable(GL_VERTEX_PROGRAM_POINT_SIZE);
-  glUseProgram(d->prog);
+  glUseProgram(prog);
   arrays_on(xy, rgb);
-  glEnableVertexAttribArray((GLuint)d->a_diam);
-  glVertexAttribPointer((GLuint)d->a_diam, 1, GL_FLOAT, GL_FALSE, 0, diam);
+  glEnableVertexAttribArray((GLuint)attr);
+  glVertexAttribPointer((GLuint)attr, 1, GL_FLOAT, GL_FALSE, 0, diam);
   glDrawArrays(GL_POINTS, 0, (GLsizei)n);
-  glDisableVertexAttribArray((GLuint)d->a_diam);
+  glDisableVertexAttribArray((GLuint)attr);
   arrays_off();
   glUseProgram(0);
   glDisable(GL_VERTEX_PROGRAM_POINT_SIZE);
@@ -223,25 +224,16 @@ void draw_discs(struct draw *d, size_t n, const float *xy, const float *diam,
   glDisable(GL_BLEND);
 }
 
+void draw_discs(struct draw *d, size_t n, const float *xy, const float *diam,
+                const unsigned char *rgb)
+{
+  sprites(d->prog, d->a_diam, n, xy, diam, rgb);
+}
+
 void draw_spheres(struct draw *d, size_t n, const float *xy, const float *diam,
                   const unsigned char *rgb)
 {
-  if (n == 0) return;
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  glEnable(GL_POINT_SPRITE);
-  glEnable(GL_VERTEX_PROGRAM_POINT_SIZE);
-  glUseProgram(d->sphere);
-  arrays_on(xy, rgb);
-  glEnableVertexAttribArray((GLuint)d->s_diam);
-  glVertexAttribPointer((GLuint)d->s_diam, 1, GL_FLOAT, GL_FALSE, 0, diam);
-  glDrawArrays(GL_POINTS, 0, (GLsizei)n);
-  glDisableVertexAttribArray((GLuint)d->s_diam);
-  arrays_off();
-  glUseProgram(0);
-  glDisable(GL_VERTEX_PROGRAM_POINT_SIZE);
-  glDisable(GL_POINT_SPRITE);
-  glDisable(GL_BLEND);
+  sprites(d->sphere, d->s_diam, n, xy, diam, rgb);
 }
 
 void draw_points(struct draw *d, size_t n, const float *xy, int size, const unsigned char *rgb)
