@@ -51,14 +51,14 @@
 -- --set wcsph=1 runs the weakly-compressible baseline (c0 = 10 · 2 √(gH)); --set riemann=1 runs
 -- wcsph-riemann with the same sound speed; --set stab=1 runs isph-stabilized (Asai et al. 2012)
 -- with the modified virtual marker's walls (neumann = 0: the pseudo-Neumann ones) and relaxation
--- alpha, the column starting from its hydrostatic pressure. With stab = 1, gate = 1 holds the
--- column behind a gate at x = L (0.5 m tall, three dummy layers thick) that lifts 0.4 m at
--- gate_speed from t = 0 (S sec 4.2 and the refdata's secondary source: 4.53 m/s), as the
+-- alpha, the column starting from its hydrostatic pressure. With stab = 1 or riemann = 1, gate = 1
+-- holds the column behind a gate at x = L (0.5 m tall, three dummy layers thick) that lifts 0.4 m
+-- at gate_speed from t = 0 (S sec 4.2 and the refdata's secondary source: 4.53 m/s), as the
 -- experiment's; gate_lift (a metric) is how far its lowest dummy rose. checkpoint: s between
 -- checkpoints (0: none). dyn = 1: isph-stabilized's pressure_form = "dynamic"; shift = C > 0 its
 -- particle shifting (option shifting).
--- dim = 3 (isph-stabilized or wcsph-riemann) runs it in 3-D: the tank and the column `width` wide (150 mm,
--- the refdata's one source: PySPH's dam_break_3d), gravity along −z, the lid at `top`, sensor 1 a
+-- dim = 3 (isph-stabilized or wcsph-riemann) runs it in 3-D: the tank and the column `width` wide
+-- (150 mm, the refdata's one source: PySPH's dam_break_3d), gravity along −z, the lid at `top`, sensor 1 a
 -- disc 4.2 mm across on the downstream wall at mid-width; the gate a plate 6 dr thick (each face's
 -- dummies reach 2.4 dr behind it at h = 1.2 dr, the markers of the fluid next to it need that:
 -- a thinner plate is refused), gate_height tall (0.5 m; it lifts 0.4 m and must stay under the
@@ -76,8 +76,9 @@ if dim == 3 and stab ~= 1 and riemann ~= 1 then
   error("dam_break: dim = 3 needs stab = 1 or riemann = 1 (isph-stabilized and wcsph-riemann run "
         .. "3-D scenes)")
 end
-if gate == 1 and stab ~= 1 then
-  error("dam_break: gate = 1 needs stab = 1 (isph-stabilized moves the gate)")
+if gate == 1 and stab ~= 1 and riemann ~= 1 then
+  error("dam_break: gate = 1 needs stab = 1 or riemann = 1 (isph-stabilized and wcsph-riemann "
+        .. "move the gate)")
 end
 if dyn == 1 and stab ~= 1 then
   error("dam_break: dyn = 1 needs stab = 1 (isph-stabilized's pressure_form)")
@@ -105,7 +106,9 @@ if stab == 1 then
            shifting = shift > 0 and shift or nil }
 elseif riemann == 1 then
   scheme { "wcsph-riemann", sound_speed = 10 * U, ard = ard,
-           transport_velocity = ({"off", "full", "limited"})[tvf + 1] }
+           transport_velocity = ({"off", "full", "limited"})[tvf + 1],
+           gate = gate == 1 and "gate" or nil, gate_speed = gate == 1 and gate_speed or nil,
+           gate_stop = gate == 1 and 0.4 / gate_speed or nil }
 elseif wcsph == 1 then
   scheme { "wcsph-usaw", sound_speed = 10 * U }
 else
@@ -283,8 +286,9 @@ function metrics(sim)
   if gate == 1 then
     local gx, gy, low = sim.field("pos", 1, "dummy"), sim.field("pos", up, "dummy"), math.huge
     for i = 1, #gx.value do
-      if gx.value[i] > L and gx.value[i] < L + 3 * dr and gy.value[i] > 0 then -- not the floor's
-        low = math.min(low, gy.value[i])
+      local across = dim == 2 or (gx.y[i] > 0 and gx.y[i] < width) -- not the side walls'
+      if gx.value[i] > L and gx.value[i] < L + 3 * dr and gy.value[i] > 0 and across then
+        low = math.min(low, gy.value[i]) -- (nor the floor's)
       end
     end
     m.gate_lift = low - dr / 2 -- its lowest dummy started half a spacing above the floor

@@ -80,14 +80,3 @@ __kernel void stab_wall_pressure(const uint n, const struct grid g, __global con
   p[i] = pw;
   if (write_rhs) rhs[i] = d0 * (pw - STAB_DYNAMIC * rho0 * dot(accel, xw)); /* P_w (dynamic) */
 }
-
-/* The gate's dummies (gate[i] != 0) translate by disp and move at v (the host integrates the
- * lift exactly: isph_stabilized.c gate_step) */
-__kernel void stab_wall_move(const uint n, __global const uint *gate, const realv disp,
-                             const realv v, __global realv *pos, __global realv *wall_vel)
-{
-  const uint i = get_global_id(0);
-  if (i >= n || gate[i] == 0u) return;
-  pos[i] += disp;
-  wall_vel[i] = v;
-}

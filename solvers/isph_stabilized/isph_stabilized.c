@@ -48,6 +48,7 @@
 
 #include "../scheme.h"
 #include "clsph_config.h"
+#include "gate.h"
 #include "geometry.h"
 #include "log.h"
 #include "psolve.h"
@@ -70,16 +71,13 @@ struct stab {
   double umax;    /* largest fluid speed at the last max_dt, m/s */
   int dim;        /* the scene's dimension */
   /* the gate: the dummies of the walls of group `gate` lift along −g/|g| at gate_speed from
-   * gate_start to gate_stop (Lobovsky et al.'s set-up, S sec 4.2) */
-  int has_gate;
-  char gate[SCENE_NAME];
-  double gate_speed, gate_start, gate_stop, gate_dir[3];
-  double v_prev[3];        /* the gate's velocity over the last step (persisted) */
+   * gate_start to gate_stop (Lobovsky et al.'s set-up, S sec 4.2; solvers/gate) */
+  struct gate gate;
   struct realv_arg a_gate; /* its acceleration over this step */
-  int f_p, f_fs, f_rhostar, f_dist, f_normal, f_uwall, f_ustar, f_div, f_rhs, f_dir, f_acc, f_gate,
+  int f_p, f_fs, f_rhostar, f_dist, f_normal, f_uwall, f_ustar, f_div, f_rhs, f_dir, f_acc,
       f_pshift;
   cl_kernel k_lattice, k_wall_vel, k_wall_p, k_predict, k_source, k_project, k_move, k_diag0,
-      k_shift, k_count, k_coeffs, k_apply, k_diag, k_neumann, k_wall_move, k_pshift, k_papply;
+      k_shift, k_count, k_coeffs, k_apply, k_diag, k_neumann, k_pshift, k_papply;
   cl_mem d_sums; /* the lattice sums (2 reals) */
 };
 
@@ -88,6 +86,7 @@ static const char *const sources[] = {"common/blas1.cl",
                                       "common/csr.cl",
                                       "common/mg.cl",
                                       "common/poisson.cl",
+                                      GATE_SOURCES,
                                       "common/marker.cl",
                                       "common/lattice.cl",
                                       "isph_stabilized/walls.cl",
@@ -226,51 +225,7 @@ static enum clsph_status read_options(const struct sim *sim, struct stab *b)
                 "or a body force along the periodic %c axis (%g m/s²): its unknown p − ρ0 a·x "
                 "would jump across the period",
                 sc->case_path, sc->scheme_line, "xyz"[a], sc -> gravity[a] + sc -> body_force[a]);
-  /* the gate */
-  const struct scene_option *go = option(sc, "gate");
-  static const char *const gate_keys[] = {"gate_speed", "gate_start", "gate_stop"};
-  for (int k = 0; k < 3; ++k)
-    CLSPH_CHECK(go != NULL || option(sc, gate_keys[k]) == NULL, CLSPH_E_INPUT,
-                "%s:%d: isph-stabilized option %s needs gate = \"<wall group>\", the walls that "
-                "lift",
-                sc->case_path, sc->scheme_line, gate_keys[k]);
-  if (go != NULL) {
-    char groups[256] = "";
-    size_t used = 0;
-    int found = 0;
-    for (int w = 0; w < sc->nwalls; ++w) {
-      if (!go->is_number && strcmp(sc->walls[w].group, go->text) == 0) found = 1;
-      if (strstr(groups, sc->walls[w].group) == NULL)
-        used += (size_t)snprintf(groups + used, used < sizeof groups ? sizeof groups - used : 0,
-                                 "%s%s", used ? ", " : "", sc->walls[w].group);
-    }
-    CLSPH_CHECK(found, CLSPH_E_INPUT,
-                "%s:%d: isph-stabilized option gate = %s%s%s: no wall has that group (groups: %s)",
-                sc->case_path, sc->scheme_line, go->is_number ? "" : "\"",
-                go->is_number ? "a number" : go->text, go->is_number ? "" : "\"", groups);
-    b->has_gate = 1;
-    snprintf(b->gate, sizeof b->gate, "%s", go->text);
-    const struct scene_option *gs = option(sc, "gate_speed"), *ge = option(sc, "gate_stop");
-    CLSPH_CHECK(gs != NULL && ge != NULL, CLSPH_E_INPUT,
-                "%s:%d: isph-stabilized option gate needs gate_speed (m/s) and gate_stop (s, when "
-                "the lift ends; gate_start, when it begins, is 0 unless given)",
-                sc->case_path, sc->scheme_line);
-    b->gate_speed = b->gate_start = 0.0;
-    b->gate_stop = 0.0;
-    CLSPH_TRY(option_number(sc, "gate_speed", 1e-9, 1e3, "the gate's lifting speed (m/s)", "",
-                            &b->gate_speed));
-    CLSPH_TRY(option_number(sc, "gate_start", 0.0, 1e9, "the time the gate starts (s)", "",
-                            &b->gate_start));
-    CLSPH_TRY(
-        option_number(sc, "gate_stop", 0.0, 1e9, "the time the gate stops (s)", "", &b->gate_stop));
-    CLSPH_CHECK(b->gate_stop > b->gate_start, CLSPH_E_INPUT,
-                "%s:%d: isph-stabilized option gate_stop = %g s must come after gate_start = %g s",
-                sc->case_path, sc->scheme_line, b->gate_stop, b->gate_start);
-    const double *g = sc->gravity;
-    const double gn = hypot(hypot(g[0], g[1]), g[2]);
-    for (int a = 0; a < 3; ++a) /* against gravity, +y without it */
-      b->gate_dir[a] = gn > 0.0 ? -g[a] / gn : a == 1;
-  }
+  CLSPH_TRY(gate_read(sc, "isph-stabilized", &b->gate)); /* the gate (solvers/gate) */
   /* the dummies fill layers dr behind the wall; the fluid's first row, dr/2 in front of it, sees
    * support − dr/2 behind it */
   const struct scene_option *lo = option(sc, "wall_layers");
@@ -433,7 +388,7 @@ static enum clsph_status wall_neumann(struct sim *sim, struct stab *b, double dt
   cl_mem dir = pset_mem(ps, b->f_dir), p = pset_mem(ps, b->f_p);
   cl_mem vel = pset_mem(ps, sim->f_vel), uwall = pset_mem(ps, b->f_uwall);
   /* no gate: a NULL buffer (OpenCL 1.2 clSetKernelArg), which ppe.cl reads as "no dummy moves" */
-  cl_mem gate = b->has_gate ? pset_mem(ps, b->f_gate) : NULL;
+  cl_mem gate = b->gate.on ? pset_mem(ps, b->gate.f_gate) : NULL;
   CLSPH_TRY(KERN_SET(b->k_neumann, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
                      KARG(pos), KARG(vol), KARG(kind), KARG(dist), KARG(normal), KARG(rho),
                      KARGV(force), KARG(d0), KARG(p), KARG(vel), KARG(uwall), KARG(rdt), KARG(gate),
@@ -520,25 +475,19 @@ static enum clsph_status check_walls(const struct sim *sim, const struct stab *b
   double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   char t0[96], t1[96], t2[96];
   size_t nd = 0;
+  CLSPH_TRY(gate_check(sim, &b->gate, "isph-stabilized")); /* its dummies stay in the grid */
   for (size_t i = 0; i < geo->n; ++i) {
     if (geo->kind[i] != KIND_DUMMY) continue;
     ++nd;
     const double *x0 = geo->x + (size_t)dim * i, *n = geo->normal + (size_t)dim * i;
     const struct scene_wall *w = &sc->walls[geo->group[i]];
-    const int gate = b->has_gate && strcmp(w->group, b->gate) == 0;
-    const double lift = gate ? b->gate_speed * (b->gate_stop - b->gate_start) : 0.0;
+    const int gate = b->gate.on && strcmp(w->group, b->gate.group) == 0;
+    const double lift = gate ? b->gate.speed * (b->gate.stop - b->gate.start) : 0.0;
     double x1[3] = {0.0, 0.0, 0.0}, m[3] = {0.0, 0.0, 0.0};
-    for (int a = 0; a < dim; ++a) x1[a] = x0[a] + lift * b->gate_dir[a];
+    for (int a = 0; a < dim; ++a) x1[a] = x0[a] + lift * b->gate.dir[a];
     for (int a = 0; a < dim; ++a) {
       lo[a] = fmin(lo[a], x0[a]);
       hi[a] = fmax(hi[a], x0[a]);
-      CLSPH_CHECK(!gate || sc->periodic[a] ||
-                      (x1[a] >= sim->gspec.lo[a] && x1[a] < sim->gspec.hi[a]),
-                  CLSPH_E_INPUT,
-                  "%s:%d: isph-stabilized: the gate (group '%s') leaves the domain: after its "
-                  "lift of %g m its dummy from %s is at %s; lower gate_speed or gate_stop",
-                  sc->case_path, w->line, w->group, lift, point_text(t0, sizeof t0, x0, dim),
-                  point_text(t1, sizeof t1, x1, dim));
     }
     for (int e = 0; e < (gate ? 2 : 1); ++e) {
       const double *x = e == 0 ? x0 : x1;
@@ -665,17 +614,7 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
     CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
   }
-  b->f_gate = -1; /* a scene without a gate pays nothing for it */
-  if (b->has_gate) {
-    cl_uint *gate = calloc(geo->n + 1, sizeof *gate);
-    CLSPH_CHECK(gate != NULL, CLSPH_E_NOMEM, "out of memory");
-    for (size_t i = 0; i < geo->n; ++i)
-      gate[i] = geo->kind[i] == KIND_DUMMY && strcmp(sc->walls[geo->group[i]].group, b->gate) == 0;
-    st = pset_add(ps, sim->dev, "gate", sizeof(cl_uint), gate, &b->f_gate);
-    free(gate);
-    if (st != CLSPH_OK) goto done;
-    pset_describe(ps, b->f_gate, PF_UINT, 0, 0);
-  }
+  CLSPH_TRY(gate_create(sim, &b->gate)); /* a scene without a gate pays nothing for it */
   if (b->c_shift > 0.0) {
     CLSPH_TRY(pset_add(ps, sim->dev, "shift", rv, NULL, &b->f_pshift));
     pset_describe(ps, b->f_pshift, PF_REAL, (int)dim, 0);
@@ -689,15 +628,14 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
   const struct {
     cl_kernel *k;
     const char *name;
-  } ks[] = {{&b->k_lattice, "lattice_sums"},      {&b->k_wall_vel, "stab_wall_velocity"},
-            {&b->k_wall_p, "stab_wall_pressure"}, {&b->k_predict, "stab_predict"},
-            {&b->k_source, "stab_source"},        {&b->k_project, "stab_project"},
-            {&b->k_shift, "stab_hydro_shift"},    {&b->k_move, "stab_move"},
-            {&b->k_diag0, "stab_lattice_diag"},   {&b->k_count, "stab_ppe_count"},
-            {&b->k_coeffs, "stab_ppe_coeffs"},    {&b->k_apply, "stab_ppe_apply"},
-            {&b->k_diag, "stab_ppe_diag"},        {&b->k_neumann, "stab_wall_neumann"},
-            {&b->k_wall_move, "stab_wall_move"},  {&b->k_pshift, "stab_particle_shift"},
-            {&b->k_papply, "stab_apply_shift"}};
+  } ks[] = {{&b->k_lattice, "lattice_sums"},       {&b->k_wall_vel, "stab_wall_velocity"},
+            {&b->k_wall_p, "stab_wall_pressure"},  {&b->k_predict, "stab_predict"},
+            {&b->k_source, "stab_source"},         {&b->k_project, "stab_project"},
+            {&b->k_shift, "stab_hydro_shift"},     {&b->k_move, "stab_move"},
+            {&b->k_diag0, "stab_lattice_diag"},    {&b->k_count, "stab_ppe_count"},
+            {&b->k_coeffs, "stab_ppe_coeffs"},     {&b->k_apply, "stab_ppe_apply"},
+            {&b->k_diag, "stab_ppe_diag"},         {&b->k_neumann, "stab_wall_neumann"},
+            {&b->k_pshift, "stab_particle_shift"}, {&b->k_papply, "stab_apply_shift"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
   CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &b->popt, &b->ps));
@@ -735,35 +673,16 @@ done:
   return st;
 }
 
-/* The gate over [t, t + Δt]: its displacement (the lift's overlap with [gate_start, gate_stop],
- * exact, so that it stops where it should), its velocity over the step and the acceleration
- * since the last one (the a_W of f = g − a_W in the walls' Neumann condition). */
+/* The gate over [t, t + Δt] (solvers/gate: its dummies moved, their wall velocity), and its
+ * acceleration since the last step (the a_W of f = g − a_W in the walls' Neumann condition). */
 static enum clsph_status gate_step(struct sim *sim, struct stab *b, double dt)
 {
   enum clsph_status st = CLSPH_OK;
-  const double t0 = sim->time, t1 = t0 + dt;
-  const double moving = fmax(0.0, fmin(t1, b->gate_stop) - fmax(t0, b->gate_start));
-  const int dim = sim->scene->dim;
-  double v[3], acc[3], disp[3];
-  int changed = moving > 0.0;
-  for (int a = 0; a < 3; ++a) {
-    v[a] = b->gate_speed * moving / dt * b->gate_dir[a];
-    acc[a] = (v[a] - b->v_prev[a]) / dt;
-    disp[a] = v[a] * dt;
-    changed |= v[a] != b->v_prev[a];
-  }
-  b->a_gate = dev_realv(dim, acc);
-  if (changed) {
-    struct pset *ps = &sim->ps;
-    const cl_uint n = (cl_uint)ps->n;
-    const struct realv_arg dv = dev_realv(dim, disp), rv = dev_realv(dim, v);
-    cl_mem gate = pset_mem(ps, b->f_gate), pos = pset_mem(ps, sim->f_pos);
-    cl_mem uwall = pset_mem(ps, b->f_uwall);
-    CLSPH_TRY(KERN_SET(b->k_wall_move, KARG(n), KARG(gate), KARGV(dv), KARGV(rv), KARG(pos),
-                       KARG(uwall)));
-    CLSPH_TRY(kern_launch(sim->dev, b->k_wall_move, n, NULL));
-  }
-  for (int a = 0; a < 3; ++a) b->v_prev[a] = v[a];
+  double prev[3], v[3], acc[3];
+  memcpy(prev, b->gate.v_prev, sizeof prev);
+  CLSPH_TRY(gate_move(sim, &b->gate, sim->time, dt, pset_mem(&sim->ps, b->f_uwall), v));
+  for (int a = 0; a < 3; ++a) acc[a] = (v[a] - prev[a]) / dt;
+  b->a_gate = dev_realv(sim->scene->dim, acc);
 done:
   return st;
 }
@@ -799,7 +718,7 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   const int neumann = b->mode == 1;
 
   /* 0. the gate (its dummies move before anything reads them) */
-  if (b->has_gate) CLSPH_TRY(gate_step(sim, b, dt));
+  if (b->gate.on) CLSPH_TRY(gate_step(sim, b, dt));
   /* 1. the dummies' velocity and u* from their markers (S eqs 11-13) */
   n = (cl_uint)ps->n;
   n = (cl_uint)ps->n;
@@ -902,7 +821,7 @@ static enum clsph_status stab_max_dt(struct sim *sim, void *state, double *dt)
   for (int w = 0; w < s->nwalls; ++w) /* a sliding wall drives the fluid */
     u = fmax(
         u, hypot(hypot(s->walls[w].velocity[0], s->walls[w].velocity[1]), s->walls[w].velocity[2]));
-  if (b->has_gate && sim->time < b->gate_stop) u = fmax(u, b->gate_speed); /* the gate's moves */
+  u = fmax(u, gate_speed_at(&b->gate, sim->time, sim->time)); /* the gate's moves */
   const double a =
       hypot(hypot(s->gravity[0] + sim->body_force[0], s->gravity[1] + sim->body_force[1]),
             s->gravity[2] + sim->body_force[2]); /* (2-D: hypot(., 0) is exact) */
@@ -925,21 +844,22 @@ static double *stab_persist(void *state, int *count)
 {
   struct stab *b = state;
   *count = b->dim; /* the gate's velocity: 2-D checkpoints keep their 2 values */
-  return b->v_prev;
+  return b->gate.v_prev;
 }
 
 static void stab_destroy(void *state)
 {
   struct stab *b = state;
   if (b == NULL) return;
-  cl_kernel ks[] = {b->k_move,     b->k_project, b->k_source,  b->k_predict,   b->k_wall_p,
-                    b->k_wall_vel, b->k_lattice, b->k_diag0,   b->k_count,     b->k_coeffs,
-                    b->k_apply,    b->k_diag,    b->k_neumann, b->k_wall_move, b->k_shift,
-                    b->k_pshift,   b->k_papply};
+  cl_kernel ks[] = {b->k_move,    b->k_project,  b->k_source,  b->k_predict,
+                    b->k_wall_p,  b->k_wall_vel, b->k_lattice, b->k_diag0,
+                    b->k_count,   b->k_coeffs,   b->k_apply,   b->k_diag,
+                    b->k_neumann, b->k_shift,    b->k_pshift,  b->k_papply};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (ks[k] != NULL) clReleaseKernel(ks[k]);
   kern_release(&b->d_sums);
   psolve_destroy(&b->ps);
+  gate_destroy(&b->gate);
   free(b);
 }
 

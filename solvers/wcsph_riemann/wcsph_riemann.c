@@ -35,6 +35,9 @@
  *                        sound)
  *   advection_cfl, acoustic_cfl  CFL_ad (0.25) and CFL_ac (0.6)
  *   walls, wall_layers   as for every scheme (dummy walls, 3 layers: the support is 2.6 dr).
+ *   gate, gate_speed, gate_start, gate_stop  a wall group lifted against gravity (solvers/gate):
+ *                        its dummies move once per acoustic sub-step; the wall's acceleration
+ *                        does not enter the dummies' pressure (impulsive at the start and stop).
  * Room for the k-ε model (its own issue): the viscosity enters the viscous sums as µ̃_ij, and
  * config.cl measures every fluid particle's distance to the nearest dummy particle (field
  * wall_dist), which picks out the wall-adjacent layers of the wall model. */
@@ -44,6 +47,7 @@
 
 #include "../scheme.h"
 #include "clsph_config.h"
+#include "gate.h"
 #include "open.h"
 #include "kepsilon.h"
 #include "sim.h"
@@ -79,10 +83,12 @@ struct wcr {
   int f_yplus;
   cl_mem d_frame, d_wallv, d_grad;
   cl_kernel k_twall, k_ttrans, k_tupd;
-  double y_p, w_s; /* the wall model's distance and weight */
+  double y_p, w_s;  /* the wall model's distance and weight */
+  struct gate gate; /* a lifted wall group (solvers/gate), e.g. the Lobovsky dam break's gate */
 };
 
 static const char *const sources[] = {OPEN_SOURCES,
+                                      GATE_SOURCES,
                                       "common/lattice.cl",
                                       "wcsph_riemann/config.cl",
                                       "wcsph_riemann/advection.cl",
@@ -107,6 +113,10 @@ static const char *const options[] = {"sound_speed",
                                       "acoustic_cfl",
                                       "walls",
                                       "wall_layers",
+                                      "gate",
+                                      "gate_speed",
+                                      "gate_start",
+                                      "gate_stop",
                                       NULL};
 
 static const struct scene_option *option(const struct scene *s, const char *key)
@@ -215,6 +225,7 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   /* beyond c0 Δt = h the Riemann sub-step outruns the support */
   CLSPH_TRY(option_number(sc, "acoustic_cfl", 1e-3, 1.0, "a CFL number", &w->cfl_ac));
   CLSPH_TRY(option_number(sc, "background_pressure", 0.0, 1e12, "a pressure in Pa", &w->p_bg));
+  CLSPH_TRY(gate_read(sc, "wcsph-riemann", &w->gate));
   /* the sound speed: 10 U by default, and the Mach number it implies */
   struct sound_scale vs;
   sound_velocity_scale(sc, &sim->geom, &vs);
@@ -431,6 +442,8 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
         geo->kind[i] == KIND_DUMMY && geo->group[i] >= 0 ? (cl_uint)geo->group[i] : 0xffffffffu;
   CLSPH_TRY(pset_add(ps, sim->dev, "wall", sizeof(cl_uint), ubuf, &w->f_wall));
   pset_describe(ps, w->f_wall, PF_UINT, 1, 0);
+  CLSPH_TRY(gate_check(sim, &w->gate, "wcsph-riemann"));
+  CLSPH_TRY(gate_create(sim, &w->gate));
   /* the entry and exit layers: their velocity in a field of their own (the fluid's vel is the
    * scheme's state; the layers' geometry velocity u_in or the exit profile goes to "open_u") */
   CLSPH_TRY(open_create(sim, -1, &w->open));
@@ -766,7 +779,9 @@ static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
   enum clsph_status st = CLSPH_OK;
   struct wcr *w = state;
   const double h = sim->sm.h;
-  CLSPH_TRY(configure(sim, w, w->reinit, list_skin(sim, fmax(w->vmax, w->u_scale), dt)));
+  /* the list's skin covers the fluid's moves and the gate's */
+  const double vg = gate_speed_at(&w->gate, sim->time, sim->time + dt);
+  CLSPH_TRY(configure(sim, w, w->reinit, list_skin(sim, fmax(fmax(w->vmax, w->u_scale), vg), dt)));
   if (w->open.nsec > 0) {
     CLSPH_TRY(open_layer_velocity(&w->open, sim));
     CLSPH_TRY(open_exits(sim, w));
@@ -786,6 +801,12 @@ static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
   const double d = dt / (double)nac;
   CLSPH_TRY(drift(sim, w, 0.0, 0.5 * d, 0.5 * d, 1u));
   for (long k = 0; k < nac; ++k) {
+    if (w->gate.on) { /* its dummies where they are at the sub-step's end (a lag of d v_gate, 0.08 h
+                       * at the Lobovsky gate's 4.53 m/s and c0 = 34 m/s) */
+      double vgate[3];
+      CLSPH_TRY(gate_move(sim, &w->gate, sim->time + (double)k * d, d,
+                          pset_mem(&sim->ps, sim->f_vel), vgate));
+    }
     if (w->open.nsec > 0) CLSPH_TRY(open_layers(sim, w));
     CLSPH_TRY(relax(sim, w, d));
     const double tail = k + 1 < nac ? d : 0.5 * d; /* the next sub-step's first half too */
@@ -810,7 +831,7 @@ static enum clsph_status wcr_max_dt(struct sim *sim, void *state, double *dt)
   double vmax = 0.0;
   CLSPH_TRY(sim_max_speed(sim, KIND_FLUID, &vmax));
   w->vmax = vmax;
-  const double v = fmax(vmax, w->u_scale);
+  const double v = fmax(fmax(vmax, w->u_scale), gate_speed_at(&w->gate, sim->time, sim->time));
   double d = v > 0.0 ? h / v : HUGE_VAL;                         /* eq 27 */
   const double nu_eff = s->nu + (w->turb ? w->ke.nut_max : 0.0); /* eq 27: ν + ν_t */
   if (nu_eff > 0.0) d = fmin(d, h * h / nu_eff);
@@ -916,6 +937,7 @@ static void wcr_destroy(void *state)
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
   kepsilon_destroy(&w->ke);
   open_destroy(&w->open);
+  gate_destroy(&w->gate);
   free(w->exit_p);
   free(w->h_partial);
   free(w->h_force);
