@@ -60,6 +60,9 @@
 #ifndef WCR_MOM_DISS
 #define WCR_MOM_DISS 1 /* eq 19's dissipative term between fluid pairs (acoustic.cl) */
 #endif
+#ifndef WCR_GATE
+#define WCR_GATE 0 /* a lifted wall group (solvers/gate): its dummies' mirror (acoustic.cl) */
+#endif
 
 /* r_ij between the nearest images on the periodic axes (the support is shorter than half a
  * period: the grid needs 2 GRID_SUB + 1 cells on a periodic axis) */

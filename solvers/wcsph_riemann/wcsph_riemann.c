@@ -316,6 +316,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_CONT_NORMAL", w.reinit == WCR_REINIT_OFF));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TURB", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "KE_ON", sim->scene->turb.on));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_GATE", w.gate.on));
   CLSPH_TRY(open_define(sim, o)); /* the sections (solvers/open) */
 done:
   return st;
@@ -661,16 +662,17 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   cl_mem nut = w->turb ? pset_mem(ps, w->ke.f_nut) : w->d_none;
   cl_mem grad = w->turb ? w->d_grad : w->d_none;
   cl_mem gradp = w->wall_pgrad ? w->d_gradp : w->d_none;
+  cl_mem gate = w->gate.on ? pset_mem(ps, w->gate.f_gate) : w->d_none;
   CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(pbg), KARG(mu),
                      KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn), KARGV(grav),
-                     KARG(grad), KARG(gradp)));
+                     KARG(grad), KARG(gradp), KARG(gate)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
   CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(w->d_acc),
                      KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist),
                      KARG(w->d_ncount), KARG(w->d_prior), KARG(wn), KARG(rho0), KARG(c0),
-                     KARGV(grav), KARG(drho)));
+                     KARGV(grav), KARG(drho), KARG(gate)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_cont, ps->n, NULL));
 done:
   return st;
