@@ -1775,6 +1775,8 @@ clsph_cli_test(stl_scale ARGS info ${bad_stl} --set what=7 RC 2
                REGEX "bad_stl.lua:16: stl_wall: scale must be positive")
 clsph_cli_test(stl_no_file ARGS info ${bad_stl} --set what=8 RC 2
                REGEX "bad_stl.lua:17: stl_wall: give the file as its first entry")
+clsph_cli_test(stl_nan ARGS info ${bad_stl} --set what=10 RC 2
+               REGEX "bad_stl.lua:15: stl_wall: .*stl/nan.stl is not closed: 3 of its 12 facets")
 clsph_cli_test(stl_past ARGS info ${bad_stl} --set what=9 RC 2
                REGEX "bad_stl.lua:18: stl_wall \\(group 'walls'\\) reaches past the domain along x: \\[0.5, 1.5\\]")
 # The sphere of cases/hydrostatic3d.lua as a triangulated surface (stl = 1: cases/stl/sphere.stl,

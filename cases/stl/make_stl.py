@@ -7,6 +7,7 @@
   tests/case/stl/inverted.stl the cube with every facet reversed (normals inward)
   tests/case/stl/flipped.stl  the cube with one facet reversed (orientation inconsistent)
   tests/case/stl/junk.stl     a text file that is no STL
+  tests/case/stl/nan.stl      the cube with one vertex NaN (its edges then match nothing)
 Facets run counter-clockwise seen from outside (the STL convention)."""
 import math
 import struct
@@ -81,5 +82,8 @@ ascii_stl("tests/case/stl/open.stl", "open", cube[:3] + cube[4:])
 ascii_stl("tests/case/stl/inverted.stl", "inverted", [(a, c, b) for a, b, c in cube])
 ascii_stl("tests/case/stl/flipped.stl", "flipped",
           [(a, c, b) if k == 5 else (a, b, c) for k, (a, b, c) in enumerate(cube)])
+nan = list(cube)
+nan[2] = ((float("nan"), 1, 1),) + nan[2][1:]  # the first vertex of the top's first facet
+ascii_stl("tests/case/stl/nan.stl", "nan", nan)
 with open("tests/case/stl/junk.stl", "w") as f:
     f.write("this is no STL file\n")

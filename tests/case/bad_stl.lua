@@ -2,7 +2,7 @@
 -- scaled to 1 m) with a cube obstacle 0.4 m across on its floor; 1, a surface with a facet missing
 -- (not closed); 2, every facet reversed (normals inward); 3, one facet reversed; 4, a text file;
 -- 5, a file that is not there; 6, stl_wall in a 2-D scene; 7, scale 0; 8, no file; 9, a surface
--- past the domain.
+-- past the domain; 10, a vertex NaN.
 param { what = 0 }
 if what == 6 then stl_wall { "stl/open.stl" } end
 domain { -0.2, -0.2, -0.2, 1.2, 1.2, 1.2 }
@@ -10,7 +10,7 @@ particles { dr = 0.05 }
 scheme { "isph-stabilized" }
 fluid { density = 1000, viscosity = 1e-6, gravity = {0, 0, -9.81} }
 local files = { "stl/open.stl", "stl/inverted.stl", "stl/flipped.stl", "stl/junk.stl",
-                "stl/none.stl" }
+                "stl/none.stl", [10] = "stl/nan.stl" }
 stl_wall { "../../cases/stl/cube.stl", group = "tank" }
 if files[what] then stl_wall { files[what], scale = 0.2, offset = {0.4, 0.4, 0}, fluid = "outside" } end
 if what == 7 then stl_wall { "../../cases/stl/cube.stl", scale = 0, fluid = "outside" } end
