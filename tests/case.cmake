@@ -1817,11 +1817,36 @@ clsph_run_test(run_dam_break_riemann3d ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
 # In float the spanwise noise grows from t = 1.5 (0.11 U at most at t = 4, RMS 0.0043 U at t = 5)
 # and the 3-D flow leaves the 2-D one: its rows read 0.010 U, its kinetic energy 2% over the
 # double run's. (At n = 30 to t = 10, double: 0.0099 U by the particles' own metric against the 2-D
-# run's 0.013, w 0.0033 U RMS; 183 s.) Bounds: 0.045 (the 2-D run's error and a half), spanwise
+# run's 0.013, w 0.0033 U RMS; 183 s.) The centreline profiles in the mid-depth plane by linear
+# interpolation (profile_error with z): u 0.034 U RMS and v 0.023 U in double, 0.011 and 0.011 in
+# float, where the 2-D run reads 0.032 and 0.040 (0.029 and 0.051 in float). Bounds: 0.045 (the
+# 2-D run's error and a half) on the rows, 0.05 and 0.06 on the profiles (the same), spanwise
 # 0.01 U RMS, no particle behind a wall.
 clsph_run_test(run_cavity_riemann3d ${CMAKE_SOURCE_DIR}/cases/cavity.lua
                SETS dim=3 riemann=1 n=20 t_end=5
-               BOUNDS "u_rms_rows<0.045" "w_rms<0.01" "wall_crossing_steps<0.5")
+               BOUNDS "u_rms_rows<0.045" "u_rms_linear<0.05" "v_rms_linear<0.06" "w_rms<0.01"
+                      "wall_crossing_steps<0.5")
+# Interpolation at points in 3-D (tests/case/sample3d.lua: a tank at rest, dr = 0.1): the linear
+# interpolation (first-order moving least squares, a 4x4 system in probe.cl) returns the particles'
+# own positions at a point between them and along a profile line in the plane z = 0.25 to
+# round-off (1.7e-16 m in double, 1.6e-7 m in float; bound 1e-5 m = 1e-4 dr); the pressure at
+# mid-depth by both interpolations within 3 Pa of ρ g (H − z) = 2452.5 Pa after 1 ms (bound 0.5%).
+# A point of two coordinates and a profile without z are refused in a 3-D scene.
+# The profile line recorded in 3-D (profile { from = {x, y, z}, to = ... }) carries z and its
+# 8 points' pressures within 3 Pa of the same.
+clsph_run_test(run_sample3d ${CASE_DIR}/sample3d.lua
+               BOUNDS "max_err<1e-5" "profile_max<1e-5" "p_shepard_err<12" "p_linear_err<12"
+                      "line_p_err<12" "line_points>7.5" "line_points<8.5")
+clsph_cli_test(sample3d_two_coordinates ARGS run ${CASE_DIR}/sample3d.lua --set what=1 --quiet
+               --overwrite --out ${CMAKE_CURRENT_BINARY_DIR}/runs/sample3d_two_coordinates RC 2
+               REGEX "sample3d.lua:25: sim.sample: cannot sample 'p' at \\(0.5, 0.25\\): a point of this 3-D scene has 3 coordinates, not 2")
+clsph_cli_test(sample3d_profile_out ARGS info ${CASE_DIR}/sample3d.lua --set what=3 RC 2
+               REGEX "sample3d.lua:21: profile 'out' from \\(0.5, 0.5, 0.5\\) to \\(0.5, 0.5, 1.5\\) leaves the domain \\{0, 0, 0, 1, 1, 1\\}")
+clsph_cli_test(sample3d_profile_2d ARGS info ${CASE_DIR}/sample3d.lua --set what=4 RC 2
+               REGEX "sample3d.lua:22: profile: from must be a vector \\{x, y, z\\}")
+clsph_cli_test(sample3d_profile_no_z ARGS run ${CASE_DIR}/sample3d.lua --set what=2 --quiet
+               --overwrite --out ${CMAKE_CURRENT_BINARY_DIR}/runs/sample3d_profile_no_z RC 2
+               REGEX "sample3d.lua:27: profile_error: cannot sample 'pos' at the points of .*sample3d_line.csv: a point of this 3-D scene has 3 coordinates, not 2 \\(give z")
 # box_wall's lid in 3-D: it slides along its face and belongs to a container
 clsph_cli_test(three_d_lid_across ARGS info ${CMAKE_SOURCE_DIR}/tests/case/bad_3d.lua --set what=23 RC 2
                REGEX "bad_3d.lua:53: box_wall: lid_velocity \\{0.0, 1.0, 0.0\\} crosses the lid face y1: its y component must be 0")

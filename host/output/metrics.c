@@ -153,24 +153,6 @@ done:
   return st;
 }
 
-static enum clsph_status metric_sample(void *ctx, const char *field, int comp, double x, double y,
-                                       double *value)
-{
-  enum clsph_status st = CLSPH_OK;
-  struct sim *sim = begin(ctx);
-  double at[2] = {x, y}, out[4];
-  METRIC_REFUSE(sim->scene->dim == 2, "interpolation at points is 2-D only for now: a 3-D "
-                                      "scene reads its particles with sim.field");
-  int idx = pset_find(&sim->ps, field);
-  METRIC_REFUSE(idx >= 0, "no field '%s'", field);
-  METRIC_REFUSE(comp >= 0 && comp < sim->ps.f[idx].nout, "field '%s' has %d components", field,
-                sim->ps.f[idx].nout);
-  CLSPH_TRY(sim_sample(sim, idx, 0, 1, at, out));
-  *value = out[comp];
-done:
-  return st;
-}
-
 static enum clsph_status metric_probe(void *ctx, const char *name, const char *field, int comp,
                                       double *value)
 {
@@ -194,20 +176,24 @@ done:
 }
 
 static enum clsph_status metric_sample_many(void *ctx, const char *field, int comp, int order,
-                                            int np, const double *xy, double *values)
+                                            int np, int ncoord, const double *pts, double *values)
 {
   enum clsph_status st = CLSPH_OK;
   struct sim *sim = begin(ctx);
   double *out = NULL;
-  METRIC_REFUSE(sim->scene->dim == 2, "interpolation along lines is 2-D only for now: a 3-D "
-                                      "scene reads its particles with sim.field");
+  METRIC_REFUSE(ncoord == sim->scene->dim,
+                "a point of this %d-D scene has %d coordinates, not %d%s", sim->scene->dim,
+                sim->scene->dim, ncoord,
+                sim->scene->dim == 3 ? " (give z: sim.sample(field, {x, y, z}), "
+                                       "profile_error{ ..., z = })"
+                                     : "");
   int idx = pset_find(&sim->ps, field);
   METRIC_REFUSE(idx >= 0, "no field '%s'", field);
   const struct pfield *f = &sim->ps.f[idx];
   METRIC_REFUSE(comp >= 0 && comp < f->nout, "field '%s' has %d components", field, f->nout);
   out = malloc((size_t)np * (size_t)f->ncomp * sizeof *out);
   CLSPH_CHECK(out != NULL, CLSPH_E_NOMEM, "out of memory");
-  CLSPH_TRY(sim_sample(sim, idx, order, (size_t)np, xy, out));
+  CLSPH_TRY(sim_sample(sim, idx, order, (size_t)np, pts, out));
   for (int k = 0; k < np; ++k) values[k] = out[(size_t)k * (size_t)f->ncomp + (size_t)comp];
 done:
   free(out);
@@ -293,7 +279,6 @@ void metrics_api(struct sim *sim, const char *dir, struct case_sim_api *api)
   api->wall_most = sim->wall_most;
   api->stats = metric_stats;
   api->sample_many = metric_sample_many;
-  api->sample = metric_sample;
   api->probe = metric_probe;
   api->force = metric_force;
   api->force_history = metric_force_history;

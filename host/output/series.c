@@ -263,7 +263,7 @@ enum clsph_status series_open(struct sim *sim, struct run_out *o, const char *re
     CLSPH_TRY(out_path(o, name, &path));
     o->profiles[p] = fopen(path, "w");
     CLSPH_CHECK(o->profiles[p] != NULL, CLSPH_E_IO, "cannot write %s: %s", path, strerror(errno));
-    fprintf(o->profiles[p], "time,s,x,y");
+    fprintf(o->profiles[p], sim->scene->dim == 3 ? "time,s,x,y,z" : "time,s,x,y");
     csv_field_header(o->profiles[p], &sim->ps, "");
     fprintf(o->profiles[p], "\n");
     CLSPH_TRY(series_resume(o->profiles[p], path, &kept[p]));
@@ -404,20 +404,21 @@ enum clsph_status series_write(struct sim *sim, struct run_out *o, int what)
   }
   for (int p = 0; p < s->nprofiles && (what & SERIES_PROFILES); ++p) {
     const struct scene_profile_line *pl = &s->profiles[p];
-    size_t np = (size_t)pl->npts;
-    at = malloc(2 * np * sizeof *at);
+    const size_t np = (size_t)pl->npts, dim = (size_t)s->dim;
+    at = malloc(dim * np * sizeof *at);
     rows = malloc(np * (size_t)(nc + 1) * sizeof *rows);
     CLSPH_CHECK(at != NULL && rows != NULL, CLSPH_E_NOMEM, "out of memory");
+    double len2 = 0.0;
+    for (size_t a = 0; a < dim; ++a) len2 += (pl->b[a] - pl->a[a]) * (pl->b[a] - pl->a[a]);
     for (size_t i = 0; i < np; ++i) {
       double t = (double)i / (double)(np - 1);
-      at[2 * i] = pl->a[0] + t * (pl->b[0] - pl->a[0]);
-      at[2 * i + 1] = pl->a[1] + t * (pl->b[1] - pl->a[1]);
+      for (size_t a = 0; a < dim; ++a) at[dim * i + a] = pl->a[a] + t * (pl->b[a] - pl->a[a]);
     }
     CLSPH_TRY(sample_all(sim, np, at, pl->order, NULL, rows, nc));
-    double len = hypot(pl->b[0] - pl->a[0], pl->b[1] - pl->a[1]);
+    const double len = sqrt(len2);
     for (size_t i = 0; i < np; ++i) {
-      fprintf(o->profiles[p], "%.17g,%.9g,%.9g,%.9g", sim->time, len * (double)i / (double)(np - 1),
-              at[2 * i], at[2 * i + 1]);
+      fprintf(o->profiles[p], "%.17g,%.9g", sim->time, len * (double)i / (double)(np - 1));
+      for (size_t a = 0; a < dim; ++a) fprintf(o->profiles[p], ",%.9g", at[dim * i + a]);
       for (int c = 0; c < nc; ++c)
         fprintf(o->profiles[p], ",%.9g", rows[i * (size_t)nc + (size_t)c]);
       fprintf(o->profiles[p], "\n");

@@ -1510,8 +1510,9 @@ static int l_profile(lua_State *L)
   lua_pop(L, 1);
   if (p->name[0] == '\0') get_name(L, 1, "profile", "name", p->name, "");
   if (p->name[0] == '\0') luaL_error(L, "profile: needs a name");
-  if (!get_point(L, 1, "profile", "from", p->a) || !get_point(L, 1, "profile", "to", p->b))
-    luaL_error(L, "profile: needs from = {x, y} and to = {x, y}");
+  if (!get_vector(L, 1, "profile", "from", p->a) || !get_vector(L, 1, "profile", "to", p->b))
+    luaL_error(L, "profile: needs from = %s and to = %s", s->dim == 3 ? "{x, y, z}" : "{x, y}",
+               s->dim == 3 ? "{x, y, z}" : "{x, y}");
   double np = get_number(L, 1, "profile", "points", 101);
   if (np < 2 || np > 1e5 || np != floor(np)) luaL_error(L, "profile: points must be 2 to 100000");
   p->npts = (int)np;
@@ -1835,7 +1836,6 @@ static enum clsph_status finish(const char *path, struct loader *ld)
       const char *what;
     } only2[] = {
         {s->nsections, s->nsections ? s->sections[0].line : 0, "inflow and outflow sections"},
-        {s->nprofiles, s->nprofiles ? s->profiles[0].line : 0, "profiles"},
         {s->flow.on, s->flow.line, "flow_rate_control"},
         {s->turb.on, s->turb.line, "turbulence"},
     };
@@ -1945,6 +1945,12 @@ static enum clsph_status finish(const char *path, struct loader *ld)
   }
   for (int k = 0; k < s->nprofiles; ++k) {
     const struct scene_profile_line *p = &s->profiles[k];
+    if (s->dim == 3)
+      CLSPH_CHECK(in_domain(s, p->a) && in_domain(s, p->b), CLSPH_E_INPUT,
+                  "%s:%d: profile '%s' from (%g, %g, %g) to (%g, %g, %g) leaves the domain "
+                  "{%g, %g, %g, %g, %g, %g}",
+                  path, p->line, p->name, p->a[0], p->a[1], p->a[2], p->b[0], p->b[1], p->b[2],
+                  s->lo[0], s->lo[1], s->lo[2], s->hi[0], s->hi[1], s->hi[2]);
     CLSPH_CHECK(in_domain(s, p->a) && in_domain(s, p->b), CLSPH_E_INPUT,
                 "%s:%d: profile '%s' from (%g, %g) to (%g, %g) leaves the domain {%g, %g, %g, %g}",
                 path, p->line, p->name, p->a[0], p->a[1], p->b[0], p->b[1], s->lo[0], s->lo[1],
@@ -2165,24 +2171,47 @@ static int l_probe_now(lua_State *L)
   return 1;
 }
 
-/* sim.sample(field, x, y [, component [, interpolation]]): interpolation "shepard" (the
- * default) or "linear" (first-order moving least squares, sim_sample) */
+/* sim.sample(field, x, y [, component [, interpolation]]) in 2-D, or
+ * sim.sample(field, {x, y [, z]} [, component [, interpolation]]) (3-D needs the table):
+ * interpolation "shepard" (the default) or "linear" (first-order moving least squares,
+ * sim_sample) */
 static int l_sample(lua_State *L)
 {
   const struct case_sim_api *api = api_of(L);
   const char *field = luaL_checkstring(L, 1);
-  double x = luaL_checknumber(L, 2), y = luaL_checknumber(L, 3), v = 0.0;
-  int comp = (int)luaL_optinteger(L, 4, 1) - 1;
-  const char *how = luaL_optstring(L, 5, "shepard");
+  double pt[3] = {0.0, 0.0, 0.0}, v = 0.0;
+  int ncoord = 2, next = 4;
+  if (lua_istable(L, 2)) {
+    ncoord = (int)luaL_len(L, 2);
+    if (ncoord != 2 && ncoord != 3)
+      return luaL_error(L, "sim.sample: the point must be {x, y} or {x, y, z}, not %d numbers",
+                        ncoord);
+    for (int a = 0; a < ncoord; ++a) {
+      lua_rawgeti(L, 2, a + 1);
+      if (!lua_isnumber(L, -1))
+        return luaL_error(L, "sim.sample: the point's coordinate %d is not a number", a + 1);
+      pt[a] = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+    }
+    next = 3;
+  } else {
+    pt[0] = luaL_checknumber(L, 2);
+    pt[1] = luaL_checknumber(L, 3);
+  }
+  int comp = (int)luaL_optinteger(L, next, 1) - 1;
+  const char *how = luaL_optstring(L, next + 1, "shepard");
   const int order = strcmp(how, "linear") == 0 ? 1 : strcmp(how, "shepard") == 0 ? 0 : -1;
   if (order < 0)
     return luaL_error(L, "sim.sample: interpolation must be \"shepard\" or \"linear\", not \"%s\"",
                       how);
-  const double xy[2] = {x, y};
-  if ((order == 0 ? api->sample(api->ctx, field, comp, x, y, &v)
-                  : api->sample_many(api->ctx, field, comp, order, 1, xy, &v)) != CLSPH_OK)
-    return luaL_error(L, "sim.sample: cannot sample '%s' at (%f, %f): %s", field, x, y,
-                      why_of(api));
+  if (api->sample_many(api->ctx, field, comp, order, 1, ncoord, pt, &v) != CLSPH_OK) {
+    char at[96];
+    if (ncoord == 3)
+      snprintf(at, sizeof at, "(%g, %g, %g)", pt[0], pt[1], pt[2]);
+    else
+      snprintf(at, sizeof at, "(%g, %g)", pt[0], pt[1]);
+    return luaL_error(L, "sim.sample: cannot sample '%s' at %s: %s", field, at, why_of(api));
+  }
   lua_pushnumber(L, v);
   return 1;
 }
@@ -2457,12 +2486,13 @@ static int l_reference(lua_State *L)
 }
 
 /* rms, max = sim.profile_error{ field =, component =, csv =, coordinate =, value =,
- *                               x = (or y =), scale = , skip_walls = true,
+ *                               x = (or y =), z = , scale = , skip_walls = true,
  *                               interpolation = "shepard" }
- * Samples the field along the line x = const (coordinate y) or y = const (coordinate x) at the
- * reference points and returns the RMS and largest deviation divided by scale; points on the
- * walls (coordinate 0 or 1 of the reference) are skipped when skip_walls; interpolation "linear"
- * samples by first-order moving least squares (sim_sample). */
+ * Samples the field along the line x = const (coordinate y) or y = const (coordinate x), in the
+ * plane z = const in 3-D (z = is what makes the points 3-D), at the reference points and returns
+ * the RMS and largest deviation divided by scale; points on the walls (coordinate 0 or 1 of the
+ * reference) are skipped when skip_walls; interpolation "linear" samples by first-order moving
+ * least squares (sim_sample). */
 static int l_profile_error(lua_State *L)
 {
   const struct case_sim_api *api = api_of(L);
@@ -2484,6 +2514,9 @@ static int l_profile_error(lua_State *L)
   double at = along_y ? luaL_checknumber(L, -1) : 0.0;
   lua_getfield(L, 1, "y");
   if (!along_y) at = luaL_checknumber(L, -1);
+  lua_getfield(L, 1, "z");
+  const int nc = lua_isnil(L, -1) ? 2 : 3;
+  const double zat = nc == 3 ? luaL_checknumber(L, -1) : 0.0;
   lua_getfield(L, 1, "skip_walls");
   int skip = lua_isnil(L, -1) || lua_toboolean(L, -1);
   const int order = get_choice(L, 1, "profile_error", "interpolation", interpolations, 0);
@@ -2491,18 +2524,19 @@ static int l_profile_error(lua_State *L)
   reference_path(csv, path, sizeof path);
   double *xs = NULL, *vs = NULL;
   int n = read_reference(L, path, coord, value, &xs, &vs);
-  double *xy = malloc(2 * (size_t)(n + 1) * sizeof *xy),
+  double *xy = malloc(3 * (size_t)(n + 1) * sizeof *xy),
          *got = malloc((size_t)(n + 1) * sizeof *got);
   int m = 0;
   for (int k = 0; k < n && xy != NULL; ++k) {
     if (skip && (xs[k] <= 0.0 || xs[k] >= 1.0)) continue;
-    xy[2 * m] = along_y ? at : xs[k];
-    xy[2 * m + 1] = along_y ? xs[k] : at;
+    xy[nc * m] = along_y ? at : xs[k];
+    xy[nc * m + 1] = along_y ? xs[k] : at;
+    if (nc == 3) xy[3 * m + 2] = zat;
     vs[m] = vs[k];
     ++m;
   }
   if (xy == NULL || got == NULL || m == 0 ||
-      api->sample_many(api->ctx, field, comp, order, m, xy, got) != CLSPH_OK) {
+      api->sample_many(api->ctx, field, comp, order, m, nc, xy, got) != CLSPH_OK) {
     free(xs);
     free(vs);
     free(xy);

@@ -22,17 +22,15 @@ struct case_sim_api {
    *  box region = {x0, y0, x1, y1} (NULL: everywhere); *count of them (0: min, max, mean unset). */
   enum clsph_status (*stats)(void *ctx, const char *field, int comp, int kind, const double *region,
                              double *min, double *max, double *mean, size_t *count);
-  /** Interpolated values of component `comp` of a field at np points (x, y pairs); order 0:
+  /** Interpolated values of component `comp` of a field at np points of ncoord coordinates
+   *  each (x, y or x, y, z: an input error unless ncoord is the scene's dimension); order 0:
    *  Shepard, 1: first-order moving least squares (sim_sample). */
   enum clsph_status (*sample_many)(void *ctx, const char *field, int comp, int order, int np,
-                                   const double *xy, double *values);
+                                   int ncoord, const double *pts, double *values);
   /** Component `comp` of a field at the probe `name` now: its point's value or its face's mean
    *  (sim_sample_probes; NaN where there is no fluid); an input error for an unknown probe. */
   enum clsph_status (*probe)(void *ctx, const char *name, const char *field, int comp,
                              double *value);
-  /** Interpolated value of component `comp` of a field at a point. */
-  enum clsph_status (*sample)(void *ctx, const char *field, int comp, double x, double y,
-                              double *value);
   /** Mean force of a wall group over the outputs at t >= since (since < 0: the last output):
    *  out = total x, y, pressure x, y, viscous x, y (N/m), torque (N m/m, about the group's
    *  centre: scene_group_centre); samples = outputs averaged. */

@@ -147,10 +147,10 @@ struct scene_probe {
 
 struct scene_profile_line {
   char name[SCENE_NAME];
-  double a[2], b[2];
-  int npts;  /* sample points from a to b inclusive */
-  int order; /* interpolation: 0 Shepard, 1 first-order moving least squares (sim_sample) */
-  int line;  /* line of the case script */
+  double a[3], b[3]; /* its ends ({x, y} or {x, y, z}: the scene's dimension) */
+  int npts;          /* sample points from a to b inclusive */
+  int order;         /* interpolation: 0 Shepard, 1 first-order moving least squares (sim_sample) */
+  int line;          /* line of the case script */
 };
 
 /** Flow-rate control (Leroy et al. 2014 eqs 67-68, after Morris et al. 1997): the x component of

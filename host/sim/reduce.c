@@ -164,8 +164,6 @@ enum clsph_status sim_sample(struct sim *sim, int field, int order, size_t np, c
   cl_uint ncomp = (cl_uint)f->ncomp, npts = (cl_uint)np, ord = (cl_uint)order;
   CLSPH_CHECK(f->type == PF_REAL && f->ncomp <= 4, CLSPH_E_INPUT,
               "field '%s' cannot be interpolated", f->name);
-  CLSPH_CHECK(order == 0 || sim->gspec.dim == 2, CLSPH_E_UNSUPPORTED,
-              "the linear interpolation (probe.cl) is 2-D only");
   const size_t dim = (size_t)sim->gspec.dim, stride = dim == 3 ? 4 : 2; /* realv */
   buf = calloc(np * (stride + ncomp), sizeof *buf);
   CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory");
