@@ -1739,14 +1739,15 @@ clsph_run_test(run_stab3d_pillar ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
                SETS t_end=1 dyn=1 pillar=1 width=0.4
                BOUNDS "pressure_error<0.01" "bottom_error_avg<0.0017" "speed_ratio<5e-4"
                       "crossed_wall<0.5")
-# The sphere with wcsph-riemann (c0 = 10 √(2 g H)), 0.5 s (156 steps): pressure RMS 0.026 and
-# speed 0.145 √(gH) in double and float, as the box tank's jostle; no particle inside the sphere
+# The sphere with wcsph-riemann (c0 = 10 √(2 g H)), 0.5 s (156 steps): pressure RMS 0.037 and
+# speed 0.19 √(gH) in double and float with the surface rows' pair push of 3-D (surface_transport
+# = "pairs"; without it 0.026 and 0.145), as the box tank's jostle; no particle inside the sphere
 # (at 1 s the deepest is 0.02 dr past its face in double, 0.011 in float: wcsph-riemann checks no
 # crossing itself, its dummies extrapolate the state pair by pair). Bounds: 1.5 times measured, and
 # nothing a quarter spacing inside.
 clsph_run_test(run_riemann3d_sphere ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
                SETS t_end=0.5 riemann=1 sphere=1 width=0.4
-               BOUNDS "pressure_rms<0.04" "speed_ratio<0.22" "inside_depth<0.25")
+               BOUNDS "pressure_rms<0.056" "speed_ratio<0.28" "inside_depth<0.25")
 # STL walls (stl_wall: ADMesh reads the file, host/scene/mesh.c checks and places it). The tank of
 # tests/case/bad_stl.lua is the unit cube of cases/stl/cube.stl, the block 0.4 m across on its floor
 # the same cube scaled and placed (its bottom facets lie on the floor: they face no water), dr =
@@ -1788,24 +1789,26 @@ clsph_run_test(run_stab3d_stl_sphere ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
                BOUNDS "pressure_error<0.01" "bottom_error_avg<0.0017" "speed_ratio<5e-4"
                       "crossed_wall<0.5")
 # wcsph-riemann in 3-D: the tank of cases/hydrostatic3d.lua (dr = H/10, 1 s, 308 steps, c0 =
-# 10 √(2 g H)): the largest error deeper than 3 dr 0.1225 (double) and 0.1227 (float), RMS 0.054
-# and 0.057, the floor's bottom_error_avg 0.036 and 0.041, the surface rows jostling at 0.16 √(gH)
-# (the largest errors are the shallowest rows', under the surface that takes no tension,
-# acoustic.cl); no particle behind a wall. (H/20: largest 0.125, RMS 0.020, speed 0.11; the 2-D
-# tank at H/10 and the same 0.2 m clusters at t = 0.84 s.) Bounds 1.5 times the float's.
+# 10 √(2 g H)): the largest error deeper than 3 dr 0.145 (double) and 0.158 (float), RMS 0.036
+# and 0.034, the floor's bottom_error_avg 0.031 and 0.034, the surface rows jostling at 0.092 and
+# 0.10 √(gH) with 3-D's pair push in the surface rows (surface_transport = "pairs"; without it
+# 0.1225, RMS 0.054, floor 0.036, speed 0.16) (the largest errors are the shallowest rows', under
+# the surface that takes no tension, acoustic.cl); no particle behind a wall. (H/20 without the
+# push: largest 0.125, RMS 0.020, speed 0.11; the 2-D tank at H/10 and the same 0.2 m clusters at
+# t = 0.84 s.) Bounds 1.5 times the larger.
 clsph_run_test(run_riemann3d_hydrostatic ${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
                SETS riemann=1 t_end=1
-               BOUNDS "pressure_error<0.185" "pressure_rms<0.085" "bottom_error_avg<0.061"
-                      "speed_ratio<0.24" "crossed_wall<0.5")
+               BOUNDS "pressure_error<0.24" "pressure_rms<0.054" "bottom_error_avg<0.051"
+                      "speed_ratio<0.152" "crossed_wall<0.5")
 # its checkpoint: a 3-D wcsph-riemann run resumes bit for bit (ρ, dρ/dt, the real4 vectors)
 clsph_add_test(restart_riemann3d LABELS case COMMAND ${CMAKE_COMMAND}
                -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/hydrostatic3d.lua
                -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart_riemann3d
                "-DSETS=t_end=0.1|checkpoint=0.05|riemann=1" -P ${CASE_DIR}/restart.cmake)
 # The 3-D dam break with wcsph-riemann (n = 20, 48,368 particles, c0 = 10 · 2 √(gH)) to t* = 0.57
-# (50 steps, 332 acoustic sub-steps): the front at 0.685 m in double and float, 0.248 of Ritter's
-# speed (isph-stabilized 0.290, the 2-D wcsph-riemann run 0.25 at n = 20); bounds as
-# isph-stabilized's.
+# (50 steps, 332 acoustic sub-steps): the front at 0.687 m in double and float, 0.253 of Ritter's
+# speed (0.248 without 3-D's pair push in the surface rows; isph-stabilized 0.290, the 2-D
+# wcsph-riemann run 0.25 at n = 20); bounds as isph-stabilized's.
 clsph_run_test(run_dam_break_riemann3d ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
                SETS riemann=1 dim=3 n=20 top=0.6 t_end=0.1
                BOUNDS "front_over_ritter>0.21" "front_over_ritter<0.34" "floor_speed_max<1"
@@ -1853,7 +1856,7 @@ clsph_cli_test(three_d_lid_across ARGS info ${CMAKE_SOURCE_DIR}/tests/case/bad_3
 # The gate with wcsph-riemann (solvers/gate, shared with isph-stabilized): the Lobovsky column
 # behind a plate lifted 0.4 m at 4.53 m/s; to t = 0.1 s (t* = 0.57, the lift done at 0.088 s) the
 # gate is up, the water released (the front 0.254 of Ritter's speed since t = 0 in 2-D, n = 20,
-# double and float; 0.242 in 3-D, n = 20: without the gate 0.25), no particle lost or behind a
+# double and float; 0.253 in 3-D, n = 20, as without the gate), no particle lost or behind a
 # wall. Bounds: the lift to 0.1 mm, the front within ±0.05 of measured.
 clsph_run_test(run_dam_break_riemann_gate ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
                SETS riemann=1 gate=1 n=20 t_end=0.1
@@ -1880,6 +1883,17 @@ clsph_run_test(run_dam_break_sensor_riemann_gate ${CMAKE_SOURCE_DIR}/cases/dam_b
 clsph_cli_test(riemann_gate_travel ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua --set riemann=1
                --set gate=1 --set top=0.6 RC 2
                REGEX "dam_break.lua:[0-9]+: wcsph-riemann: the gate \\(group 'gate'\\) leaves the domain: after its lift of 0.4 m")
+# The surface rows' regularisation (surface_transport) needs the transport velocity it completes
+# and a free surface; the H = 600 mm column (cases/dam_break.lua H=0.6): the gate lifts 0.7 m
+# (H + 0.1) at 4.53 m/s, 0.1545 s, under the lid at 1.6 m (2 H + 0.4); a column of 1.5 m refused.
+clsph_cli_test(riemann_surface_without_tvf ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
+               --set riemann=1 --set tvf=0 --set surf=2 RC 2
+               REGEX "wcsph-riemann option surface_transport = \"pairs\" needs the transport velocity")
+clsph_cli_test(dam_break_h600 ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua --set H=0.6
+               --set dim=3 --set riemann=1 --set gate=1 RC 0
+               REGEX "option gate_stop = 0.154525" REGEX2 "particles: 27440 \\(fluid 2000,")
+clsph_cli_test(dam_break_h_range ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua --set H=1.5 RC 2
+               REGEX "dam_break.lua:[0-9]+: dam_break: H \\(the column's height, m\\) must be in \\(0, 1\\), not 1.5")
 # Poiseuille flow in 3-D (cases/poiseuille3d.lua: plates at z = 0 and H, periodic along x and y,
 # Re = 1, the pseudo-Neumann walls), dr = H/10, to t = 1 (556 steps, steady): u within 2.17% of
 # the series solution RMS and 2.75% at worst (of U0) in double and float, the cross-flow 7.3e-4

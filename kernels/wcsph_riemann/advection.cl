@@ -70,6 +70,13 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
   const realv x = pos[i], vi = vel[i];
   const wcr_mat bi = bmat[i];
   realv visc = (realv)(R(0.0)), res = (realv)(R(0.0));
+#if WCR_TVF_SURFACE == 1
+  realv gsig = (realv)(R(0.0)); /* ∇σ_i = Σ_j (σ_j − σ_i) ∇W_ij V_j over the fluid */
+  const real si = sigma[i];
+#elif WCR_TVF_SURFACE == 2
+  realv near = (realv)(R(0.0)); /* Σ_j (1 − r/dr)² r̂_ij over the fluid closer than dr */
+  const real si = sigma[i];
+#endif
   real count = R(0.0), smin = sigma[i];
   const uint c = ncount[i];
   __global const uint *row = nlist + (size_t)i * WCR_MAXN;
@@ -88,6 +95,14 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
     const real f = smoothing_f(g.sm, sqrt(r2)) * vol[j];
     const uint kj = kind[j];
     if (kj != WCR_DUMMY) smin = fmin(smin, sigma[j]);
+#if WCR_TVF_SURFACE == 1
+    if (kj != WCR_DUMMY) gsig += (sigma[j] - si) * f * r;
+#elif WCR_TVF_SURFACE == 2
+    if (kj != WCR_DUMMY && r2 < dr * dr && r2 > R(0.0)) {
+      const real rr = sqrt(r2), q = R(1.0) - rr / dr;
+      near += (q * q / rr) * r;
+    }
+#endif
 #if WCR_TURB
     const real muj = kj == WCR_DUMMY ? mui : mu + rho0 * nu_t[j];
     const real mij = wcr_pair_mean(mui, muj); /* µ̃_ij of eq 21 */
@@ -132,6 +147,26 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
     const real lim = tvf_m > R(0.0) ? fmin(tvf_m * dot(res, res), R(1.0)) : R(1.0);
     d = -tvf_a * lim * res;
   }
+#if WCR_TVF_SURFACE == 1
+  else if (tvf_a > R(0.0) && si >= WCR_SURF_SIGMA_MIN) {
+    /* the surface rows: the correction along the surface only, its normal n = −∇σ/|∇σ|
+     * from the kernel sum's gradient in difference form, which a pair drawn together leaves
+     * alone (σ_i ≈ σ_j); where |∇σ| h < 0.1 the surface has no direction (a thin sheet's middle) */
+    const real g2 = dot(gsig, gsig);
+    if (g2 * h * h >= R(0.01)) {
+      const realv rt = res - (dot(res, gsig) / g2) * gsig;
+      const real lim = tvf_m > R(0.0) ? fmin(tvf_m * dot(rt, rt), R(1.0)) : R(1.0);
+      d = -tvf_a * lim * rt;
+    }
+  }
+#elif WCR_TVF_SURFACE == 2
+  else if (tvf_a > R(0.0) && si >= WCR_SURF_SIGMA_MIN) {
+    /* the surface rows: pairs closer than the lattice spacing pushed apart, each by
+     * κ dr (1 − r/dr)² per advection step (κ = WCR_PAIR_KAPPA), which a surface at its spacing
+     * or stretched (a tongue's tip) does not feel */
+    d = WCR_PAIR_KAPPA * dr * near;
+  }
+#endif
   shift[i] = d;
 #if WCR_ARD
   ard[i] = count;

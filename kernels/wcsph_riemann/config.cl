@@ -63,6 +63,12 @@
 #ifndef WCR_GATE
 #define WCR_GATE 0 /* a lifted wall group (solvers/gate): its dummies' mirror (acoustic.cl) */
 #endif
+#ifndef WCR_TVF_SURFACE
+#define WCR_TVF_SURFACE 0 /* the surface rows' correction: 1 tangential, 2 near pairs */
+#endif
+#define WCR_PAIR_KAPPA R(0.25) /* the near pairs' push (advection.cl) */
+/* below this normalised kernel sum a particle is spray: no correction (advection.cl) */
+#define WCR_SURF_SIGMA_MIN R(0.3)
 
 /* r_ij between the nearest images on the periodic axes (the support is shorter than half a
  * period: the grid needs 2 GRID_SUB + 1 cells on a periodic axis) */
