@@ -41,6 +41,7 @@ static const struct label labels[] = {
     {"vorticity", "vorticity ω (1/s)"},
     {"vel_x", "velocity u (m/s)"},
     {"vel_y", "velocity v (m/s)"},
+    {"vel_z", "velocity w (m/s)"},
     {"p", "pressure p (Pa)"},
     {"rho", "density ρ (kg/m³)"},
     {"k", "turbulent kinetic energy k (m²/s²)"},
@@ -52,6 +53,7 @@ static const struct label labels[] = {
     {"kind", "particle kind"},
     {"pos_x", "x (m)"},
     {"pos_y", "y (m)"},
+    {"pos_z", "z (m)"},
 };
 
 static void set_label(struct field_spec *f)
@@ -83,13 +85,16 @@ static void list_fields(int narrays, const char *const *names, const int *ncomp,
     if (used < size) used += (size_t)snprintf(buf + used, size - used, __VA_ARGS__);               \
   } while (0)
   int vel = find_name(narrays, names, "vel");
-  if (vel >= 0 && ncomp[vel] >= 2) ADD("speed, vorticity, vel_x, vel_y");
+  if (vel >= 0 && ncomp[vel] == 2) ADD("speed, vorticity, vel_x, vel_y");
+  if (vel >= 0 && ncomp[vel] == 3) ADD("speed, vel_x, vel_y, vel_z"); /* (vorticity: 2-D) */
   for (int k = 0; k < narrays; ++k) {
     if (k == vel) continue;
     if (ncomp[k] == 1)
       ADD("%s%s", used ? ", " : "", names[k]);
-    else if (ncomp[k] >= 2)
+    else if (ncomp[k] == 2)
       ADD("%s%s_x, %s_y", used ? ", " : "", names[k], names[k]);
+    else if (ncomp[k] >= 3)
+      ADD("%s%s_x, %s_y, %s_z", used ? ", " : "", names[k], names[k], names[k]);
   }
 #undef ADD
 }
@@ -118,13 +123,15 @@ enum clsph_status field_find(const char *name, int narrays, const char *const *n
   } else if (k >= 0 && ncomp[k] == 1) {
     f.how = strcmp(name, "kind") == 0 ? FIELD_KIND : FIELD_SCALAR;
     snprintf(f.array, sizeof f.array, "%s", name);
-  } else if (len > 2 && name[len - 2] == '_' && (name[len - 1] == 'x' || name[len - 1] == 'y')) {
+  } else if (len > 2 && name[len - 2] == '_' &&
+             (name[len - 1] == 'x' || name[len - 1] == 'y' || name[len - 1] == 'z')) {
     char base[RENDER_NAME];
     snprintf(base, sizeof base, "%.*s", (int)(len - 2), name);
     const int b = find_name(narrays, names, base);
-    if (b >= 0 && ncomp[b] >= 2) {
+    const int comp = name[len - 1] - 'x';
+    if (b >= 0 && ncomp[b] >= 2 && comp < ncomp[b]) {
       f.how = FIELD_COMPONENT;
-      f.comp = name[len - 1] == 'x' ? 0 : 1;
+      f.comp = comp;
       f.is_signed = 1;
       snprintf(f.array, sizeof f.array, "%s", base);
     }

@@ -156,6 +156,13 @@ void render_set_range(struct render *r, double lo, double hi)
   r->o.hi = hi;
 }
 
+void render_set_view3(struct render *r, const double box[6])
+{
+  if (r->o.camera_set || r->have_camera) return;
+  memcpy(r->o.box3, box, sizeof r->o.box3);
+  r->o.box3_set = 1;
+}
+
 void render_layout(const struct render *r, struct render_layout *out)
 {
   *out = r->layout;
@@ -710,6 +717,8 @@ static enum clsph_status sphere_arrays(struct render *r, const struct field_spec
   if (!r->have_camera) { /* the options' camera, or one that sees the drawn particles whole */
     if (r->o.camera_set) {
       r->cam = r->o.camera;
+    } else if (r->o.box3_set) {
+      render_default_camera(r->o.box3, r->o.fov_only, &r->cam);
     } else {
       double box[6] = {HUGE_VAL, HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
       for (size_t i = 0; i < in->n; ++i) {

@@ -147,10 +147,13 @@ struct render_opts {
   double lo, hi;           /* the fixed range, in the field's unit */
   enum colormap_kind map;  /* COLORMAP_AUTO: by the field */
   const char *font;        /* a TrueType file; NULL: $CLSPH_FONT, else DejaVu Sans (fontconfig) */
-  int camera_set;          /* 3-D frames: 1, the camera below; 0, render_default_camera's of the
-                            * first frame, kept for the frames after it */
+  int camera_set;          /* 3-D frames: 1, the camera below; 0, render_default_camera's of
+                            * box3, or of the first frame's particles without it, kept for the
+                            * frames after it */
   struct render_camera camera;
   double fov_only; /* > 0 without camera_set: the default camera with this field of view */
+  int box3_set;    /* 3-D: 1, the default camera sees box3 (x0, y0, z0, x1, y1, z1) whole */
+  double box3[6];
 };
 
 /** @brief A camera that sees a box (x0, y0, z0, x1, y1, z1) whole: from the front, right and above
@@ -185,6 +188,9 @@ void render_defaults(struct render_opts *o);
 enum clsph_status render_create(const struct render_opts *o, struct render **out);
 /** @brief Fix the colour range of the frames to come (e.g. over a whole series). */
 void render_set_range(struct render *r, double lo, double hi);
+/** @brief The box the default camera of 3-D frames sees whole (what render_opts.box3 says), from
+ *  the next frame on; nothing when a camera is set or the first frame has fixed it. */
+void render_set_view3(struct render *r, const double box[6]);
 /** @brief Draw one frame of field `f` and write it to `png_path` (through "<path>.tmp").
  *  @param lo_hi receives the colour range used (NULL: not wanted)
  *  @param t     receives where the time went (NULL: not wanted) */

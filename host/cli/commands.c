@@ -349,9 +349,14 @@ enum clsph_status render_command(const struct cli *cli)
   CLSPH_TRY(frame_options(cli, snap.render.on ? &snap.render : NULL, path, &fo));
   const char *names[PSET_MAX_FIELDS];
   int ncomp[PSET_MAX_FIELDS];
+  int three = 0; /* 3-D particles drawn in perspective (no --slice) */
+  const int has_box3 = snap.has_domain3;
+  double box3[6];
+  memcpy(box3, snap.domain3, sizeof box3);
   for (int k = 0; k < snap.narrays; ++k) {
     names[k] = snap.arrays[k].name;
     ncomp[k] = snap.arrays[k].ncomp;
+    if (strcmp(names[k], "pos") == 0) three = ncomp[k] == 3;
   }
   if (cli->out_dir != NULL)
     CLSPH_CHECK(mkdir(out, 0755) == 0 || errno == EEXIST, CLSPH_E_IO,
@@ -387,6 +392,34 @@ enum clsph_status render_command(const struct cli *cli)
     frames_set_range(fr, lo, hi);
     if (!cli->quiet)
       printf("colour range of %s over %d snapshots: %g .. %g\n", f->name, count, lo, hi);
+  }
+  /* 3-D without a camera: the default one sees the domain whole, as the run's frames do (the
+   * first snapshot's fluid alone left a dam break's surge out of the later frames); snapshots
+   * written before the 3-D domain was recorded: the drawn particles of every snapshot */
+  if (three && !cli->slice_set && !fo.render.camera_set && has_box3) {
+    frames_set_view3(fr, box3);
+  } else if (three && !cli->slice_set && !fo.render.camera_set) {
+    double box[6] = {HUGE_VAL, HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    const char *const pk[] = {"pos", "kind", NULL};
+    for (int k = 0; k < count; ++k) {
+      CLSPH_TRY(snapshot_path(cli->snap_dir, num[k], &path));
+      CLSPH_TRY(io_snapshot_read(path, pk, &snap));
+      CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
+      const struct render_array *pos = field_array(&in, "pos"), *kind = field_array(&in, "kind");
+      CLSPH_CHECK(pos != NULL && kind != NULL, CLSPH_E_INPUT,
+                  "%s has no particle positions or kinds", path);
+      for (size_t i = 0; i < in.n; ++i) {
+        if (!field_drawn(f, (int)kind->v[i])) continue;
+        for (int a = 0; a < 3; ++a) {
+          const double x = pos->v[3 * i + (size_t)a];
+          if (!isfinite(x)) continue;
+          box[a] = fmin(box[a], x);
+          box[3 + a] = fmax(box[3 + a], x);
+        }
+      }
+      io_snapshot_free(&snap);
+    }
+    if (box[3] >= box[0] && box[4] >= box[1] && box[5] >= box[2]) frames_set_view3(fr, box);
   }
   for (int k = 0; k < count; ++k) {
     CLSPH_TRY(snapshot_path(cli->snap_dir, num[k], &path));

@@ -103,6 +103,11 @@ void frames_set_range(struct frames *fr, double lo, double hi)
   render_set_range(fr->r, lo, hi);
 }
 
+void frames_set_view3(struct frames *fr, const double box[6])
+{
+  render_set_view3(fr->r, box);
+}
+
 /* OUT/frames/FIELD_NNNNNN.png, malloc'd (NULL: out of memory). */
 static char *frame_path(const struct frames *fr, int index)
 {

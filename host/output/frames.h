@@ -29,6 +29,8 @@ enum clsph_status frames_open(const struct frames_opts *o, const char *out_dir, 
 const struct field_spec *frames_field(const struct frames *fr);
 /** @brief Fix the colour range of the frames to come. */
 void frames_set_range(struct frames *fr, double lo, double hi);
+/** @brief 3-D: the box the default camera sees whole (render_set_view3). */
+void frames_set_view3(struct frames *fr, const double box[6]);
 /** @brief Draw frame number `index` (OUT/frames/FIELD_NNNNNN.png). */
 enum clsph_status frames_write(struct frames *fr, const struct render_input *in, int index);
 /** @brief The movie (OUT/FIELD.mp4) of the frames written, with the frames before them that are

@@ -368,6 +368,8 @@ static enum clsph_status write_frame_meta(hid_t file, const struct io_meta *m, c
   char name[32];
   if (m->has_domain)
     CLSPH_TRY(attr_write_array(file, "domain", H5T_NATIVE_DOUBLE, 4, m->domain, path));
+  if (m->has_domain3)
+    CLSPH_TRY(attr_write_array(file, "domain3", H5T_NATIVE_DOUBLE, 6, m->domain3, path));
   if (m->nwalls > 0) {
     IO_H5(grp = H5Gcreate2(file, "walls", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path);
     for (int w = 0; w < m->nwalls; ++w) {
@@ -1276,6 +1278,8 @@ enum clsph_status io_snapshot_read(const char *path, const char *const *only,
   copy_name(s.case_name, sizeof s.case_name, case_name);
   copy_name(s.scheme, sizeof s.scheme, scheme);
   CLSPH_TRY(attr_read_array(file, "domain", H5T_NATIVE_DOUBLE, 4, s.domain, &s.has_domain, path));
+  CLSPH_TRY(
+      attr_read_array(file, "domain3", H5T_NATIVE_DOUBLE, 6, s.domain3, &s.has_domain3, path));
 
   /* the particle datasets */
   htri_t has;

@@ -22,6 +22,8 @@ struct io_meta {
   /* snapshots only (what frames need besides the particles; NULL or 0: not written) */
   int has_domain;                 /* write the domain */
   double domain[4];               /* the scene's box x0, y0, x1, y1, m */
+  int has_domain3;                /* 3-D: write domain3 too */
+  double domain3[6];              /* the box x0, y0, z0, x1, y1, z1, m */
   const struct scene_wall *walls; /* the wall polylines */
   int nwalls;
   const struct scene_render *render; /* the case's render { } choices */
@@ -59,8 +61,10 @@ struct io_snapshot {
   int narrays;
   struct io_array arrays[PSET_MAX_FIELDS]; /* every dataset of /particles, by name */
   int has_domain;
-  double domain[4]; /* x0, y0, x1, y1, m */
-  int nwalls;       /* 0 also when the snapshot predates /walls */
+  double domain[4];  /* x0, y0, x1, y1, m */
+  int has_domain3;   /* a 3-D snapshot's box (0: 2-D, or written before it was recorded) */
+  double domain3[6]; /* x0, y0, z0, x1, y1, z1, m */
+  int nwalls;        /* 0 also when the snapshot predates /walls */
   struct io_wall *walls;
   struct scene_render render; /* the case's render { } (render.on = 0: none recorded) */
 };

@@ -35,6 +35,10 @@ enum clsph_status snapshot_open_frames(struct sim *sim, const struct frames_opts
   int ncomp[PSET_MAX_FIELDS];
   const int n = snapshot_frame_fields(sim, names, ncomp);
   CLSPH_TRY(frames_open(opts, out_dir, n, names, ncomp, &o->frames));
+  if (s->dim == 3) { /* the default camera sees the domain whole: where the fluid can go */
+    const double box[6] = {s->lo[0], s->lo[1], s->lo[2], s->hi[0], s->hi[1], s->hi[2]};
+    frames_set_view3(o->frames, box);
+  }
   const char *want[4] = {"pos", "vol", "kind", frames_field(o->frames)->array};
   for (int k = 0; k < 4; ++k) {
     int dup = 0;
@@ -123,6 +127,11 @@ void snapshot_meta(const struct sim *sim, struct io_meta *m)
   m->domain[1] = sim->scene->lo[1];
   m->domain[2] = sim->scene->hi[0];
   m->domain[3] = sim->scene->hi[1];
+  m->has_domain3 = sim->scene->dim == 3;
+  for (int a = 0; a < 3; ++a) {
+    m->domain3[a] = sim->scene->lo[a];
+    m->domain3[3 + a] = sim->scene->hi[a];
+  }
   m->walls = sim->scene->walls; /* the polylines frames draw: none in 3-D (boxes) */
   m->nwalls = sim->scene->dim == 2 ? sim->scene->nwalls : 0;
   m->render = &sim->scene->render;

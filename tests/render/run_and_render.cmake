@@ -71,12 +71,22 @@ if(NOT out MATCHES "unknown field 'temperature'; fields: speed, vorticity, vel_x
   message(FATAL_ERROR "the message does not list the fields")
 endif()
 # 5: 3-D frames (lit spheres): the case's render { camera } travels in the snapshots, and the
-#    default camera (from the first frame's fluid) is the same in both
+#    default camera (one that sees the domain whole: the snapshots record its 3-D box) is the same
+#    in both
 foreach(cam 1 0)
   clsph_run(0 run ${CHOICE3} --set cam=${cam} --out ${OUT}/cam${cam} --frames ${small})
   clsph_run(0 render ${OUT}/cam${cam} --out ${OUT}/cam${cam}_again ${small})
   same_frames(${OUT}/cam${cam} ${OUT}/cam${cam}_again "p_*.png" 3)
 endforeach()
+# a 3-D run's fields: the z components (no vorticity, which is 2-D)
+clsph_run(2 render ${OUT}/cam0 --field temperature --out ${OUT}/cam0_bad ${small})
+if(NOT out MATCHES "unknown field 'temperature'; fields: speed, vel_x, vel_y, vel_z, .*pos_x, pos_y, pos_z")
+  message(FATAL_ERROR "a 3-D run's fields must list the z components and no vorticity")
+endif()
+clsph_run(0 render ${OUT}/cam0 --field vel_z --out ${OUT}/cam0_w ${small})
+if(NOT EXISTS ${OUT}/cam0_w/frames/vel_z_000002.png)
+  message(FATAL_ERROR "no frames of vel_z")
+endif()
 file(SHA256 ${OUT}/cam1/frames/p_000000.png h1)
 file(SHA256 ${OUT}/cam0/frames/p_000000.png h0)
 if(h1 STREQUAL h0)
