@@ -230,6 +230,17 @@ end
 
 -- Sensor 1 against the experiment (Lobovsky et al. 2014, event 5; header of the file): what
 -- the run has reached of impact, peak, plateaus and RMS (see the header of this file).
+-- The peak: the largest sample within 0.3 of the impact (t*), its time and its ratio to `ref`,
+-- once the run has reached impact + 0.3.
+local function peak_metrics(t, p, impact, ref, m)
+  if t[#t] < impact + 0.3 then return end
+  local peak, when = 0, impact
+  for k = 1, #t do
+    if t[k] >= impact and t[k] <= impact + 0.3 and p[k] > peak then peak, when = p[k], t[k] end
+  end
+  m.peak_p_star, m.peak_t_star, m.peak_ratio = peak, when, peak / ref
+end
+
 -- H = 600 mm: against the medians of the repeats (see the header): the peak within 0.3 of the
 -- impact over p* 3.15 and ∫ p dt over the 0.111 s after it over 1274 Pa s.
 local function sensor_metrics_h600(t, p, m)
@@ -237,13 +248,7 @@ local function sensor_metrics_h600(t, p, m)
   local impact = first_above(t, p, 0.1)
   if impact == nil then return end
   m.impact_t_star = impact
-  if t[#t] >= impact + 0.3 then
-    local peak, when = 0, impact
-    for k = 1, #t do
-      if t[k] >= impact and t[k] <= impact + 0.3 and p[k] > peak then peak, when = p[k], t[k] end
-    end
-    m.peak_p_star, m.peak_t_star, m.peak_ratio = peak, when, peak / 3.15
-  end
+  peak_metrics(t, p, impact, 3.15, m)
   local span = 0.111 * ts -- 7 ms + 104 ms, in t*
   local mean = time_mean(t, p, impact, impact + span)
   if mean ~= nil then
@@ -264,14 +269,7 @@ local function sensor_metrics(sim, m)
   if impact == nil then return end
   m.impact_t_star = impact
   m.impact_time_error = impact / 2.444 - 1
-  -- the peak: the largest sample within 0.3 of the impact (the experiment's is 0.011 after it)
-  if t[#t] >= impact + 0.3 then
-    local peak, when = 0, impact
-    for k = 1, #t do
-      if t[k] >= impact and t[k] <= impact + 0.3 and p[k] > peak then peak, when = p[k], t[k] end
-    end
-    m.peak_p_star, m.peak_t_star, m.peak_ratio = peak, when, peak / 3.044
-  end
+  peak_metrics(t, p, impact, 3.044, m) -- (the experiment's peak is 0.011 after its impact)
   -- the impact's mean pressure over 0.1 after it (the impulse over 0.1), each signal from its own
   -- impact: less sensitive than the peak to a single sample (or, in the run, to one particle
   -- striking the wall)

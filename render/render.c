@@ -156,6 +156,21 @@ void render_set_range(struct render *r, double lo, double hi)
   r->o.hi = hi;
 }
 
+void render_extend_box(const struct field_spec *f, const struct render_input *in, double box[6])
+{
+  const struct render_array *pos = field_array(in, "pos"), *kind = field_array(in, "kind");
+  if (pos == NULL || kind == NULL || pos->ncomp != 3) return;
+  for (size_t i = 0; i < in->n; ++i) {
+    if (!field_drawn(f, (int)kind->v[i])) continue;
+    for (int a = 0; a < 3; ++a) {
+      const double x = pos->v[3 * i + (size_t)a];
+      if (!isfinite(x)) continue;
+      box[a] = fmin(box[a], x);
+      box[3 + a] = fmax(box[3 + a], x);
+    }
+  }
+}
+
 void render_set_view3(struct render *r, const double box[6])
 {
   if (r->o.camera_set || r->have_camera) return;
@@ -721,15 +736,7 @@ static enum clsph_status sphere_arrays(struct render *r, const struct field_spec
       render_default_camera(r->o.box3, r->o.fov_only, &r->cam);
     } else {
       double box[6] = {HUGE_VAL, HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-      for (size_t i = 0; i < in->n; ++i) {
-        if (!field_drawn(f, (int)kind->v[i])) continue;
-        for (int a = 0; a < 3; ++a) {
-          const double x = pos->v[3 * i + (size_t)a];
-          if (!isfinite(x)) continue;
-          box[a] = fmin(box[a], x);
-          box[3 + a] = fmax(box[3 + a], x);
-        }
-      }
+      render_extend_box(f, in, box);
       if (!(box[3] >= box[0])) box[0] = box[1] = box[2] = 0.0, box[3] = box[4] = box[5] = 1.0;
       render_default_camera(box, r->o.fov_only, &r->cam);
     }

@@ -188,6 +188,8 @@ void render_defaults(struct render_opts *o);
 enum clsph_status render_create(const struct render_opts *o, struct render **out);
 /** @brief Fix the colour range of the frames to come (e.g. over a whole series). */
 void render_set_range(struct render *r, double lo, double hi);
+/** @brief Grow box (x0, y0, z0, x1, y1, z1) over the 3-D particles a field draws. */
+void render_extend_box(const struct field_spec *f, const struct render_input *in, double box[6]);
 /** @brief The box the default camera of 3-D frames sees whole (what render_opts.box3 says), from
  *  the next frame on; nothing when a camera is set or the first frame has fixed it. */
 void render_set_view3(struct render *r, const double box[6]);

@@ -405,18 +405,7 @@ enum clsph_status render_command(const struct cli *cli)
       CLSPH_TRY(snapshot_path(cli->snap_dir, num[k], &path));
       CLSPH_TRY(io_snapshot_read(path, pk, &snap));
       CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
-      const struct render_array *pos = field_array(&in, "pos"), *kind = field_array(&in, "kind");
-      CLSPH_CHECK(pos != NULL && kind != NULL, CLSPH_E_INPUT,
-                  "%s has no particle positions or kinds", path);
-      for (size_t i = 0; i < in.n; ++i) {
-        if (!field_drawn(f, (int)kind->v[i])) continue;
-        for (int a = 0; a < 3; ++a) {
-          const double x = pos->v[3 * i + (size_t)a];
-          if (!isfinite(x)) continue;
-          box[a] = fmin(box[a], x);
-          box[3 + a] = fmax(box[3 + a], x);
-        }
-      }
+      render_extend_box(f, &in, box);
       io_snapshot_free(&snap);
     }
     if (box[3] >= box[0] && box[4] >= box[1] && box[5] >= box[2]) frames_set_view3(fr, box);

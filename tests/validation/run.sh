@@ -6,13 +6,8 @@ cd "$(dirname "$0")/../.."
 build=${1:-build}
 out=out/validation
 mkdir -p "$out"
-run() { # name case sets...
-  local name=$1 case=$2
-  shift 2
-  local args=()
-  for s in "$@"; do args+=(--set "$s"); done
-  "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet --profile --overwrite || true
-}
+run_extra=--profile
+source tests/validation/lib.sh
 run hydrostatic_isph_usaw hydrostatic
 run hydrostatic_wcsph_usaw hydrostatic wcsph=1
 for n in 20 30 40 60 120; do # convergence study, Re = 100 (the paper's resolution: 120)

@@ -10,13 +10,7 @@ cd "$(dirname "$0")/../.."
 build=${1:-build}
 out=out/validation_3d
 mkdir -p "$out"
-run() { # name case sets...
-  local name=$1 case=$2
-  shift 2
-  local args=()
-  for s in "$@"; do args+=(--set "$s"); done
-  "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet --overwrite || true
-}
+source tests/validation/lib.sh
 # 2-D, H = 300 mm, wcsph-riemann to t = 0.75 s (t* = 4.3: the impact and the plateau over t* 3-4),
 # the surface rows off (the 2-D default), "tangential" and "pairs" (the 3-D default)
 for n in 20 30 40 80; do

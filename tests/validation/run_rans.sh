@@ -7,13 +7,7 @@ cd "$(dirname "$0")/../.."
 build=${1:-build}
 out=out/validation_rans
 mkdir -p "$out"
-run() { # name case sets...
-  local name=$1 case=$2
-  shift 2
-  local args=()
-  for s in "$@"; do args+=(--set "$s"); done
-  "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet --overwrite || true
-}
+source tests/validation/lib.sh
 # The walls' pressure is the scheme's default under the k-ε model, the gradient (wall_pressure =
 # "gradient"); the runs named _mirror, and those with wallp=0, take the mirror for comparison.
 # The fully developed channel at Lee & Moser's U_b (flow-rate control), N_f = 20, 40 and 80 (N_f =

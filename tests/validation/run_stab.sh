@@ -8,13 +8,7 @@ cd "$(dirname "$0")/../.."
 build=${1:-build}
 out=out/validation_stab
 mkdir -p "$out"
-run() { # name case sets...
-  local name=$1 case=$2
-  shift 2
-  local args=()
-  for s in "$@"; do args+=(--set "$s"); done
-  "$build/clsph" run "cases/$case.lua" "${args[@]}" --out "$out/$name" --quiet --overwrite || true
-}
+source tests/validation/lib.sh
 # The hydrostatic tank of S sec 4.1 (0.2 m of water, 0.2 m wide) at its two resolutions, 2 s:
 # the modified virtual marker, the pseudo-Neumann walls, isph-usaw
 for dr in 0.01 0.005; do
