@@ -166,6 +166,8 @@ def lobovsky_section(runs):
                              ("dynamic p", p.get("dyn", 0) == 1),
                              ("surface rows tangential", surf == 1),
                              ("surface rows pairs", surf == 2),
+                             ("surface rows off", surf == 0 and p.get("dim", 2) == 3
+                              and p.get("riemann", 0) == 1),
                              ("wall approach particles", p.get("approach", 0) == 1)) if on]
         if p.get("shift", 0) > 0:
             v.append(f"shifting {p['shift']:g}")

@@ -27,6 +27,7 @@ for n in 20 30 40; do
 done
 run lobovsky3d_n30_riemann_off dam_break dim=3 riemann=1 n=30 t_end=0.75 surf=0
 run lobovsky3d_n30_riemann_gate dam_break dim=3 riemann=1 gate=1 n=30 t_end=0.75
+run lobovsky3d_n30_riemann_gate_off dam_break dim=3 riemann=1 gate=1 n=30 t_end=0.75 surf=0
 # isph-stabilized in 3-D with its shifting (0.5, not the paper's) and wall_approach =
 # "particles" (the 3-D default "impact" lets the tongue's tension pull particles through the floor
 # at the impact), n = 20 and 30
@@ -36,6 +37,8 @@ done
 # H = 600 mm with the gate (lifted 0.7 m at 4.53 m/s) to t = 0.75 s (t* = 3.0), n = 40 and 60
 for n in 40 60; do
   run lobovsky600_3d_n${n}_riemann_gate dam_break H=0.6 dim=3 riemann=1 gate=1 n=$n t_end=0.75
+  run lobovsky600_3d_n${n}_riemann_gate_off dam_break H=0.6 dim=3 riemann=1 gate=1 n=$n \
+    t_end=0.75 surf=0
 done
 run lobovsky600_3d_n40_stab_gate dam_break H=0.6 dim=3 stab=1 shift=0.5 approach=1 gate=1 n=40 \
   t_end=0.75
@@ -44,6 +47,7 @@ run cavity3d_n30_riemann cavity dim=3 riemann=1 n=30 t_end=10
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_3d.md
 python3 tests/validation/lobovsky_chart.py tests/validation/lobovsky3d_sensor1 \
   "wcsph-riemann 3-D (n 30)=$out/lobovsky3d_n30_riemann" \
-  "wcsph-riemann 3-D (n 40)=$out/lobovsky3d_n40_riemann" \
-  "wcsph-riemann 2-D (n 40)=$out/lobovsky_n40_riemann" \
-  "isph-stabilized 3-D (n 30)=$out/lobovsky3d_n30_stab" || true
+  "wcsph-riemann 3-D surface rows off (n 30)=$out/lobovsky3d_n30_riemann_off" \
+  "wcsph-riemann 3-D (n 20)=$out/lobovsky3d_n20_riemann" \
+  "wcsph-riemann 2-D (n 30)=$out/lobovsky_n30_riemann" \
+  "isph-stabilized 3-D (n 20)=$out/lobovsky3d_n20_stab" || true
