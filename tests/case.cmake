@@ -1847,6 +1847,17 @@ clsph_cli_test(sample3d_profile_out ARGS info ${CASE_DIR}/sample3d.lua --set wha
                REGEX "sample3d.lua:21: profile 'out' from \\(0.5, 0.5, 0.5\\) to \\(0.5, 0.5, 1.5\\) leaves the domain \\{0, 0, 0, 1, 1, 1\\}")
 clsph_cli_test(sample3d_profile_2d ARGS info ${CASE_DIR}/sample3d.lua --set what=4 RC 2
                REGEX "sample3d.lua:22: profile: from must be a vector \\{x, y, z\\}")
+foreach(bad "5|32: sim.sample: the point's coordinate 1 is -?nan, not a finite number"
+            "6|33: sim.sample: the point must be \\{x, y\\} or \\{x, y, z\\}, not 4 numbers"
+            "7|34: sim.sample: the point's coordinate 2 is not a number"
+            "8|36: profile_error: the line's z = -?nan is not a finite number")
+  string(REPLACE "|" ";" parts "${bad}")
+  list(GET parts 0 what)
+  list(GET parts 1 message)
+  clsph_cli_test(sample3d_bad_${what} ARGS run ${CASE_DIR}/sample3d.lua --set what=${what} --quiet
+                 --overwrite --out ${CMAKE_CURRENT_BINARY_DIR}/runs/sample3d_bad_${what} RC 2
+                 REGEX "sample3d.lua:${message}")
+endforeach()
 clsph_cli_test(sample3d_profile_no_z ARGS run ${CASE_DIR}/sample3d.lua --set what=2 --quiet
                --overwrite --out ${CMAKE_CURRENT_BINARY_DIR}/runs/sample3d_profile_no_z RC 2
                REGEX "sample3d.lua:27: profile_error: cannot sample 'pos' at the points of .*sample3d_line.csv: a point of this 3-D scene has 3 coordinates, not 2 \\(give z")

@@ -2198,6 +2198,10 @@ static int l_sample(lua_State *L)
     pt[0] = luaL_checknumber(L, 2);
     pt[1] = luaL_checknumber(L, 3);
   }
+  for (int a = 0; a < ncoord; ++a)
+    if (!isfinite(pt[a]))
+      return luaL_error(L, "sim.sample: the point's coordinate %d is %f, not a finite number",
+                        a + 1, pt[a]);
   int comp = (int)luaL_optinteger(L, next, 1) - 1;
   const char *how = luaL_optstring(L, next + 1, "shepard");
   const int order = strcmp(how, "linear") == 0 ? 1 : strcmp(how, "shepard") == 0 ? 0 : -1;
@@ -2517,6 +2521,9 @@ static int l_profile_error(lua_State *L)
   lua_getfield(L, 1, "z");
   const int nc = lua_isnil(L, -1) ? 2 : 3;
   const double zat = nc == 3 ? luaL_checknumber(L, -1) : 0.0;
+  if (!isfinite(at) || !isfinite(zat))
+    return luaL_error(L, "profile_error: the line's %s = %f is not a finite number",
+                      !isfinite(at) ? (along_y ? "x" : "y") : "z", !isfinite(at) ? at : zat);
   lua_getfield(L, 1, "skip_walls");
   int skip = lua_isnil(L, -1) || lua_toboolean(L, -1);
   const int order = get_choice(L, 1, "profile_error", "interpolation", interpolations, 0);

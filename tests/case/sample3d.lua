@@ -27,6 +27,15 @@ function metrics(sim)
     sim.profile_error { field = "pos", x = 0.5, csv = "tests/case/sample3d_line.csv",
                         coordinate = "y", value = "y" }
   end
+  -- what = 5: a coordinate that is NaN; 6: four of them; 7: one that is a string; 8: a line in
+  -- the plane z = NaN (each refused, named)
+  if what == 5 then sim.sample("p", {0 / 0, 0.5, 0.25}) end
+  if what == 6 then sim.sample("p", {0.5, 0.5, 0.25, 1}) end
+  if what == 7 then sim.sample("p", {0.5, "a", 0.25}) end
+  if what == 8 then
+    sim.profile_error { field = "p", x = 0.5, z = 0 / 0, csv = "tests/case/sample3d_line.csv",
+                        coordinate = "y", value = "y" }
+  end
   local at = {0.43, 0.37, 0.21}
   local e = 0
   local m = {}
