@@ -159,7 +159,7 @@ def lobovsky_section(runs):
         p = s["parameters"]
         # wcsph-riemann's surface rows (surf: −1 the scheme's default, "pairs" in 3-D; a run
         # from before the parameter ran without)
-        surf = p.get("surf", 0)
+        surf = p.get("surf", 0) if p.get("riemann", 0) == 1 else 0
         if surf == -1:
             surf = 2 if p.get("dim", 2) == 3 else 0
         v = [w for w, on in (("3-D", p.get("dim", 2) == 3), ("gate", p.get("gate", 0) == 1),
