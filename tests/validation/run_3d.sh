@@ -50,4 +50,5 @@ python3 tests/validation/lobovsky_chart.py tests/validation/lobovsky3d_sensor1 \
   "wcsph-riemann 3-D surface rows off (n 30)=$out/lobovsky3d_n30_riemann_off" \
   "wcsph-riemann 3-D (n 20)=$out/lobovsky3d_n20_riemann" \
   "wcsph-riemann 2-D (n 30)=$out/lobovsky_n30_riemann" \
-  "isph-stabilized 3-D (n 20)=$out/lobovsky3d_n20_stab" || true
+  "isph-stabilized 3-D (n 20)=$out/lobovsky3d_n20_stab" \
+  "isph-stabilized 3-D (n 30)=$out/lobovsky3d_n30_stab" || true
