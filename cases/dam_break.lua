@@ -123,6 +123,10 @@ local rise = H + 0.1 -- the gate's lift, m (0.4 m at H = 0.3 as in the experimen
 if top == 0 then top = math.max(1.0, 2 * H + 0.4) end
 if gate_height == 0 then gate_height = H + 0.2 end
 if not (top > H) then error(("dam_break: top = %g m is not above the column (H = %g m)"):format(top, H)) end
+if gate == 1 and not (gate_height > H) then
+  error(("dam_break: gate_height = %g m does not hold the column back (H = %g m)"):format(
+    gate_height, H))
+end
 local dr = H / n
 local up = dim == 3 and 3 or 2 -- the vertical axis
 local U = 2 * math.sqrt(g * H) -- Ritter's front speed

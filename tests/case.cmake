@@ -1903,6 +1903,12 @@ clsph_cli_test(riemann_surface_without_tvf ARGS info ${CMAKE_SOURCE_DIR}/cases/d
 clsph_cli_test(dam_break_h600 ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua --set H=0.6
                --set dim=3 --set riemann=1 --set gate=1 RC 0
                REGEX "option gate_stop = 0.154525" REGEX2 "particles: 27440 \\(fluid 2000,")
+clsph_cli_test(dam_break_gate_low ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua --set riemann=1
+               --set gate=1 --set gate_height=0.2 RC 2
+               REGEX "dam_break.lua:[0-9]+: dam_break: gate_height = 0.2 m does not hold the column back \\(H = 0.3 m\\)")
+clsph_cli_test(dam_break_approach_value ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
+               --set stab=1 --set approach=0.5 RC 2
+               REGEX "dam_break.lua:[0-9]+: dam_break: approach must be 0, 1 or 2, not 0.5")
 clsph_cli_test(dam_break_h_range ARGS info ${CMAKE_SOURCE_DIR}/cases/dam_break.lua --set H=1.5 RC 2
                REGEX "dam_break.lua:[0-9]+: dam_break: H \\(the column's height, m\\) must be in \\(0, 1\\), not 1.5")
 # Poiseuille flow in 3-D (cases/poiseuille3d.lua: plates at z = 0 and H, periodic along x and y,
