@@ -111,7 +111,7 @@ enum clsph_status draw_create(int w, int h, struct draw **out)
   static const int attribs[] = {OSMESA_FORMAT,
                                 OSMESA_RGBA,
                                 OSMESA_DEPTH_BITS,
-                                0,
+                                24,
                                 OSMESA_STENCIL_BITS,
                                 8,
                                 OSMESA_PROFILE,
@@ -122,8 +122,9 @@ enum clsph_status draw_create(int w, int h, struct draw **out)
                                 1,
                                 0};
   d->ctx = OSMesaCreateContextAttribs(attribs, NULL);
-  CLSPH_CHECK(d->ctx != NULL, CLSPH_E_UNSUPPORTED,
-              "OSMesa cannot create an OpenGL 2.1 context with a stencil buffer (libosmesa6)");
+  CLSPH_CHECK(
+      d->ctx != NULL, CLSPH_E_UNSUPPORTED,
+      "OSMesa cannot create an OpenGL 2.1 context with depth and stencil buffers (libosmesa6)");
   CLSPH_CHECK(OSMesaMakeCurrent(d->ctx, d->buf, GL_UNSIGNED_BYTE, w, h), CLSPH_E_UNSUPPORTED,
               "OSMesa cannot draw into a %d x %d image", w, h);
   snprintf(d->renderer, sizeof d->renderer, "%s, OpenGL %s", (const char *)glGetString(GL_RENDERER),
@@ -202,9 +203,10 @@ static void arrays_off(void)
   glDisableClientState(GL_COLOR_ARRAY);
 }
 
-/* point sprites of a program with a diameter attribute, blended over what is there */
-static void sprites(GLuint prog, GLint attr, size_t n, const float *xy, const float *diam,
-                    const unsigned char *rgb)
+/* point sprites of a program with a diameter attribute, blended over what is there; vertices of
+ * ncomp (2: xy, 3: xyz) floats */
+static void sprites(GLuint prog, GLint attr, size_t n, int ncomp, const float *xy,
+                    const float *diam, const unsigned char *rgb)
 {
   if (n == 0) return;
   glEnable(GL_BLEND);
@@ -213,6 +215,7 @@ static void sprites(GLuint prog, GLint attr, size_t n, const float *xy, const fl
   glEnable(GL_VERTEX_PROGRAM_POINT_SIZE);
   glUseProgram(prog);
   arrays_on(xy, rgb);
+  glVertexPointer(ncomp, GL_FLOAT, 0, xy);
   glEnableVertexAttribArray((GLuint)attr);
   glVertexAttribPointer((GLuint)attr, 1, GL_FLOAT, GL_FALSE, 0, diam);
   glDrawArrays(GL_POINTS, 0, (GLsizei)n);
@@ -227,13 +230,42 @@ static void sprites(GLuint prog, GLint attr, size_t n, const float *xy, const fl
 void draw_discs(struct draw *d, size_t n, const float *xy, const float *diam,
                 const unsigned char *rgb)
 {
-  sprites(d->prog, d->a_diam, n, xy, diam, rgb);
+  sprites(d->prog, d->a_diam, n, 2, xy, diam, rgb);
 }
 
-void draw_spheres(struct draw *d, size_t n, const float *xy, const float *diam,
+void draw_spheres(struct draw *d, size_t n, const float *xyz, const float *diam,
                   const unsigned char *rgb)
 {
-  sprites(d->sphere, d->s_diam, n, xy, diam, rgb);
+  sprites(d->sphere, d->s_diam, n, 3, xyz, diam, rgb);
+}
+
+/* glOrtho(…, −1, 1) maps a vertex's z to the window depth (1 − z)/2: larger z is nearer. The
+ * scissor box counts rows from the bottom. */
+void draw_depth(struct draw *d, int on, int x0, int y0, int x1, int y1)
+{
+  if (on) {
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_DEPTH_TEST);
+    glScissor(x0, d->h - y1, x1 - x0, y1 - y0);
+    glEnable(GL_SCISSOR_TEST);
+  } else {
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_DEPTH_TEST);
+  }
+}
+
+void draw_faces(struct draw *d, size_t ntri, const float *xyz, const unsigned char *rgb)
+{
+  (void)d;
+  if (ntri == 0) return;
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, xyz);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glColorPointer(3, GL_UNSIGNED_BYTE, 0, rgb);
+  glDrawArrays(GL_TRIANGLES, 0, (GLsizei)(3 * ntri));
+  arrays_off();
 }
 
 void draw_points(struct draw *d, size_t n, const float *xy, int size, const unsigned char *rgb)

@@ -17,10 +17,18 @@ enum clsph_status draw_begin(struct draw *d, const unsigned char rgb[3]);
 /** @brief Anti-aliased discs: centres xy (n x 2), diameters (n), colours rgb (n x 3). */
 void draw_discs(struct draw *d, size_t n, const float *xy, const float *diam,
                 const unsigned char *rgb);
-/** @brief Lit spheres (3-D views), drawn in the order given (back to front): centres xy (n x 2),
- *  diameters (n), colours rgb (n x 3). */
-void draw_spheres(struct draw *d, size_t n, const float *xy, const float *diam,
+/** @brief Lit spheres (3-D views), drawn in the order given (back to front): centres xyz (n x 3:
+ *  pixels, and the depth in [−1, 1], larger nearer, tested against draw_faces' while
+ *  draw_depth is on), diameters (n), colours rgb (n x 3). */
+void draw_spheres(struct draw *d, size_t n, const float *xyz, const float *diam,
                   const unsigned char *rgb);
+/** @brief Depth testing on (the depth buffer cleared), drawing only inside the pixels [x0, x1) x
+ *  [y0, y1), or both off (on = 0), for 3-D views: what is drawn while it is on hides what is
+ *  drawn after it farther away. */
+void draw_depth(struct draw *d, int on, int x0, int y0, int x1, int y1);
+/** @brief Triangles (ntri x 3 vertices of xyz: pixels and the depth as draw_spheres'), each
+ *  vertex in its colour (ntri x 3 x 3). */
+void draw_faces(struct draw *d, size_t ntri, const float *xyz, const unsigned char *rgb);
 /** @brief Square points of `size` pixels (1 or 2): centres xy (n x 2), colours rgb (n x 3). */
 void draw_points(struct draw *d, size_t n, const float *xy, int size, const unsigned char *rgb);
 /** @brief Triangles (ntri x 3 vertices of xy) in one colour. */

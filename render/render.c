@@ -50,6 +50,14 @@ struct render {
   struct render_camera cam;
   struct render_depth *depth;
   size_t depth_cap;
+  /* the last 3-D frame's projection (sphere_arrays): the camera's frame, the focal length and the
+   * view's centre in pixels, and zref, the distance whose depth value is 1 (z_ndc = zref/z) */
+  struct proj3 {
+    double eye[3], fwd[3], right[3], up[3], focal, cx, cy, zref;
+  } pj;
+  float *sxyz, *face;  /* the spheres' pixel xyz; the walls' faces, 3 x 3 floats each */
+  unsigned char *fcol; /* the faces' colours, 3 x 3 bytes each */
+  size_t sxyz_cap, face_cap, fcol_cap, nface;
 };
 
 static double now(void)
@@ -216,6 +224,9 @@ void render_destroy(struct render *r)
   free(r->tri);
   free(r->lines);
   free(r->depth);
+  free(r->sxyz);
+  free(r->face);
+  free(r->fcol);
   free(r);
 }
 
@@ -771,6 +782,19 @@ static enum clsph_status sphere_arrays(struct render *r, const struct field_spec
     r->depth[nd++] = (struct render_depth){z, i};
   }
   qsort(r->depth, nd, sizeof *r->depth, cmp_depth);
+  CLSPH_TRY(grow(&r->sxyz, &r->sxyz_cap, 0, 3 * nd + 3));
+  /* the depth values: zref/z, 1 at half the nearest sphere's distance or at 1e-3 of the target's
+   * (the walls' faces are cut there) */
+  r->pj.zref = 0.5 * fmin(nd > 0 ? r->depth[nd - 1].z : HUGE_VAL, 1e-3 * dist);
+  for (int a = 0; a < 3; ++a) {
+    r->pj.eye[a] = c->eye[a];
+    r->pj.fwd[a] = fwd[a];
+    r->pj.right[a] = right[a];
+    r->pj.up[a] = up[a];
+  }
+  r->pj.focal = focal;
+  r->pj.cx = cx;
+  r->pj.cy = cy;
   for (size_t k = 0; k < nd; ++k) {
     const size_t i = r->depth[k].i;
     const double d[3] = {pos->v[3 * i] - c->eye[0], pos->v[3 * i + 1] - c->eye[1],
@@ -778,8 +802,9 @@ static enum clsph_status sphere_arrays(struct render *r, const struct field_spec
     const double z = r->depth[k].z;
     const double size = vol->v[i] > 0.0 && isfinite(vol->v[i]) ? cbrt(vol->v[i]) : 0.0;
     const double diam = fmin(fmax(1.0, focal * size / z), 253.0);
-    r->xy[2 * k] = (float)(cx + focal * dot3(d, right) / z);
-    r->xy[2 * k + 1] = (float)(cy - focal * dot3(d, up) / z);
+    r->sxyz[3 * k] = (float)(cx + focal * dot3(d, right) / z);
+    r->sxyz[3 * k + 1] = (float)(cy - focal * dot3(d, up) / z);
+    r->sxyz[3 * k + 2] = (float)(r->pj.zref / z);
     r->diam[k] = (float)diam;
     dsum += diam;
     const double tv = map == COLORMAP_KIND ? r->val[i] : (r->val[i] - lo) * inv;
@@ -791,6 +816,75 @@ static enum clsph_status sphere_arrays(struct render *r, const struct field_spec
   centre[1] = cy;
   tm->drawn = nd;
   tm->disc_px = nd > 0 ? dsum / (double)nd : 0.0;
+done:
+  return st;
+}
+
+/* 3-D frames: the walls' faces seen from their fluid side (a container's far faces from inside,
+ * an obstacle's near faces; the others would hide the water, and are left out), cut at the
+ * distance zref from the camera (Sutherland-Hodgman against that plane), projected as the
+ * spheres are, in the solid band's grey lit as the spheres are (flat: by each face's normal). */
+static enum clsph_status face_arrays(struct render *r, const struct render_input *in)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct proj3 *p = &r->pj;
+  const double l0[3] = {-0.40, 0.50, 0.77}, nl = sqrt(dot3(l0, l0));
+  r->nface = 0;
+  for (size_t t = 0; t < in->nsurf3; ++t) {
+    const double *v = in->surf3 + 9 * t;
+    double e1[3], e2[3], n[3], toeye[3];
+    for (int a = 0; a < 3; ++a) {
+      e1[a] = v[3 + a] - v[a];
+      e2[a] = v[6 + a] - v[a];
+      toeye[a] = p->eye[a] - v[a];
+    }
+    cross3(e1, e2, n);
+    const double nn = sqrt(dot3(n, n));
+    if (!(nn > 0.0) || !(dot3(n, toeye) > 0.0)) continue; /* seen from the solid's side */
+    /* its light: the normal in the camera's axes (x right, y up, z towards the camera) */
+    const double nc[3] = {dot3(n, p->right) / nn, dot3(n, p->up) / nn, -dot3(n, p->fwd) / nn};
+    const double shade = 0.6 + 0.4 * fmax(0.0, dot3(nc, l0) / nl); /* lighter than the spheres */
+    unsigned char col[3];
+    for (int a = 0; a < 3; ++a)
+      col[a] = (unsigned char)lround(fmin(255.0, render_colour_solid[a] * shade));
+    /* the polygon in front of the plane z = zref (at most 4 vertices), as camera coordinates */
+    double q[4][3];
+    int nq = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double *a = v + 3 * k, *b = v + 3 * ((k + 1) % 3);
+      double da[3], db[3];
+      for (int c = 0; c < 3; ++c) da[c] = a[c] - p->eye[c], db[c] = b[c] - p->eye[c];
+      const double za = dot3(da, p->fwd), zb = dot3(db, p->fwd);
+      if (za >= p->zref) memcpy(q[nq++], da, sizeof da);
+      if ((za >= p->zref) != (zb >= p->zref)) {
+        const double s = (p->zref - za) / (zb - za);
+        for (int c = 0; c < 3; ++c) q[nq][c] = da[c] + s * (db[c] - da[c]);
+        ++nq;
+      }
+    }
+    if (nq < 3) continue;
+    CLSPH_TRY(grow(&r->face, &r->face_cap, 9 * r->nface, 9 * (size_t)(nq - 2)));
+    if (r->fcol_cap < 9 * (r->nface + (size_t)nq)) {
+      const size_t cap = 2 * (9 * (r->nface + (size_t)nq)) + 1024;
+      unsigned char *c = realloc(r->fcol, cap);
+      CLSPH_CHECK(c != NULL, CLSPH_E_NOMEM, "out of memory for the walls' faces");
+      r->fcol = c;
+      r->fcol_cap = cap;
+    }
+    for (int k = 1; k + 1 < nq; ++k) { /* a fan */
+      const int idx[3] = {0, k, k + 1};
+      for (int j = 0; j < 3; ++j) {
+        const double *d = q[idx[j]];
+        const double z = fmax(dot3(d, p->fwd), p->zref);
+        float *o = r->face + 9 * r->nface + 3 * j;
+        o[0] = (float)(p->cx + p->focal * dot3(d, p->right) / z);
+        o[1] = (float)(p->cy - p->focal * dot3(d, p->up) / z);
+        o[2] = (float)(p->zref / z);
+        memcpy(r->fcol + 9 * r->nface + 3 * j, col, 3);
+      }
+      ++r->nface;
+    }
+  }
 done:
   return st;
 }
@@ -836,12 +930,13 @@ enum clsph_status render_frame(struct render *r, const struct field_spec *f,
   const double px0 = z.margin, px1 = b.x0 - 2 * z.margin, py0 = z.header, py1 = H - z.margin;
   size_t nspheres = 0;
   memset(&x, 0, sizeof x);
-  if (three) { /* a 3-D run: lit spheres seen by the camera (no walls: they would hide it) */
+  if (three) { /* a 3-D run: lit spheres seen by the camera, and the walls' faces behind them */
     double centre[2];
     CLSPH_TRY(
         sphere_arrays(r, f, in, px0, px1, py0, py1, map, lo, hi, &nspheres, &x.s, centre, &tm));
     x.ox = centre[0];
     x.oy = centre[1];
+    CLSPH_TRY(face_arrays(r, in));
   } else {
     if (in->view[0] != 0.0 || in->view[1] != 0.0 || in->view[2] != 0.0 || in->view[3] != 0.0)
       memcpy(box, in->view, sizeof box);
@@ -862,8 +957,11 @@ enum clsph_status render_frame(struct render *r, const struct field_spec *f,
 
   /* OpenGL: the solid side of the walls, the particles, the wall lines, the colour bar */
   CLSPH_TRY(draw_begin(r->draw, render_colour_bg));
-  if (three) {
-    draw_spheres(r->draw, nspheres, r->xy, r->diam, r->col);
+  if (three) { /* the walls' faces first: they hide the spheres behind them */
+    draw_depth(r->draw, 1, (int)floor(px0), (int)floor(py0), (int)ceil(px1), (int)ceil(py1));
+    draw_faces(r->draw, r->nface, r->face, r->fcol);
+    draw_spheres(r->draw, nspheres, r->sxyz, r->diam, r->col);
+    draw_depth(r->draw, 0, 0, 0, 0, 0);
   } else {
     draw_triangles(r->draw, r->ntri, r->tri, render_colour_solid);
     CLSPH_TRY(fill_solids(r, in, &x));

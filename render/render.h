@@ -66,6 +66,8 @@ struct render_input {
   const struct render_array *arrays; /* by name */
   int nwalls;
   const struct render_wall *walls;
+  size_t nsurf3;         /* 3-D: the walls' faces, triangles (0: none drawn) */
+  const double *surf3;   /* nsurf3 x 9, m, counter-clockwise seen from the fluid */
   double view[4];        /* x0, y0, x1, y1 of the region drawn, m; all 0: the box of the drawn
                             particles and the walls */
   double time;           /* simulated time, s */

@@ -21,6 +21,30 @@ clsph_add_test(render_turbulence_fields LABELS render case COMMAND ${CMAKE_COMMA
                -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_CURRENT_SOURCE_DIR}/case/inflow_ke.lua
                -DOUT=${RENDER_OUT}/turbulence -P ${RENDER_DIR}/turbulence_fields.cmake)
 
+# The walls the snapshots record where they stand: the dam break's gate lifted 0.4 m in a 3-D run
+# (/walls3: the tank's and the gate's faces, counter-clockwise seen from the fluid) and in a 2-D
+# run (its polyline); walls_moved.py reads them with h5dump.
+if(Python3_Interpreter_FOUND)
+  foreach(dim 2 3)
+    if(dim EQUAL 3)
+      set(sets --set dim=3 --set n=12 --set t_end=0.12)
+    else()
+      set(sets --set n=20 --set t_end=0.1)
+    endif()
+    clsph_cli_test(render_walls_moved_${dim}d FRESH_DIR ${RENDER_OUT}/gate${dim} RC 0
+                   FIRST_ARGS run ${CMAKE_SOURCE_DIR}/cases/dam_break.lua --set riemann=1
+                   --set gate=1 ${sets} --quiet --out ${RENDER_OUT}/gate${dim}
+                   ARGS render ${RENDER_OUT}/gate${dim} --no-movie --size 320x240
+                   REGEX "frames: .*gate${dim}/frames/speed_000000.png")
+    clsph_add_test(render_walls_moved_${dim}d_check LABELS render COMMAND ${Python3_EXECUTABLE}
+                   ${RENDER_DIR}/walls_moved.py ${dim} ${RENDER_OUT}/gate${dim})
+    set_tests_properties(render_walls_moved_${dim}d PROPERTIES FIXTURES_SETUP gate_run_${dim}d)
+    set_tests_properties(render_walls_moved_${dim}d_check PROPERTIES
+                         FIXTURES_REQUIRED gate_run_${dim}d)
+    set_property(TEST render_walls_moved_${dim}d APPEND PROPERTY LABELS render)
+  endforeach()
+endif()
+
 # Bad input: exit status 2 and a message that says what is wrong.
 function(clsph_render_cli_test name)
   clsph_cli_test(${name} ${ARGN})

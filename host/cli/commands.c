@@ -257,6 +257,8 @@ static enum clsph_status snapshot_input(const struct io_snapshot *s, struct rend
     (*walls)[w] = (struct render_wall){s->walls[w].npts, s->walls[w].pts, s->walls[w].closed};
   in->nwalls = s->nwalls;
   in->walls = *walls;
+  in->nsurf3 = s->nsurf3;
+  in->surf3 = s->surf3;
   frames_view(s->has_domain ? s->domain : NULL, s->nwalls, *walls, in->view);
   in->time = s->time;
   in->case_name = s->case_name;

@@ -15,6 +15,9 @@
  *   domain            root attribute, 4 doubles: the scene's box x0, y0, x1, y1 (m)
  *   /walls/wall_NNN   the wall polylines as declared, doubles (npts, 2), the fluid on their left;
  *                     attribute closed (int32, 1: the last point joins the first)
+ *   domain3, /walls3  3-D: the box x0, y0, z0, x1, y1, z1 (root attribute, 6 doubles) and the
+ *                     walls' faces where they stand (a lifted gate moved), doubles (ntri, 9): each
+ *                     triangle's vertices, counter-clockwise seen from the fluid
  *   /render           the case's render { } choices as attributes: field (string), colormap
  *                     (string), range (2 doubles, only when fixed), camera (10 doubles: eye,
  *                     look_at, up, fov; 3-D, only when given); absent without render { }
@@ -383,6 +386,8 @@ static enum clsph_status write_frame_meta(hid_t file, const struct io_meta *m, c
     }
     CLSPH_TRY(h5_close_checked(&grp, path));
   }
+  if (m->nsurf3 > 0)
+    CLSPH_TRY(write_dataset(file, "walls3", H5T_NATIVE_DOUBLE, m->nsurf3, 9, m->surf3, 0, path));
   if (m->render != NULL && m->render->on) {
     IO_H5(grp = H5Gcreate2(file, "render", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path);
     CLSPH_TRY(attr_write_str(grp, "field", m->render->field, path));
@@ -1219,6 +1224,29 @@ done:
   return st;
 }
 
+/* /walls3 (3-D), when the snapshot has it */
+static enum clsph_status read_surf3(hid_t file, struct io_snapshot *s, const char *path)
+{
+  enum clsph_status st = CLSPH_OK;
+  hid_t dset = H5I_INVALID_HID;
+  htri_t exists;
+  IO_DAMAGED(exists = H5Lexists(file, "walls3", H5P_DEFAULT));
+  if (!exists) goto done;
+  IO_DAMAGED(dset = H5Dopen2(file, "walls3", H5P_DEFAULT));
+  hsize_t rows = 0;
+  int nc = 0;
+  CLSPH_TRY(dataset_shape(dset, &rows, &nc, "walls3", path));
+  IO_REFUSE(nc == 9, "%s: walls3 holds %d numbers a row, not a triangle's 9", path, nc);
+  s->surf3 = malloc(rows > 0 ? (size_t)rows * 9 * sizeof *s->surf3 : 1);
+  CLSPH_CHECK(s->surf3 != NULL, CLSPH_E_NOMEM, "out of memory reading %s", path);
+  s->nsurf3 = (size_t)rows;
+  if (rows > 0)
+    IO_DAMAGED(H5Dread(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, s->surf3));
+done:
+  h5_close_id(&dset);
+  return st;
+}
+
 static enum clsph_status read_render(hid_t file, struct io_snapshot *s, const char *path)
 {
   enum clsph_status st = CLSPH_OK;
@@ -1317,6 +1345,7 @@ enum clsph_status io_snapshot_read(const char *path, const char *const *only,
     h5_close_id(&dset);
   }
   CLSPH_TRY(read_walls(file, &s, path));
+  CLSPH_TRY(read_surf3(file, &s, path));
   CLSPH_TRY(read_render(file, &s, path));
   *out = s;
   memset(&s, 0, sizeof s); /* the caller owns it */
@@ -1335,5 +1364,6 @@ void io_snapshot_free(struct io_snapshot *s)
   for (int k = 0; k < s->narrays; ++k) free(s->arrays[k].v);
   for (int w = 0; w < s->nwalls; ++w) free(s->walls[w].pts);
   free(s->walls);
+  free(s->surf3);
   memset(s, 0, sizeof *s);
 }

@@ -26,6 +26,9 @@ struct io_meta {
   double domain3[6];              /* the box x0, y0, z0, x1, y1, z1, m */
   const struct scene_wall *walls; /* the wall polylines */
   int nwalls;
+  const double *surf3; /* 3-D: the walls' faces, nsurf3 triangles x 9 coordinates (m),
+                        * counter-clockwise seen from the fluid (scene_surfaces3) */
+  size_t nsurf3;
   const struct scene_render *render; /* the case's render { } choices */
   /* checkpoints only */
   unsigned long digest; /* geometry_digest of the scene (0: not recorded) */
@@ -66,6 +69,8 @@ struct io_snapshot {
   double domain3[6]; /* x0, y0, z0, x1, y1, z1, m */
   int nwalls;        /* 0 also when the snapshot predates /walls */
   struct io_wall *walls;
+  size_t nsurf3; /* 3-D: the walls' faces (0 also when the snapshot predates /walls3) */
+  double *surf3; /* nsurf3 x 9, m, counter-clockwise seen from the fluid */
   struct scene_render render; /* the case's render { } (render.on = 0: none recorded) */
 };
 

@@ -218,6 +218,7 @@ void out_close(const struct scene *s, struct run_out *o)
   free(o->walls);
   free(o->turned);
   free(o->turned_pts);
+  free(o->surf3);
   for (int a = 0; a < o->nframe_arrays; ++a) free(o->frame_arrays[a]);
   free(o->dir);
   o->dir = NULL;

@@ -29,10 +29,13 @@ struct run_out {
    * copy of the arrays a frame reads (pos, vol, kind and the field's) */
   struct frames *frames;
   struct render_wall *walls;
-  /* the walls where they stand at the snapshot's time when some turn (scene_wall_turns): a copy
-   * of the scene's with the points turned (NULL when none turns) */
+  /* the walls where they stand at the snapshot's time when some turn (scene_wall_turns) or are
+   * lifted (a gate, sim.moved): a copy of the scene's with the points moved (NULL when none
+   * moves) */
   struct scene_wall *turned;
   double *turned_pts;
+  double *surf3; /* 3-D: the walls' faces where they stand (scene_surfaces3), nsurf3 triangles */
+  size_t nsurf3;
   double view[4];
   double *frame_arrays[4];
   struct render_array frame_in[4];

@@ -98,6 +98,8 @@ static enum clsph_status write_frame(struct sim *sim, struct run_out *o)
   in.arrays = o->frame_in;
   in.nwalls = sim->scene->nwalls;
   in.walls = o->walls;
+  in.surf3 = o->surf3;
+  in.nsurf3 = o->nsurf3;
   memcpy(in.view, o->view, sizeof in.view);
   in.time = sim->time;
   in.case_name = sim->scene->name;
@@ -132,20 +134,30 @@ void snapshot_meta(const struct sim *sim, struct io_meta *m)
     m->domain3[a] = sim->scene->lo[a];
     m->domain3[3 + a] = sim->scene->hi[a];
   }
-  m->walls = sim->scene->walls; /* the polylines frames draw: none in 3-D (boxes) */
+  m->walls = sim->scene->walls; /* the polylines frames draw (3-D: their faces, place_walls) */
   m->nwalls = sim->scene->dim == 2 ? sim->scene->nwalls : 0;
   m->render = &sim->scene->render;
 }
 
-/* The walls where they stand now, when some turn (into o->turned; the frames' walls follow). */
-static enum clsph_status turn_walls(const struct sim *sim, struct run_out *o)
+/* The walls where they stand now, when some turn or a gate lifts them (into o->turned; the
+ * frames' walls follow), and in 3-D their faces (o->surf3). */
+static enum clsph_status place_walls(const struct sim *sim, struct run_out *o)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
+  double lift[3];
+  sim_moved_offset(sim, sim->time, lift);
+  if (s->dim == 3) {
+    free(o->surf3);
+    o->surf3 = NULL;
+    CLSPH_TRY(scene_surfaces3(s, sim->moved.group, lift, &o->surf3, &o->nsurf3));
+    goto done;
+  }
   size_t npts = 0;
   int any = 0;
   for (int w = 0; w < s->nwalls; ++w) {
-    any |= scene_wall_turns(&s->walls[w]);
+    any |= scene_wall_turns(&s->walls[w]) ||
+           (sim->moved.group != NULL && strcmp(s->walls[w].group, sim->moved.group) == 0);
     npts += (size_t)s->walls[w].npts;
   }
   if (!any) return CLSPH_OK;
@@ -157,10 +169,13 @@ static enum clsph_status turn_walls(const struct sim *sim, struct run_out *o)
   double *q = o->turned_pts;
   for (int w = 0; w < s->nwalls; ++w) {
     const struct scene_wall *wl = &s->walls[w];
+    const int lifted = sim->moved.group != NULL && strcmp(wl->group, sim->moved.group) == 0;
     o->turned[w] = *wl;
     o->turned[w].pts = q;
-    for (int k = 0; k < wl->npts; ++k)
+    for (int k = 0; k < wl->npts; ++k) {
       scene_wall_turn(wl, sim->time, wl->pts + 2 * k, 0, q + 2 * k);
+      if (lifted) q[2 * k] += lift[0], q[2 * k + 1] += lift[1];
+    }
     if (o->walls != NULL) o->walls[w].pts = q;
     q += 2 * wl->npts;
   }
@@ -174,8 +189,10 @@ enum clsph_status snapshot_write(struct sim *sim, struct run_out *o)
   char name[64], *path = NULL;
   struct io_meta m;
   snapshot_meta(sim, &m);
-  CLSPH_TRY(turn_walls(sim, o));
+  CLSPH_TRY(place_walls(sim, o));
   if (o->turned != NULL) m.walls = o->turned;
+  m.surf3 = o->surf3;
+  m.nsurf3 = o->nsurf3;
   snprintf(name, sizeof name, "snap_%06d.h5", o->nsnap);
   CLSPH_TRY(out_path(o, name, &path));
   CLSPH_TRY(io_snapshot_write(path, sim->dev, &sim->ps, &m));
@@ -246,6 +263,10 @@ enum clsph_status snapshot_write_blowup(struct sim *sim, struct run_out *o)
   char *path = NULL;
   struct io_meta m;
   snapshot_meta(sim, &m);
+  CLSPH_TRY(place_walls(sim, o));
+  if (o->turned != NULL) m.walls = o->turned;
+  m.surf3 = o->surf3;
+  m.nsurf3 = o->nsurf3;
   CLSPH_TRY(out_path(o, "blowup.h5", &path));
   CLSPH_TRY(io_snapshot_write(path, sim->dev, &sim->ps, &m));
 done:

@@ -281,6 +281,12 @@ int scene_wall_turns(const struct scene_wall *w);
  *  turns. With `vector`, x is a direction (a normal): rotated, not moved with the centre. */
 void scene_wall_turn(const struct scene_wall *w, double t, const double x[2], int vector,
                      double out[2]);
+/** @brief The faces of a 3-D scene's walls (box, sphere, cylinder and STL solids; surface3.c) as
+ *  triangles, ntri x 9 vertex coordinates (m) into *tri (malloc'd; NULL and 0 in 2-D or without
+ *  walls), counter-clockwise seen from the fluid; the walls of group `moved_group` (NULL: none)
+ *  moved by `offset` (a lifted gate). */
+enum clsph_status scene_surfaces3(const struct scene *s, const char *moved_group,
+                                  const double offset[3], double **tri, size_t *ntri);
 /** @brief The point a wall group's moment (struct wall_force's torque) is taken about: the centre
  *  of its first turning wall, else the origin. */
 void scene_group_centre(const struct scene *s, const char *group, double c[2]);

@@ -517,3 +517,10 @@ void sim_destroy(struct sim *sim)
   memset(&sim->samples, 0, sizeof sim->samples);
   sim->nforce_rows = sim->force_rows_cap = 0;
 }
+
+void sim_moved_offset(const struct sim *sim, double t, double d[3])
+{
+  const struct sim_moved *m = &sim->moved;
+  const double run = m->group != NULL ? fmax(0.0, fmin(t, m->stop) - m->start) : 0.0;
+  for (int a = 0; a < 3; ++a) d[a] = m->speed * run * m->dir[a];
+}

@@ -63,6 +63,13 @@ struct sim {
   cl_kernel k_invert;   /* inv[id[k]] = k */
   cl_mem d_inv;         /* current index of each original particle index (after sim_sort) */
   double body_force[3]; /* body force now, m/s²: the scene's, x under flow-rate control */
+  /* a wall group translated at a constant speed over [start, stop) (a gate: solvers/gate sets
+   * it), so that the outputs draw its walls where they stand (sim_moved_offset); group NULL:
+   * none */
+  struct sim_moved {
+    const char *group;
+    double dir[3], speed, start, stop;
+  } moved;
   struct sim_flow flow; /* flow-rate control state (scene->flow.on) */
   cl_kernel k_slice;    /* reduction: x velocity and count of the fluid in the control slice */
   double time, dt;      /* simulated time and last step, s */
@@ -163,6 +170,9 @@ enum clsph_status sim_domain_check(struct sim *sim);
 size_t sim_reduce_groups(size_t n);
 /** @brief Largest speed over the particles of one kind (−1: all), reduced on the device. */
 enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax);
+/** @brief How far the moved wall group (sim.moved) stands from its place at t = 0 at time t, m
+ *  (0 without one). */
+void sim_moved_offset(const struct sim *sim, double t, double d[3]);
 /** @brief Largest norm of a vector field (2 reals per particle) over one kind (−1: all). */
 enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *vmax);
 /** @brief The same maximum without waiting for it: *dest receives it at the step's end, when

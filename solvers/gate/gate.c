@@ -94,6 +94,9 @@ enum clsph_status gate_create(struct sim *sim, struct gate *g)
   CLSPH_TRY(pset_add(&sim->ps, sim->dev, "gate", sizeof(cl_uint), flag, &g->f_gate));
   pset_describe(&sim->ps, g->f_gate, PF_UINT, 0, 0);
   CLSPH_TRY(prog_kernel(sim->prog, "gate_move", &g->k_move));
+  /* the outputs draw its walls where they stand */
+  sim->moved =
+      (struct sim_moved){g->group, {g->dir[0], g->dir[1], g->dir[2]}, g->speed, g->start, g->stop};
 done:
   free(flag);
   return st;

@@ -436,7 +436,23 @@ static void check_snapshots(const struct dev *dev, struct data *d, struct pset *
   for (int i = 0; i < NP; ++i) d->p[i] = (real)(-(double)i);
   if (kern_write(dev, pset_mem(ps, ip), sizeof d->p, d->p) != CLSPH_OK) exit(1);
   m2.time = 0.25;
+  /* 3-D walls' faces (/walls3): two triangles, read back as written; snapshot 1 has none */
+  static const double faces[18] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.5, 0.25, 1, 2, 0, 1, 0, 2, 1};
+  m2.surf3 = faces;
+  m2.nsurf3 = 2;
   TC_CHECK(io_snapshot_write(snap2, dev, ps, &m2) == CLSPH_OK, "snapshot 2 written");
+  {
+    struct io_snapshot back;
+    static const char *const none[] = {NULL};
+    TC_CHECK(io_snapshot_read(snap2, none, &back) == CLSPH_OK && back.nsurf3 == 2 &&
+                 memcmp(back.surf3, faces, sizeof faces) == 0,
+             "walls3 read back: 2 triangles, the same bits");
+    io_snapshot_free(&back);
+    TC_CHECK(io_snapshot_read(snap1, none, &back) == CLSPH_OK && back.nsurf3 == 0 &&
+                 back.surf3 == NULL,
+             "a snapshot without walls3 reads none");
+    io_snapshot_free(&back);
+  }
 
   TC_CHECK(io_series_add(&s, "snap_000001.h5", m->time, NP) == CLSPH_OK &&
                io_series_add(&s, "snap_000002.h5", m2.time, NP) == CLSPH_OK,

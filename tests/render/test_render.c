@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "render.h"
+#include "scene.h"
 #include "tcheck.h"
 
 #define W  480
@@ -460,6 +461,126 @@ static void check_frame3(const char *dir)
   TC_CHECK(render_check_camera(&bad, "test") == CLSPH_E_INPUT, "up along the view");
 }
 
+/* A box's 12 faces (x0, y0, z0, x1, y1, z1), counter-clockwise seen from the fluid: inside
+ * (a container) or outside (an obstacle), through scene_surfaces3 as a run draws them. */
+static size_t box_faces(const double b[6], int container, double *tri)
+{
+  struct scene s;
+  struct scene_wall w;
+  memset(&s, 0, sizeof s);
+  memset(&w, 0, sizeof w);
+  s.dim = 3;
+  s.nwalls = 1;
+  s.walls = &w;
+  w.box3d = container ? 1 : 2;
+  w.shape = SCENE_BOX3;
+  memcpy(w.box3, b, sizeof w.box3);
+  double *t = NULL;
+  size_t nt = 0;
+  const double zero[3] = {0.0, 0.0, 0.0};
+  if (scene_surfaces3(&s, NULL, zero, &t, &nt) != CLSPH_OK || nt != 12) {
+    free(t);
+    return 0;
+  }
+  memcpy(tri, t, nt * 9 * sizeof *t);
+  free(t);
+  return nt;
+}
+
+/* 3-D frames draw the walls' faces seen from the fluid, lit flat, before the spheres, with a depth
+ * test. The camera of check_frame3 (at (0, −1.5, 0), looking along +y) in a container box
+ * [−0.5, 0.5]³ seen from outside, and an obstacle cube 0.2 wide at y = −0.3 (between the camera
+ * and the origin). Checked:
+ *   - the container's near face (y = −0.5) is left out and its far face (y = 0.5, seen face on)
+ *     drawn in the solid grey times 0.6 + 0.4 L_z, to 2 levels;
+ *   - a sphere at the origin is drawn over the far face;
+ *   - the obstacle hides a sphere behind it (the centre pixel is the face's grey again);
+ *   - a camera inside the container (a field of view of 120°), its floor reaching behind it, sees
+ *     the floor (cut at the near plane) in the view's lower part: grey lit by L_y. */
+static void check_faces3(const char *dir)
+{
+  double pos3[3] = {0, 0, 0}, vol3[1] = {1e-3}, kind3[1] = {0}, p3[1] = {0};
+  struct render_array arrays[4] = {
+      {"pos", 3, pos3}, {"vol", 1, vol3}, {"kind", 1, kind3}, {"p", 1, p3}};
+  double tri[2 * 12 * 9];
+  const double tank[6] = {-0.5, -0.5, -0.5, 0.5, 0.5, 0.5};
+  const double cube[6] = {-0.1, -0.4, -0.1, 0.1, -0.2, 0.1};
+  const size_t nt = box_faces(tank, 1, tri), nc = box_faces(cube, 0, tri + 9 * 12);
+  TC_CHECK(nt == 12 && nc == 12, "a box's faces: 12 triangles (%zu, %zu)", nt, nc);
+  struct render_input in;
+  memset(&in, 0, sizeof in);
+  in.n = 0;
+  in.narrays = 4;
+  in.arrays = arrays;
+  in.nsurf3 = 12;
+  in.surf3 = tri;
+  in.case_name = "faces";
+  struct render_opts o;
+  render_defaults(&o);
+  o.width = W;
+  o.height = H;
+  o.fixed = 1;
+  o.lo = 0.0;
+  o.hi = 100.0;
+  o.camera_set = 1;
+  o.camera = (struct render_camera){{0, -1.5, 0}, {0, 0, 0}, {0, 0, 1}, 30.0};
+  const char *names[] = {"pos", "vol", "kind", "p"};
+  const int ncomp[] = {3, 1, 1, 1};
+  struct field_spec f;
+  TC_CHECK(field_find("p", 4, names, ncomp, &f) == CLSPH_OK, "field p");
+  struct render *r = NULL;
+  if (render_create(&o, &r) != CLSPH_OK) {
+    TC_CHECK(0, "no renderer");
+    return;
+  }
+  const double nl = sqrt(0.40 * 0.40 + 0.50 * 0.50 + 0.77 * 0.77);
+  const double face_on = 0.6 + 0.4 * 0.77 / nl, floor_lit = 0.6 + 0.4 * 0.50 / nl;
+  char path[1024];
+  snprintf(path, sizeof path, "%s/faces.png", dir);
+  TC_CHECK(render_frame(r, &f, &in, path, NULL, NULL) == CLSPH_OK, "the frame of the faces");
+  struct render_layout l;
+  render_layout(r, &l);
+  int w = 0, h = 0;
+  const unsigned char *rgb = render_pixels(r, &w, &h);
+  const int cx = (int)floor(l.origin[0]), cy = (int)floor(l.origin[1]);
+  TC_NEAR(px_at(rgb, cx, cy)[0], render_colour_solid[0] * face_on, 2.0,
+          "the far face, seen face on, and not the near one");
+  in.n = 1; /* the sphere at the origin, in front of the far face */
+  TC_CHECK(render_frame(r, &f, &in, NULL, NULL, NULL) == CLSPH_OK, "the frame with a sphere");
+  rgb = render_pixels(r, &w, &h);
+  unsigned char base[3];
+  colormap_rgb(COLORMAP_VIRIDIS, 0.0, base);
+  const double lz = 0.77 / nl, hz = (lz + 1.0) / sqrt(2.0 + 2.0 * lz);
+  for (int k = 0; k < 3; ++k) /* check_frame3's sphere centre */
+    TC_NEAR(px_at(rgb, cx, cy)[k],
+            fmin(255.0, base[k] * (0.35 + 0.65 * lz) + 255.0 * 0.25 * pow(hz, 40.0)), 2.0,
+            "the sphere over the far face, channel %d", k);
+  in.nsurf3 = 24; /* the cube in front of it */
+  TC_CHECK(render_frame(r, &f, &in, NULL, NULL, NULL) == CLSPH_OK, "the frame with the cube");
+  rgb = render_pixels(r, &w, &h);
+  TC_NEAR(px_at(rgb, cx, cy)[0], render_colour_solid[0] * face_on, 2.0,
+          "the cube's near face hides the sphere");
+  TC_NEAR(px_at(rgb, cx, cy)[1], render_colour_solid[1] * face_on, 2.0,
+          "the cube's near face hides the sphere (green)");
+  render_destroy(r);
+  r = NULL;
+  /* a camera inside, looking along +y: the floor at z = −0.5 reaches behind it */
+  in.n = 0;
+  in.nsurf3 = 12;
+  o.camera = (struct render_camera){{0, -0.3, 0}, {0, 0.5, 0}, {0, 0, 1}, 120.0};
+  if (render_create(&o, &r) != CLSPH_OK) {
+    TC_CHECK(0, "no renderer");
+    return;
+  }
+  TC_CHECK(render_frame(r, &f, &in, NULL, NULL, NULL) == CLSPH_OK, "the frame from inside");
+  render_layout(r, &l);
+  rgb = render_pixels(r, &w, &h);
+  const int by = (int)floor(l.origin[1]) + (int)(0.8 * (H - l.origin[1]));
+  TC_NEAR(px_at(rgb, (int)floor(l.origin[0]), by)[0], render_colour_solid[0] * floor_lit, 2.0,
+          "the floor below the view's centre, cut at the near plane");
+  render_destroy(r);
+}
+
 int main(int argc, char **argv)
 {
   const char *dir = argc > 1 ? argv[1] : ".";
@@ -468,5 +589,6 @@ int main(int argc, char **argv)
   check_vorticity();
   check_frame(dir);
   check_frame3(dir);
+  check_faces3(dir);
   return tc_finish("test_render");
 }
