@@ -43,6 +43,9 @@
 --   plateau2_p_star, plateau2_ratio    the same over [4, 5], against 0.65
 --   rms_p_star                         the RMS of p* − p*_exp over t* ∈ [2.6, 5.5] in bins of 0.1
 --                                      (both signals averaged over each bin; see metrics below)
+--   sensor_K_t_star, sensor_K_time_error, sensor_K_plateau_ratio, sensor_K_rms   sensors 2, 3
+--                                      and 4 (15, 30 and 80 mm above the bed) against the
+--                                      experiment's event 5 (see other_sensors below)
 -- The time series need every <= 0.001 s (t* 0.0057, 0.23% of the impact time) to catch the
 -- impact; a sample falls at the end of the first step at or past each multiple of `every` (the
 -- advection step of wcsph-riemann is 1 ms at n = 40, 0.22 ms at n = 160).
@@ -129,6 +132,9 @@ if gate == 1 and not (gate_height > H) then
 end
 local dr = H / n
 local up = dim == 3 and 3 or 2 -- the vertical axis
+-- the downstream wall's pressure sensors 1 to 4: their centres above the bed, m (the refdata's
+-- geometry notes), each a face 4.2 mm across
+local sensor_z = {0.003, 0.015, 0.030, 0.080}
 local U = 2 * math.sqrt(g * H) -- Ritter's front speed
 
 if dim == 3 then domain { 0, 0, 0, tank, width, top } else domain { 0, 0, tank, top } end
@@ -160,14 +166,18 @@ if dim == 3 then
   end
   fill { 0, 0, 0, L, width, H, name = "water",
          pressure = function(x, y, z) return rho * g * (H - z) end }
-  probe { "sensor_1", {tank, width / 2, 0.003}, radius = 0.0021, normal = {-1, 0, 0} }
+  for k, z in ipairs(sensor_z) do
+    probe { "sensor_" .. k, {tank, width / 2, z}, radius = 0.0021, normal = {-1, 0, 0} }
+  end
 else
   fluid { density = rho, viscosity = 8.9e-7, gravity = {0, -g} }
   wall { {0, top}, {0, 0}, {tank, 0}, {tank, top}, fluid = "left", group = "tank" }
   if gate == 1 then wall { {L, 0}, {L, gate_height}, fluid = "left", group = "gate" } end
   fill { 0, 0, L, H, name = "water",
          pressure = stab == 1 and function(x, y) return rho * g * (H - y) end or nil }
-  probe { "sensor_1", {tank, 0.0009}, {tank, 0.0051} } -- its face, on the wall
+  for k, z in ipairs(sensor_z) do -- their faces, on the wall
+    probe { "sensor_" .. k, {tank, z - 0.0021}, {tank, z + 0.0021} }
+  end
 end
 run { t_end = t_end, output_every = 0.05, sample_every = every, cfl = cfl,
       checkpoint_every = checkpoint > 0 and checkpoint or nil } -- s between checkpoints
@@ -199,9 +209,12 @@ function sample(sim)
       break
     end
   end
-  return { front = front, front_over_ritter = sim.time > 0 and (front - L) / (U * sim.time) or 0,
-           bulk_front = bulk, lead_ahead_dr = (front - bulk) / dr, floor_speed = speed / U,
-           sensor_1_p_star = sim.probe("sensor_1", "p") / (rho * g * H) }
+  local v = { front = front, front_over_ritter = sim.time > 0 and (front - L) / (U * sim.time) or 0,
+              bulk_front = bulk, lead_ahead_dr = (front - bulk) / dr, floor_speed = speed / U }
+  for k = 1, #sensor_z do
+    v["sensor_" .. k .. "_p_star"] = sim.probe("sensor_" .. k, "p") / (rho * g * H)
+  end
+  return v
 end
 
 -- The time mean of a sampled signal over [a, b] (linear between samples; a missing value, NaN
@@ -243,6 +256,22 @@ local function peak_metrics(t, p, impact, ref, m)
     if t[k] >= impact and t[k] <= impact + 0.3 and p[k] > peak then peak, when = p[k], t[k] end
   end
   m.peak_p_star, m.peak_t_star, m.peak_ratio = peak, when, peak / ref
+end
+
+-- The RMS of p* − p*_exp over t* ∈ [2.6, 5.5], from after the impact peak (its height and its
+-- timing to a few ms scatter between repeats) to before the run-up jet falls back (t* ≈ 5.9), in
+-- bins of 0.1: one acoustic period of the column, 2H/c0 = 0.1 √(H/g) at c0 = 20 √(gH), over which
+-- the weakly-compressible run's sloshing of pressure waves averages out (the experiment has
+-- none); nil before the run reaches 5.5.
+local function binned_rms(t, p, rt, rp)
+  if t[#t] < 5.5 then return nil end
+  local sum, bins = 0, 0
+  for b = 0, 28 do
+    local lo = 2.6 + 0.1 * b
+    local d = time_mean(t, p, lo, lo + 0.1) - time_mean(rt, rp, lo, lo + 0.1)
+    sum, bins = sum + d * d, bins + 1
+  end
+  return math.sqrt(sum / bins)
 end
 
 -- H = 600 mm: against the medians of the repeats (see the header): the peak within 0.3 of the
@@ -287,18 +316,38 @@ local function sensor_metrics(sim, m)
   if plateau ~= nil then m.plateau_p_star, m.plateau_ratio = plateau, plateau / 0.80 end
   local plateau2 = time_mean(t, p, 4, 5)
   if plateau2 ~= nil then m.plateau2_p_star, m.plateau2_ratio = plateau2, plateau2 / 0.65 end
-  -- RMS over t* ∈ [2.6, 5.5], from after the impact peak (its height and its timing to a few ms
-  -- scatter between repeats) to before the run-up jet falls back (t* ≈ 5.9), in bins of 0.1:
-  -- one acoustic period of the column, 2H/c0 = 0.1 √(H/g) at c0 = 20 √(gH), over which the
-  -- weakly-compressible run's sloshing of pressure waves averages out (the experiment has none).
-  if t[#t] >= 5.5 then
-    local sum, bins = 0, 0
-    for b = 0, 28 do
-      local lo = 2.6 + 0.1 * b
-      local d = time_mean(t, p, lo, lo + 0.1) - time_mean(ref.t_star, ref.p_star, lo, lo + 0.1)
-      sum, bins = sum + d * d, bins + 1
+  local rms = binned_rms(t, p, ref.t_star, ref.p_star)
+  if rms ~= nil then m.rms_p_star = rms end
+end
+
+-- Sensors 2, 3 and 4 (15, 30 and 80 mm above the bed) against the experiment's event 5 (all
+-- sensors: tests/data/lobovsky2014_H300_event5_all_sensors.csv, 2 kHz; first p* > 0.1 at t* =
+-- 2.462, 2.511, 2.771; means over t* ∈ [3, 4] 0.718, 0.687, 0.541): sensor_K_t_star and
+-- sensor_K_time_error (the first p* > 0.1, against the experiment's), sensor_K_plateau_ratio (the
+-- mean over [3, 4] over the experiment's), sensor_K_rms (as rms_p_star), each once reached. At
+-- H = 600 mm (no time history in the refdata) only sensor_K_t_star.
+local function other_sensors(sim, m)
+  local ts = math.sqrt(g / H)
+  for k = 2, #sensor_z do
+    local name = "sensor_" .. k
+    local s = sim.series(name .. "_p_star")
+    local t, p = {}, s.value
+    for i, time in ipairs(s.time) do t[i] = time * ts end
+    local first = first_above(t, p, 0.1)
+    if first ~= nil then m[name .. "_t_star"] = first end
+    if math.abs(H - 0.3) < 1e-9 then
+      local ref = sim.reference("tests/data/lobovsky2014_H300_event5_all_sensors.csv", "t_star",
+                                "p_star_sensor" .. k)
+      local rp = ref["p_star_sensor" .. k]
+      local ref_first = first_above(ref.t_star, rp, 0.1)
+      if first ~= nil then m[name .. "_time_error"] = first / ref_first - 1 end
+      local plateau = time_mean(t, p, 3, 4)
+      if plateau ~= nil then
+        m[name .. "_plateau_ratio"] = plateau / time_mean(ref.t_star, rp, 3, 4)
+      end
+      local rms = binned_rms(t, p, ref.t_star, rp)
+      if rms ~= nil then m[name .. "_rms"] = rms end
     end
-    m.rms_p_star = math.sqrt(sum / bins)
   end
 end
 
@@ -327,7 +376,10 @@ end
 
 function metrics(sim)
   local m = sample(sim)
-  if m.sensor_1_p_star ~= m.sensor_1_p_star then m.sensor_1_p_star = nil end -- dry: NaN
+  for k = 1, #sensor_z do -- dry: NaN
+    local key = "sensor_" .. k .. "_p_star"
+    if m[key] ~= m[key] then m[key] = nil end
+  end
   local function largest(name)
     local v = 0
     for _, s in ipairs(sim.series(name).value) do v = math.max(v, s) end
@@ -354,6 +406,7 @@ function metrics(sim)
     m.gate_lift = low - dr / 2 -- its lowest dummy started half a spacing above the floor
   end
   sensor_metrics(sim, m)
+  other_sensors(sim, m)
   front_metrics(sim, m)
   return m
 end

@@ -40,11 +40,20 @@ for n in 40 60; do
   run lobovsky600_3d_n${n}_riemann_gate_off dam_break H=0.6 dim=3 riemann=1 gate=1 n=$n \
     t_end=0.75 surf=0
 done
-run lobovsky600_3d_n40_stab_gate dam_break H=0.6 dim=3 stab=1 shift=0.5 approach=1 gate=1 n=40 \
-  t_end=0.75
+for n in 40 60; do
+  run lobovsky600_3d_n${n}_stab_gate dam_break H=0.6 dim=3 stab=1 shift=0.5 approach=1 gate=1 \
+    n=$n t_end=0.75
+done
 # the lid-driven cavity at Re = 100 in a spanwise-periodic box, n = 30, t = 10
 run cavity3d_n30_riemann cavity dim=3 riemann=1 n=30 t_end=10
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_3d.md
+# H = 600 mm: sensor 1 of both schemes at both resolutions, the median peak marked
+python3 tests/validation/lobovsky_chart.py --h600 tests/validation/lobovsky600_sensor1 \
+  "wcsph-riemann (n 40)=$out/lobovsky600_3d_n40_riemann_gate" \
+  "wcsph-riemann (n 60)=$out/lobovsky600_3d_n60_riemann_gate" \
+  "wcsph-riemann surface rows off (n 60)=$out/lobovsky600_3d_n60_riemann_gate_off" \
+  "isph-stabilized (n 40)=$out/lobovsky600_3d_n40_stab_gate" \
+  "isph-stabilized (n 60)=$out/lobovsky600_3d_n60_stab_gate" || true
 python3 tests/validation/lobovsky_chart.py tests/validation/lobovsky3d_sensor1 \
   "wcsph-riemann 3-D (n 30)=$out/lobovsky3d_n30_riemann" \
   "wcsph-riemann 3-D surface rows off (n 30)=$out/lobovsky3d_n30_riemann_off" \

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The validation runs of isph-stabilized (the stabilized ISPH paper, sec 4.1 and 4.2) beside
-# isph-usaw and wcsph-riemann on the same cases, then RESULTS_isph_stabilized.md and the sensor-1
-# chart. About 40 min on 2 cores (the n = 80 dam breaks are most of it).
+# isph-usaw and wcsph-riemann on the same cases, then RESULTS_isph_stabilized.md, the sensor-1
+# chart and the chart of sensors 1 to 4. About 40 min on 2 cores (the n = 80 dam breaks are most of it).
 #   tests/validation/run_stab.sh [BUILD_DIR]     (default build)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -53,6 +53,12 @@ python3 tests/validation/lobovsky_chart.py tests/validation/lobovsky_sensor1 \
   "isph-stabilized with gate (n 40)=$out/lobovsky_n40_stab_gate" \
   "isph-stabilized with gate (n 80)=$out/lobovsky_n80_stab_gate_t0.72" \
   "isph-usaw (n 40)=$out/lobovsky_n40_isph_usaw" \
+  "wcsph-riemann (n 80)=$out/lobovsky_n80_wcsph_riemann" || true
+# sensors 1 to 4 (3, 15, 30 and 80 mm above the bed) against the experiment's event 5
+python3 tests/validation/lobovsky_sensors_chart.py tests/validation/lobovsky_sensors \
+  "isph-stabilized shifting 0.5 (n 40)=$out/lobovsky_n40_stab_shift" \
+  "isph-usaw (n 40)=$out/lobovsky_n40_isph_usaw" \
+  "wcsph-riemann (n 40)=$out/lobovsky_n40_wcsph_riemann" \
   "wcsph-riemann (n 80)=$out/lobovsky_n80_wcsph_riemann" || true
 # where the dam break fails over α and the time step (tests/harness/studies.txt)
 python3 tests/harness/harness.py stability stab_dam_break --build "$build" \
