@@ -380,6 +380,23 @@ done:
   render_destroy(r2);
 }
 
+/* The 3-D frames' options: W x H, the pressure from 0 to 100 Pa, the camera given; and the
+ * field p of the arrays pos (3), vol, kind, p. */
+static void opts3(struct render_opts *o, struct render_camera cam, struct field_spec *f)
+{
+  render_defaults(o);
+  o->width = W;
+  o->height = H;
+  o->fixed = 1;
+  o->lo = 0.0;
+  o->hi = 100.0;
+  o->camera_set = 1;
+  o->camera = cam;
+  const char *names[] = {"pos", "vol", "kind", "p"};
+  const int ncomp[] = {3, 1, 1, 1};
+  TC_CHECK(field_find("p", 4, names, ncomp, f) == CLSPH_OK, "field p");
+}
+
 /* A 3-D frame (pos of 3 components): the camera at (0, −1.5, 0) looking at the origin, z up, 30°;
  * particles of volume 1e-3 (spheres 0.1 across) at the origin (A, p = 0), 0.3 to its right (B,
  * p = 100) and, in a second frame, a third in front of A on the axis (C, p = 100). Checked:
@@ -404,18 +421,8 @@ static void check_frame3(const char *dir)
   in.arrays = arrays;
   in.case_name = "spheres";
   struct render_opts o;
-  render_defaults(&o);
-  o.width = W;
-  o.height = H;
-  o.fixed = 1;
-  o.lo = 0.0;
-  o.hi = 100.0;
-  o.camera_set = 1;
-  o.camera = (struct render_camera){{0, -1.5, 0}, {0, 0, 0}, {0, 0, 1}, 30.0};
-  const char *names[] = {"pos", "vol", "kind", "p"};
-  const int ncomp[] = {3, 1, 1, 1};
   struct field_spec f;
-  TC_CHECK(field_find("p", 4, names, ncomp, &f) == CLSPH_OK, "field p");
+  opts3(&o, (struct render_camera){{0, -1.5, 0}, {0, 0, 0}, {0, 0, 1}, 30.0}, &f);
   struct render *r = NULL;
   if (render_create(&o, &r) != CLSPH_OK) {
     TC_CHECK(0, "no renderer");
@@ -516,18 +523,8 @@ static void check_faces3(const char *dir)
   in.surf3 = tri;
   in.case_name = "faces";
   struct render_opts o;
-  render_defaults(&o);
-  o.width = W;
-  o.height = H;
-  o.fixed = 1;
-  o.lo = 0.0;
-  o.hi = 100.0;
-  o.camera_set = 1;
-  o.camera = (struct render_camera){{0, -1.5, 0}, {0, 0, 0}, {0, 0, 1}, 30.0};
-  const char *names[] = {"pos", "vol", "kind", "p"};
-  const int ncomp[] = {3, 1, 1, 1};
   struct field_spec f;
-  TC_CHECK(field_find("p", 4, names, ncomp, &f) == CLSPH_OK, "field p");
+  opts3(&o, (struct render_camera){{0, -1.5, 0}, {0, 0, 0}, {0, 0, 1}, 30.0}, &f);
   struct render *r = NULL;
   if (render_create(&o, &r) != CLSPH_OK) {
     TC_CHECK(0, "no renderer");
