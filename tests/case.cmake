@@ -1670,7 +1670,8 @@ clsph_add_test(restart_stab3d LABELS case COMMAND ${CMAKE_COMMAND}
                -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/restart_stab3d
                "-DSETS=t_end=0.1|checkpoint=0.05" -P ${CASE_DIR}/restart.cmake)
 # clsph render of a 3-D run: without --slice it names the file and the option; with a slice
-# through the tank's middle (y = 0.55 m: the lattice layer there) it draws a frame per snapshot;
+# through the tank's middle (y = 0.55 m: the lattice layer there) it draws a frame per snapshot,
+# with the tank's four faces that the plane cuts as walls (two triangles each: 8 segments);
 # a plane off every particle is refused
 clsph_cli_test(three_d_render FRESH_DIR ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_render RC 0
                FIRST_ARGS run ${bad_3d} --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_render
@@ -1680,7 +1681,8 @@ clsph_cli_test(three_d_render_slice FRESH_DIR ${CMAKE_CURRENT_BINARY_DIR}/runs/t
                FIRST_ARGS run ${bad_3d} --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_slice
                ARGS render ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_slice --slice y=0.55 --no-movie
                     --field kind
-               REGEX "frames: .*three_d_slice/frames/kind_000000.png .. 000001.png \\(2\\)")
+               REGEX "frames: .*three_d_slice/frames/kind_000000.png .. 000001.png \\(2\\)"
+               REGEX2 "--slice y=0.55 cuts the walls' faces in 8 segments")
 clsph_cli_test(three_d_render_off FRESH_DIR ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_off RC 2
                FIRST_ARGS run ${bad_3d} --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_off
                ARGS render ${CMAKE_CURRENT_BINARY_DIR}/runs/three_d_off --slice z=5 --no-movie

@@ -237,9 +237,11 @@ done:
   return st;
 }
 
-/* A frame's input from a snapshot: its arrays (those read), walls, view, time and names. */
-static enum clsph_status snapshot_input(const struct io_snapshot *s, struct render_array *arrays,
-                                        struct render_wall **walls, struct render_input *in)
+/* A frame's input from a snapshot: its arrays (those read), walls, view, time and names. A slice
+ * (`slice`) leaves the view to the renderer: the box of the drawn particles and the walls. */
+static enum clsph_status snapshot_input(const struct io_snapshot *s, int slice,
+                                        struct render_array *arrays, struct render_wall **walls,
+                                        struct render_input *in)
 {
   enum clsph_status st = CLSPH_OK;
   memset(in, 0, sizeof *in);
@@ -259,7 +261,7 @@ static enum clsph_status snapshot_input(const struct io_snapshot *s, struct rend
   in->walls = *walls;
   in->nsurf3 = s->nsurf3;
   in->surf3 = s->surf3;
-  frames_view(s->has_domain ? s->domain : NULL, s->nwalls, *walls, in->view);
+  if (!slice) frames_view(s->has_domain ? s->domain : NULL, s->nwalls, *walls, in->view);
   in->time = s->time;
   in->case_name = s->case_name;
   in->scheme = s->scheme;
@@ -267,11 +269,53 @@ done:
   return st;
 }
 
+/* The walls' faces (/walls3) cut by the plane x_ax = at: a segment per face that crosses it, in
+ * the plane's axes (u, w), oriented with the fluid on its left as 2-D walls are (the face's
+ * normal into the fluid, projected on the plane, to the left of the segment); s->walls, which a
+ * 3-D snapshot leaves empty, receives them. */
+static enum clsph_status slice_walls(struct io_snapshot *s, int ax, int u, int w, double at)
+{
+  enum clsph_status st = CLSPH_OK;
+  if (s->nsurf3 == 0 || s->nwalls > 0) goto done;
+  s->walls = calloc(s->nsurf3, sizeof *s->walls);
+  CLSPH_CHECK(s->walls != NULL, CLSPH_E_NOMEM, "out of memory for the walls of the slice");
+  for (size_t t = 0; t < s->nsurf3; ++t) {
+    const double *v = s->surf3 + 9 * t;
+    double q[2][2];
+    int nq = 0;
+    for (int k = 0; k < 3 && nq < 2; ++k) { /* the edges that cross the plane */
+      const double *a = v + 3 * k, *b = v + 3 * ((k + 1) % 3);
+      const double da = a[ax] - at, db = b[ax] - at;
+      if ((da < 0.0) == (db < 0.0)) continue;
+      const double f = da / (da - db);
+      q[nq][0] = a[u] + f * (b[u] - a[u]);
+      q[nq][1] = a[w] + f * (b[w] - a[w]);
+      ++nq;
+    }
+    if (nq < 2 || (q[0][0] == q[1][0] && q[0][1] == q[1][1])) continue;
+    double e1[3], e2[3];
+    for (int c = 0; c < 3; ++c) e1[c] = v[3 + c] - v[c], e2[c] = v[6 + c] - v[c];
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                         e1[0] * e2[1] - e1[1] * e2[0]};
+    const double du = q[1][0] - q[0][0], dw = q[1][1] - q[0][1];
+    const int flip = -dw * n[u] + du * n[w] < 0.0; /* the fluid to the right: reversed */
+    double *pts = malloc(4 * sizeof *pts);
+    CLSPH_CHECK(pts != NULL, CLSPH_E_NOMEM, "out of memory for the walls of the slice");
+    for (int k = 0; k < 2; ++k) {
+      pts[2 * k] = q[flip ? 1 - k : k][0];
+      pts[2 * k + 1] = q[flip ? 1 - k : k][1];
+    }
+    s->walls[s->nwalls++] = (struct io_wall){2, pts, 0};
+  }
+done:
+  return st;
+}
+
 /* A 3-D snapshot as the 2-D one frames draw (--slice AXIS=VALUE): the particles within half a
  * spacing (from their volume, dr³) of the plane, their positions the two other axes in order
  * (x, z for a slice along y), their volumes the areas dr² the splats are drawn by, the other
- * arrays' rows kept alike. A snapshot read without its
- * arrays' values (the first, for the fields) only takes the 2-D shape. */
+ * arrays' rows kept alike, and the walls' faces cut by the plane as 2-D walls. A snapshot read
+ * without its arrays' values (the first, for the fields) only takes the 2-D shape. */
 static enum clsph_status slice_snapshot(struct io_snapshot *s, const struct cli *cli,
                                         const char *path)
 {
@@ -290,7 +334,11 @@ static enum clsph_status slice_snapshot(struct io_snapshot *s, const struct cli 
   const size_t len = strlen(s->case_name);
   snprintf(s->case_name + len, sizeof s->case_name - len, " (%c = %g m)", "xyz"[ax],
            cli -> slice_at);
-  if (pos->v == NULL) { /* the shape only */
+  CLSPH_TRY(slice_walls(s, ax, u, w, cli->slice_at)); /* and the walls where the plane cuts them */
+  if (pos->v == NULL) { /* the shape only (the first snapshot's read): say what the plane cuts */
+    if (!cli->quiet)
+      printf("--slice %c=%g cuts the walls' faces in %d segments\n", "xyz"[ax], cli -> slice_at,
+             s -> nwalls);
     pos->ncomp = 2;
     goto done;
   }
@@ -376,7 +424,7 @@ enum clsph_status render_command(const struct cli *cli)
       CLSPH_TRY(snapshot_path(cli->snap_dir, num[k], &path));
       CLSPH_TRY(io_snapshot_read(path, only, &snap));
       CLSPH_TRY(slice_snapshot(&snap, cli, path));
-      CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
+      CLSPH_TRY(snapshot_input(&snap, cli->slice_set, arrays, &walls, &in));
       const struct render_array *kind = field_array(&in, "kind");
       CLSPH_CHECK(kind != NULL, CLSPH_E_INPUT, "%s has no particle kinds", path);
       free(val);
@@ -406,7 +454,7 @@ enum clsph_status render_command(const struct cli *cli)
     for (int k = 0; k < count; ++k) {
       CLSPH_TRY(snapshot_path(cli->snap_dir, num[k], &path));
       CLSPH_TRY(io_snapshot_read(path, pk, &snap));
-      CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
+      CLSPH_TRY(snapshot_input(&snap, cli->slice_set, arrays, &walls, &in));
       render_extend_box(f, &in, box);
       io_snapshot_free(&snap);
     }
@@ -416,7 +464,7 @@ enum clsph_status render_command(const struct cli *cli)
     CLSPH_TRY(snapshot_path(cli->snap_dir, num[k], &path));
     CLSPH_TRY(io_snapshot_read(path, only, &snap));
     CLSPH_TRY(slice_snapshot(&snap, cli, path));
-    CLSPH_TRY(snapshot_input(&snap, arrays, &walls, &in));
+    CLSPH_TRY(snapshot_input(&snap, cli->slice_set, arrays, &walls, &in));
     CLSPH_TRY(frames_write(fr, &in, num[k]));
     io_snapshot_free(&snap);
   }
