@@ -452,6 +452,28 @@ static void check_snapshots(const struct dev *dev, struct data *d, struct pset *
                  back.surf3 == NULL,
              "a snapshot without walls3 reads none");
     io_snapshot_free(&back);
+    /* a walls3 of rows that are not triangles (8 numbers) is refused, naming the file */
+    char bad[NPATH];
+    path_of(bad, "bad_walls3.h5");
+    TC_CHECK(io_snapshot_write(bad, dev, ps, m) == CLSPH_OK, "snapshot for the bad walls3");
+    hid_t f = H5Fopen(bad, H5F_ACC_RDWR, H5P_DEFAULT);
+    const hsize_t dims[2] = {2, 8};
+    hid_t sp = H5Screate_simple(2, dims, NULL);
+    hid_t ds =
+        H5Dcreate2(f, "walls3", H5T_NATIVE_DOUBLE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    TC_CHECK(ds >= 0 && H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, faces) >= 0,
+             "a walls3 of 2 x 8 written");
+    H5Dclose(ds);
+    H5Sclose(sp);
+    H5Fclose(f);
+    capture_begin();
+    const enum clsph_status st = io_snapshot_read(bad, none, &back);
+    char *text = capture_end();
+    TC_CHECK(st == CLSPH_E_INPUT && strstr(text, bad) != NULL &&
+                 strstr(text, "walls3 holds 8 numbers a row, not a triangle's 9") != NULL,
+             "a walls3 of 8 numbers a row refused; got: %s", text);
+    free(text);
+    io_snapshot_free(&back);
   }
 
   TC_CHECK(io_series_add(&s, "snap_000001.h5", m->time, NP) == CLSPH_OK &&
