@@ -380,21 +380,28 @@ done:
   render_destroy(r2);
 }
 
-/* The 3-D frames' options: W x H, the pressure from 0 to 100 Pa, the camera given; and the
- * field p of the arrays pos (3), vol, kind, p. */
-static void opts3(struct render_opts *o, struct render_camera cam, struct field_spec *f)
+/* A renderer for 3-D frames: W x H, the pressure from 0 to 100 Pa, the camera given; and the
+ * field p of the arrays pos (3), vol, kind, p. NULL (a failed check) when none opens. */
+static struct render *open3(struct render_camera cam, struct field_spec *f)
 {
-  render_defaults(o);
-  o->width = W;
-  o->height = H;
-  o->fixed = 1;
-  o->lo = 0.0;
-  o->hi = 100.0;
-  o->camera_set = 1;
-  o->camera = cam;
+  struct render_opts o;
+  render_defaults(&o);
+  o.width = W;
+  o.height = H;
+  o.fixed = 1;
+  o.lo = 0.0;
+  o.hi = 100.0;
+  o.camera_set = 1;
+  o.camera = cam;
   const char *names[] = {"pos", "vol", "kind", "p"};
   const int ncomp[] = {3, 1, 1, 1};
   TC_CHECK(field_find("p", 4, names, ncomp, f) == CLSPH_OK, "field p");
+  struct render *r = NULL;
+  if (render_create(&o, &r) != CLSPH_OK) {
+    TC_CHECK(0, "no renderer");
+    return NULL;
+  }
+  return r;
 }
 
 /* A 3-D frame (pos of 3 components): the camera at (0, −1.5, 0) looking at the origin, z up, 30°;
@@ -420,14 +427,9 @@ static void check_frame3(const char *dir)
   in.narrays = 4;
   in.arrays = arrays;
   in.case_name = "spheres";
-  struct render_opts o;
   struct field_spec f;
-  opts3(&o, (struct render_camera){{0, -1.5, 0}, {0, 0, 0}, {0, 0, 1}, 30.0}, &f);
-  struct render *r = NULL;
-  if (render_create(&o, &r) != CLSPH_OK) {
-    TC_CHECK(0, "no renderer");
-    return;
-  }
+  struct render *r = open3((struct render_camera){{0, -1.5, 0}, {0, 0, 0}, {0, 0, 1}, 30.0}, &f);
+  if (r == NULL) return;
   char path[1024];
   snprintf(path, sizeof path, "%s/spheres.png", dir);
   TC_CHECK(render_frame(r, &f, &in, path, NULL, NULL) == CLSPH_OK, "the 3-D frame");
@@ -522,14 +524,9 @@ static void check_faces3(const char *dir)
   in.nsurf3 = 12;
   in.surf3 = tri;
   in.case_name = "faces";
-  struct render_opts o;
   struct field_spec f;
-  opts3(&o, (struct render_camera){{0, -1.5, 0}, {0, 0, 0}, {0, 0, 1}, 30.0}, &f);
-  struct render *r = NULL;
-  if (render_create(&o, &r) != CLSPH_OK) {
-    TC_CHECK(0, "no renderer");
-    return;
-  }
+  struct render *r = open3((struct render_camera){{0, -1.5, 0}, {0, 0, 0}, {0, 0, 1}, 30.0}, &f);
+  if (r == NULL) return;
   const double nl = sqrt(0.40 * 0.40 + 0.50 * 0.50 + 0.77 * 0.77);
   const double face_on = 0.6 + 0.4 * 0.77 / nl, floor_lit = 0.6 + 0.4 * 0.50 / nl;
   char path[1024];
@@ -564,11 +561,8 @@ static void check_faces3(const char *dir)
   /* a camera inside, looking along +y: the floor at z = −0.5 reaches behind it */
   in.n = 0;
   in.nsurf3 = 12;
-  o.camera = (struct render_camera){{0, -0.3, 0}, {0, 0.5, 0}, {0, 0, 1}, 120.0};
-  if (render_create(&o, &r) != CLSPH_OK) {
-    TC_CHECK(0, "no renderer");
-    return;
-  }
+  r = open3((struct render_camera){{0, -0.3, 0}, {0, 0.5, 0}, {0, 0, 1}, 120.0}, &f);
+  if (r == NULL) return;
   TC_CHECK(render_frame(r, &f, &in, NULL, NULL, NULL) == CLSPH_OK, "the frame from inside");
   render_layout(r, &l);
   rgb = render_pixels(r, &w, &h);
