@@ -43,7 +43,7 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
   CLSPH_TRY(smoothing_make(SMOOTHING_WENDLAND_C2, 2, 2.0 * pp.dr, &pp.sm));
   struct grid_spec gs = {.dim = 2,
                          .lo = {0, -ghost * pp.dr},
-                         .hi = {1, 1 + ghost * pp.dr},
+                         .hi = {1, 1 + ghost * pp.dr + (spec->singular ? 0.0 : spec->air)},
                          .support = pp.sm.support,
                          .sm = pp.sm,
                          .periodic = {1, spec->singular}};

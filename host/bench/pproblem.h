@@ -21,6 +21,8 @@ struct pproblem_spec {
   int kgc;       /* kernel-gradient correction */
   double scale;  /* the volumes and so the Laplacian's rows, and their right-hand side, times this
                     (0: 1): the same solution on another scale */
+  double air;    /* empty grid above the particles (regular problems), unit lengths: the cells a
+                    free surface leaves without fluid */
   unsigned long seed;
 };
 

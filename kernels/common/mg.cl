@@ -231,9 +231,10 @@ __kernel void mg_galerkin(const int4 nf, const int Rf, const uint sf, const int4
 
 /* dw = ω / diag (0 on an empty cell), a level's stencil at S + so, its vectors at dw + vo; live:
  * 1 where the row has a nonzero entry (the cycle skips the others: the cells of a free-surface
- * flow's air, most of a tall domain) */
+ * flow's air, most of a tall domain), counted into nlive when `count` */
 __kernel void mg_weights(const uint n, const int W, const uint so, __global const mreal *S,
-                         const real omega, const uint vo, __global real *dw, __global uchar *live)
+                         const real omega, const uint vo, __global real *dw, __global uchar *live,
+                         const uint count, __global uint *nlive)
 {
   const uint I = get_global_id(0);
   if (I >= n) return;
@@ -243,6 +244,7 @@ __kernel void mg_weights(const uint n, const int W, const uint so, __global cons
   uchar any = 0;
   for (int o = 0; o < W; ++o) any |= S[r0 + o] != R(0.0);
   live[vo + I] = any;
+  if (count && any) atomic_inc(nlive); /* level 1: the cells that hold fluid (mg.c) */
 }
 
 /* dw = ω dinv */
@@ -301,7 +303,17 @@ __kernel void mg_restrict_csr(const uint ncells, __global const uint *start,
   mg_restrict_cell(start, agg, res, cdw, b, t, c);
 }
 
-/* Fine level up: z = t + MG_OVER x1(agg) + dw (res − MG_OVER AP x1) */
+/* Fine level up: z = t + MG_OVER x1(agg) + dw (res − MG_OVER AP x1), row i */
+real mg_up_row(__global const uint *agg, __global const mreal *AP, __global const uint *APc,
+               __global const real *dw, __global const real *t, __global const real *res,
+               __global const real *x1, const uint i)
+{
+  const real s = mg_stencil_dot(AP, APc, (size_t)i * MG_W1, MG_W1, x1, 0u);
+  const uint g = agg[i];
+  const real u = t[i] + (g != MG_NONE ? MG_OVER * x1[g] : R(0.0));
+  return u + dw[i] * (res[i] - MG_OVER * s);
+}
+
 __kernel void mg_up_csr(const uint n, __global const uint *agg, __global const mreal *AP,
                         __global const uint *APc, __global const real *dw, __global const real *t,
                         __global const real *res, __global const real *x1, __global real *z,
@@ -310,10 +322,7 @@ __kernel void mg_up_csr(const uint n, __global const uint *agg, __global const m
   if (kr_over(st, kit)) return;
   const uint i = get_global_id(0);
   if (i >= n) return;
-  const real s = mg_stencil_dot(AP, APc, (size_t)i * MG_W1, MG_W1, x1, 0u);
-  const uint g = agg[i];
-  const real u = t[i] + (g != MG_NONE ? MG_OVER * x1[g] : R(0.0));
-  z[i] = u + dw[i] * (res[i] - MG_OVER * s);
+  z[i] = mg_up_row(agg, AP, APc, dw, t, res, x1, i);
 }
 
 /* Coarse cell K (cells nc, vectors at co): its b (the sum of its children's res, which go to x
@@ -383,10 +392,60 @@ int4 mg_info_n(__global const int *info, const int l)
                 info[MG_INFO * l + 3]);
 }
 
+/* One step of the block, over the work-group's items (mg_block and the one-group solve of
+ * krylov_group.cl, which put a barrier after each): level 1's b and t from the fine residual
+ * (restrict), level l down to l + 1, the coarsest level L
+ * by its dense inverse M (m x m, row-major), level l up. info: per level nx, ny, nz, cells, W,
+ * stencil offset, vector offset. */
+void mg_block_restrict(__global const int *info, __global const uint *start,
+                       __global const uint *agg, __global const real *res,
+                       __global const real *dw, __global real *b, __global real *t)
+{
+  const uint lid = get_local_id(0), ls = get_local_size(0);
+  const uint ncells = (uint)info[MG_INFO + 3];
+  for (uint c = lid; c < ncells; c += ls) mg_restrict_cell(start, agg, res, dw, b, t, c);
+}
+
+void mg_block_down(__global const int *info, const int l, __global const mreal *S,
+                   __global const uint *nb, __global const uchar *live, __global const real *dw,
+                   __global real *b, __global real *t, __global real *x)
+{
+  const uint lid = get_local_id(0), ls = get_local_size(0);
+  const int4 nf = mg_info_n(info, l), nc = mg_info_n(info, l + 1);
+  const int W = info[MG_INFO * l + 4];
+  const uint sf = (uint)info[MG_INFO * l + 5], fo = (uint)info[MG_INFO * l + 6];
+  const uint co = (uint)info[MG_INFO * (l + 1) + 6];
+  for (uint K = lid; K < (uint)nc.w; K += ls)
+    mg_down_cell(nf, W, sf, fo, nc, co, S, nb, live, dw, b, t, x, K);
+}
+
+void mg_block_coarsest(__global const int *info, const int L, const uint m,
+                       __global const real *M, __global const real *b, __global real *x)
+{
+  const uint lid = get_local_id(0), ls = get_local_size(0);
+  const uint cL = (uint)info[MG_INFO * L + 6];
+  for (uint i = lid; i < m; i += ls) {
+    real s = R(0.0);
+    for (uint j = 0; j < m; ++j) s += M[(size_t)i * m + j] * b[cL + j];
+    x[cL + i] = s;
+  }
+}
+
+void mg_block_up(__global const int *info, const int l, __global const mreal *S,
+                 __global const uint *pnb, __global const uint *par, __global const real *dw,
+                 __global const real *t, __global real *x)
+{
+  const uint lid = get_local_id(0), ls = get_local_size(0);
+  const uint cells = (uint)info[MG_INFO * l + 3];
+  const int W = info[MG_INFO * l + 4];
+  const uint so = (uint)info[MG_INFO * l + 5], vo = (uint)info[MG_INFO * l + 6];
+  const uint co = (uint)info[MG_INFO * (l + 1) + 6];
+  for (uint I = lid; I < cells; I += ls) mg_up_cell(W, so, vo, co, S, pnb, par, dw, t, x, I);
+}
+
 /* Levels l0 .. L in one work-group: (l0 = 1) level 1's b and t restricted from the fine res;
- * down to L; the coarsest by its dense inverse M (m x m, row-major); up to l0. Global memory
- * between the phases is ordered by the work-group's barriers. info: per level nx, ny, nz, cells,
- * W, stencil offset, vector offset. */
+ * down to L; the coarsest; up to l0. Global memory between the steps is ordered by the
+ * work-group's barriers. */
 __kernel void mg_block(const int l0, const int L, __global const int *info, const uint m,
                        __global const real *M, __global const mreal *S, __global const uint *nb,
                        __global const uint *pnb, __global const uint *par,
@@ -396,34 +455,18 @@ __kernel void mg_block(const int l0, const int L, __global const int *info, cons
                        __global const kreal *st)
 {
   if (kr_over(st, kit)) return;
-  const uint lid = get_local_id(0), ls = get_local_size(0);
   if (l0 == 1) {
-    const uint ncells = (uint)info[MG_INFO + 3];
-    for (uint c = lid; c < ncells; c += ls) mg_restrict_cell(start, agg, res, dw, b, t, c);
+    mg_block_restrict(info, start, agg, res, dw, b, t);
     barrier(CLK_GLOBAL_MEM_FENCE);
   }
   for (int l = l0; l < L; ++l) {
-    const int4 nf = mg_info_n(info, l), nc = mg_info_n(info, l + 1);
-    const int W = info[MG_INFO * l + 4];
-    const uint sf = (uint)info[MG_INFO * l + 5], fo = (uint)info[MG_INFO * l + 6];
-    const uint co = (uint)info[MG_INFO * (l + 1) + 6];
-    for (uint K = lid; K < (uint)nc.w; K += ls)
-      mg_down_cell(nf, W, sf, fo, nc, co, S, nb, live, dw, b, t, x, K);
+    mg_block_down(info, l, S, nb, live, dw, b, t, x);
     barrier(CLK_GLOBAL_MEM_FENCE);
   }
-  const uint cL = (uint)info[MG_INFO * L + 6];
-  for (uint i = lid; i < m; i += ls) {
-    real s = R(0.0);
-    for (uint j = 0; j < m; ++j) s += M[(size_t)i * m + j] * b[cL + j];
-    x[cL + i] = s;
-  }
+  mg_block_coarsest(info, L, m, M, b, x);
   barrier(CLK_GLOBAL_MEM_FENCE);
   for (int l = L - 1; l >= l0; --l) {
-    const uint cells = (uint)info[MG_INFO * l + 3];
-    const int W = info[MG_INFO * l + 4];
-    const uint so = (uint)info[MG_INFO * l + 5], vo = (uint)info[MG_INFO * l + 6];
-    const uint co = (uint)info[MG_INFO * (l + 1) + 6];
-    for (uint I = lid; I < cells; I += ls) mg_up_cell(W, so, vo, co, S, pnb, par, dw, t, x, I);
+    mg_block_up(info, l, S, pnb, par, dw, t, x);
     barrier(CLK_GLOBAL_MEM_FENCE);
   }
 }

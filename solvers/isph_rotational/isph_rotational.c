@@ -65,10 +65,7 @@ struct rot {
 };
 
 static const char *const sources[] = {OPEN_SOURCES,
-                                      "common/blas1.cl",
-                                      "common/krylov.cl",
-                                      "common/csr.cl",
-                                      "common/mg.cl",
+                                      PSOLVE_SOURCES,
                                       "common/poisson.cl",
                                       "common/marker.cl",
                                       "isph_rotational/walls.cl",

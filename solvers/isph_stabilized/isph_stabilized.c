@@ -51,6 +51,7 @@
 #include "gate.h"
 #include "geometry.h"
 #include "log.h"
+#include "poisson_op.h"
 #include "psolve.h"
 #include "sim.h"
 
@@ -81,11 +82,7 @@ struct stab {
   cl_mem d_sums; /* the lattice sums (2 reals) */
 };
 
-static const char *const sources[] = {"common/blas1.cl",
-                                      "common/krylov.cl",
-                                      "common/csr.cl",
-                                      "common/mg.cl",
-                                      "common/poisson.cl",
+static const char *const sources[] = {POISSON_SOURCES,
                                       GATE_SOURCES,
                                       "common/marker.cl",
                                       "common/lattice.cl",

@@ -57,9 +57,7 @@ struct isph {
 #define ISPH_ACC  0
 #define ISPH_FREE 1
 
-static const char *const sources[] = {"common/blas1.cl",    "common/krylov.cl",
-                                      "common/csr.cl",      "common/mg.cl",
-                                      "common/poisson.cl",  "usaw/gamma.cl",
+static const char *const sources[] = {POISSON_SOURCES,      "usaw/gamma.cl",
                                       "usaw/common.cl",     "usaw/motion.cl",
                                       "usaw/wall_force.cl", "isph_usaw/move.cl",
                                       "common/kepsilon.cl", "usaw/turbulence.cl",

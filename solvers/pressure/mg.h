@@ -20,10 +20,13 @@
  * against 256: 8.1 iterations per step instead of 6.9 on the 60² cavity, in less time. */
 #define MG_COARSEST  64
 #define MG_COARSE_WG 64 /* MG_COARSE_WG in mg.cl */
-/* Coarse levels of at most MG_BLOCK cells run in one work-group launch (mg_block) */
-#define MG_BLOCK 4096
-#define MG_INFO  8           /* ints a level in the block's table (MG_INFO in mg.cl) */
-#define MG_NONE  0xffffffffu /* no cell (MG_NONE in mg.cl) */
+/* Coarse levels of at most MG_BLOCK cells run in one work-group launch (mg_block); level 1 too
+ * where at most MG_BLOCK of its cells held fluid at the last solve and it has at most
+ * MG_BLOCK_CELLS cells (the block passes over the empty ones: a free-surface flow's air) */
+#define MG_BLOCK       4096
+#define MG_BLOCK_CELLS 32768
+#define MG_INFO        8           /* ints a level in the block's table (MG_INFO in mg.cl) */
+#define MG_NONE        0xffffffffu /* no cell (MG_NONE in mg.cl) */
 /* The stored coefficients of the preconditioner (the fine rows' copy, A P, the coarse stencils)
  * are float in both builds (mreal in mg.cl): the cycle is bound by memory */
 #define MG_REAL_SIZE sizeof(cl_float)
@@ -48,7 +51,7 @@ struct mg {
   cl_mem d_AP, d_APc;      /* fine rows of (A + ε diag A) P against level-1 cells, their cells */
   const struct grid *grid; /* the grid the levels were sized for */
   int nlevels;             /* coarse levels 1 .. nlevels (lv[0] unused) */
-  int l0;                  /* the first level of the single-work-group block */
+  int l0;                  /* the first level of the single-work-group block (mg_setup) */
   struct mg_level lv[MG_MAX_LEVELS + 1];
   cl_mem d_S;                    /* every coarse level's stencil */
   cl_mem d_nb, d_pnb;            /* every stencil entry's cell and that cell's parent (as d_S) */
@@ -62,6 +65,11 @@ struct mg {
   cl_mem d_dense;                /* mg_coarsest's work: A, its copy and the inverse in kreal */
   cl_mem d_flag;                 /* mg_coarsest: 1 when the coarsest operator stayed singular */
   cl_uint h_flag;                /* its queued read (valid after the solve's first wait) */
+  cl_mem d_live1;                /* level 1's cells that hold fluid (mg_weights) */
+  cl_uint h_live1;               /* its queued read (valid after the solve's first wait) */
+  cl_uint live1;                 /* the last set-up's count (UINT_MAX: none yet) */
+  int live1_read;                /* a set-up has queued the read of h_live1 */
+  int l0_cells;                  /* the block's first level by the levels' cells alone */
   int warned_singular;           /* the singular-coarsest warning was given */
 };
 

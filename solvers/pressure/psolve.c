@@ -14,7 +14,8 @@
  * partial sums themselves, and a small state vector on the device says when and why the solve
  * ended. The host enqueues a batch of iterations (as many as the last solve needed, and two
  * more), reads the state once, and enqueues more only when the batch fell short; the iterations
- * past the end return at once. */
+ * past the end return at once. A system of at most solver_group_max unknowns is solved whole by
+ * one work-group in one launch (krylov_group.cl: the same iteration, tests and state). */
 #include "psolve.h"
 
 #include <math.h>
@@ -48,6 +49,7 @@ void psolve_defaults(struct psolve_options *o)
   o->max_it = 1000;
   o->max_failures = 10;
   o->name = "pressure";
+  o->group_max = PSOLVE_GROUP_MAX;
 }
 
 static int pick(const char *text, const char *const *names)
@@ -102,6 +104,10 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
   } else if (strcmp(key, "max_it") == 0) {
     CLSPH_CHECK(number >= 1 && number <= 1e6, CLSPH_E_INPUT, "solver_max_it must be 1 to 1e6");
     o->max_it = (int)number;
+  } else if (strcmp(key, "group_max") == 0) {
+    CLSPH_CHECK(number >= 0 && number <= 1e7 && number == floor(number), CLSPH_E_INPUT,
+                "solver_group_max must be a whole number of unknowns from 0 (never) to 1e7");
+    o->group_max = (int)number;
   } else {
     CLSPH_CHECK(0, CLSPH_E_INPUT, "unknown solver option '%s'", key);
   }
@@ -137,6 +143,7 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
             {&ps.k_wshift, "kr_wshift"},
             {&ps.k_spmv, "kr_spmv"},
             {&ps.k_spmv_dot, "kr_spmv_dot"},
+            {&ps.k_group, "kr_solve_group"},
             {&ps.k_scale, "kr_scale"},
             {&ps.k_sweep, "kr_sweep"},
             {&ps.k_axpy, "blas1_axpy"},
@@ -149,6 +156,17 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
             {&ps.k_scan_apply, "grid_scan_apply"}};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i)
     CLSPH_TRY(prog_kernel(prog, ks[i].name, ks[i].k));
+  /* the one-group solve's work-group: the largest power of two the kernel allows, at most
+   * PSOLVE_GROUP_WG (its tree sums halve it) */
+  size_t wg = 0;
+  CLSPH_CL_TRY(clGetKernelWorkGroupInfo(ps.k_group, dev->id, CL_KERNEL_WORK_GROUP_SIZE, sizeof wg,
+                                        &wg, NULL));
+  for (ps.group_wg = 1; 2 * ps.group_wg <= wg && 2 * ps.group_wg <= PSOLVE_GROUP_WG;)
+    ps.group_wg *= 2;
+  /* on a CPU a work-group runs on one thread, its items as a loop that each phase of the solve
+   * goes through: 32 items (1.8-2.0 ms a solve on the 30² cavity, PoCL) against 256 (3.0 ms) */
+  if (dev->type == CL_DEVICE_TYPE_CPU && ps.group_wg > PSOLVE_GROUP_WG_CPU)
+    ps.group_wg = PSOLVE_GROUP_WG_CPU;
   cl_mem *vs[] = {&ps.d_r,  &ps.d_r0, &ps.d_p, &ps.d_v,    &ps.d_s,    &ps.d_t,
                   &ps.d_ph, &ps.d_sh, &ps.d_q, &ps.d_dinv, &ps.d_diag, &ps.d_b};
   for (size_t i = 0; i < sizeof vs / sizeof *vs; ++i)
@@ -197,11 +215,12 @@ done:
 #define KR_RESTART_RHO   10
 #define KR_RESTART_OMEGA 11
 #define KR_CAPACITY      12
-#define KR_RHO_SET       2 /* partial sums of (r0, r) */
-#define KR_BB_SET        0 /* partial sums of (b, b) */
-#define KR_R0V_SET       3 /* (r0, v) */
-#define KR_TS_SET        5 /* (t, s) */
-#define KR_TT_SET        6 /* (t, t) */
+#define KR_RESTARTS      16 /* a one-group solve's restarts (krylov_group.cl) */
+#define KR_RHO_SET       2  /* partial sums of (r0, r) */
+#define KR_BB_SET        0  /* partial sums of (b, b) */
+#define KR_R0V_SET       3  /* (r0, v) */
+#define KR_TS_SET        5  /* (t, s) */
+#define KR_TT_SET        6  /* (t, t) */
 #define KR_NO_SET        0xffffffffu
 
 static enum clsph_status launch(struct psolve *ps, cl_kernel k, cl_uint n)
@@ -487,6 +506,51 @@ done:
   return st;
 }
 
+/* The solve in one work-group (krylov_group.cl): a system of at most group_max unknowns with the
+ * stored operator and the multigrid (all its levels in the block: mg.c's l0 = 1) or Jacobi. */
+static int one_group(const struct psolve *ps, const struct psolve_op *op)
+{
+  if (ps->group_wg == 0 || op->n > (size_t)ps->opt.group_max || ps->opt.apply != PSOLVE_STORED)
+    return 0;
+  if (ps->opt.precond == PSOLVE_MULTIGRID) return ps->mg.l0 == 1;
+  return ps->opt.precond == PSOLVE_JACOBI;
+}
+
+static enum clsph_status solve_group(struct psolve *ps, const struct psolve_op *op, cl_mem x,
+                                     real tiny)
+{
+  enum clsph_status st = CLSPH_OK;
+  const cl_uint n = (cl_uint)op->n, max_it = (cl_uint)ps->opt.max_it;
+  const real noise = REAL_EPS;
+  const real e = (real)(PSOLVE_REINFORCED(ps->opt.singular) ? ps->opt.reinforce : 0.0);
+  /* the multigrid's buffers and ε (its cycle: mg_apply), none with Jacobi */
+  const struct mg *mg = &ps->mg;
+  const cl_int mgo = ps->opt.precond == PSOLVE_MULTIGRID;
+  const real me = (real)reinforcement(ps);
+  const cl_int L = mgo ? mg->nlevels : 0;
+  const cl_uint m = mgo ? (cl_uint)mg->m : 0u;
+  const cl_mem none = NULL;
+  const cl_mem valm = mgo ? ps->d_valm : none, dw = mgo ? mg->d_dw : none,
+               mt = mgo ? mg->d_t : none, mres = mgo ? mg->d_res : none,
+               agg = mgo ? mg->d_agg : none, AP = mgo ? mg->d_AP : none,
+               APc = mgo ? mg->d_APc : none, info = mgo ? mg->d_info : none,
+               M = mgo ? mg->d_M : none, S = mgo ? mg->d_S : none, nb = mgo ? mg->d_nb : none,
+               pnb = mgo ? mg->d_pnb : none, par = mgo ? mg->d_par : none,
+               live = mgo ? mg->d_live : none, cdw = mgo ? mg->d_cdw : none,
+               cb = mgo ? mg->d_b : none, ct = mgo ? mg->d_t_c : none, cx = mgo ? mg->d_x : none,
+               start = mgo ? mg->grid->d_start : none;
+  CLSPH_TRY(KERN_SET(ps->k_group, KARG(n), KARG(max_it), KARG(noise), KARG(tiny), KARG(mgo),
+                     KARG(ps->d_state), KARG(ps->d_row), KARG(ps->d_col), KARG(ps->d_val), KARG(e),
+                     KARG(ps->d_dinv), KARG(x), KARG(ps->d_r), KARG(ps->d_r0), KARG(ps->d_p),
+                     KARG(ps->d_v), KARG(ps->d_s), KARG(ps->d_t), KARG(ps->d_ph), KARG(ps->d_sh),
+                     KARG(me), KARG(valm), KARG(dw), KARG(mt), KARG(mres), KARG(agg), KARG(AP),
+                     KARG(APc), KARG(L), KARG(info), KARG(m), KARG(M), KARG(S), KARG(nb), KARG(pnb),
+                     KARG(par), KARG(live), KARG(cdw), KARG(cb), KARG(ct), KARG(cx), KARG(start)));
+  CLSPH_TRY(kern_launch_wg(ps->dev, ps->k_group, ps->group_wg, ps->group_wg, NULL));
+done:
+  return st;
+}
+
 static enum clsph_status bicgstab(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
                                   struct psolve_result *res)
 {
@@ -516,15 +580,22 @@ static enum clsph_status bicgstab(struct psolve *ps, const struct psolve_op *op,
   const int max_it = ps->opt.max_it;
   const int recompute = ps->opt.apply == PSOLVE_RECOMPUTE; /* its kernels have no early exit */
   int next = 1, batch = recompute ? ps->last_its : ps->last_its + 2;
+  const int group = one_group(ps, op);
+  res->one_group = group;
   for (;;) {
-    const int last = next + batch - 1 < max_it ? next + batch - 1 : max_it;
-    for (int k = next; k <= last; ++k) CLSPH_TRY(iteration(ps, op, (cl_uint)k, x, tiny));
-    const cl_uint check = 1, after = (cl_uint)last + 1, noscale = 0;
-    CLSPH_TRY(KERN_SET(ps->k_begin, KARG(n), KARG(after), KARG(ng), KARG(check), KARG(ps->d_state),
-                       KARG(ps->d_partial), KARG(ps->d_p), KARG(ps->d_r), KARG(ps->d_v), KARG(tiny),
-                       KARG(noscale), KARG(ps->d_q), KARG(ps->d_q)));
-    CLSPH_TRY(launch_groups(ps, ps->k_begin)); /* the last residual's test */
+    const int last = group ? max_it : (next + batch - 1 < max_it ? next + batch - 1 : max_it);
+    if (group) {
+      CLSPH_TRY(solve_group(ps, op, x, tiny)); /* every iteration, its restarts and the test */
+    } else {
+      for (int k = next; k <= last; ++k) CLSPH_TRY(iteration(ps, op, (cl_uint)k, x, tiny));
+      const cl_uint check = 1, after = (cl_uint)last + 1, noscale = 0;
+      CLSPH_TRY(KERN_SET(ps->k_begin, KARG(n), KARG(after), KARG(ng), KARG(check),
+                         KARG(ps->d_state), KARG(ps->d_partial), KARG(ps->d_p), KARG(ps->d_r),
+                         KARG(ps->d_v), KARG(tiny), KARG(noscale), KARG(ps->d_q), KARG(ps->d_q)));
+      CLSPH_TRY(launch_groups(ps, ps->k_begin)); /* the last residual's test */
+    }
     CLSPH_TRY(read_state(ps, state));
+    if (group) res->restarts += (int)state[KR_RESTARTS];
     if (ps->opt.precond == PSOLVE_MULTIGRID) mg_report(&ps->mg);
     if (ps->h_overflow != 0 || (int)state[KR_REASON] == KR_CAPACITY)
       break; /* solve() grows the operator and solves again (x is as it was) */
@@ -713,12 +784,12 @@ done:
 
 void psolve_destroy(struct psolve *ps)
 {
-  cl_kernel *ks[] = {&ps->k_dot,        &ps->k_dot_ts,   &ps->k_residual,    &ps->k_shift,
-                     &ps->k_start,      &ps->k_begin,    &ps->k_s,           &ps->k_end,
-                     &ps->k_restart,    &ps->k_total,    &ps->k_spmv,        &ps->k_spmv_dot,
-                     &ps->k_scale,      &ps->k_sweep,    &ps->k_axpy,        &ps->k_add_diag,
-                     &ps->k_invert,     &ps->k_csr_diag, &ps->k_scan_blocks, &ps->k_scan_top,
-                     &ps->k_scan_apply, &ps->k_wtotal,   &ps->k_wshift,      &ps->k_guard};
+  cl_kernel *ks[] = {
+      &ps->k_dot,        &ps->k_dot_ts,   &ps->k_residual, &ps->k_shift,       &ps->k_start,
+      &ps->k_begin,      &ps->k_s,        &ps->k_end,      &ps->k_restart,     &ps->k_total,
+      &ps->k_spmv,       &ps->k_spmv_dot, &ps->k_scale,    &ps->k_sweep,       &ps->k_axpy,
+      &ps->k_add_diag,   &ps->k_invert,   &ps->k_csr_diag, &ps->k_scan_blocks, &ps->k_scan_top,
+      &ps->k_scan_apply, &ps->k_wtotal,   &ps->k_wshift,   &ps->k_guard,       &ps->k_group};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {
     if (*ks[i] != NULL) clReleaseKernel(*ks[i]);
     *ks[i] = NULL;

@@ -64,6 +64,9 @@ struct psolve_options {
   const char *name;    /* what the messages call the solve: "pressure" (default), "viscous" */
   double row_estimate; /* nonzeros per row expected of the stored operator (its memory is
                         * announced at create, kern_reserve); 0: 50, 2-D at h = 2 dr */
+  int group_max;       /* systems of at most this many unknowns are solved in one work-group and
+                        * one launch (krylov_group.cl; stored operator, the multigrid's levels all
+                        * in its block, or Jacobi); 0: never */
 };
 
 /** Reasons: > 0 converged, < 0 failed. */
@@ -80,6 +83,7 @@ struct psolve_result {
   int its;        /* iterations (operator applications / 2) */
   double rnorm;   /* final ||b − A x|| / ||b|| */
   int restarts;   /* breakdown restarts */
+  int one_group;  /* solved in one work-group and one launch (solver_group_max) */
   double seconds; /* wall time of the solve (setup of the stored layout included) */
 };
 
@@ -90,7 +94,7 @@ struct psolve {
   int failures; /* consecutive non-converged solves */
   cl_kernel k_dot, k_dot_ts, k_residual, k_shift, k_start, k_begin, k_s, k_end, k_restart, k_total,
       k_spmv, k_spmv_dot, k_scale, k_sweep, k_axpy, k_add_diag, k_invert, k_csr_diag, k_scan_blocks,
-      k_scan_top, k_scan_apply, k_guard, k_wtotal, k_wshift;
+      k_scan_top, k_scan_apply, k_guard, k_wtotal, k_wshift, k_group;
   cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags;
   cl_mem d_state;                               /* the iteration's state (krylov.cl) */
   cl_mem d_row, d_col, d_val, d_count, d_block; /* stored layout */
@@ -102,6 +106,8 @@ struct psolve {
   int ngroups;        /* work-groups of the reductions */
   int last_its;       /* iterations of the last converged solve: the next one's first batch */
   int state_double;   /* the device keeps the state in double (krylov.cl's kreal) */
+  size_t group_wg;    /* work-group of the one-group solve (a power of two, PSOLVE_GROUP_WG at
+                       * most; 0: the device cannot hold it) */
   struct kern_timer t_apply; /* device time of operator applications (benchmarks) */
   struct mg mg;              /* the multigrid preconditioner (PSOLVE_MULTIGRID) */
 };
@@ -118,7 +124,7 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
  *  psolve_set's "solver", `solver_X` its "X". */
 #define PSOLVE_OPTION_NAMES                                                                        \
   "solver", "solver_apply", "solver_precond", "solver_sweeps", "solver_singular",                  \
-      "solver_reinforce", "solver_rtol", "solver_atol", "solver_max_it"
+      "solver_reinforce", "solver_rtol", "solver_atol", "solver_max_it", "solver_group_max"
 
 /** @brief Kernels (from a program built with PSOLVE_SOURCES) and work vectors for n unknowns. */
 enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n,
@@ -143,8 +149,17 @@ enum clsph_status psolve_direct(struct psolve *ps, const struct psolve_op *op, c
 void psolve_destroy(struct psolve *ps);
 
 /** Kernel sources the solver needs after the neighbour sources (GRID_SOURCES). */
-#define PSOLVE_SOURCES "common/blas1.cl", "common/krylov.cl", "common/csr.cl", "common/mg.cl"
-#define PSOLVE_SETS    8  /* partial-sum sets of the dot products (krylov.cl) */
-#define PSOLVE_STATE   16 /* reals of the iteration's state (krylov.cl) */
+#define PSOLVE_SOURCES                                                                             \
+  "common/blas1.cl", "common/krylov.cl", "common/csr.cl", "common/mg.cl", "common/krylov_group.cl"
+#define PSOLVE_SETS         8   /* partial-sum sets of the dot products (krylov.cl) */
+#define PSOLVE_STATE        17  /* reals of the iteration's state (krylov.cl, krylov_group.cl) */
+#define PSOLVE_GROUP_WG     256 /* items of the one-group solve at most (KR_GROUP_WG) */
+#define PSOLVE_GROUP_WG_CPU 32  /* and on a CPU device */
+/* solver_group_max's default: the unknowns up to which one work-group solves at least as fast as
+ * the iteration's launches. On a CPU (PoCL, 2 cores: the cavity at 30², 1020 unknowns, 6% less
+ * wall time a run; at 45², 2205, 5% more; at 60², 3840, 10% more) the group runs on one core; on a
+ * GPU on one compute unit, where the launches cost more and the break-even lies higher (not
+ * measured: no GPU was at hand) */
+#define PSOLVE_GROUP_MAX 1500
 
 #endif /* CLSPH_PSOLVE_H */

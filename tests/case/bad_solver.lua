@@ -6,6 +6,7 @@ local bad = {
   { solver_rtol = 0 / 0 },  -- not a number
   { solver_max_it = 0 },    -- no iteration at all
   { solver_rtol = 1 },      -- nothing to solve for
+  { solver_group_max = -4 }, -- not a number of unknowns
 }
 local opts = { "isph-usaw" }
 for k, v in pairs(bad[what]) do opts[k] = v end

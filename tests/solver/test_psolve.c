@@ -12,6 +12,12 @@
  *     in one work-group) reads from the device once and launches at most 5 + 11 (its + 2)
  *     kernels (krylov.cl, mg.cl: 11 a BiCGStab iteration, the batch two past the last solve's
  *     count); it gives the same iterations and solution as the first.
+ *   - The one-group solve (solver_group_max) on the Dirichlet, non-symmetric and singular systems
+ *     with Jacobi and the multigrid: the same solutions as the launches' within the tolerance,
+ *     the iterations within one, the iteration limit, one launch and one read a solve again.
+ *   - The multigrid's block from level 1 where few of its cells hold fluid (a grid mostly empty):
+ *     from the second solve on, the same iterations and solution in 6 fewer launches an
+ *     iteration.
  * Float builds solve to rtol 1e-6 and compare at 2e-5: the Laplacian's condition number
  * (~ (L/dr)²/π² ≈ 160 at 40 per side) times the float round-off (1.2e-7) of its entries and sums.
  */
@@ -254,21 +260,45 @@ done:
   pproblem_destroy(&pp);
 }
 
-/* kernel launches and blocking reads recorded by the device's profile */
-static void traffic(struct kern_profile *p, long *launches, long *reads)
+/* kernel launches and blocking reads recorded by the device's profile; *outside (may be NULL):
+ * the launches of the multigrid's levels outside its block (mg_restrict_csr, mg_down, mg_up) */
+static void traffic_split(struct kern_profile *p, long *launches, long *reads, long *outside)
 {
   struct kern_profile_entry *e = NULL;
   size_t n = 0;
   double secs = 0.0;
   *launches = *reads = 0;
+  if (outside) *outside = 0;
   if (kern_profile_stop(p) || kern_profile_entries(p, &e, &n, &secs)) return;
   for (size_t i = 0; i < n; ++i) {
     if (strcmp(e[i].name, "(read)") == 0)
       *reads += e[i].launches;
     else if (e[i].name[0] != '(')
       *launches += e[i].launches;
+    if (outside && (strcmp(e[i].name, "mg_restrict_csr") == 0 ||
+                    strcmp(e[i].name, "mg_down") == 0 || strcmp(e[i].name, "mg_up") == 0))
+      *outside += e[i].launches;
   }
   free(e);
+}
+
+static void traffic(struct kern_profile *p, long *launches, long *reads)
+{
+  traffic_split(p, launches, reads, NULL);
+}
+
+/* The problem of spec with a multigrid solver (options o), two host vectors for its solutions and
+ * the device's profile: 1 when all is set up */
+static int mg_problem(struct dev *dev, const struct pproblem_spec *spec,
+                      const struct psolve_options *o, struct pproblem *pp, struct psolve *ps,
+                      double **x1, double **x2)
+{
+  memset(pp, 0, sizeof *pp);
+  memset(ps, 0, sizeof *ps);
+  *x1 = *x2 = NULL;
+  return pproblem_create(dev, spec, pp) == CLSPH_OK && (*x1 = calloc(pp->n, sizeof **x1)) &&
+         (*x2 = calloc(pp->n, sizeof **x2)) && kern_profile_create(dev) == CLSPH_OK &&
+         psolve_create(dev, pp->prog, pp->n, o, ps) == CLSPH_OK;
 }
 
 static void check_traffic(struct dev *dev)
@@ -280,12 +310,8 @@ static void check_traffic(struct dev *dev)
   struct pproblem_spec spec = {.side = 40, .seed = 7};
   const real z = 0;
   double *x1 = NULL, *x2 = NULL;
-  memset(&pp, 0, sizeof pp);
-  memset(&ps, 0, sizeof ps);
   options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_MULTIGRID, PSOLVE_REGULAR);
-  if (pproblem_create(dev, &spec, &pp) || !(x1 = calloc(pp.n, sizeof *x1)) ||
-      !(x2 = calloc(pp.n, sizeof *x2)) || kern_profile_create(dev) ||
-      psolve_create(dev, pp.prog, pp.n, &o, &ps)) {
+  if (!mg_problem(dev, &spec, &o, &pp, &ps, &x1, &x2)) {
     TC_CHECK(0, "traffic: set-up");
     goto done;
   }
@@ -341,6 +367,177 @@ static void check_traffic(struct dev *dev)
   goto done;
 fail:
   TC_CHECK(0, "traffic: the solves run");
+done:
+  psolve_destroy(&ps);
+  pproblem_destroy(&pp);
+  free(x1);
+  free(x2);
+}
+
+/* The one-group solve (krylov_group.cl, solver_group_max) against the iteration's launches on
+ * the same systems: the same answers to the tolerance, the iterations within one (its dot
+ * products are summed in another order), the iteration limit reported alike, and one launch and
+ * one blocking read for all its iterations. */
+static void check_group(struct dev *dev)
+{
+  struct {
+    struct pproblem_spec spec;
+    enum psolve_precond pc;
+    enum psolve_singular sing;
+    const char *name;
+  } cases[] = {
+      {{.side = 20, .seed = 7}, PSOLVE_JACOBI, PSOLVE_REGULAR, "Dirichlet 20, Jacobi"},
+      {{.side = 20, .seed = 7}, PSOLVE_MULTIGRID, PSOLVE_REGULAR, "Dirichlet 20, multigrid"},
+      {{.side = 32, .jitter = 0.3, .kgc = 1, .seed = 7},
+       PSOLVE_MULTIGRID,
+       PSOLVE_REGULAR,
+       "jittered corrected 32, multigrid"},
+      {{.side = 32, .singular = 1, .seed = 3},
+       PSOLVE_JACOBI,
+       PSOLVE_REINFORCE,
+       "singular reinforced, Jacobi"},
+      {{.side = 32, .singular = 1, .seed = 3},
+       PSOLVE_MULTIGRID,
+       PSOLVE_REINFORCE,
+       "singular reinforced, multigrid"},
+      {{.side = 32, .singular = 1, .seed = 3},
+       PSOLVE_MULTIGRID,
+       PSOLVE_MEAN,
+       "singular mean, multigrid"},
+      {{.side = 32, .singular = 1, .seed = 3},
+       PSOLVE_MULTIGRID,
+       PSOLVE_PROJECT,
+       "singular projected, multigrid"},
+  };
+  for (size_t c = 0; c < sizeof cases / sizeof *cases; ++c) {
+    struct pproblem pp;
+    struct psolve_options o;
+    struct outcome launches = {0}, group = {0};
+    memset(&pp, 0, sizeof pp);
+    int ok = pproblem_create(dev, &cases[c].spec, &pp) == CLSPH_OK;
+    options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, cases[c].pc, cases[c].sing);
+    o.group_max = 0;
+    ok = ok && solve(dev, &pp, &o, &launches);
+    o.group_max = 10000000;
+    ok = ok && solve(dev, &pp, &o, &group);
+    if (!ok) {
+      TC_CHECK(0, "one group (%s): the solves run", cases[c].name);
+    } else {
+      const int mean = cases[c].sing == PSOLVE_MEAN || cases[c].sing == PSOLVE_PROJECT;
+      TC_CHECK(group.res.one_group && !launches.res.one_group,
+               "one group (%s): solved in one group, and in launches with solver_group_max 0",
+               cases[c].name);
+      TC_CHECK(group.res.reason > 0 && launches.res.reason > 0,
+               "one group (%s): both converge (%d and %d iterations)", cases[c].name, group.res.its,
+               launches.res.its);
+      TC_CHECK(abs(group.res.its - launches.res.its) <= 1,
+               "one group (%s): %d iterations against %d", cases[c].name, group.res.its,
+               launches.res.its);
+      TC_NEAR(rel_diff(group.x, launches.x, pp.n, cases[c].sing != PSOLVE_REGULAR && !mean), 0.0,
+              agree, "one group (%s): the same solution", cases[c].name);
+      printf("one group, %-34s n %5zu: %3d its (launches %3d), rnorm %.1e\n", cases[c].name, pp.n,
+             group.res.its, launches.res.its, group.res.rnorm);
+    }
+    free(launches.x);
+    free(group.x);
+    pproblem_destroy(&pp);
+  }
+  /* the iteration limit, and the traffic of a solve again */
+  struct pproblem pp;
+  struct psolve ps;
+  struct psolve_options o;
+  struct psolve_result res, again;
+  struct pproblem_spec spec = {.side = 20, .seed = 7};
+  const real z = 0;
+  memset(&pp, 0, sizeof pp);
+  memset(&ps, 0, sizeof ps);
+  options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_MULTIGRID, PSOLVE_REGULAR);
+  o.group_max = 10000000;
+  o.max_it = 2;
+  if (pproblem_create(dev, &spec, &pp) || kern_profile_create(dev) ||
+      psolve_create(dev, pp.prog, pp.n, &o, &ps)) {
+    TC_CHECK(0, "one group: set-up");
+    goto done;
+  }
+  cl_mem b = pset_mem(&pp.ps, pp.f_b), x = pset_mem(&pp.ps, pp.f_x);
+  if (kern_fill(dev, x, &z, sizeof z, pp.n * sizeof(real)) ||
+      psolve_solve(&ps, &pp.po.op, b, x, &res)) {
+    TC_CHECK(0, "one group: the limited solve runs");
+    goto done;
+  }
+  TC_CHECK(res.one_group && res.reason == PSOLVE_DIVERGED_ITS && res.its == 2 && res.rnorm > rtol,
+           "one group: the iteration limit reported with the residual (%d its, %.2e)", res.its,
+           res.rnorm);
+  ps.opt.max_it = 5000;
+  ps.failures = 0;
+  long launches = 0, reads = 0;
+  if (kern_fill(dev, x, &z, sizeof z, pp.n * sizeof(real))) goto done;
+  kern_profile_start(dev->profile);
+  if (psolve_solve_again(&ps, &pp.po.op, b, x, &again)) {
+    TC_CHECK(0, "one group: the solve again runs");
+    goto done;
+  }
+  traffic(dev->profile, &launches, &reads);
+  TC_CHECK(again.one_group && again.reason > 0 && reads == 1 && launches <= 6,
+           "one group: %d iterations in %ld launches and %ld blocking read", again.its, launches,
+           reads);
+  printf("one group, multigrid 20/side: %d its, %ld launches, %ld blocking reads a solve\n",
+         again.its, launches, reads);
+done:
+  psolve_destroy(&ps);
+  pproblem_destroy(&pp);
+}
+
+/* The multigrid's block from level 1 where few of its cells hold fluid: 40/side under 10 unit
+ * lengths of empty grid (4480 level-1 cells, 480 with particles), above the group's size. The
+ * first solve knows only the cells (the block from level 2); the next starts the block at level
+ * 1 from the count the first left, with the same iterations and solution in fewer launches. */
+static void check_block_live(struct dev *dev)
+{
+  struct pproblem pp;
+  struct psolve ps;
+  struct psolve_options o;
+  struct psolve_result first, second;
+  struct pproblem_spec spec = {.side = 40, .air = 10.0, .seed = 7};
+  const real z = 0;
+  double *x1 = NULL, *x2 = NULL;
+  long l1 = 0, r1 = 0, o1 = 0, l2 = 0, r2 = 0, o2 = 0;
+  options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_MULTIGRID, PSOLVE_REGULAR);
+  if (!mg_problem(dev, &spec, &o, &pp, &ps, &x1, &x2)) {
+    TC_CHECK(0, "block from level 1: set-up");
+    goto done;
+  }
+  cl_mem b = pset_mem(&pp.ps, pp.f_b), x = pset_mem(&pp.ps, pp.f_x);
+  if (kern_fill(dev, x, &z, sizeof z, pp.n * sizeof(real))) goto fail;
+  kern_profile_start(dev->profile);
+  if (psolve_solve(&ps, &pp.po.op, b, x, &first)) goto fail;
+  traffic_split(dev->profile, &l1, &r1, &o1);
+  const int l0_first = ps.mg.l0;
+  if (pproblem_read(&pp, x, x1) || kern_fill(dev, x, &z, sizeof z, pp.n * sizeof(real))) goto fail;
+  kern_profile_start(dev->profile);
+  if (psolve_solve(&ps, &pp.po.op, b, x, &second)) goto fail;
+  traffic_split(dev->profile, &l2, &r2, &o2);
+  if (pproblem_read(&pp, x, x2)) goto fail;
+  TC_CHECK(ps.mg.lv[1].n.s[3] > MG_BLOCK && ps.mg.live1 <= MG_BLOCK && !first.one_group,
+           "block from level 1: %d level-1 cells, %u with fluid, %zu unknowns", ps.mg.lv[1].n.s[3],
+           ps.mg.live1, pp.n);
+  TC_CHECK(l0_first == 2 && ps.mg.l0 == 1, "block from level 1: level %d first, then level %d",
+           l0_first, ps.mg.l0);
+  TC_CHECK(first.reason > 0 && second.its == first.its,
+           "block from level 1: the same iterations (%d, %d)", first.its, second.its);
+  TC_NEAR(rel_diff(x2, x1, pp.n, 0), 0.0, CLSPH_DOUBLE ? 1e-12 : 1e-5,
+          "block from level 1: the same solution");
+  /* 3 launches a cycle (2 a BiCGStab iteration) outside the block, then none */
+  TC_CHECK(o1 >= 6 * first.its && o2 == 0 && r2 == 1 && l2 < l1,
+           "block from level 1: %ld launches outside the block, then %ld; %ld launches in all "
+           "against %ld, %ld blocking read",
+           o1, o2, l2, l1, r2);
+  printf("block from level 1, 40/side under empty grid: %d its, %ld launches (block from level "
+         "2: %ld)\n",
+         second.its, l2, l1);
+  goto done;
+fail:
+  TC_CHECK(0, "block from level 1: the solves run");
 done:
   psolve_destroy(&ps);
   pproblem_destroy(&pp);
@@ -414,6 +611,8 @@ int main(void)
   check_scale(&dev);
   check_failures(&dev);
   check_traffic(&dev);
+  check_group(&dev);
+  check_block_live(&dev);
   dev_close(&dev);
   return tc_finish("test_psolve");
 }

@@ -138,6 +138,16 @@ static void check_solver_options(void)
   TC_CHECK(psolve_set(&o, "singular", "pin", 0) == CLSPH_E_INPUT,
            "an unknown solver_singular is refused");
   TC_CHECK(psolve_set(&o, "colour", "red", 0) == CLSPH_E_INPUT, "an unknown option is refused");
+  TC_CHECK(o.group_max == PSOLVE_GROUP_MAX, "solver_group_max defaults to %d", PSOLVE_GROUP_MAX);
+  TC_CHECK(psolve_set(&o, "group_max", NULL, 0) == CLSPH_OK && o.group_max == 0,
+           "solver_group_max = 0: never one group");
+  TC_CHECK(psolve_set(&o, "group_max", NULL, 2000) == CLSPH_OK && o.group_max == 2000,
+           "solver_group_max = 2000");
+  TC_CHECK(psolve_set(&o, "group_max", NULL, -1) == CLSPH_E_INPUT &&
+               psolve_set(&o, "group_max", NULL, 2.5) == CLSPH_E_INPUT &&
+               psolve_set(&o, "group_max", NULL, NAN) == CLSPH_E_INPUT &&
+               psolve_set(&o, "group_max", NULL, 1e8) == CLSPH_E_INPUT,
+           "solver_group_max below 0, fractional, not a number or above 1e7 is refused");
 }
 
 /* The dominant frequency of a sampled signal (vortex shedding from a lift history): a sinusoid
