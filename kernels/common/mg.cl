@@ -398,8 +398,8 @@ int4 mg_info_n(__global const int *info, const int l)
  * by its dense inverse M (m x m, row-major), level l up. info: per level nx, ny, nz, cells, W,
  * stencil offset, vector offset. */
 void mg_block_restrict(__global const int *info, __global const uint *start,
-                       __global const uint *agg, __global const real *res,
-                       __global const real *dw, __global real *b, __global real *t)
+                       __global const uint *agg, __global const real *res, __global const real *dw,
+                       __global real *b, __global real *t)
 {
   const uint lid = get_local_id(0), ls = get_local_size(0);
   const uint ncells = (uint)info[MG_INFO + 3];
@@ -419,8 +419,8 @@ void mg_block_down(__global const int *info, const int l, __global const mreal *
     mg_down_cell(nf, W, sf, fo, nc, co, S, nb, live, dw, b, t, x, K);
 }
 
-void mg_block_coarsest(__global const int *info, const int L, const uint m,
-                       __global const real *M, __global const real *b, __global real *x)
+void mg_block_coarsest(__global const int *info, const int L, const uint m, __global const real *M,
+                       __global const real *b, __global real *x)
 {
   const uint lid = get_local_id(0), ls = get_local_size(0);
   const uint cL = (uint)info[MG_INFO * L + 6];
