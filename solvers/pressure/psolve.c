@@ -156,13 +156,12 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
             {&ps.k_scan_apply, "grid_scan_apply"}};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i)
     CLSPH_TRY(prog_kernel(prog, ks[i].name, ks[i].k));
-  /* the one-group solve's work-group: the largest power of two the kernel allows, at most
-   * PSOLVE_GROUP_WG (its tree sums halve it) */
+  /* the one-group solve's work-group: as many items as the kernel allows, at most
+   * PSOLVE_GROUP_WG (its local partial sums hold that many) */
   size_t wg = 0;
   CLSPH_CL_TRY(clGetKernelWorkGroupInfo(ps.k_group, dev->id, CL_KERNEL_WORK_GROUP_SIZE, sizeof wg,
                                         &wg, NULL));
-  for (ps.group_wg = 1; 2 * ps.group_wg <= wg && 2 * ps.group_wg <= PSOLVE_GROUP_WG;)
-    ps.group_wg *= 2;
+  ps.group_wg = wg < PSOLVE_GROUP_WG ? (wg > 0 ? wg : 1) : PSOLVE_GROUP_WG;
   /* on a CPU a work-group runs on one thread, its items as a loop that each phase of the solve
    * goes through: 32 items (1.8-2.0 ms a solve on the 30² cavity, PoCL) against 256 (3.0 ms) */
   if (dev->type == CL_DEVICE_TYPE_CPU && ps.group_wg > PSOLVE_GROUP_WG_CPU)
@@ -510,8 +509,7 @@ done:
  * stored operator and the multigrid (all its levels in the block: mg.c's l0 = 1) or Jacobi. */
 static int one_group(const struct psolve *ps, const struct psolve_op *op)
 {
-  if (ps->group_wg == 0 || op->n > (size_t)ps->opt.group_max || ps->opt.apply != PSOLVE_STORED)
-    return 0;
+  if (op->n > (size_t)ps->opt.group_max || ps->opt.apply != PSOLVE_STORED) return 0;
   if (ps->opt.precond == PSOLVE_MULTIGRID) return ps->mg.l0 == 1;
   return ps->opt.precond == PSOLVE_JACOBI;
 }

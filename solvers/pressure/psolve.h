@@ -106,8 +106,7 @@ struct psolve {
   int ngroups;        /* work-groups of the reductions */
   int last_its;       /* iterations of the last converged solve: the next one's first batch */
   int state_double;   /* the device keeps the state in double (krylov.cl's kreal) */
-  size_t group_wg;    /* work-group of the one-group solve (a power of two, PSOLVE_GROUP_WG at
-                       * most; 0: the device cannot hold it) */
+  size_t group_wg;    /* work-group of the one-group solve (PSOLVE_GROUP_WG items at most) */
   struct kern_timer t_apply; /* device time of operator applications (benchmarks) */
   struct mg mg;              /* the multigrid preconditioner (PSOLVE_MULTIGRID) */
 };
