@@ -24,7 +24,7 @@
       __global const real *M, __global const mreal *S, __global const uint *nb,                    \
       __global const uint *pnb, __global const uint *par, __global const uchar *live,              \
       __global const real *cdw, __global real *cb, __global real *ct, __global real *cx,           \
-      __global const uint *start
+      __global const uint *start, __global const uint *list, __global const uint *nlist
 
 /* The phases of the solve. The kernel is one loop over phases with one barrier, at the end of
  * each: a phase's work is vector loops and the tests, whose branches hold no barrier. PoCL forms
@@ -168,11 +168,11 @@ __kernel void kr_solve_group(const uint n, const uint max_it, const real noise, 
               yv[i] - mg_row_dot(meps * valm[row[i]] * mt[i], row[i], row[i + 1], col, valm, mt);
         next = KG_RESTRICT;
       } else if (phase == KG_RESTRICT) {
-        mg_block_restrict(info, start, agg, mres, cdw, cb, ct);
+        mg_block_restrict(info, list, nlist, start, agg, mres, cdw, cb, ct);
         lvl = 1;
         next = L > 1 ? KG_DOWN : KG_COARSEST;
       } else if (phase == KG_DOWN) {
-        mg_block_down(info, lvl, S, nb, live, cdw, cb, ct, cx);
+        mg_block_down(info, lvl, list, nlist, S, nb, live, cdw, cb, ct, cx);
         ++lvl;
         next = lvl < L ? KG_DOWN : KG_COARSEST;
       } else if (phase == KG_COARSEST) {
@@ -180,7 +180,7 @@ __kernel void kr_solve_group(const uint n, const uint max_it, const real noise, 
         lvl = L - 1;
         next = lvl >= 1 ? KG_UP : KG_UPFINE;
       } else if (phase == KG_UP) {
-        mg_block_up(info, lvl, S, pnb, par, cdw, ct, cx);
+        mg_block_up(info, lvl, list, nlist, S, pnb, par, cdw, ct, cx);
         --lvl;
         next = lvl >= 1 ? KG_UP : KG_UPFINE;
       } else if (phase == KG_UPFINE) {

@@ -49,7 +49,8 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
   mg.coarse_wg = wg < MG_COARSE_WG ? (wg > 0 ? wg : 1) : MG_COARSE_WG;
   const cl_uint zero = 0;
   CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &mg.d_flag, "multigrid coarsest flag"));
-  CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &mg.d_live1, "multigrid level-1 count"));
+  const cl_uint zeros[MG_MAX_LEVELS + 1] = {0};
+  CLSPH_TRY(kern_buffer(dev, sizeof zeros, zeros, &mg.d_nlist, "multigrid level counts"));
   mg.live1 = UINT_MAX;
   CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(cl_uint), NULL, &mg.d_agg, "multigrid aggregates"));
   CLSPH_TRY(kern_buffer(dev, mg.cap * sizeof(cl_uint), NULL, &mg.d_cell, "multigrid cells"));
@@ -65,9 +66,9 @@ done:
 
 static void release_levels(struct mg *mg)
 {
-  cl_mem *ms[] = {&mg->d_S,    &mg->d_nb, &mg->d_pnb, &mg->d_par,  &mg->d_cdw,
-                  &mg->d_live, &mg->d_b,  &mg->d_t_c, &mg->d_x,    &mg->d_info,
-                  &mg->d_M,    &mg->d_AP, &mg->d_APc, &mg->d_dense};
+  cl_mem *ms[] = {&mg->d_S,    &mg->d_nb, &mg->d_pnb, &mg->d_par,   &mg->d_cdw,
+                  &mg->d_live, &mg->d_b,  &mg->d_t_c, &mg->d_x,     &mg->d_info,
+                  &mg->d_M,    &mg->d_AP, &mg->d_APc, &mg->d_dense, &mg->d_list};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
   mg->nlevels = 0;
   mg->grid = NULL;
@@ -173,6 +174,7 @@ static enum clsph_status size_levels(struct mg *mg, const struct grid *g)
   for (size_t i = 0; i < sizeof vs / sizeof *vs; ++i)
     CLSPH_TRY(kern_buffer(mg->dev, vo * sizeof(real), NULL, vs[i], "multigrid vectors"));
   CLSPH_TRY(kern_buffer(mg->dev, vo * sizeof(cl_uchar), NULL, &mg->d_live, "multigrid vectors"));
+  CLSPH_TRY(kern_buffer(mg->dev, vo * sizeof(cl_uint), NULL, &mg->d_list, "multigrid vectors"));
   CLSPH_TRY(kern_buffer(mg->dev, sizeof info, info, &mg->d_info, "multigrid levels"));
   CLSPH_TRY(kern_buffer(mg->dev, mg->cap * (size_t)mg->lv[1].W * MG_REAL_SIZE, NULL, &mg->d_AP,
                         "multigrid fine-to-coarse operator"));
@@ -245,7 +247,8 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
   if (mg->live1_read) mg->live1 = mg->h_live1;
   mg->l0 = mg->live1 <= MG_BLOCK && mg->lv[1].n.s[3] <= MG_BLOCK_CELLS ? 1 : mg->l0_cells;
   const cl_uint zero = 0u;
-  CLSPH_TRY(kern_fill(mg->dev, mg->d_live1, &zero, sizeof zero, sizeof zero));
+  CLSPH_TRY(
+      kern_fill(mg->dev, mg->d_nlist, &zero, sizeof zero, (MG_MAX_LEVELS + 1) * sizeof(cl_uint)));
   /* Galerkin operators, level by level */
   struct mg_level *v = &mg->lv[1];
   CLSPH_TRY(KERN_SET(mg->k_galerkin_ap, KARG(ncells), KARG(g->d_start), KARG(mg->d_agg),
@@ -263,13 +266,19 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
                          KARG(mg->d_S)));
       CLSPH_TRY(kern_launch(mg->dev, mg->k_galerkin, cells, NULL));
     }
-    const cl_uint count = l == 1;
+    /* the members of the level (its live cells and the parents of the finer level's members),
+     * listed for the block; the others' vectors zeroed */
+    const cl_int ll = l;
+    const cl_int4 none = {{0, 0, 0, 0}};
+    const cl_int4 nf = l > 1 ? mg->lv[l - 1].n : none;
+    const cl_uint fo = l > 1 ? (cl_uint)mg->lv[l - 1].vo : 0u;
     CLSPH_TRY(KERN_SET(mg->k_weights, KARG(cells), KARG(W), KARG(so), KARG(mg->d_S), KARG(omega),
-                       KARG(vo), KARG(mg->d_cdw), KARG(mg->d_live), KARG(count),
-                       KARG(mg->d_live1)));
+                       KARG(vo), KARG(mg->d_cdw), KARG(mg->d_live), KARG(ll), KARG(v->n), KARG(nf),
+                       KARG(fo), KARG(mg->d_list), KARG(mg->d_nlist), KARG(mg->d_b),
+                       KARG(mg->d_t_c), KARG(mg->d_x)));
     CLSPH_TRY(kern_launch(mg->dev, mg->k_weights, cells, NULL));
   }
-  CLSPH_TRY(kern_read_nb(mg->dev, mg->d_live1, 0, sizeof mg->h_live1, &mg->h_live1));
+  CLSPH_TRY(kern_read_nb(mg->dev, mg->d_nlist, sizeof(cl_uint), sizeof mg->h_live1, &mg->h_live1));
   mg->live1_read = 1;
   CLSPH_TRY(coarsest(mg));
 done:
@@ -312,7 +321,7 @@ enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_m
                        KARG(mg->d_S), KARG(mg->d_nb), KARG(mg->d_pnb), KARG(mg->d_par),
                        KARG(mg->d_live), KARG(mg->d_cdw), KARG(mg->d_b), KARG(mg->d_t_c),
                        KARG(mg->d_x), KARG(mg->grid->d_start), KARG(mg->d_agg), KARG(mg->d_res),
-                       KARG(k), KARG(state)));
+                       KARG(mg->d_list), KARG(mg->d_nlist), KARG(k), KARG(state)));
     CLSPH_TRY(kern_launch_wg(mg->dev, mg->k_block, mg->block_wg, mg->block_wg, NULL));
   }
   for (int l = l0 - 1; l >= 1; --l) { /* large stencil levels up */
@@ -345,6 +354,6 @@ void mg_destroy(struct mg *mg)
     *ks[i] = NULL;
   }
   cl_mem *ms[] = {&mg->d_agg, &mg->d_cell, &mg->d_dw,   &mg->d_res,
-                  &mg->d_t,   &mg->d_flag, &mg->d_live1};
+                  &mg->d_t,   &mg->d_flag, &mg->d_nlist};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
 }

@@ -58,14 +58,18 @@ struct mg {
   cl_mem d_par;                  /* every coarse cell's parent (as the vectors) */
   cl_mem d_cdw, d_b, d_t_c, d_x; /* every coarse level's ω/diag, right-hand side, first
                                   * sweep, solution */
-  cl_mem d_live;                 /* every coarse cell: 1 where its row has a nonzero (uchar) */
+  cl_mem d_live;                 /* every coarse cell: bit 0 where its row has a nonzero, bit 1
+                                  * where the block passes over it (uchar; mg_weights) */
+  cl_mem d_list;                 /* every coarse level's cells that the block passes over (as the
+                                  * vectors; their count in d_nlist) */
   cl_mem d_info;                 /* the block's level table */
   size_t m;                      /* unknowns of the coarsest level */
   cl_mem d_M;                    /* its dense inverse */
   cl_mem d_dense;                /* mg_coarsest's work: A, its copy and the inverse in kreal */
   cl_mem d_flag;                 /* mg_coarsest: 1 when the coarsest operator stayed singular */
   cl_uint h_flag;                /* its queued read (valid after the solve's first wait) */
-  cl_mem d_live1;                /* level 1's cells that hold fluid (mg_weights) */
+  cl_mem d_nlist;                /* per level the cells listed in d_list; level 1's: those that
+                                  * hold fluid (mg_weights) */
   cl_uint h_live1;               /* its queued read (valid after the solve's first wait) */
   cl_uint live1;                 /* the last set-up's count (UINT_MAX: none yet) */
   int live1_read;                /* a set-up has queued the read of h_live1 */

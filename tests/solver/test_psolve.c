@@ -492,6 +492,72 @@ done:
  * lengths of empty grid (4480 level-1 cells, 480 with particles), above the group's size. The
  * first solve knows only the cells (the block from level 2); the next starts the block at level
  * 1 from the count the first left, with the same iterations and solution in fewer launches. */
+/* The block's member lists after a set-up (mg_weights): on every level the listed cells are the
+ * members, each once (a member: a cell whose stencil row has a nonzero, or the parent of a member
+ * of the finer level), level 1's count is the count the next set-up starts the block by, and the
+ * vectors of the cells that are no members hold zeros after a solve over the lists. Returns the
+ * members of all levels (0 on a failed read). */
+static long check_members(const struct dev *dev, const struct mg *mg)
+{
+  const int L = mg->nlevels;
+  const size_t nv = mg->lv[L].vo + (size_t)mg->lv[L].n.s[3];
+  cl_uint nlist[MG_MAX_LEVELS + 1];
+  unsigned char *live = malloc(nv);
+  cl_uint *list = malloc(nv * sizeof *list);
+  real *vec[3] = {malloc(nv * sizeof(real)), malloc(nv * sizeof(real)), malloc(nv * sizeof(real))};
+  char *seen = calloc(nv, 1);
+  long members = 0, wrong = 0, twice = 0, nonzero = 0, live1 = 0;
+  const cl_mem vb[3] = {mg->d_b, mg->d_t_c, mg->d_x};
+  if (!live || !list || !vec[0] || !vec[1] || !vec[2] || !seen ||
+      kern_read(dev, mg->d_nlist, sizeof nlist, nlist) || kern_read(dev, mg->d_live, nv, live) ||
+      kern_read(dev, mg->d_list, nv * sizeof *list, list) ||
+      kern_read(dev, vb[0], nv * sizeof(real), vec[0]) ||
+      kern_read(dev, vb[1], nv * sizeof(real), vec[1]) ||
+      kern_read(dev, vb[2], nv * sizeof(real), vec[2])) {
+    members = 0;
+    goto done;
+  }
+  for (int l = 1; l <= L; ++l) {
+    const struct mg_level *v = &mg->lv[l], *f = l > 1 ? &mg->lv[l - 1] : NULL;
+    long count = 0;
+    for (cl_uint k = 0; k < nlist[l] && k < (cl_uint)v->n.s[3]; ++k) {
+      const size_t c = v->vo + list[v->vo + k];
+      twice += seen[c];
+      seen[c] = 1;
+    }
+    for (int I = 0; I < v->n.s[3]; ++I) {
+      const size_t c = v->vo + (size_t)I;
+      int member = live[c] & 1;
+      if (l == 1) live1 += live[c] & 1;
+      if (f) {
+        const int a[3] = {I % v->n.s[0], (I / v->n.s[0]) % v->n.s[1], I / (v->n.s[0] * v->n.s[1])};
+        for (int ch = 0; ch < (f->n.s[2] > 1 ? 8 : 4); ++ch) {
+          const int C[3] = {2 * a[0] + (ch & 1), 2 * a[1] + ((ch >> 1) & 1),
+                            2 * a[2] + ((ch >> 2) & 1)};
+          if (C[0] < f->n.s[0] && C[1] < f->n.s[1] && C[2] < f->n.s[2] &&
+              (live[f->vo + (size_t)(C[0] + f->n.s[0] * (C[1] + f->n.s[1] * C[2]))] & 2))
+            member = 1;
+        }
+      }
+      count += member;
+      wrong += member != ((live[c] & 2) != 0) || member != seen[c];
+      if (!member && l < L) nonzero += vec[0][c] != 0 || vec[1][c] != 0 || vec[2][c] != 0;
+    }
+    wrong += count != (long)nlist[l];
+    members += count;
+  }
+  TC_CHECK(wrong == 0 && twice == 0 && live1 == (long)nlist[1] && nonzero == 0,
+           "block lists: %ld members, %ld cells listed wrongly, %ld twice; level 1: %u listed, "
+           "%ld live; %ld cells outside the lists with nonzero vectors",
+           members, wrong, twice, nlist[1], live1, nonzero);
+done:
+  free(live);
+  free(list);
+  free(seen);
+  for (int k = 0; k < 3; ++k) free(vec[k]);
+  return members;
+}
+
 static void check_block_live(struct dev *dev)
 {
   struct pproblem pp;
@@ -527,14 +593,20 @@ static void check_block_live(struct dev *dev)
            "block from level 1: the same iterations (%d, %d)", first.its, second.its);
   TC_NEAR(rel_diff(x2, x1, pp.n, 0), 0.0, CLSPH_DOUBLE ? 1e-12 : 1e-5,
           "block from level 1: the same solution");
+  const long members = check_members(dev, &ps.mg);
+  long cells = 0;
+  for (int l = 1; l <= ps.mg.nlevels; ++l) cells += ps.mg.lv[l].n.s[3];
+  TC_CHECK(members > 0 && 3 * members < cells,
+           "block lists: %ld of the levels' %ld cells (under the empty grid: a third at most)",
+           members, cells);
   /* 3 launches a cycle (2 a BiCGStab iteration) outside the block, then none */
   TC_CHECK(o1 >= 6 * first.its && o2 == 0 && r2 == 1 && l2 < l1,
            "block from level 1: %ld launches outside the block, then %ld; %ld launches in all "
            "against %ld, %ld blocking read",
            o1, o2, l2, l1, r2);
   printf("block from level 1, 40/side under empty grid: %d its, %ld launches (block from level "
-         "2: %ld)\n",
-         second.its, l2, l1);
+         "2: %ld), %ld of %ld cells listed\n",
+         second.its, l2, l1, members, cells);
   goto done;
 fail:
   TC_CHECK(0, "block from level 1: the solves run");
