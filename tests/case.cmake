@@ -369,8 +369,9 @@ clsph_cli_test(case_bad_flow_control ARGS info ${CASE_DIR}/bad_flow_control.lua 
 # issue's criterion). The largest speed at 2 s, when the water sloshes in the pool, stays below
 # √(gH) (measured 0.41 in double, 0.39 in float); a particle thrown by a bad pressure (as once by
 # the eq 38 velocity correction, 13.6 m/s = 4.4 √(gH)) fails it. The normal pressure force on the
-# wedge's left side averaged over 0.25-2 s: measured 1153 N/m in double and 1145 N/m in float
-# (1132 and 1145 N/m before the no-tension bound of isph_usaw/ppe.cl; at rest the water would push
+# wedge's left side averaged over 0.25-2 s: measured 1109 N/m in double and 1098 N/m in float at
+# the case's C_CFL = 0.2 (0.49 and 0.48 √(gH) at 2 s; at 0.1, `cfl=1`: 1153 and 1145 N/m, and
+# 1132 and 1145 N/m before the no-tension bound of isph_usaw/ppe.cl; at rest the water would push
 # with 811 N/m); the bounds are ±20%. The run itself must reach
 # 2 s: a blow-up (a clump, a kick out of the pool) fails the test.
 clsph_run_test(run_wedge_coarse ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua SETS dr=0.02
@@ -409,9 +410,9 @@ clsph_run_test(validate_cylinder_array ${CMAKE_SOURCE_DIR}/cases/cylinder_array.
                SETS n=40 t_end=24 BOUNDS "cd_error<0.09")
 
 # Dam break over a wedge at the paper's δr = 0.01 m, 2 s, both schemes: no wall crossing (the
-# issue's criterion); mean normal force on the wedge's left side from 0.25 s measured 1102 N/m
-# (isph-usaw) and 1052 N/m (wcsph-usaw; 1072 N/m with dρ/dt from u^n), within 5% of the coarse
-# runs: ±20% as in CI.
+# issue's criterion); mean normal force on the wedge's left side from 0.25 s measured 1082 N/m
+# (isph-usaw at the case's C_CFL = 0.2, 1891 steps; 1127 N/m in 3922 steps at 0.1) and 1052 N/m
+# (wcsph-usaw; 1072 N/m with dρ/dt from u^n), within 5% of the coarse runs: ±20% as in CI.
 clsph_run_test(validate_wedge ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua LABELS slow
                BOUNDS "crossed_wall<0.5" "wedge_force_mean>900" "wedge_force_mean<1400")
 clsph_run_test(validate_wedge_wcsph ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua LABELS slow
