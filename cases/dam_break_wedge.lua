@@ -18,7 +18,8 @@
 -- (cfl = 2) with isph-usaw, whose own 0.1 keeps particles in the lid-driven cavity's corners:
 -- here the wall guard of scenes with gravity holds them (no wall crossing, the mean force on the
 -- wedge 4% under the run at 0.1, half the steps), and wcsph-usaw's own constants (cfl = 1).
-param { dr = 0.01, t_end = 2, nu = 1e-2, wcsph = 0, offset = 0.5, cfl = 0 }
+-- relax: isph-usaw's density_relaxation (0, the paper's projection, by default).
+param { dr = 0.01, t_end = 2, nu = 1e-2, wcsph = 0, offset = 0.5, cfl = 0, relax = 0 }
 
 local g, H, L, top = 9.81, 1.0, 2.0, 1.6
 local column = 0.6
@@ -29,7 +30,7 @@ particles { dr = dr }
 if wcsph == 1 then -- the paper's baseline: c0 = 20 m/s and a Ferrari density correction
   scheme { "wcsph-usaw", sound_speed = 20 }
 else
-  scheme { "isph-usaw", free_surface_offset = offset }
+  scheme { "isph-usaw", free_surface_offset = offset, density_relaxation = relax }
 end
 fluid { density = 1000, viscosity = nu, gravity = {0, -g} }
 -- one container, in three pieces so that the wedge's left side is a group of its own; the

@@ -378,6 +378,19 @@ clsph_run_test(run_wedge_coarse ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua SE
                BOUNDS "crossed_wall<0.5" "max_speed_over_sqrt_gH<1" "wedge_force_mean>900"
                       "wedge_force_mean<1400")
 
+# The free-surface kernel makes the pressure equation's right-hand side in its own loops where
+# density_relaxation is 0 (free_surface.cl); a relaxation of 1e-300 (a term under the rounding of
+# every row but the exact zeros, 0 in float) takes the separate kernel, isph_ppe_rhs. A released
+# column's first 0.1 s both ways (tests/case/rhs_fused.lua, 23 steps: its top and side rows
+# Dirichlet, the rest falling): the same free-surface flags, and the rest within what the rows at
+# rest, 1e-292 in place of 0, make of the solves, which then stop a rounding apart inside their
+# tolerance (measured: bit for bit in float; in double P and positions to 1e-11 relative, D{r} to
+# 1e-10, the right-hand side (up to 4e9) to 1e-5 absolute; the wall term 0.1% off fails at P).
+clsph_add_test(rhs_fused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
+               -DCASE=${CASE_DIR}/rhs_fused.lua -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/rhs_fused
+               -DSETS=t_end=0.1 -DSETS_A=relax=0 -DSETS_B=relax=1e-300 -DEXACT=free_surface
+               "-DREL=P|pos|div_r" -DABS=rhs -DABS_TOL=1e-3 -P ${CASE_DIR}/same_state.cmake)
+
 # The same with wcsph-usaw (its wall guard and collisions of u*, usaw/common.cl; without them the
 # meniscus crept through the left wall from 0.087 s and pairs clumped at 0.67 s): measured 0 wall
 # crossings, 0.31 √(gH) at 2 s and 1046 N/m (9% below isph-usaw; 0.30 and 1042 N/m in float, and

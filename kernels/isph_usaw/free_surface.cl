@@ -13,7 +13,11 @@
  *  - the particle must close on the wall within ISPH_IMPACT_STEPS steps at its present speed:
  *    a particle creeping towards a wall at the free surface (the meniscus of a falling column,
  *    0.1 m/s) kept its pressure unknown, the pressure went negative and pulled it through.
- * normal gets the outward unit normal of the surface (for free_surface_offset). */
+ * normal gets the outward unit normal of the surface (for free_surface_offset). With with_rhs the
+ * same loops make the pressure equation's right-hand side (isph_ppe_rhs, ppe.cl, in the same
+ * order: the same bits), which a row takes from its own flag alone unless density_relaxation is
+ * on: one sweep over the neighbours and the segments' quadrature a step less (the wedge: about
+ * 2.7 of 45 ms a step). */
 #ifndef ISPH_IMPACT_STEPS
 #define ISPH_IMPACT_STEPS 10
 #endif
@@ -46,15 +50,20 @@ int isph_impact(const struct smooth sm, real dist, real closing)
 
 __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel,
                                 const real dt, __global uint *free_surface, __global real *divr,
-                                __global realv *normal)
+                                __global realv *normal, const uint with_rhs,
+                                __global const realv *ustar, __global const realv *visc,
+                                const real rho, const realv gravity, const real surface_offset,
+                                __global const realv *acc, __global real *rhs)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
   if (kind[i] > ISPH_VERTEX) {
     free_surface[i] = 0u;
+    if (with_rhs) rhs[i] = R(0.0);
     return;
   }
-  const realv x = pos[i], u = vel[i];
+  const realv x = pos[i], u = vel[i], us = ustar[i];
+  real div = R(0.0), wall = R(0.0); /* the right-hand side's sums (with_rhs) */
   real d = R(0.0);
   int hitting = 0;
   real wet = R(0.0);          /* Σ_b V_b w_ab over the fluid neighbours */
@@ -68,12 +77,14 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
     d -= vol[j] * smoothing_f(g.sm, sqrt(r2)) * r2; /* r_ab·∇w_ab = F r² */
     if (kind[j] == ISPH_FLUID) wet += vol[j] * smoothing_w(g.sm, sqrt(r2));
     gf += vol[j] * smoothing_f(g.sm, sqrt(r2)) * r;
+    if (with_rhs) div -= vol[j] * smoothing_f(g.sm, sqrt(r2)) * dot(us - ustar[j], r);
   }
   NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
     d += dot(x - R(0.5) * (a + b), gg);
     gw += gg;
+    if (with_rhs) isph_rhs_seg(us, ustar, visc, inv[seg_v1[s]], inv[seg_v2[s]], gg, &div, &wall);
     if (kind[i] == ISPH_FLUID) { /* eq 39 against the nearest point of the segment */
       const realv t = b - a;
       const realv c = a + clamp(dot(x - a, t) / dot(t, t), R(0.0), R(1.0)) * t;
@@ -91,11 +102,16 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
   const real lw = length(gw);
   if (lw > R(0.0)) nf -= dot(nf, gw / lw) * (gw / lw);
   const real lf = length(nf);
-  normal[i] = lf > R(0.0) ? nf / lf : (realv)(R(0.0));
+  const realv nrm = lf > R(0.0) ? nf / lf : (realv)(R(0.0));
+  normal[i] = nrm;
   /* A wall vertex is a Dirichlet row only when it is dry (ISPH_WET): one
    * next to the free surface would impose p̃ = 0 below the fluid's top row and pull the fluid
    * into the wall; with fluid around, its row of eq 44 extrapolates the pressure to the wall
    * (P constant at rest; above the water line see project.cl). */
   const int dry = wet < ISPH_WET * gam[i], splash = wet < ISPH_SPLASH * gam[i];
-  free_surface[i] = kind[i] == ISPH_VERTEX ? dry : d <= R(1.5) && (!hitting || splash);
+  const uint fs = kind[i] == ISPH_VERTEX ? dry : d <= R(1.5) && (!hitting || splash);
+  free_surface[i] = fs;
+  if (with_rhs)
+    rhs[i] = fs ? isph_rhs_surface(rho, surface_offset, gravity, acc[i], nrm, x)
+                : rho / dt * div + R(2.0) * rho * wall;
 }

@@ -21,6 +21,26 @@
  * the relaxed density invariance of Asai et al. 2012 (isph-stabilized's, with the number density
  * Σ_b V_b w_ab/γ_a for ρ* over ρ0): the projection then contracts where the particles have spread
  * (∇·ũ = −α (1 − ρ* over ρ0)/δt), which the divergence-free projection alone lets accumulate. */
+/* A free-surface row's value: P_a = −ρ g·r_a + max(0, −ρ (g − a_a)·n_a d) */
+real isph_rhs_surface(const real rho, const real surface_offset, const realv gravity,
+                      const realv acc, const realv normal, const realv x)
+{
+  const real pt = fmax(R(0.0), -rho * surface_offset * dot(gravity - acc, normal));
+  return -rho * dot(gravity, x) + pt;
+}
+
+/* Segment s (vertices v1, v2, ∇γ_as = gg) in an inner row: u*_as·∇γ_as into div (eq 9) and the
+ * Neumann term a_visc,s·∇γ_as into wall (eq 43) */
+void isph_rhs_seg(const realv us, __global const realv *ustar, __global const realv *visc,
+                  const uint v1, const uint v2, const realv gg, real *div, real *wall)
+{
+  *div += dot(us - R(0.5) * (ustar[v1] + ustar[v2]), gg);
+  *wall += dot(R(0.5) * (visc[v1] + visc[v2]), gg);
+}
+
+/* With density_relaxation = 0 the free-surface kernel makes this right-hand side in its own loops
+ * (isph_free_surface's with_rhs, free_surface.cl): a row needs only its own flag. The relaxation
+ * term reads its neighbours' flags, so that it waits for all of them here. */
 __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ustar,
                            __global const realv *visc, __global const uint *free_surface,
                            const real rho, const real dt, const realv gravity,
@@ -35,8 +55,7 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     return;
   }
   if (free_surface[i]) { /* p̃ = 0 on the surface, surface_offset outside the particle */
-    const real pt = fmax(R(0.0), -rho * surface_offset * dot(gravity - acc[i], normal[i]));
-    rhs[i] = -rho * dot(gravity, x) + pt;
+    rhs[i] = isph_rhs_surface(rho, surface_offset, gravity, acc[i], normal[i], x);
     return;
   }
   const realv us = ustar[i];
@@ -56,9 +75,7 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
-    const uint v1 = inv[seg_v1[s]], v2 = inv[seg_v2[s]];
-    div += dot(us - R(0.5) * (ustar[v1] + ustar[v2]), gg);
-    wall += dot(R(0.5) * (visc[v1] + visc[v2]), gg);
+    isph_rhs_seg(us, ustar, visc, inv[seg_v1[s]], inv[seg_v2[s]], gg, &div, &wall);
   }
   rhs[i] = rho / dt * div + R(2.0) * rho * wall;
   if (relax > R(0.0) && kind[i] == ISPH_FLUID && !near_surface) rhs[i] += relax * (gam[i] - dens);

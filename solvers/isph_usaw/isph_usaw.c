@@ -57,13 +57,20 @@ struct isph {
 #define ISPH_ACC  0
 #define ISPH_FREE 1
 
-static const char *const sources[] = {POISSON_SOURCES,      "usaw/gamma.cl",
-                                      "usaw/common.cl",     "usaw/motion.cl",
-                                      "usaw/wall_force.cl", "isph_usaw/move.cl",
-                                      "common/kepsilon.cl", "usaw/turbulence.cl",
-                                      "usaw/viscous.cl",    "isph_usaw/free_surface.cl",
-                                      "isph_usaw/ppe.cl",   "isph_usaw/project.cl",
-                                      "isph_usaw/shift.cl", NULL};
+static const char *const sources[] = {POISSON_SOURCES,
+                                      "usaw/gamma.cl",
+                                      "usaw/common.cl",
+                                      "usaw/motion.cl",
+                                      "usaw/wall_force.cl",
+                                      "isph_usaw/move.cl",
+                                      "common/kepsilon.cl",
+                                      "usaw/turbulence.cl",
+                                      "usaw/viscous.cl",
+                                      "isph_usaw/ppe.cl",
+                                      "isph_usaw/free_surface.cl",
+                                      "isph_usaw/project.cl",
+                                      "isph_usaw/shift.cl",
+                                      NULL};
 static const char *const options[] = {"shifting",
                                       "pressure_gradient",
                                       "free_surface_offset",
@@ -392,6 +399,18 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_free, &i, sizeof divr, &divr));
   cl_mem nrm = pset_mem(ps, is->f_normal);
   CLSPH_TRY(arg(is->k_free, &i, sizeof nrm, &nrm));
+  /* the right-hand side (step 4) in the same sweep, where a row needs only its own flag */
+  const cl_uint with_rhs = !(is->relax > 0.0);
+  const real off = (real)(is->fs_offset * sc->dr);
+  cl_mem acc_last = pset_mem(ps, is->f_acc); /* the accelerations of the last step */
+  CLSPH_TRY(arg(is->k_free, &i, sizeof with_rhs, &with_rhs));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof ustar, &ustar));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof visc, &visc));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof rho, &rho));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof grav, &grav));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof off, &off));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof acc_last, &acc_last));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof rhs, &rhs));
   CLSPH_TRY(kern_launch(sim->dev, is->k_free, ps->n, NULL));
   /* A free surface makes the pressure equation regular; without one it is singular (reinforced).
    * The count comes with the solve's first wait: the last step's answer is the guess, and a wrong
@@ -404,23 +423,24 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   else
     CLSPH_TRY(sim_count(sim, fs, &nfree));
   const int guess = known ? is->carry[ISPH_FREE] > 0.0 : nfree > 0.0;
-  /* 4. pressure equation: P = p̃ + ρgz, previous P as the initial guess */
-  CLSPH_TRY(prefix(sim, is, is->k_rhs, &i));
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof ustar, &ustar));
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof visc, &visc));
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof fs, &fs));
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof rho, &rho));
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof rdt, &rdt));
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof grav, &grav));
-  const real off = (real)(is->fs_offset * sc->dr);
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof nrm, &nrm));
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof off, &off));
-  cl_mem acc_last = pset_mem(ps, is->f_acc); /* the accelerations of the last step */
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof acc_last, &acc_last));
-  const real relax = (real)(is->relax * sc->rho0 / (dt * dt)); /* α ρ/δt² */
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof relax, &relax));
-  CLSPH_TRY(arg(is->k_rhs, &i, sizeof rhs, &rhs));
-  CLSPH_TRY(kern_launch(sim->dev, is->k_rhs, ps->n, NULL));
+  /* 4. pressure equation: P = p̃ + ρgz, previous P as the initial guess; the right-hand side
+   * here where the relaxation reads the neighbours' flags */
+  if (!with_rhs) {
+    CLSPH_TRY(prefix(sim, is, is->k_rhs, &i));
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof ustar, &ustar));
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof visc, &visc));
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof fs, &fs));
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof rho, &rho));
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof rdt, &rdt));
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof grav, &grav));
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof nrm, &nrm));
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof off, &off));
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof acc_last, &acc_last));
+    const real relax = (real)(is->relax * sc->rho0 / (dt * dt)); /* α ρ/δt² */
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof relax, &relax));
+    CLSPH_TRY(arg(is->k_rhs, &i, sizeof rhs, &rhs));
+    CLSPH_TRY(kern_launch(sim->dev, is->k_rhs, ps->n, NULL));
+  }
   is->ps.opt.singular = singular_mode(is, guess);
   poisson_op_bind(&is->po, &sim->grid, ps->n, pos, pset_mem(ps, sim->f_vol), NULL, fs);
   struct psolve_result res;
