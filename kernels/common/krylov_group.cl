@@ -19,12 +19,12 @@
  * differ from the operator's: psolve.c's reinforcement) */
 #define KR_MG_PARAMS                                                                               \
   const real meps, __global const mreal *valm, __global const real *dw, __global real *mt,         \
-      __global real *mres, __global const uint *agg, __global const mreal *AP,                     \
-      __global const uint *APc, const int L, __global const int *info, const uint m,               \
-      __global const real *M, __global const mreal *S, __global const uint *nb,                    \
-      __global const uint *pnb, __global const uint *par, __global const uchar *live,              \
-      __global const real *cdw, __global real *cb, __global real *ct, __global real *cx,           \
-      __global const uint *start, __global const uint *list, __global const uint *nlist
+      __global real *mres, __global const uint *agg, __global const mreal *AP, const int L,        \
+      __global const int *info, const uint m, __global const real *M, __global const mreal *S,     \
+      __global const uint *nb, __global const uint *pnb, __global const uint *par,                 \
+      __global const uchar *live, __global const real *cdw, __global real *cb, __global real *ct,  \
+      __global real *cx, __global const uint *start, __global const uint *list,                    \
+      __global const uint *nlist
 
 /* The phases of the solve. The kernel is one loop over phases with one barrier, at the end of
  * each: a phase's work is vector loops and the tests, whose branches hold no barrier. PoCL forms
@@ -185,7 +185,7 @@ __kernel void kr_solve_group(const uint n, const uint max_it, const real noise, 
         next = lvl >= 1 ? KG_UP : KG_UPFINE;
       } else if (phase == KG_UPFINE) {
         __global real *z = which ? sh : ph;
-        for (uint i = lid; i < n; i += ls) z[i] = mg_up_row(agg, AP, APc, dw, mt, mres, cx, i);
+        for (uint i = lid; i < n; i += ls) z[i] = mg_up_row(agg, AP, nb, dw, mt, mres, cx, i);
         next = which ? KG_T : KG_V;
       } else if (phase == KG_V) {
         for (uint i = lid; i < n; i += ls) {

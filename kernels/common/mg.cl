@@ -99,25 +99,32 @@ int mg_neighbour(const int4 n, const int4 a, const int o, const int R, int4 *b)
 
 BLAS1_ROW_DOT(mg_row_dot, mreal) /* the fine rows' float copy (mg_down_csr) */
 
-/* Σ_o S[r0 + o] x[xo + idx[r0 + o]] over the W entries of a stencil row whose idx is a cell
+/* Σ_o S[r0 + o] x[xo + idx[i0 + o]] over the W entries of a stencil row whose idx is a cell
  * (MG_NONE: none), in four partial sums (blas1_row_dot) */
-real mg_stencil_dot(__global const mreal *S, __global const uint *idx, const size_t r0, const int W,
-                    __global const real *x, const uint xo)
+real mg_stencil_dot_at(__global const mreal *S, const size_t r0, __global const uint *idx,
+                       const size_t i0, const int W, __global const real *x, const uint xo)
 {
   real s0 = R(0.0), s1 = R(0.0), s2 = R(0.0), s3 = R(0.0);
   int o = 0;
   for (; o + 4 <= W; o += 4) {
-    const uint J0 = idx[r0 + o], J1 = idx[r0 + o + 1], J2 = idx[r0 + o + 2], J3 = idx[r0 + o + 3];
+    const uint J0 = idx[i0 + o], J1 = idx[i0 + o + 1], J2 = idx[i0 + o + 2], J3 = idx[i0 + o + 3];
     if (J0 != MG_NONE) s0 += S[r0 + o] * x[xo + J0];
     if (J1 != MG_NONE) s1 += S[r0 + o + 1] * x[xo + J1];
     if (J2 != MG_NONE) s2 += S[r0 + o + 2] * x[xo + J2];
     if (J3 != MG_NONE) s3 += S[r0 + o + 3] * x[xo + J3];
   }
   for (; o < W; ++o) {
-    const uint J = idx[r0 + o];
+    const uint J = idx[i0 + o];
     if (J != MG_NONE) s0 += S[r0 + o] * x[xo + J];
   }
   return (s0 + s1) + (s2 + s3);
+}
+
+/* The same where the row's stencil and its cells lie at the same offset r0 */
+real mg_stencil_dot(__global const mreal *S, __global const uint *idx, const size_t r0, const int W,
+                    __global const real *x, const uint xo)
+{
+  return mg_stencil_dot_at(S, r0, idx, r0, W, x, xo);
 }
 
 /* ---- set-up, once per solve ---- */
@@ -143,13 +150,14 @@ __kernel void mg_aggregate(const uint ncells, __global const uint *start, __glob
 }
 
 /* AP = (A + ε diag A) P, fine rows against level-1 cells: row i holds MG_W1 slots, the one of
- * offset o (from i's own cell) at AP[i MG_W1 + o] with its cell in APc (MG_NONE: none). A
+ * offset o (from i's own cell) at AP[i MG_W1 + o], 0 where no cell couples or the offset leaves
+ * the grid; the cell of a slot is level 1's stencil cell of the same offset (nb, mg.c). A
  * coupling beyond the stencil (a particle that moved after the binning) goes to i's own cell: the
  * way up then applies a slightly different (still fixed) preconditioner. */
 __kernel void mg_ap_csr(const uint n, const int4 nc, __global const uint *row,
                         __global const uint *col, __global const real *val,
                         __global const uint *agg, __global const uint *cell, const real eps,
-                        __global mreal *AP, __global uint *APc, __global mreal *valm)
+                        __global mreal *AP, __global mreal *valm)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -180,7 +188,6 @@ __kernel void mg_ap_csr(const uint n, const int4 nc, __global const uint *row,
     int4 b;
     const int in = acc[o] != R(0.0) && mg_neighbour(nc, a, o, MG_R1, &b);
     AP[(size_t)i * MG_W1 + o] = in ? (mreal)acc[o] : 0.0f;
-    APc[(size_t)i * MG_W1 + o] = in ? mg_id(nc, b) : MG_NONE;
   }
 }
 
@@ -327,26 +334,31 @@ __kernel void mg_restrict_csr(const uint ncells, __global const uint *start,
   mg_restrict_cell(start, agg, res, cdw, b, t, c);
 }
 
-/* Fine level up: z = t + MG_OVER x1(agg) + dw (res − MG_OVER AP x1), row i */
-real mg_up_row(__global const uint *agg, __global const mreal *AP, __global const uint *APc,
+/* Fine level up: z = t + MG_OVER x1(agg) + dw (res − MG_OVER AP x1), row i. The cells of AP's
+ * slots are those of level 1's stencil row of the row's cell (nb from offset 0; a row outside
+ * the aggregates has no coupling): one table a cell, which the cell's rows share, rather than one
+ * a row. */
+real mg_up_row(__global const uint *agg, __global const mreal *AP, __global const uint *nb,
                __global const real *dw, __global const real *t, __global const real *res,
                __global const real *x1, const uint i)
 {
-  const real s = mg_stencil_dot(AP, APc, (size_t)i * MG_W1, MG_W1, x1, 0u);
   const uint g = agg[i];
+  const real s =
+      g != MG_NONE ? mg_stencil_dot_at(AP, (size_t)i * MG_W1, nb, (size_t)g * MG_W1, MG_W1, x1, 0u)
+                   : R(0.0);
   const real u = t[i] + (g != MG_NONE ? MG_OVER * x1[g] : R(0.0));
   return u + dw[i] * (res[i] - MG_OVER * s);
 }
 
 __kernel void mg_up_csr(const uint n, __global const uint *agg, __global const mreal *AP,
-                        __global const uint *APc, __global const real *dw, __global const real *t,
+                        __global const uint *nb, __global const real *dw, __global const real *t,
                         __global const real *res, __global const real *x1, __global real *z,
                         const uint kit, __global const kreal *st)
 {
   if (kr_over(st, kit)) return;
   const uint i = get_global_id(0);
   if (i >= n) return;
-  z[i] = mg_up_row(agg, AP, APc, dw, t, res, x1, i);
+  z[i] = mg_up_row(agg, AP, nb, dw, t, res, x1, i);
 }
 
 /* Coarse cell K (cells nc, vectors at co): its b (the sum of its children's res, which go to x

@@ -66,9 +66,9 @@ done:
 
 static void release_levels(struct mg *mg)
 {
-  cl_mem *ms[] = {&mg->d_S,    &mg->d_nb, &mg->d_pnb, &mg->d_par,   &mg->d_cdw,
-                  &mg->d_live, &mg->d_b,  &mg->d_t_c, &mg->d_x,     &mg->d_info,
-                  &mg->d_M,    &mg->d_AP, &mg->d_APc, &mg->d_dense, &mg->d_list};
+  cl_mem *ms[] = {&mg->d_S,    &mg->d_nb, &mg->d_pnb,   &mg->d_par, &mg->d_cdw,
+                  &mg->d_live, &mg->d_b,  &mg->d_t_c,   &mg->d_x,   &mg->d_info,
+                  &mg->d_M,    &mg->d_AP, &mg->d_dense, &mg->d_list};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
   mg->nlevels = 0;
   mg->grid = NULL;
@@ -178,8 +178,6 @@ static enum clsph_status size_levels(struct mg *mg, const struct grid *g)
   CLSPH_TRY(kern_buffer(mg->dev, sizeof info, info, &mg->d_info, "multigrid levels"));
   CLSPH_TRY(kern_buffer(mg->dev, mg->cap * (size_t)mg->lv[1].W * MG_REAL_SIZE, NULL, &mg->d_AP,
                         "multigrid fine-to-coarse operator"));
-  CLSPH_TRY(kern_buffer(mg->dev, mg->cap * (size_t)mg->lv[1].W * sizeof(cl_uint), NULL, &mg->d_APc,
-                        "multigrid fine-to-coarse operator"));
   const struct mg_level *c = &mg->lv[mg->nlevels];
   mg->m = (size_t)c->n.s[3];
   CLSPH_TRY(kern_buffer(mg->dev, mg->m * mg->m * sizeof(real), NULL, &mg->d_M,
@@ -235,8 +233,7 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
                      KARG(mg->d_agg), KARG(mg->d_cell)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_aggregate, ncells, NULL));
   CLSPH_TRY(KERN_SET(mg->k_ap_csr, KARG(nn), KARG(mg->lv[1].n), KARG(row), KARG(col), KARG(val),
-                     KARG(mg->d_agg), KARG(mg->d_cell), KARG(e), KARG(mg->d_AP), KARG(mg->d_APc),
-                     KARG(valm)));
+                     KARG(mg->d_agg), KARG(mg->d_cell), KARG(e), KARG(mg->d_AP), KARG(valm)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_ap_csr, n, NULL));
   CLSPH_TRY(KERN_SET(mg->k_damp, KARG(nn), KARG(omega), KARG(dinv), KARG(mg->d_dw)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_damp, n, NULL));
@@ -334,7 +331,7 @@ enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_m
                        KARG(mg->d_x), KARG(k), KARG(state)));
     CLSPH_TRY(kern_launch(mg->dev, mg->k_up, cells, NULL));
   }
-  CLSPH_TRY(KERN_SET(mg->k_up_csr, KARG(nn), KARG(mg->d_agg), KARG(mg->d_AP), KARG(mg->d_APc),
+  CLSPH_TRY(KERN_SET(mg->k_up_csr, KARG(nn), KARG(mg->d_agg), KARG(mg->d_AP), KARG(mg->d_nb),
                      KARG(mg->d_dw), KARG(mg->d_t), KARG(mg->d_res), KARG(mg->d_x), KARG(z),
                      KARG(k), KARG(state)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_up_csr, n, NULL));

@@ -48,7 +48,8 @@ struct mg {
   size_t cap;              /* fine unknowns the buffers hold */
   cl_mem d_agg, d_cell;    /* fine level: aggregate (or none), cell of each unknown */
   cl_mem d_dw, d_t, d_res; /* fine level: ω/diag, first sweep, residual after it */
-  cl_mem d_AP, d_APc;      /* fine rows of (A + ε diag A) P against level-1 cells, their cells */
+  cl_mem d_AP;             /* fine rows of (A + ε diag A) P against level-1 cells (their cells:
+                            * level 1's d_nb) */
   const struct grid *grid; /* the grid the levels were sized for */
   int nlevels;             /* coarse levels 1 .. nlevels (lv[0] unused) */
   int l0;                  /* the first level of the single-work-group block (mg_setup) */

@@ -531,21 +531,20 @@ static enum clsph_status solve_group(struct psolve *ps, const struct psolve_op *
   const cl_mem valm = mgo ? ps->d_valm : none, dw = mgo ? mg->d_dw : none,
                mt = mgo ? mg->d_t : none, mres = mgo ? mg->d_res : none,
                agg = mgo ? mg->d_agg : none, AP = mgo ? mg->d_AP : none,
-               APc = mgo ? mg->d_APc : none, info = mgo ? mg->d_info : none,
-               M = mgo ? mg->d_M : none, S = mgo ? mg->d_S : none, nb = mgo ? mg->d_nb : none,
-               pnb = mgo ? mg->d_pnb : none, par = mgo ? mg->d_par : none,
-               live = mgo ? mg->d_live : none, cdw = mgo ? mg->d_cdw : none,
-               cb = mgo ? mg->d_b : none, ct = mgo ? mg->d_t_c : none, cx = mgo ? mg->d_x : none,
-               start = mgo ? mg->grid->d_start : none, list = mgo ? mg->d_list : none,
-               nlist = mgo ? mg->d_nlist : none;
+               info = mgo ? mg->d_info : none, M = mgo ? mg->d_M : none, S = mgo ? mg->d_S : none,
+               nb = mgo ? mg->d_nb : none, pnb = mgo ? mg->d_pnb : none,
+               par = mgo ? mg->d_par : none, live = mgo ? mg->d_live : none,
+               cdw = mgo ? mg->d_cdw : none, cb = mgo ? mg->d_b : none, ct = mgo ? mg->d_t_c : none,
+               cx = mgo ? mg->d_x : none, start = mgo ? mg->grid->d_start : none,
+               list = mgo ? mg->d_list : none, nlist = mgo ? mg->d_nlist : none;
   CLSPH_TRY(KERN_SET(ps->k_group, KARG(n), KARG(max_it), KARG(noise), KARG(tiny), KARG(mgo),
                      KARG(ps->d_state), KARG(ps->d_row), KARG(ps->d_col), KARG(ps->d_val), KARG(e),
                      KARG(ps->d_dinv), KARG(x), KARG(ps->d_r), KARG(ps->d_r0), KARG(ps->d_p),
                      KARG(ps->d_v), KARG(ps->d_s), KARG(ps->d_t), KARG(ps->d_ph), KARG(ps->d_sh),
                      KARG(me), KARG(valm), KARG(dw), KARG(mt), KARG(mres), KARG(agg), KARG(AP),
-                     KARG(APc), KARG(L), KARG(info), KARG(m), KARG(M), KARG(S), KARG(nb), KARG(pnb),
-                     KARG(par), KARG(live), KARG(cdw), KARG(cb), KARG(ct), KARG(cx), KARG(start),
-                     KARG(list), KARG(nlist)));
+                     KARG(L), KARG(info), KARG(m), KARG(M), KARG(S), KARG(nb), KARG(pnb), KARG(par),
+                     KARG(live), KARG(cdw), KARG(cb), KARG(ct), KARG(cx), KARG(start), KARG(list),
+                     KARG(nlist)));
   CLSPH_TRY(kern_launch_wg(ps->dev, ps->k_group, ps->group_wg, ps->group_wg, NULL));
 done:
   return st;
