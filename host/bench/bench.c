@@ -108,14 +108,14 @@ static enum clsph_status bench_size(const struct dev *dev, const struct cli *cli
 
   /* neighbour search: first on the shuffled set, then the steady state (nearly sorted) */
   double t0 = now();
-  CLSPH_TRY(grid_sort(&g, dev, n, pset_mem(&ps, i_pos), d_flags));
+  CLSPH_TRY(grid_sort(&g, dev, n, pset_mem(&ps, i_pos), NULL, d_flags));
   CLSPH_TRY(pset_reorder(&ps, &g, dev));
   CLSPH_TRY(kern_finish(dev));
   double first = now() - t0;
   for (int r = 0; r < reps; ++r) {
     grid_timing(&g, 1);
     t0 = now();
-    CLSPH_TRY(grid_sort(&g, dev, n, pset_mem(&ps, i_pos), d_flags));
+    CLSPH_TRY(grid_sort(&g, dev, n, pset_mem(&ps, i_pos), NULL, d_flags));
     CLSPH_TRY(pset_reorder(&ps, &g, dev));
     CLSPH_TRY(kern_finish(dev));
     t[r] = now() - t0;

@@ -75,7 +75,7 @@ static enum clsph_status demo_measure(const struct dev *dev, const struct grid_s
   CLSPH_TRY(kern_buffer(dev, n * sizeof(real), NULL, &d_lap, "lap"));
 
   double t0 = now();
-  CLSPH_TRY(grid_sort(&g, dev, n, pset_mem(&ps, i_pos), d_flags));
+  CLSPH_TRY(grid_sort(&g, dev, n, pset_mem(&ps, i_pos), NULL, d_flags));
   CLSPH_TRY(pset_reorder(&ps, &g, dev));
   CLSPH_TRY(kern_finish(dev));
   *search_s = now() - t0;

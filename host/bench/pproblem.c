@@ -90,7 +90,7 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
   CLSPH_TRY(pset_add(&pp.ps, dev, "x", sizeof(real), NULL, &pp.f_x));
   CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &pp.d_flags, "flags"));
   CLSPH_TRY(kern_buffer(dev, 4 * pp.n * sizeof(real), NULL, &pp.d_L, "L"));
-  CLSPH_TRY(grid_sort(&pp.g, dev, pp.n, pset_mem(&pp.ps, pp.f_pos), pp.d_flags));
+  CLSPH_TRY(grid_sort(&pp.g, dev, pp.n, pset_mem(&pp.ps, pp.f_pos), NULL, pp.d_flags));
   CLSPH_TRY(pset_reorder(&pp.ps, &pp.g, dev));
   cl_mem P = pset_mem(&pp.ps, pp.f_pos), V = pset_mem(&pp.ps, pp.f_vol);
   if (spec->kgc)

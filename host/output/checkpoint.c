@@ -62,10 +62,11 @@ done:
 }
 
 /* The figures of the whole run that summary.json reports (solver iterations, acoustic
- * sub-steps and pair interactions, wall crossings, the health checks' worst values, the
+ * sub-steps and pair interactions, wall crossings, the health checks' worst values, the fluid
+ * dropped on leaving the domain, the
  * wall-clock time so far): a checkpoint carries them, so that the summary of a restarted run
  * describes the whole run. The wall-clock time stays last (checkpoint_write sets it). */
-enum { NSTATS = 17 };
+enum { NSTATS = 20 };
 struct run_stats {
   const char *names[NSTATS];
   double values[NSTATS];
@@ -95,6 +96,9 @@ static void stats_of(struct sim *sim, struct run_stats *r)
   STAT_D(energy_ratio_max);
   STAT_D(spacing_min);
   STAT_D(cluster_max);
+  STAT_L(escaped);
+  STAT_L(escaped_first_step);
+  STAT_D(escaped_first_time);
   STAT_D(wall_before); /* the wall-clock seconds of the run up to the checkpoint */
 #undef STAT_L
 #undef STAT_D

@@ -277,6 +277,7 @@ void metrics_api(struct sim *sim, const char *dir, struct case_sim_api *api)
   api->particles = (double)sim->ps.n;
   api->wall_steps = sim->wall_steps;
   api->wall_most = sim->wall_most;
+  api->escaped = sim->escaped;
   api->stats = metric_stats;
   api->sample_many = metric_sample_many;
   api->probe = metric_probe;

@@ -179,6 +179,14 @@ enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double
   cJSON_AddNumberToObject(wc, "first_step", (double)sim->wall_first_step);
   if (sim->wall_first_step >= 0) cJSON_AddNumberToObject(wc, "first_time", sim->wall_first_time);
   cJSON_AddNumberToObject(wc, "deepest_dr", sim->wall_depth_max);
+  cJSON *ex = cJSON_AddObjectToObject(root, "escaped"); /* fluid dropped from the run */
+  CLSPH_CHECK(ex != NULL, CLSPH_E_NOMEM, "out of memory");
+  cJSON_AddNumberToObject(ex, "particles", (double)sim->escaped);
+  cJSON_AddNumberToObject(
+      ex, "fraction", sim->geom.nfluid > 0 ? (double)sim->escaped / (double)sim->geom.nfluid : 0.0);
+  cJSON_AddNumberToObject(ex, "first_step", (double)sim->escaped_first_step);
+  if (sim->escaped_first_step >= 0)
+    cJSON_AddNumberToObject(ex, "first_time", sim->escaped_first_time);
   if (sim->health_checks > 0) { /* the health checks' worst values over the run */
     cJSON *h = cJSON_AddObjectToObject(root, "health");
     CLSPH_CHECK(h != NULL, CLSPH_E_NOMEM, "out of memory");

@@ -1552,8 +1552,8 @@ static int l_force(lua_State *L)
  * distance in dr until cluster_h replaced it, is refused with its equivalent. */
 static void run_checks(lua_State *L, int idx, struct scene *s)
 {
-  static const char *const keys[] = {"every",  "cluster_h",  "cluster_fraction",
-                                     "energy", "wall_depth", NULL};
+  static const char *const keys[] = {
+      "every", "cluster_h", "cluster_fraction", "energy", "wall_depth", "escaped", NULL};
   const char *fn = "run: checks";
   struct scene_checks *c = &s->checks;
   if (!lua_istable(L, idx)) luaL_error(L, "%s: expects a table { every = 10, ... }", fn);
@@ -1580,6 +1580,15 @@ static void run_checks(lua_State *L, int idx, struct scene *s)
   c->wall_depth = get_number(L, idx, fn, "wall_depth", c->wall_depth);
   if (c->cluster_h < 0.0 || c->cluster_fraction < 0.0 || c->energy < 0.0 || c->wall_depth < 0.0)
     luaL_error(L, "%s: thresholds must not be negative", fn);
+  c->escaped = get_number(L, idx, fn, "escaped", c->escaped);
+  if (!(c->escaped >= 0.0 && c->escaped <= 1.0)) {
+    char v[32]; /* lua_pushfstring has no %g */
+    snprintf(v, sizeof v, "%g", c->escaped);
+    luaL_error(L,
+               "%s: escaped is the fraction of the fluid that may leave the domain before the "
+               "run stops: from 0 (none) to 1, not %s",
+               fn, v);
+  }
 }
 
 static int l_run(lua_State *L)
@@ -2642,6 +2651,8 @@ static void push_sim(lua_State *L, const struct case_sim_api *api)
   lua_setfield(L, -2, "wall_crossing_steps");
   lua_pushinteger(L, api->wall_most);
   lua_setfield(L, -2, "wall_crossings_most");
+  lua_pushinteger(L, api->escaped);
+  lua_setfield(L, -2, "escaped");
   static const luaL_Reg fns[] = {{"min", l_min},
                                  {"max", l_max},
                                  {"mean", l_mean},

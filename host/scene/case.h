@@ -18,6 +18,7 @@ struct case_sim_api {
   double particles; /* particle count */
   long wall_steps;  /* steps at which a fluid particle was behind a wall */
   long wall_most;   /* most fluid particles behind a wall at one step */
+  long escaped;     /* fluid particles dropped on leaving the domain (host/sim/checks.c) */
   /** Statistics of component `comp` of a field over the particles of `kind` (−1: all) in the
    *  box region = {x0, y0, x1, y1} (NULL: everywhere); *count of them (0: min, max, mean unset). */
   enum clsph_status (*stats)(void *ctx, const char *field, int comp, int kind, const double *region,

@@ -14,8 +14,10 @@ enum particle_kind {
   KIND_DUMMY = 2,   /* dummy wall particle inside the solid */
   KIND_INFLOW = 3,  /* inflow layer particle (outside an inflow section) */
   KIND_OUTFLOW = 4, /* outflow layer particle (outside an outflow section) */
-  KIND_PARKED = 5   /* parked behind an exit, out of every sum, until an entry takes it
+  KIND_PARKED = 5,  /* parked behind an exit, out of every sum, until an entry takes it
                      * (struct geom_park) */
+  KIND_OUT = 6      /* fluid that left the domain this step (CLSPH_KIND_OUT, domain.cl): dropped
+                     * at the step's end (host/sim/checks.c); only blowup.h5 shows it */
 };
 
 /** Particles (host arrays, double precision) and USAW segments. Fluid particles come first. */

@@ -207,6 +207,8 @@ struct scene_checks {
                             * times ½ M U² (M its mass, U the scene's velocity scale, sim/sim.c) */
   double wall_depth;       /* the run fails when a fluid particle is more than wall_depth dr
                             * behind a wall (shallower crossings are counted) */
+  double escaped;          /* the run fails when more than this fraction of the fluid has left
+                            * the domain (fewer are dropped and counted; 0: none may leave) */
 };
 
 /** Everything a case declares. Anything it does not state is off. */

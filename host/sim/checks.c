@@ -3,7 +3,8 @@
  * last), reduced on the device (kernels/common/health.cl). The thresholds and the runs behind them
  * are in host/scene/scene.c. Every stop message names the run { checks = { ... } } setting that
  * sets its limit, or, for the checks no setting controls (non-finite values, a particle out of the
- * domain, neighbour overflow), what to look at. */
+ * cell grid, neighbour overflow), what to look at. Fluid that leaves the domain is dropped and
+ * counted, up to checks.escaped of it. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,16 +27,58 @@ static const char *const nan_hint =
     "may be too long "
     "for the scene (run { cfl = 0.5 })";
 
+/* Fluid that left the domain at this step (`out` particles, kind CLSPH_KIND_OUT, domain.cl):
+ * counted, and dropped (sorted past the others, which then number fewer), or the run stops when
+ * more than checks.escaped of the fluid has left. */
+static enum clsph_status drop_escaped(struct sim *sim, cl_uint out)
+{
+  enum clsph_status st = CLSPH_OK;
+  const double limit = sim->scene->checks.escaped;
+  const double fluid = (double)sim->geom.nfluid;
+  if (sim->escaped_first_step < 0) {
+    sim->escaped_first_step = sim->step;
+    sim->escaped_first_time = sim->time;
+  }
+  sim->escaped += (long)out;
+  const double share = fluid > 0.0 ? (double)sim->escaped / fluid : 1.0;
+  if (share > limit) {
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: %ld fluid particle(s), %.3g%% of the fluid, left the domain by step %ld, "
+             "t = %.9g s (the first at step %ld), more than run { checks = { escaped = %g } } "
+             "lets go: look in blowup.h5 (the state that failed: kind 6 marks the particles "
+             "leaving at this step) for fluid thrown over a wall or out through a gap (fluid "
+             "particles must stay within dr of the domain { } box, but on the side gravity "
+             "points away from)",
+             sim->escaped, 100.0 * share, sim->step, sim->time, sim->escaped_first_step, limit);
+    return sim_fail(sim, "escaped");
+  }
+  if (sim->escaped == (long)out || sim->escaped <= 10)
+    log_warn("%u fluid particle(s) left the domain at step %ld, t = %.9g s: dropped from the run "
+             "(%ld so far, %.3g%% of the fluid; run { checks = { escaped = %g } } stops the run "
+             "beyond that fraction)",
+             out, sim->step, sim->time, sim->escaped, 100.0 * share, limit);
+  else
+    log_debug("%u fluid particle(s) left the domain at step %ld, t = %.9g s: dropped (%ld so far)",
+              out, sim->step, sim->time, sim->escaped);
+  CLSPH_TRY(sim_sort(sim)); /* grid.cl bins them last */
+  CLSPH_ASSERT(sim->ps.n >= out);
+  sim->ps.n -= out;
+  sim->grid.sorted = sim->ps.n;
+done:
+  return st;
+}
+
 enum clsph_status sim_check_flags(struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
-  cl_uint f[3] = {0, 0, 0};
-  float depth = 0.0f; /* the deepest crossing of the step, m */
+  cl_uint f[4] = {0, 0, 0, 0}; /* flags.h: bits, behind walls, deepest, left the domain */
+  float depth = 0.0f;          /* the deepest crossing of the step, m */
   /* the step-end maxima come with the flags: one wait */
   CLSPH_TRY(sim_deferred_enqueue(sim));
   CLSPH_TRY(kern_read(sim->dev, sim->d_flags, sizeof f, f));
   sim_deferred_finish(sim);
   cl_uint flags = f[0];
+  const cl_uint out = f[3];
   if (flags & 8u) { /* counted; fatal only when deeper than checks.wall_depth dr */
     memcpy(&depth, &f[2], sizeof depth);
     if (sim->wall_steps++ == 0) {
@@ -46,7 +89,9 @@ enum clsph_status sim_check_flags(struct sim *sim)
     }
     if ((long)f[1] > sim->wall_most) sim->wall_most = (long)f[1];
     sim->wall_depth_max = fmax(sim->wall_depth_max, (double)depth / sim->scene->dr);
-    const cl_uint zeros[3] = {flags & ~8u, 0, 0};
+  }
+  if ((flags & 8u) || out > 0) {
+    const cl_uint zeros[4] = {flags & ~8u, 0, 0, 0};
     CLSPH_TRY(kern_write(sim->dev, sim->d_flags, sizeof zeros, zeros));
     flags &= ~8u;
   }
@@ -56,14 +101,13 @@ enum clsph_status sim_check_flags(struct sim *sim)
              sim->time, nan_hint);
     st = sim_fail(sim, "nan");
   } else if (flags & 4u) {
-    snprintf(
-        sim->status, sizeof sim->status,
-        "blow-up: a particle left the domain at step %ld, t = %.9g s; no setting controls this "
-        "check: look in blowup.h5 (the state that failed) for fluid thrown over a wall or out "
-        "through a gap "
-        "(fluid particles must stay within dr of the domain { } box, but on the side gravity "
-        "points away from)",
-        sim->step, sim->time);
+    snprintf(sim->status, sizeof sim->status,
+             "blow-up: a particle left the cell grid at step %ld, t = %.9g s; no setting "
+             "controls this check: look in blowup.h5 (the state that failed) for a wall "
+             "particle moved out of the domain, or fluid thrown out within one step (the grid "
+             "reaches several dr beyond the domain { } box, but on the side gravity points "
+             "away from)",
+             sim->step, sim->time);
     st = sim_fail(sim, "escaped");
   } else if (flags & 2u) {
     snprintf(
@@ -82,6 +126,8 @@ enum clsph_status sim_check_flags(struct sim *sim)
              (double)depth / sim->scene->dr, f[1], sim->step, sim->time,
              sim->scene->checks.wall_depth);
     st = sim_fail(sim, "wall_crossing");
+  } else if (out > 0) {
+    st = drop_escaped(sim, out);
   }
 done:
   return st;

@@ -1,30 +1,43 @@
 /* domain.c: the fluid stays in the scene's domain: a fluid particle more than a spacing beyond the
- * domain's box on a non-periodic axis (but on the side gravity points away from) raises the
- * escape flag, which the time loop reads with the others (kernels/common/domain.cl). */
+ * domain's box on a non-periodic axis (but on the side gravity points away from), or beyond it
+ * at all while above that side (over the rim of the walls on the domain's edge) has left it:
+ * domain.cl marks it and counts it in d_flags[3], and the time loop drops it or stops
+ * (host/sim/checks.c, run { checks = { escaped } }). */
 #include <math.h>
 
 #include "clsph_config.h"
 #include "kern.h"
 #include "sim.h"
 
+void sim_open_sides(const struct scene *s, int open_lo[3], int open_hi[3])
+{
+  const double g = hypot(hypot(s->gravity[0], s->gravity[1]), s->gravity[2]);
+  for (int a = 0; a < 3; ++a) {
+    /* up: −g·e_a > g/2 for the upper side */
+    open_hi[a] = a < s->dim && !s->periodic[a] && g > 0.0 && -s->gravity[a] > 0.5 * g;
+    open_lo[a] = a < s->dim && !s->periodic[a] && g > 0.0 && s->gravity[a] > 0.5 * g;
+  }
+}
+
 enum clsph_status sim_domain_check(struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
-  const double g = hypot(hypot(s->gravity[0], s->gravity[1]), s->gravity[2]);
   real4 lo = {{0}}, hi = {{0}};
+  int up_lo[3], up_hi[3];
+  sim_open_sides(s, up_lo, up_hi);
+  cl_uint open = 0;
   for (int a = 0; a < s->dim; ++a) {
-    /* the side gravity points away from is open (up: −g·e_a > g/2 for the upper side) */
-    const int up_hi = g > 0.0 && -s->gravity[a] > 0.5 * g,
-              up_lo = g > 0.0 && s->gravity[a] > 0.5 * g;
-    lo.s[a] = up_lo ? (real)-HUGE_VAL : (real)(s->lo[a] - s->dr);
-    hi.s[a] = up_hi ? (real)HUGE_VAL : (real)(s->hi[a] + s->dr);
+    lo.s[a] = (real)s->lo[a];
+    hi.s[a] = (real)s->hi[a];
+    open |= (up_hi[a] ? 1u << a : 0u) | (up_lo[a] ? 16u << a : 0u);
   }
+  const real margin = (real)s->dr;
   cl_uint n = (cl_uint)sim->ps.n;
   cl_mem pos = pset_mem(&sim->ps, sim->f_pos), kind = pset_mem(&sim->ps, sim->f_kind);
   if (n == 0) goto done;
   CLSPH_TRY(KERN_SET(sim->k_domain, KARG(n), KARG(pos), KARG(kind), KARG(lo), KARG(hi),
-                     KARG(sim->d_flags)));
+                     KARG(margin), KARG(open), KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, sim->k_domain, sim->ps.n, NULL));
 done:
   return st;

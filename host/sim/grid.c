@@ -12,8 +12,13 @@ enum clsph_status grid_define(const struct grid_spec *spec, struct prog_opts *o)
   static const char *const names[] = {"PERIODIC_X", "PERIODIC_Y", "PERIODIC_Z"};
   CLSPH_TRY(prog_opts_define_int(o, "DIM", spec->dim));
   CLSPH_TRY(prog_opts_define_int(o, "GRID_SUB", spec->sub > 0 ? spec->sub : GRID_SUB_DEFAULT));
-  for (int a = 0; a < spec->dim; ++a)
+  int open = 0;
+  for (int a = 0; a < spec->dim; ++a) {
     if (spec->periodic[a]) CLSPH_TRY(prog_opts_define_int(o, names[a], 1));
+    if (!spec->periodic[a])
+      open |= (spec->open_hi[a] ? 1 << a : 0) | (spec->open_lo[a] ? 16 << a : 0);
+  }
+  if (open) CLSPH_TRY(prog_opts_define_int(o, "GRID_OPEN", open));
 done:
   return st;
 }
@@ -107,7 +112,7 @@ done:
 }
 
 enum clsph_status grid_sort(struct grid *g, const struct dev *dev, size_t n, cl_mem d_pos,
-                            cl_mem d_flags)
+                            cl_mem d_kind, cl_mem d_flags)
 {
   enum clsph_status st = CLSPH_OK;
   const cl_uint zero = 0;
@@ -116,11 +121,13 @@ enum clsph_status grid_sort(struct grid *g, const struct dev *dev, size_t n, cl_
   cl_uint items = (cl_uint)(g->ncells + 1);
   cl_uint blocks = (items + GRID_SCAN_BLOCK - 1) / GRID_SCAN_BLOCK;
   cl_uint ncells = (cl_uint)g->ncells;
+  cl_uint use_kind = d_kind != NULL;
+  cl_mem kind = use_kind ? d_kind : d_pos; /* unread without kinds */
 
   /* bin: cell and rank of each particle */
   CLSPH_TRY(kern_fill(dev, g->d_count, &zero, sizeof zero, items * sizeof(cl_uint)));
-  CLSPH_TRY(KERN_SET(g->k_bin, KARG(np), KARG(g->geom), KARG(d_pos), KARG(g->d_cell),
-                     KARG(g->d_rank), KARG(g->d_count), KARG(d_flags)));
+  CLSPH_TRY(KERN_SET(g->k_bin, KARG(np), KARG(g->geom), KARG(d_pos), KARG(kind), KARG(use_kind),
+                     KARG(g->d_cell), KARG(g->d_rank), KARG(g->d_count), KARG(d_flags)));
   CLSPH_TRY(kern_launch(dev, g->k_bin, n, &g->t_bin));
   /* exclusive scan of the counts into start */
   CLSPH_TRY(KERN_SET(g->k_scan_blocks, KARG(items), KARG(g->d_count), KARG(g->d_block)));

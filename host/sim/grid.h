@@ -11,11 +11,13 @@
 
 /** What the user asks for: a box, the support radius, periodic axes. */
 struct grid_spec {
-  int dim;             /* 2 or 3 */
-  double lo[3];        /* lower corner, m */
-  double hi[3];        /* upper corner, m (the period of a periodic axis is hi − lo) */
-  double support;      /* support radius of the smoothing function, m */
-  int periodic[3];     /* 1 for a periodic axis */
+  int dim;         /* 2 or 3 */
+  double lo[3];    /* lower corner, m */
+  double hi[3];    /* upper corner, m (the period of a periodic axis is hi − lo) */
+  double support;  /* support radius of the smoothing function, m */
+  int periodic[3]; /* 1 for a periodic axis */
+  int open_lo[3];  /* 1 for a side open to splashes (clamped, not reported; grid.cl) */
+  int open_hi[3];
   int sub;             /* cells per support radius (0: GRID_SUB_DEFAULT) */
   struct smoothing sm; /* the function the neighbour kernels evaluate (its support may be less than
                           the search radius above, which can carry a skin) */
@@ -49,7 +51,7 @@ struct grid {
   size_t sorted; /* particles the last grid_sort binned (the start table's total) */
   size_t cap;    /* particles the per-particle buffers hold */
   cl_kernel k_bin, k_scan_blocks, k_scan_top, k_scan_apply, k_scatter, k_order, k_gather;
-  cl_mem d_count; /* ncells + 1 counts */
+  cl_mem d_count; /* ncells + 1 counts (the last: particles that left, grid.cl) */
   cl_mem d_block; /* block sums of the scan */
   cl_mem d_start; /* ncells + 1: cell c holds sorted particles start[c] .. start[c+1] − 1 */
   cl_mem d_cell;  /* cell of each particle (unsorted order) */
@@ -65,9 +67,11 @@ enum clsph_status grid_define(const struct grid_spec *spec, struct prog_opts *o)
 enum clsph_status grid_create(const struct dev *dev, cl_program prog, const struct grid_spec *spec,
                               size_t cap, struct grid *out);
 /** @brief Bin the n particles at d_pos, sort them by cell: fills d_start and d_perm. Particles
- *  outside a non-periodic axis are clamped into the edge cell and raise CLSPH_FLAG_ESCAPED. */
+ *  outside a non-periodic axis are clamped into the edge cell and raise CLSPH_FLAG_ESCAPED (but
+ *  on an open side). With d_kind (may be NULL), particles of kind CLSPH_KIND_OUT sort after all
+ *  the others (the extra cell ncells). */
 enum clsph_status grid_sort(struct grid *g, const struct dev *dev, size_t n, cl_mem d_pos,
-                            cl_mem d_flags);
+                            cl_mem d_kind, cl_mem d_flags);
 /** Fields one grid_gather launch reorders. */
 #define GRID_GATHER_FIELDS 8
 /** @brief dst[f][k] = src[f][perm[k]] for `count` <= GRID_GATHER_FIELDS fields, field f of

@@ -313,6 +313,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   sim.gspec.sm = sim.sm;
   sim.gspec.support = sim.sm.support * (1.0 + sim.scheme->support_skin * fmax(scene->cfl, 1.0));
   double margin = (layers + 4) * scene->dr + sim.sm.support;
+  sim_open_sides(scene, sim.gspec.open_lo, sim.gspec.open_hi); /* splashes clamp, grid.cl */
   for (int a = 0; a < dim; ++a) {
     sim.gspec.periodic[a] = scene->periodic[a];
     sim.gspec.lo[a] = scene->lo[a] - (scene->periodic[a] ? 0.0 : margin);
@@ -336,10 +337,12 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(build_program(&sim));
   CLSPH_TRY(add_fields(&sim));
   CLSPH_TRY(grid_create(dev, sim.prog, &sim.gspec, sim.ps.cap, &sim.grid));
-  /* the bits, the count of particles behind a wall and the deepest (flags.h) */
-  const cl_uint zeros[3] = {0, 0, 0};
+  /* the bits, the count of particles behind a wall and the deepest, the fluid that left
+   * (flags.h) */
+  const cl_uint zeros[4] = {0, 0, 0, 0};
   CLSPH_TRY(kern_buffer(dev, sizeof zeros, zeros, &sim.d_flags, "flags"));
   sim.wall_first_step = -1;
+  sim.escaped_first_step = -1;
   sim.open_waiting = sim.open_waiting_max = -1;
   CLSPH_TRY(prog_kernel(sim.prog, "probe_sample", &sim.k_probe));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_max_speed", &sim.k_max_speed));
@@ -374,8 +377,8 @@ done:
 enum clsph_status sim_sort(struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
-  CLSPH_TRY(
-      grid_sort(&sim->grid, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos), sim->d_flags));
+  CLSPH_TRY(grid_sort(&sim->grid, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos),
+                      pset_mem(&sim->ps, sim->f_kind), sim->d_flags));
   CLSPH_TRY(pset_reorder(&sim->ps, &sim->grid, sim->dev));
   ++sim->sorts;
   cl_uint n = (cl_uint)sim->ps.n;

@@ -115,9 +115,13 @@ struct sim {
   long wall_steps, wall_most, wall_first_step;
   double wall_first_time;
   double wall_depth_max; /* the deepest of those crossings, in units of dr */
-  cl_kernel k_health;    /* reduction: kinetic energy, volume and spacing of the fluid */
-  cl_mem d_health;       /* its per-work-group results */
-  double u_ref;          /* the scene's velocity scale of the energy check, m/s (0: no check) */
+  /* fluid particles that left the domain (domain.cl) and were dropped from the run, over the
+   * whole run (a restart's included), the first step that lost one (−1: none) and its time */
+  long escaped, escaped_first_step;
+  double escaped_first_time;
+  cl_kernel k_health; /* reduction: kinetic energy, volume and spacing of the fluid */
+  cl_mem d_health;    /* its per-work-group results */
+  double u_ref;       /* the scene's velocity scale of the energy check, m/s (0: no check) */
   /* health checks of this run (sim_check_health), the whole-run state a restart continues:
    * health_checks     checks done;
    * energy_ratio_max  the largest kinetic energy of the fluid over ½ M U² (U = u_ref);
@@ -148,7 +152,9 @@ enum clsph_status sim_sort(struct sim *sim);
 /** @brief Read the error flags; a raised flag ends the run with a reason in sim->status and its
  *  class in sim->failure, except CLSPH_FLAG_WALL (a fluid particle behind a wall), which is
  *  counted and cleared, and ends the run only when the particle is more than the scene's
- *  checks.wall_depth dr behind the wall. */
+ *  checks.wall_depth dr behind the wall. Fluid that left the domain (sim_domain_check) is
+ *  counted and dropped: sorted past the other particles, which then number fewer (sim->ps.n);
+ *  the run ends when more than checks.escaped of the fluid has left. */
 enum clsph_status sim_check_flags(struct sim *sim);
 /** @brief The health checks (scene checks): particle clustering, the fraction of the fluid
  *  whose nearest fluid neighbour is closer than checks.cluster_h h (h the smoothing length),
@@ -162,9 +168,12 @@ enum clsph_status sim_fail(struct sim *sim, const char *failure);
 /** @brief Flow-rate control (Leroy et al. 2014 eqs 67-68): set the x body force for a step of
  *  length dt from the slice velocity; one row to `log` (flow_control.csv) when not NULL. */
 enum clsph_status sim_flow_control(struct sim *sim, double dt, FILE *log);
-/** @brief Raise the escape flag (read by sim_check_flags) when a fluid particle is more than dr
- *  beyond the domain's box on a non-periodic axis, but for the side gravity points away from. */
+/** @brief Mark and count (for sim_check_flags) the fluid particles more than dr beyond the
+ *  domain's box on a non-periodic axis, but for the side gravity points away from. */
 enum clsph_status sim_domain_check(struct sim *sim);
+/** @brief The sides gravity points away from (more than half of it along the axis), open to
+ *  splashes: 1 per axis for its lower and upper side; 0 for periodic and absent axes. */
+void sim_open_sides(const struct scene *s, int open_lo[3], int open_hi[3]);
 /** @brief Work-groups of 64 of a reduction over n particles: at most 64, so a few dozen partial
  *  results come back to the host per reduction (reduce.cl). */
 size_t sim_reduce_groups(size_t n);

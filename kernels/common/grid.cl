@@ -9,6 +9,13 @@
  *                     depend on the order the atomics ran in (bit-for-bit reproducible runs)
  *   grid_gather       applies perm to up to 8 fields at once (dst[new] = src[perm[new]])
  * Periodic axes (-D PERIODIC_X/Y/Z=1) wrap cells and shift the image: r_ij = r_i − (r_j + shift).
+ * An open side (-D GRID_OPEN = bits: 1 << a the upper side of axis a, 16 << a the lower; the side
+ * gravity points away from, host/sim/domain.c) clamps a particle beyond it into the last layer of
+ * cells without reporting it: a splash may rise above the grid and fall back (the distances stay
+ * true, so it has neighbours only where it really does).
+ * A particle of kind CLSPH_KIND_OUT (a fluid particle that left the domain, kernels/common/
+ * domain.cl) is binned to the extra cell ncells, after every real one: the sort moves it to the
+ * end of the particle arrays, where the host drops it (host/sim/checks.c).
  * A periodic axis needs at least 2 GRID_SUB + 1 cells (the host checks), and positions on it must
  * lie in [lo, lo + len) (the time integration wraps them). */
 
@@ -20,6 +27,9 @@ struct grid {
   int4 n;           /* cells per axis (1 on unused axes); .w = total number of cells */
 };
 
+#ifndef GRID_OPEN
+#define GRID_OPEN 0
+#endif
 #ifndef PERIODIC_X
 #define PERIODIC_X 0
 #endif
@@ -40,16 +50,24 @@ struct grid {
 #define REALV_Z(v) (v).z
 #endif
 
-/* Cell coordinate along one axis: wrapped when periodic, clamped (and reported) otherwise. */
-int grid_axis(real x, real lo, real inv_cell, int n, int periodic, int *escaped)
+/* Cell coordinate along one axis: wrapped when periodic, clamped otherwise (and reported, but on
+ * an open side: open bit 1 the upper, 2 the lower). */
+int grid_axis(real x, real lo, real inv_cell, int n, int periodic, int open, int *escaped)
 {
-  int c = (int)floor((x - lo) * inv_cell);
+  const real u = (x - lo) * inv_cell;
+  int c;
   if (periodic) {
+    c = (int)floor(u);
     c %= n;
     if (c < 0) c += n;
-  } else if (c < 0 || c >= n) {
-    *escaped = 1;
-    c = clamp(c, 0, n - 1);
+  } else if (u < R(0.0)) {
+    if (!(open & 2)) *escaped = 1;
+    c = 0;
+  } else if (u >= (real)n) {
+    if (!(open & 1)) *escaped = 1;
+    c = n - 1;
+  } else {
+    c = min((int)u, n - 1);
   }
   return c;
 }
@@ -57,10 +75,13 @@ int grid_axis(real x, real lo, real inv_cell, int n, int periodic, int *escaped)
 int4 grid_coords(const struct grid *g, realv x, int *escaped)
 {
   int4 c = (int4)(0, 0, 0, 0);
-  c.x = grid_axis(REALV_X(x), g->lo.x, g->inv_cell.x, g->n.x, PERIODIC_X, escaped);
-  c.y = grid_axis(REALV_Y(x), g->lo.y, g->inv_cell.y, g->n.y, PERIODIC_Y, escaped);
+  c.x = grid_axis(REALV_X(x), g->lo.x, g->inv_cell.x, g->n.x, PERIODIC_X,
+                  (GRID_OPEN & 1) | ((GRID_OPEN >> 3) & 2), escaped);
+  c.y = grid_axis(REALV_Y(x), g->lo.y, g->inv_cell.y, g->n.y, PERIODIC_Y,
+                  ((GRID_OPEN >> 1) & 1) | ((GRID_OPEN >> 4) & 2), escaped);
 #if DIM == 3
-  c.z = grid_axis(REALV_Z(x), g->lo.z, g->inv_cell.z, g->n.z, PERIODIC_Z, escaped);
+  c.z = grid_axis(REALV_Z(x), g->lo.z, g->inv_cell.z, g->n.z, PERIODIC_Z,
+                  ((GRID_OPEN >> 2) & 1) | ((GRID_OPEN >> 5) & 2), escaped);
 #endif
   return c;
 }
@@ -222,14 +243,19 @@ int neigh_next(struct neigh_iter *it, const struct grid *g, __global const uint 
 
 /* ---- building the list ---- */
 
+/* kind: the particles' kinds where use_kind (the fluid's grid), else unread */
 __kernel void grid_bin(const uint n, const struct grid g, __global const realv *pos,
-                       __global uint *cell, __global uint *rank, __global uint *count,
-                       __global uint *flags)
+                       __global const uint *kind, const uint use_kind, __global uint *cell,
+                       __global uint *rank, __global uint *count, __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
   int escaped = 0;
   int id = grid_cell_id(&g, grid_coords(&g, pos[i], &escaped));
+  if (use_kind && kind[i] == CLSPH_KIND_OUT) {
+    id = g.n.w; /* the extra cell: sorted last, then dropped */
+    escaped = 0;
+  }
   if (escaped) flags_raise(flags, CLSPH_FLAG_ESCAPED);
   cell[i] = (uint)id;
   rank[i] = atomic_inc(&count[id]);

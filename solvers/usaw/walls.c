@@ -201,7 +201,7 @@ enum clsph_status usaw_walls_create(const struct dev *dev, cl_program prog,
   CLSPH_TRY(kern_buffer(dev, sizeof zeros, zeros, &w.d_flags, "segment flags"));
   CLSPH_TRY(prog_kernel(prog, "usaw_gamma", &w.k_gamma));
   if (n > 0) {
-    CLSPH_TRY(grid_sort(&w.g, dev, n, pset_mem(&w.ps, w.f_mid), w.d_flags));
+    CLSPH_TRY(grid_sort(&w.g, dev, n, pset_mem(&w.ps, w.f_mid), NULL, w.d_flags));
     CLSPH_TRY(pset_reorder(&w.ps, &w.g, dev));
   } else {
     CLSPH_TRY(kern_fill(dev, w.g.d_start, &zero, sizeof zero, (w.g.ncells + 1) * sizeof zero));
@@ -375,7 +375,7 @@ enum clsph_status usaw_walls_turn(struct usaw_walls *w, struct sim *sim, double 
                      KARG(w->d_seg_turn), KARG(w->d_seg0), KARG(w->d_rot), KARG(rt), KARG(a),
                      KARG(b), KARG(nn), KARG(mid)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_turn_segments, w->ps.n, NULL));
-  CLSPH_TRY(grid_sort(&w->g, sim->dev, w->ps.n, mid, w->d_flags));
+  CLSPH_TRY(grid_sort(&w->g, sim->dev, w->ps.n, mid, NULL, w->d_flags));
   CLSPH_TRY(pset_reorder(&w->ps, &w->g, sim->dev));
   w->t_now = t;
 done:
@@ -389,12 +389,12 @@ enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
 {
   enum clsph_status st = CLSPH_OK;
   real *p = malloc(4 * n * sizeof *p);
-  cl_uint *inv = malloc(n * sizeof *inv);
+  cl_uint *inv = malloc(geo->n * sizeof *inv); /* by original index: the walls' come last */
   CLSPH_CHECK(p != NULL && inv != NULL, CLSPH_E_NOMEM, "out of memory");
   real *e = p + n; /* strain: xx, xy, yy per particle */
   CLSPH_TRY(kern_read(dev, d_p, n * sizeof *p, p));
   CLSPH_TRY(kern_read(dev, d_strain, 3 * n * sizeof *e, e));
-  CLSPH_TRY(kern_read(dev, d_inv, n * sizeof *inv, inv));
+  CLSPH_TRY(kern_read(dev, d_inv, geo->n * sizeof *inv, inv));
   memset(f, 0, sizeof *f);
   double c[2];
   scene_group_centre(sc, group, c);

@@ -105,7 +105,7 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
     goto fail;
 
   /* sort, keep the permutation, reorder */
-  if (grid_sort(&g, dev, n, pset_mem(&ps, i_pos), d_flags) ||
+  if (grid_sort(&g, dev, n, pset_mem(&ps, i_pos), NULL, d_flags) ||
       kern_read(dev, g.d_perm, n * sizeof(cl_uint), perm) ||
       kern_read(dev, g.d_start, (g.ncells + 1) * sizeof(cl_uint), start) ||
       pset_reorder(&ps, &g, dev) ||
@@ -173,12 +173,12 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
 
   /* a second sort of sorted particles is the identity; sorting the original again repeats perm */
   int not_identity = 0, not_repeat = 0;
-  if (grid_sort(&g, dev, n, pset_mem(&ps, i_pos), d_flags) ||
+  if (grid_sort(&g, dev, n, pset_mem(&ps, i_pos), NULL, d_flags) ||
       kern_read(dev, g.d_perm, n * sizeof(cl_uint), perm2))
     goto fail;
   for (size_t i = 0; i < n; ++i) not_identity += perm2[i] != i;
   if (kern_write(dev, pset_mem(&ps, i_pos), n * stride * sizeof(real), pos0) ||
-      grid_sort(&g, dev, n, pset_mem(&ps, i_pos), d_flags) ||
+      grid_sort(&g, dev, n, pset_mem(&ps, i_pos), NULL, d_flags) ||
       kern_read(dev, g.d_perm, n * sizeof(cl_uint), perm2))
     goto fail;
   for (size_t i = 0; i < n; ++i) not_repeat += perm2[i] != perm[i];

@@ -123,7 +123,7 @@ static int run_ops(const struct dev *dev, const struct lattice *lat, const struc
   }
   CLSPH_TRY(pset_add(&ps, dev, "u", vs * sizeof(real), a, &i_u));
 
-  CLSPH_TRY(grid_sort(&g, dev, n, pset_mem(&ps, i_pos), d_flags));
+  CLSPH_TRY(grid_sort(&g, dev, n, pset_mem(&ps, i_pos), NULL, d_flags));
   CLSPH_TRY(pset_reorder(&ps, &g, dev));
   cl_mem P = pset_mem(&ps, i_pos), V = pset_mem(&ps, i_vol);
   const size_t s1 = n * sizeof(real), s2 = vs * n * sizeof(real);

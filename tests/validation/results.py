@@ -182,20 +182,26 @@ def lobovsky_section(runs):
            "experiment's event 5; its repetitions scatter by ±10% in the impact's mean pressure "
            "and 0.6-0.9 on the plateau (Lobovsky et al. sec 4). The peak is the largest sample "
            "within 0.3 of the impact: in a weakly-compressible run one particle striking the "
-           "face. Front: (x − L)/H at t* = t √(g/H) (Ritter's ideal front: 2 t*).", "",
-           "| scheme | n (H/dr) | status | impact t* | impact error | impact mean ratio "
-           "| peak ratio | plateau [3, 4] ratio | plateau [4, 5] ratio | RMS p* [2.6, 5.5] "
-           "| front t* = 1 / 1.5 / 2 | steps (sub-steps) | wall s |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "face. Front: (x − L)/H at t* = t √(g/H) (Ritter's ideal front: 2 t*). Dropped: the "
+           "fluid particles thrown out of the tank (over its 1 m walls), dropped from the run and "
+           "counted, and the time of the first (summary.json escaped; a run without the figure "
+           "predates the drop, when the first stopped the run).", "",
+           "| scheme | n (H/dr) | status | dropped (first t, s) | impact t* | impact error "
+           "| impact mean ratio | peak ratio | plateau [3, 4] ratio | plateau [4, 5] ratio "
+           "| RMS p* [2.6, 5.5] | front t* = 1 / 1.5 / 2 | steps (sub-steps) | wall s |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for s in rows:
         m = s.get("metrics", {})
         sub = f" ({s['substeps']:g})" if s.get("substeps") else ""
         front = " / ".join(f(m, k, ".2f") for k in ("front_x_star_t1", "front_x_star_t1p5",
                                                      "front_x_star_t2"))
         err = f"{100 * m['impact_time_error']:+.1f}%" if "impact_time_error" in m else "–"
+        ex = s.get("escaped")
+        dropped = "–" if ex is None else (
+            f"{ex['particles']:g} ({ex['first_time']:.3f})" if ex.get("particles", 0) > 0 else "0")
         out.append(f"| {s['scheme']} ({s['precision']}; {variant(s)}) "
                    f"| {s['parameters'].get('n', 0):g} "
-                   f"| {s['status']} | {f(m, 'impact_t_star', '.3f')} | {err} "
+                   f"| {s['status']} | {dropped} | {f(m, 'impact_t_star', '.3f')} | {err} "
                    f"| {f(m, 'impact_mean_ratio')} | {f(m, 'peak_ratio')} "
                    f"| {f(m, 'plateau_ratio')} | {f(m, 'plateau2_ratio')} | {f(m, 'rms_p_star')} "
                    f"| {front} | {s['steps']:g}{sub} | {s['wall_seconds']:.1f} |")
