@@ -228,7 +228,7 @@ clsph_add_test(restart_refused LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TA
 clsph_cli_test(run_blowup_escape RC 1
                ARGS run ${CMAKE_SOURCE_DIR}/cases/free_fall.lua --set t_end=3 --set dr=0.05
                     --quiet --overwrite --out ${CMAKE_CURRENT_BINARY_DIR}/runs/blowup
-               REGEX "blow-up: a particle left the domain at step [0-9]+")
+               REGEX "blow-up: [0-9]+ fluid particle\\(s\\), [0-9.]+% of the fluid, left the domain by step [0-9]+")
 clsph_cli_test(run_needs_case ARGS run RC 2 REGEX "run: name the case script")
 
 # isph-usaw: the hydrostatic tank at a coarse resolution (20 x 20 particles, 1 s). The paper's
@@ -515,7 +515,7 @@ clsph_failure_test(health_wall_crossing_corners ${CMAKE_SOURCE_DIR}/cases/cavity
 # checks.escaped of it (1%) has gone, the run stops as escaped: the free-falling block through the
 # floor of its box (12 of its 96 particles in the first step that loses any, in both precisions).
 clsph_failure_test(health_escaped ${CMAKE_SOURCE_DIR}/cases/free_fall.lua escaped
-                   "[0-9]+ fluid particle\\(s\\), [0-9.]+% of the fluid, left the domain by step [0-9]+, t = [0-9.]+ s \\(the first at step [0-9]+\\), more than run { checks = { escaped = 0.01 } } lets go: look in blowup.h5"
+                   "[0-9]+ fluid particle\\(s\\), [0-9.]+% of the fluid, left the domain by step [0-9]+, t = [0-9.]+ s \\(the first at step [0-9]+\\), more than run { checks = { escaped = 0.01 } } lets go; look in blowup.h5"
                    SETS t_end=3 dr=0.05)
 # Escape: a fluid particle more than dr beyond the domain's box has left (domain.cl), at
 # t = 0.575 s here (the block's front row, 4 of its 16), long before the cell grid's edge; with

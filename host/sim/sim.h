@@ -136,7 +136,7 @@ struct sim {
                          * case's sample(), checkpoints), each timed from an idle device, s */
   unsigned long digest; /* geometry_digest of the scene: checkpoints record it */
   double mem_estimate;  /* device memory the run needs, estimated at set-up, bytes */
-  char status[512];     /* "ok" or why the run stopped */
+  char status[1024];    /* "ok" or why the run stopped */
   char failure[32];     /* "none", or the class of the failure (summary.json "failure"): "nan",
                          * "escaped", "neighbours", "wall_crossing", "solver", "clustering",
                          * "energy", "dt_collapse", "dt_bound", "flow_control", "metrics",
