@@ -522,6 +522,10 @@ clsph_failure_test(health_escaped ${CMAKE_SOURCE_DIR}/cases/free_fall.lua escape
 # no walls and no periodic axis the scene is refused before it runs.
 clsph_failure_test(health_escaped_dr ${CASE_DIR}/escape.lua escaped
                    "4 fluid particle\\(s\\), 25% of the fluid, left the domain by step [0-9]+, t = 0\\.(5[78]|6)")
+# The whole fluid at once (one column of 4): the message says it was thrown out in one step.
+clsph_failure_test(health_escaped_burst ${CASE_DIR}/escape.lua escaped
+                   "4 fluid particle\\(s\\), 100% of the fluid, left the domain by step [0-9]+, .* 4 of them in this step: the fluid thrown out at once"
+                   SETS width=0.05)
 # Water spilling over the 0.22 m walls of an open tank (tests/case/spill.lua, a 0.2 m column,
 # dr = 0.01 m, 200 particles, to 0.6 s): isph-usaw drops 2 particles of the run-up jet (at 0.42
 # and 0.54 s; 1 in float) and runs on, every missing particle counted, none left outside the

@@ -15,7 +15,9 @@
  *     αρ0(1 − σ0)/Δt², which grows as Δt shrinks.
  *     The pairs are those of the neighbour grid at x^n: its cells cover the support plus the skin
  *     (support_skin), more than two moves of a step bounded by 0.25 h/U each apart.
- *   free surface (A12, MPS practice; S: β ≈ 0.97): a Dirichlet row where s*_i / σ0 < β_fs. The
+ *   free surface (A12, MPS practice; S: β ≈ 0.97): a Dirichlet row where s*_i / σ0 < β_fs, and
+ *     where fewer than fs_min particles lie within the support at x* (spray pressed into a clump
+ *     reads a full density: isph_stabilized.c says why). The
  *     dummies count in s*, so fluid next to a wall keeps a full support. With the option
  *     surface_detection = "scan" the row must also have an empty scan region (Marrone et al.
  *     2010, stab_scan_empty): a lattice cut by a curved or slanted wall leaves holes between the
@@ -110,8 +112,8 @@ uint stab_scan_empty(uint i, realv xs, realv gss, const struct grid *gg,
  * d0 p_i = d0 p_s, ppe.cl; the dummies' rows come from walls.cl and ppe.cl) */
 __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const realv *ustar,
                           __global const realv *wall_vel, const real dt, const real inv_sigma0,
-                          const real beta_fs, const uint scan, const real alpha, const real rho0,
-                          const realv accel, const real fs_offset, const real d0,
+                          const real beta_fs, const uint fs_min, const uint scan, const real alpha,
+                          const real rho0, const realv accel, const real fs_offset, const real d0,
                           __global real *rho_star, __global uint *free_surface,
                           __global uint *dirichlet, __global real *div, __global real *rhs,
                           __global uint *flags)
@@ -128,6 +130,7 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
   }
   const realv x = pos[i], u_i = ustar[i], xs = x + dt * u_i;
   real s = R(0.0), d = R(0.0);
+  uint near = 0u;              /* the other particles within the support at x* */
   realv gs = (realv)(R(0.0));  /* Σ V ∇W: −gs points out of the fluid */
   realv gss = (realv)(R(0.0)); /* the same at x*, for the scan */
   struct neigh_iter it;
@@ -135,7 +138,10 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
     realv rs = xs - (stab_xstar(j, pos, kind, ustar, wall_vel, dt) + it.shift);
     const real rsl = sqrt(dot(rs, rs));
     s += vol[j] * smoothing_w(g.sm, rsl); /* j == i included: W(0) */
-    if (j != i && rsl < g.sm.support) gss += vol[j] * smoothing_f(g.sm, rsl) * rs;
+    if (j != i && rsl < g.sm.support) {
+      gss += vol[j] * smoothing_f(g.sm, rsl) * rs;
+      ++near;
+    }
     realv r = x - (pos[j] + it.shift);
     real r2 = dot(r, r);
     if (r2 >= g.sm.support2 || j == i) continue;
@@ -144,8 +150,10 @@ __kernel void stab_source(OP_ARGS, __global const uint *kind, __global const rea
     gs += vol[j] * gw;
   }
   const real ratio = s * inv_sigma0;
-  const uint fs = ratio < beta_fs && (scan == 0u || stab_scan_empty(i, xs, gss, &g, cell_start, pos,
-                                                                    kind, ustar, wall_vel, dt));
+  const uint fs =
+      near < fs_min ||
+      (ratio < beta_fs &&
+       (scan == 0u || stab_scan_empty(i, xs, gss, &g, cell_start, pos, kind, ustar, wall_vel, dt)));
   /* a free-surface particle: the pressure fs_offset inside the surface, −ρ0 a·n fs_offset along
    * its outward normal n (≥ 0) */
   const real gn = length(gs);

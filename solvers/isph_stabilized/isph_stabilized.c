@@ -64,6 +64,7 @@ struct stab {
   double d0;      /* the Laplacian's diagonal on the lattice: the scale of the non-fluid rows */
   double alpha;   /* α of the density-invariance term (A12) */
   double beta_fs; /* free surface where s* / σ0 < β_fs */
+  cl_uint fs_min; /* or where fewer than this many particles lie within the support at x* */
   cl_uint scan;   /* 1: and where the scan region is empty (surface_detection = "scan") */
   int dynamic;    /* pressure_form = "dynamic": the pressure equation's unknown is p − ρ0 a·x */
   double c_shift; /* particle shifting's C (shift.cl; 0: off, the paper's) */
@@ -198,6 +199,22 @@ static enum clsph_status read_options(const struct sim *sim, struct stab *b)
   b->beta_fs = sc->dim == 3 ? 0.9 : 0.97;
   CLSPH_TRY(option_number(sc, "surface_threshold", 0.8, 0.995, "the free-surface threshold β_fs",
                           " (free surface where ρ* / ρ0 < β_fs)", &b->beta_fs));
+  /* Spray: a clump of a few particles pressed together reads a full density (four at 0.35 dr,
+   * the n = 80 dam break's run-up jet at t = 0.63 s: s* / σ0 0.97-1.005) and took interior rows
+   * with no surface row nearby, a system the solve could not meet (its residual rose to 1e107 in
+   * 1000 iterations and the step threw the fluid out). A particle with fewer neighbours within
+   * the support than a quarter of a full lattice support's (2-D, h = 1.2 dr: 5 of 20; a flat
+   * surface has 12, a right-angled corner of it 7) is free surface whatever its density. */
+  {
+    const double reach = sim->sm.support / sc->dr;
+    const int m = (int)ceil(reach);
+    long full = 0;
+    for (int i = -m; i <= m; ++i)
+      for (int j = -m; j <= m; ++j)
+        for (int k = sc->dim == 3 ? -m : 0; k <= (sc->dim == 3 ? m : 0); ++k)
+          if ((i || j || k) && (double)(i * i + j * j + k * k) < reach * reach) ++full;
+    b->fs_min = (cl_uint)(full / 4);
+  }
   static const char *const detect_names[] = {"density", "scan", NULL};
   int scan = 0;
   CLSPH_TRY(option_choice(sc, "surface_detection", detect_names, 0, &scan));
@@ -654,9 +671,11 @@ static enum clsph_status stab_create(struct sim *sim, void **state)
               "smoothing length (h_over_dr) is too small for the particle spacing",
               sc->case_path, b->sigma0);
   log_debug("isph-stabilized: alpha %g, wall pressure %s, slip ratio %g, free surface below "
-            "rho*/rho0 = %g%s, lattice sum %.8g, Laplacian diagonal %.8g",
+            "rho*/rho0 = %g%s or with fewer than %u neighbours, lattice sum %.8g, Laplacian "
+            "diagonal %.8g",
             b->alpha, b->mode == 1 ? "modified virtual marker (Neumann)" : "pseudo-Neumann",
-            b->beta_s, b->beta_fs, b->scan ? " with an empty scan region" : "", b->sigma0, b->d0);
+            b->beta_s, b->beta_fs, b->scan ? " with an empty scan region" : "", b->fs_min,
+            b->sigma0, b->d0);
   b->op = (struct psolve_op){.ctx = b,
                              .apply = ppe_apply,
                              .diagonal = ppe_diagonal,
@@ -735,11 +754,11 @@ static enum clsph_status stab_step(struct sim *sim, void *state, double dt)
   /* 3. s* at x*, the free surface and the source (A12, S eq 8) */
   CLSPH_TRY(op_prefix(sim, b->k_source, &n));
   {
-    const struct karg a[] = {KARG(kind),       KARG(ustar),       KARG(uwall),     KARG(rdt),
-                             KARG(inv_sigma0), KARG(beta_fs),     KARG(b->scan),   KARG(alpha),
-                             KARG(rho),        KARGV(accel),      KARG(fs_offset), KARG(d0),
-                             KARG(rhostar),    KARG(fs),          KARG(dir),       KARG(div),
-                             KARG(rhs),        KARG(sim->d_flags)};
+    const struct karg a[] = {KARG(kind),       KARG(ustar),   KARG(uwall),       KARG(rdt),
+                             KARG(inv_sigma0), KARG(beta_fs), KARG(b->fs_min),   KARG(b->scan),
+                             KARG(alpha),      KARG(rho),     KARGV(accel),      KARG(fs_offset),
+                             KARG(d0),         KARG(rhostar), KARG(fs),          KARG(dir),
+                             KARG(div),        KARG(rhs),     KARG(sim->d_flags)};
     CLSPH_TRY(set_from(b->k_source, 6, sizeof a / sizeof *a, a));
   }
   CLSPH_TRY(kern_launch(sim->dev, b->k_source, n, NULL));
