@@ -1,17 +1,15 @@
 /* domain.cl: the fluid stays in the scene's domain (host/sim/domain.c). A fluid particle (kind 0)
- * beyond the box lo .. hi on a non-periodic axis has left the domain: it takes the kind
- * CLSPH_KIND_OUT and is counted in flags[3]; the host sorts it past the others and drops it, or
- * stops the run when too many have left (host/sim/checks.c). The host puts the box a spacing
- * outside the domain (a particle that far out is behind any wall on the domain's edge by more
- * than the wall-crossing check allows) and leaves the side open that gravity points away from (a
- * splash may rise above an open tank and fall back; the cell grid clamps it into its top cells,
- * grid.cl). The cell grid itself reaches several spacings further, for the wall and section
- * layers: its own escape test alone let a jet run 0.75 m out of a unit box. */
-/* The box: lo .. hi, the domain's own; margin: how far beyond a closed side a particle may stray
- * (dr); open: the sides gravity points away from (bits as GRID_OPEN, grid.cl), unbounded. A
- * particle above an open side is over the rim of the walls that stand on the domain's edge: one
- * beyond a closed side there has gone over them, and leaves at once, before it falls behind
- * them (where it would read as a wall crossing). */
+ * that has left the domain takes the kind CLSPH_KIND_OUT and is counted in flags[3]; the host
+ * sorts it past the others and drops it, or stops the run when too many have left
+ * (host/sim/checks.c). It has left when it is more than `margin` (dr) beyond the box lo .. hi,
+ * the domain's own, on a closed side (that far out it is behind any wall on the domain's edge by
+ * more than the wall-crossing check allows), or beyond a closed side at all while above an open
+ * one: over the rim of the walls that stand on the domain's edge, it leaves at once, before it
+ * falls behind them (where it would read as a wall crossing). The sides gravity points away from
+ * (`open`, bits as GRID_OPEN in grid.cl) are unbounded: a splash rises above an open tank and
+ * falls back, the cell grid clamping it into its top cells. The grid itself reaches several
+ * spacings beyond the domain, for the wall and section layers: its own escape test alone let a
+ * jet run 0.75 m out of a unit box. */
 __kernel void domain_check(const uint n, __global const realv *pos, __global uint *kind,
                            const real4 lo, const real4 hi, const real margin, const uint open,
                            __global uint *flags)

@@ -6,7 +6,6 @@
 #define CLSPH_FLAG_NEIGH_OVERFLOW 2u /* a per-particle neighbour table was too small */
 #define CLSPH_FLAG_ESCAPED        4u /* a particle left the (non-periodic) grid */
 #define CLSPH_FLAG_WALL           8u /* a fluid particle is behind a wall segment */
-#define CLSPH_FLAGS_WORDS         4  /* d_flags holds 4 uints */
 
 /* The kind a fluid particle takes when it leaves the domain (KIND_OUT of host/scene/geometry.h):
  * the next sort moves it past the last particle and the run drops it. */
