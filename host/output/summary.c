@@ -13,6 +13,7 @@
 #include "geometry.h"
 #include "interrupt.h"
 #include "kern.h"
+#include "log.h"
 #include "metrics.h"
 /* "profile": the run's device time per kernel, slowest first (--profile). */
 static enum clsph_status summary_profile(cJSON *root, struct kern_profile *p, double wall)
@@ -87,6 +88,22 @@ done:
   free(us);
   free(kind);
   return st;
+}
+
+/* The failure class of a run the time loop stopped in a finite state, whose metrics() still tell
+ * how far it went (a sensor's history up to a clustering, a front before a wall crossing); NULL
+ * for a run that reached its end, an input or I/O error, a stop by metrics() or sample(), an
+ * interrupt, a refusal at step 0, and a non-finite state (a NaN position has no cell to
+ * search). */
+static const char *stopped_state(const struct sim *sim)
+{
+  static const char *const finite[] = {"escaped",    "neighbours", "wall_crossing",
+                                       "clustering", "energy",     "dt_collapse",
+                                       "dt_bound",   "solver",     "flow_control"};
+  if (strcmp(sim->status, "ok") == 0 || sim->step == 0) return NULL; /* step 0: refused input */
+  for (size_t i = 0; i < sizeof finite / sizeof *finite; ++i)
+    if (strcmp(sim->failure, finite[i]) == 0) return finite[i];
+  return NULL;
 }
 
 enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double wall,
@@ -201,7 +218,17 @@ enum clsph_status summary_write(struct sim *sim, const struct run_out *o, double
   if (sim->dev->profile != NULL) CLSPH_TRY(summary_profile(root, sim->dev->profile, wall));
   cJSON *metrics = cJSON_AddObjectToObject(root, "metrics");
   CLSPH_CHECK(params != NULL && metrics != NULL, CLSPH_E_NOMEM, "out of memory");
-  if (script != NULL && strcmp(sim->status, "ok") == 0) {
+  const char *stopped = stopped_state(sim);
+  if (script != NULL && stopped != NULL) { /* the metrics of the state the run stopped in */
+    struct case_sim_api api;
+    metrics_api(sim, o->dir, &api);
+    api.stopped = stopped;
+    if (case_metrics(script, &api, metrics) != CLSPH_OK) /* its message above; status stays */
+      log_warn("metrics() of the state the run stopped in (%s) failed: summary.json has none",
+               stopped);
+    else
+      cJSON_AddTrueToObject(root, "metrics_at_stop");
+  } else if (script != NULL && strcmp(sim->status, "ok") == 0) {
     struct case_sim_api api;
     metrics_api(sim, o->dir, &api);
     enum clsph_status ms = case_metrics(script, &api, metrics);

@@ -2653,6 +2653,10 @@ static void push_sim(lua_State *L, const struct case_sim_api *api)
   lua_setfield(L, -2, "wall_crossings_most");
   lua_pushinteger(L, api->escaped);
   lua_setfield(L, -2, "escaped");
+  if (api->stopped != NULL) { /* nil for a run that reached its end */
+    lua_pushstring(L, api->stopped);
+    lua_setfield(L, -2, "stopped");
+  }
   static const luaL_Reg fns[] = {{"min", l_min},
                                  {"max", l_max},
                                  {"mean", l_mean},

@@ -10,15 +10,17 @@ struct cJSON;
 
 /** What a case's `metrics(sim)` function can ask of the finished run. */
 struct case_sim_api {
-  void *ctx;        /* passed back to the callbacks */
-  void *run;        /* what the callbacks read (struct sim for metrics_api) */
-  char why[256];    /* why a callback refused its input: the script's error quotes it */
-  double time;      /* simulated time, s */
-  long steps;       /* time steps */
-  double particles; /* particle count */
-  long wall_steps;  /* steps at which a fluid particle was behind a wall */
-  long wall_most;   /* most fluid particles behind a wall at one step */
-  long escaped;     /* fluid particles dropped on leaving the domain (host/sim/checks.c) */
+  void *ctx;           /* passed back to the callbacks */
+  void *run;           /* what the callbacks read (struct sim for metrics_api) */
+  char why[256];       /* why a callback refused its input: the script's error quotes it */
+  double time;         /* simulated time, s */
+  long steps;          /* time steps */
+  double particles;    /* particle count */
+  long wall_steps;     /* steps at which a fluid particle was behind a wall */
+  long wall_most;      /* most fluid particles behind a wall at one step */
+  long escaped;        /* fluid particles dropped on leaving the domain (host/sim/checks.c) */
+  const char *stopped; /* NULL for a run that reached its end; else the failure class that
+                        * stopped it (summary.json "failure"): metrics of the state at the stop */
   /** Statistics of component `comp` of a field over the particles of `kind` (−1: all) in the
    *  box region = {x0, y0, x1, y1} (NULL: everywhere); *count of them (0: min, max, mean unset). */
   enum clsph_status (*stats)(void *ctx, const char *field, int comp, int kind, const double *region,

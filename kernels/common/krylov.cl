@@ -33,6 +33,7 @@ typedef float kreal;
 #define KR_BNORM   4
 #define KR_R0NORM  5
 #define KR_DIAG    6
+#define KR_INIT    17 /* ||b − A x0|| / ||b||: a failed solve that ends above it keeps x0 */
 #define KR_ATOL    7
 #define KR_SLOT(k) (8 + 4 * ((k)&1)) /* ρ, α, ω of iteration k */
 #define KR_BIG     KR(1e30)
@@ -168,11 +169,11 @@ __kernel void kr_wshift(const uint n, __global const real *part, const uint ngro
 }
 
 /* Start: ||b|| (set KR_BB) and ||r|| (set KR_RR) decide whether there is anything to do; if so,
- * r0 = r, p = v = 0, ρ = α = ω = 1. */
+ * r0 = r, p = v = 0, ρ = α = ω = 1, and x0 = x (the guess a failed solve falls back to). */
 __kernel void kr_start(const uint n, const uint ngroups, const real rtol, const real atol,
                        __global const uint *flags, __global kreal *st, __global const real *part,
                        __global real *x, __global const real *r, __global real *r0,
-                       __global real *p, __global real *v)
+                       __global real *p, __global real *v, __global real *x0)
 {
   __local int what; /* 0 iterate, 1 x = 0, 2 nothing */
   const int first = get_global_id(0) == 0;
@@ -204,6 +205,7 @@ __kernel void kr_start(const uint n, const uint ngroups, const real rtol, const 
       st[KR_STOP] = stop;
       st[KR_BNORM] = bnorm;
       st[KR_R0NORM] = rn;
+      st[KR_INIT] = bnorm > KR(0.0) ? rn / bnorm : KR(0.0);
       st[KR_SLOT(0)] = st[KR_SLOT(0) + 1] = st[KR_SLOT(0) + 2] = KR(1.0);
     }
   }
@@ -213,6 +215,7 @@ __kernel void kr_start(const uint n, const uint ngroups, const real rtol, const 
     if (what == 1) {
       x[i] = R(0.0);
     } else {
+      x0[i] = x[i];
       r0[i] = r[i];
       p[i] = R(0.0);
       v[i] = R(0.0);

@@ -166,8 +166,8 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
    * goes through: 32 items (1.8-2.0 ms a solve on the 30² cavity, PoCL) against 256 (3.0 ms) */
   if (dev->type == CL_DEVICE_TYPE_CPU && ps.group_wg > PSOLVE_GROUP_WG_CPU)
     ps.group_wg = PSOLVE_GROUP_WG_CPU;
-  cl_mem *vs[] = {&ps.d_r,  &ps.d_r0, &ps.d_p, &ps.d_v,    &ps.d_s,    &ps.d_t,
-                  &ps.d_ph, &ps.d_sh, &ps.d_q, &ps.d_dinv, &ps.d_diag, &ps.d_b};
+  cl_mem *vs[] = {&ps.d_r,  &ps.d_r0, &ps.d_p,    &ps.d_v,    &ps.d_s, &ps.d_t, &ps.d_ph,
+                  &ps.d_sh, &ps.d_q,  &ps.d_dinv, &ps.d_diag, &ps.d_b, &ps.d_x0};
   for (size_t i = 0; i < sizeof vs / sizeof *vs; ++i)
     CLSPH_TRY(kern_buffer(dev, ps.cap * sizeof(real), NULL, vs[i], "solver vector"));
   CLSPH_TRY(kern_buffer(dev, PSOLVE_SETS * 64 * sizeof(real), NULL, &ps.d_partial,
@@ -215,6 +215,7 @@ done:
 #define KR_RESTART_OMEGA 11
 #define KR_CAPACITY      12
 #define KR_RESTARTS      16 /* a one-group solve's restarts (krylov_group.cl) */
+#define KR_INIT          17 /* the initial guess's relative residual */
 #define KR_RHO_SET       2  /* partial sums of (r0, r) */
 #define KR_BB_SET        0  /* partial sums of (b, b) */
 #define KR_R0V_SET       3  /* (r0, v) */
@@ -573,7 +574,7 @@ static enum clsph_status bicgstab(struct psolve *ps, const struct psolve_op *op,
   CLSPH_TRY(launch_groups(ps, ps->k_residual));
   CLSPH_TRY(KERN_SET(ps->k_start, KARG(n), KARG(ng), KARG(rtol), KARG(atol), KARG(ps->d_flags),
                      KARG(ps->d_state), KARG(ps->d_partial), KARG(x), KARG(ps->d_r), KARG(ps->d_r0),
-                     KARG(ps->d_p), KARG(ps->d_v)));
+                     KARG(ps->d_p), KARG(ps->d_v), KARG(ps->d_x0)));
   CLSPH_TRY(launch_groups(ps, ps->k_start));
   /* batches: as many iterations as the last solve took and two more, then a quarter of that */
   const int max_it = ps->opt.max_it;
@@ -640,6 +641,17 @@ static enum clsph_status bicgstab(struct psolve *ps, const struct psolve_op *op,
     break;
   }
   if (res->reason > 0 && res->its > 0) ps->last_its = res->its;
+  /* a solve that failed further from the solution than it started (BiCGStab's residual can grow
+   * by orders: 4.9e107 in isph-stabilized's dam break before its spray rule) or with a non-finite
+   * value leaves x the initial guess, the last step's pressure: the step goes on from a field
+   * that was an answer, the failure still counted */
+  if (res->reason <= 0 && ps->h_overflow == 0 && (int)state[KR_REASON] != KR_CAPACITY &&
+      !(isfinite(res->rnorm) && res->rnorm <= state[KR_INIT])) {
+    CLSPH_TRY(copy(ps, x, ps->d_x0, n));
+    res->rnorm_failed = res->rnorm;
+    res->rnorm = state[KR_INIT];
+    res->kept_guess = 1;
+  }
 done:
   if (st == CLSPH_OK && PSOLVE_MEAN_FREE(ps->opt.singular)) st = remove_mean(ps, op, n, x, x);
   return st;
@@ -701,8 +713,14 @@ static enum clsph_status solve(struct psolve *ps, const struct psolve_op *op, cl
     ps->failures = 0;
   } else {
     ++ps->failures;
-    log_warn("%s solve %s after %d iterations (residual %.3g, tolerance %.3g)", ps->opt.name,
-             reason_str(res->reason), res->its, res->rnorm, ps->opt.rtol);
+    if (res->kept_guess)
+      log_warn("%s solve %s after %d iterations (residual %.3g, tolerance %.3g): kept its "
+               "initial guess (residual %.3g)",
+               ps->opt.name, reason_str(res->reason), res->its, res->rnorm_failed, ps->opt.rtol,
+               res->rnorm);
+    else
+      log_warn("%s solve %s after %d iterations (residual %.3g, tolerance %.3g)", ps->opt.name,
+               reason_str(res->reason), res->its, res->rnorm, ps->opt.rtol);
     CLSPH_CHECK(ps->failures < ps->opt.max_failures, CLSPH_E_BLOWUP,
                 "the %s solve failed %d times in a row (last residual %.3g): stopping; the "
                 "scheme options solver_rtol, solver_max_it and solver_precond set what a solve "
@@ -794,10 +812,10 @@ void psolve_destroy(struct psolve *ps)
     *ks[i] = NULL;
   }
   kern_release(&ps->d_state);
-  cl_mem *ms[] = {&ps->d_r,    &ps->d_r0,  &ps->d_p,       &ps->d_v,     &ps->d_s,
-                  &ps->d_t,    &ps->d_ph,  &ps->d_sh,      &ps->d_q,     &ps->d_dinv,
-                  &ps->d_diag, &ps->d_b,   &ps->d_partial, &ps->d_flags, &ps->d_row,
-                  &ps->d_col,  &ps->d_val, &ps->d_count,   &ps->d_block, &ps->d_valm};
+  cl_mem *ms[] = {&ps->d_r,       &ps->d_r0,    &ps->d_p,   &ps->d_v,    &ps->d_s,    &ps->d_t,
+                  &ps->d_ph,      &ps->d_sh,    &ps->d_q,   &ps->d_dinv, &ps->d_diag, &ps->d_b,
+                  &ps->d_partial, &ps->d_flags, &ps->d_row, &ps->d_col,  &ps->d_val,  &ps->d_count,
+                  &ps->d_block,   &ps->d_valm,  &ps->d_x0};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
   mg_destroy(&ps->mg);
   kern_reserve(-ps->reserved);

@@ -82,9 +82,11 @@ struct psolve_result {
   enum psolve_reason reason;
   int its;        /* iterations (operator applications / 2) */
   double rnorm;   /* final ||b − A x|| / ||b|| */
-  int restarts;   /* breakdown restarts */
-  int one_group;  /* solved in one work-group and one launch (solver_group_max) */
-  double seconds; /* wall time of the solve (setup of the stored layout included) */
+  int kept_guess; /* failed above the initial guess's residual (or not finite): x is the guess */
+  double rnorm_failed; /* then the residual the iteration ended at */
+  int restarts;        /* breakdown restarts */
+  int one_group;       /* solved in one work-group and one launch (solver_group_max) */
+  double seconds;      /* wall time of the solve (setup of the stored layout included) */
 };
 
 struct psolve {
@@ -95,7 +97,8 @@ struct psolve {
   cl_kernel k_dot, k_dot_ts, k_residual, k_shift, k_start, k_begin, k_s, k_end, k_restart, k_total,
       k_spmv, k_spmv_dot, k_scale, k_sweep, k_axpy, k_add_diag, k_invert, k_csr_diag, k_scan_blocks,
       k_scan_top, k_scan_apply, k_guard, k_wtotal, k_wshift, k_group;
-  cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags;
+  cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags,
+      d_x0;
   cl_mem d_state;                               /* the iteration's state (krylov.cl) */
   cl_mem d_row, d_col, d_val, d_count, d_block; /* stored layout */
   cl_mem d_valm;                                /* the multigrid's copy of d_val (mg.h) */
@@ -151,7 +154,7 @@ void psolve_destroy(struct psolve *ps);
 #define PSOLVE_SOURCES                                                                             \
   "common/blas1.cl", "common/krylov.cl", "common/csr.cl", "common/mg.cl", "common/krylov_group.cl"
 #define PSOLVE_SETS         8   /* partial-sum sets of the dot products (krylov.cl) */
-#define PSOLVE_STATE        17  /* reals of the iteration's state (krylov.cl, krylov_group.cl) */
+#define PSOLVE_STATE        18  /* reals of the iteration's state (krylov.cl, krylov_group.cl) */
 #define PSOLVE_GROUP_WG     256 /* items of the one-group solve at most (KR_GROUP_WG) */
 #define PSOLVE_GROUP_WG_CPU 32  /* and on a CPU device */
 /* solver_group_max's default: the unknowns up to which one work-group solves at least as fast as

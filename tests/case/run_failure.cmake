@@ -5,7 +5,7 @@
 # pressure solver's, is worded there). The failures of the time loop's checks leave the state
 # that failed them in blowup.h5.
 #   cmake -DCLSPH=exe -DCASE=file -DOUT=dir -DSETS="a=1|b=2" -DFAILURE=energy -DREGEX=...
-#         [-DARGS="--opt|value"] [-DRC=2] -P ...
+#         [-DARGS="--opt|value"] [-DRC=2] [-DBOUNDS="name<v|name>v"] -P ...
 string(REPLACE "|" ";" SETS "${SETS}")
 set(args "")
 foreach(s IN LISTS SETS)
@@ -37,6 +37,18 @@ endif()
 if(failure MATCHES "^(nan|escaped|neighbours|wall_crossing|clustering|energy)$" AND
    NOT EXISTS ${OUT}/blowup.h5)
   message(FATAL_ERROR "the run stopped ('${failure}') without leaving its state in blowup.h5")
+endif()
+# The metrics of the state the run stopped in (summary.c, stopped_state): BOUNDS on them where
+# given; none where the state is not finite or the run never stepped.
+string(JSON at_stop ERROR_VARIABLE err GET "${json}" metrics_at_stop)
+if(BOUNDS)
+  string(REPLACE "|" ";" BOUNDS "${BOUNDS}")
+  if(err OR NOT at_stop)
+    message(FATAL_ERROR "summary.json has no metrics_at_stop: metrics() did not run on the stop")
+  endif()
+  include(${CMAKE_CURRENT_LIST_DIR}/bounds.cmake)
+elseif(NOT err AND failure MATCHES "^(nan|error|metrics|interrupted)$")
+  message(FATAL_ERROR "metrics of a '${failure}' stop: its state is not one to measure")
 endif()
 if(NOT MESSAGE)
   set(MESSAGE "${REGEX}")

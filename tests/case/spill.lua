@@ -26,7 +26,8 @@ run { t_end = t_end, output_every = 0.1, checkpoint_every = checkpoint,
 
 -- fluid_now: the fluid particles left; lost_vs_escaped: those missing from the column's less
 -- the count the run dropped (0: every missing one was counted); outside: fluid left outside the
--- tank's box (0: what went over the wall was dropped)
+-- tank's box (0: what went over the wall was dropped); stopped: 1 when the run stopped early (a
+-- metrics() of the state it stopped in, sim.stopped its failure class), else 0
 local column = math.floor(L / dr + 0.5) * math.floor(H / dr + 0.5)
 function metrics(sim)
   local y = sim.field("pos", 2).value
@@ -36,5 +37,5 @@ function metrics(sim)
     if x[i] >= 0 and x[i] <= tank and y[i] >= 0 then inside = inside + 1 end
   end
   return { fluid_now = #x, outside = #x - inside, lost_vs_escaped = column - #x - sim.escaped,
-           escaped = sim.escaped }
+           escaped = sim.escaped, stopped = sim.stopped == "escaped" and 1 or 0 }
 end

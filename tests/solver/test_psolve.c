@@ -6,8 +6,9 @@
  *   - Non-symmetric operator (jittered lattice, corrected Laplacian): the same agreement.
  *   - Singular (pure Neumann, periodic) problem, with the reinforced diagonal and with the mean
  *     fixed: BiCGStab converges and equals UMFPACK up to a constant.
- *   - An iteration limit gives a non-converged result with its residual, repeated failures stop
- *     the run, and a NaN right-hand side is reported as such.
+ *   - An iteration limit gives a non-converged result with its residual (and its iterate, which
+ *     came closer), repeated failures stop the run, a solve that ends non-finite gives back its
+ *     initial guess bit for bit, and a NaN right-hand side is reported as such.
  *   - The solve's traffic: a solve with the operator of the last one (multigrid, 40/side, level 1
  *     in one work-group) reads from the device once and launches at most 5 + 11 (its + 2)
  *     kernels (krylov.cl, mg.cl: 11 a BiCGStab iteration, the batch two past the last solve's
@@ -235,7 +236,30 @@ static void check_failures(const struct dev *dev)
   TC_CHECK(st[0] == CLSPH_OK && st[1] == CLSPH_OK, "an unconverged solve is a warning");
   TC_CHECK(res.reason == PSOLVE_DIVERGED_ITS && res.its == 3 && res.rnorm > o.rtol,
            "iteration limit reported with the residual (%d its, %.2e)", res.its, res.rnorm);
+  TC_CHECK(!res.kept_guess, "a failed solve that came closer keeps its iterate");
   TC_CHECK(st[2] == CLSPH_E_BLOWUP, "the third failure in a row stops the run");
+  /* A guess whose residual is finite but whose square is not (x = 1e160 at one particle in
+   * double, 1e25 in float: the Laplacian's rows, about 1/dr² = 256, make r about 256 times that):
+   * the iteration ends non-finite and x is the guess again, bit for bit. */
+  {
+    const real spike = (real)(CLSPH_DOUBLE ? 1e160 : 1e25);
+    real back = 0;
+    ps.failures = 0;
+    kern_fill(dev, x, &z, sizeof z, pp.n * sizeof(real));
+    kern_write(dev, x, sizeof spike, &spike);
+    psolve_solve(&ps, &pp.po.op, b, x, &res);
+    kern_read(dev, x, sizeof back, &back);
+    int zero = 1;
+    real *xs = calloc(pp.n, sizeof *xs);
+    if (xs != NULL && kern_read(dev, x, pp.n * sizeof(real), xs) == CLSPH_OK)
+      for (size_t i = 1; i < pp.n; ++i) zero = zero && xs[i] == 0;
+    else
+      zero = 0;
+    free(xs);
+    TC_CHECK(res.reason == PSOLVE_DIVERGED_NANORINF && res.kept_guess && back == spike && zero,
+             "a solve that ends non-finite gives back its guess (reason %d, kept %d, x0 %g)",
+             (int)res.reason, res.kept_guess, (double)back);
+  }
   /* a NaN in the right-hand side */
   real nan_v = (real)NAN;
   kern_write(dev, b, sizeof nan_v, &nan_v);
