@@ -55,7 +55,8 @@
 -- wcsph-riemann with the same sound speed; --set stab=1 runs isph-stabilized (Asai et al. 2012)
 -- with the modified virtual marker's walls (neumann = 0: the pseudo-Neumann ones) and relaxation
 -- alpha, the column starting from its hydrostatic pressure. With stab = 1 or riemann = 1, gate = 1
--- holds the column behind a gate at x = L (gate_height tall, three dummy layers thick) that lifts
+-- holds the column behind a gate at x = L (gate_height tall, a plate 6 dr thick standing on the
+-- floor: its two faces' dummies and its top's, as the 3-D box's; open below) that lifts
 -- H + 0.1 m (0.4 m at H = 0.3) at gate_speed from t = 0 (S sec 4.2 and the refdata's secondary source: 4.53 m/s), as the
 -- experiment's; gate_lift (a metric) is how far its lowest dummy rose. checkpoint: s between
 -- checkpoints (0: none). dyn = 1: isph-stabilized's pressure_form = "dynamic"; shift = C > 0 its
@@ -172,7 +173,10 @@ if dim == 3 then
 else
   fluid { density = rho, viscosity = 8.9e-7, gravity = {0, -g} }
   wall { {0, top}, {0, 0}, {tank, 0}, {tank, top}, fluid = "left", group = "tank" }
-  if gate == 1 then wall { {L, 0}, {L, gate_height}, fluid = "left", group = "gate" } end
+  if gate == 1 then -- a plate 6 dr thick on the floor (a line of dummies let fluid in behind it)
+    wall { {L, 0}, {L, gate_height}, {L + 6 * dr, gate_height}, {L + 6 * dr, 0}, fluid = "left",
+           group = "gate" }
+  end
   fill { 0, 0, L, H, name = "water",
          pressure = stab == 1 and function(x, y) return rho * g * (H - y) end or nil }
   for k, z in ipairs(sensor_z) do -- their faces, on the wall
