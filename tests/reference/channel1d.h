@@ -15,6 +15,11 @@ struct channel1d_model {
    * ρ U u_k / u+(y_p u_k/ν)); 1 the friction velocity itself (Leroy et al. 2014 eq 23: U/u_τ =
    * u+(y_p u_τ/ν), the production at y_p τ_w u_τ/(κ y_p)); ε_p stays eq 14's in both */
   int ustar_law;
+  /* 1: a cell-centred finite volume's discretisation on the same nodes (OpenFOAM's Gauss linear):
+   * the momentum flux through each face with the two nodes' mean ν_t, and the production from
+   * the central difference of u (the mirror beyond the centre plane); 0: the momentum equation
+   * integrated by the trapezoidal rule and the production from its exact local du/dy */
+  int fv;
 };
 
 /** The problem: the half channel [0, delta], the wall model at y_p, driven either to the bulk

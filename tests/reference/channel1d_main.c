@@ -2,7 +2,10 @@
  * profile as CSV.
  *   channel1d [--delta 1] [--nu 1e-4] [--y-p 0.05] [--u-bulk 1 | --u-tau U]
  *             [--cells 3200 | --rows N_f [--bulk-over-rows]] [--paper-diffusion] [--log-b B]
- *             [--wall-law u_k|u_tau] [--out FILE]
+ *             [--wall-law u_k|u_tau] [--fv] [--out FILE]
+ * --fv discretises as a cell-centred finite volume on the same nodes (channel1d.h: the faces'
+ * mean ν_t in the momentum flux, the production from central differences of u): with OpenFOAM's
+ * log law (--log-b 5.5667: E = 9.8) on 20 rows it is OpenFOAM's 20-cell wall-function channel.
  * --log-b B takes the log law u+ = ln(y+)/κ + B (E = exp(κ B)) with the switch to u+ = y+ where
  * the two meet: B = 5.2 is Leroy et al.'s wall law (eq 23), the default E = 9.793 (B = 5.56) Wang,
  * Sun & Hu's (eq 11). --wall-law u_tau scales the law with the friction velocity itself, as
@@ -46,6 +49,10 @@ int main(int argc, char **argv)
     }
     if (strcmp(o, "--bulk-over-rows") == 0) {
       p.bulk_over_rows = 1;
+      continue;
+    }
+    if (strcmp(o, "--fv") == 0) {
+      m.fv = 1;
       continue;
     }
     if (i + 1 >= argc) {
@@ -109,13 +116,14 @@ int main(int argc, char **argv)
     return 1;
   }
   double ut = s.u_tau;
-  fprintf(
-      f,
-      "# channel1d (tests/reference): standard k-epsilon, wall function at y_p = %g "
-      "(Wang, Sun & Hu sec 5.1, eq 41)%s%s; log law E = %.6g (B = %.4g), u+ = y+ below y+ = %.5g\n",
-      p.y_p, m.paper_diffusion ? ", diffusion as eq 41 writes it" : "",
-      m.ustar_law ? ", the law scaled by u_tau (Leroy et al. eq 23)" : "", m.e_wall,
-      log(m.e_wall) / m.kappa, m.y_plus_lam);
+  fprintf(f,
+          "# channel1d (tests/reference): standard k-epsilon, wall function at y_p = %g "
+          "(Wang, Sun & Hu sec 5.1, eq 41)%s%s%s; log law E = %.6g (B = %.4g), u+ = y+ below y+ = "
+          "%.5g\n",
+          p.y_p, m.paper_diffusion ? ", diffusion as eq 41 writes it" : "",
+          m.ustar_law ? ", the law scaled by u_tau (Leroy et al. eq 23)" : "",
+          m.fv ? ", a cell-centred finite volume's fluxes and central production" : "", m.e_wall,
+          log(m.e_wall) / m.kappa, m.y_plus_lam);
   char grid[96];
   if (p.rows > 0)
     snprintf(grid, sizeof grid, "rows = %d (spacing %.6g)%s", p.rows, s.y[1] - s.y[0],
