@@ -41,7 +41,8 @@ struct channel1d_model channel1d_standard(void)
                               .e_wall = 9.793,
                               .y_plus_lam = 11.225,
                               .paper_diffusion = 0,
-                              .fv = 0};
+                              .fv = 0,
+                              .backward = 0};
   return m;
 }
 
@@ -183,7 +184,9 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
     double flux = p->nu / (u_star * u_star) * u_plus_integral(m, yp_plus); /* ∫_0^{y_p} f dy */
     old[0] = f0;
     for (int i = 1; i < n; ++i) {
-      if (m->fv) { /* the flux through the face between the nodes */
+      if (m->backward) {
+        old[i] = old[i - 1] + dx * g[i];
+      } else if (m->fv) { /* the flux through the face between the nodes */
         const double yf = 0.5 * (s->y[i - 1] + s->y[i]);
         old[i] =
             old[i - 1] + dx * (1.0 - yf / p->delta) / (p->nu + 0.5 * (s->nu_t[i - 1] + s->nu_t[i]));
@@ -217,7 +220,12 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
     s->y_plus_p = yp_plus;
     /* production: ν_t (du/dy)² in the stream, τ_w (∂U/∂n)_p at the first node (eq 13) */
     for (int i = 1; i < n; ++i) prod[i] = s->nu_t[i] * ut2 * g[i] * ut2 * g[i];
-    if (m->fv) /* the central difference; beyond the last node its mirror about the centre */
+    if (m->backward)
+      for (int i = 1; i < n; ++i) {
+        const double du = (s->u[i] - s->u[i - 1]) / dx;
+        prod[i] = s->nu_t[i] * du * du;
+      }
+    else if (m->fv) /* the central difference; beyond the last node its mirror about the centre */
       for (int i = 1; i < n; ++i) {
         const double up = i + 1 < n ? s->u[i + 1] : (half ? s->u[i] : s->u[i - 1]);
         const double du = (up - s->u[i - 1]) / (2.0 * dx);

@@ -20,6 +20,9 @@ struct channel1d_model {
    * the central difference of u (the mirror beyond the centre plane); 0: the momentum equation
    * integrated by the trapezoidal rule and the production from its exact local du/dy */
   int fv;
+  /* 1: the paper's finite differences (sec 5.1): du/dy by the backward difference, in the
+   * momentum equation (u_i = u_{i−1} + Δ u_τ² (1 − y_i/δ)/(ν + ν_t,i)) and in the production */
+  int backward;
 };
 
 /** The problem: the half channel [0, delta], the wall model at y_p, driven either to the bulk

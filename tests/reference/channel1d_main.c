@@ -2,10 +2,12 @@
  * profile as CSV.
  *   channel1d [--delta 1] [--nu 1e-4] [--y-p 0.05] [--u-bulk 1 | --u-tau U]
  *             [--cells 3200 | --rows N_f [--bulk-over-rows]] [--paper-diffusion] [--log-b B]
- *             [--wall-law u_k|u_tau] [--fv] [--out FILE]
+ *             [--wall-law u_k|u_tau] [--fv | --backward] [--out FILE]
  * --fv discretises as a cell-centred finite volume on the same nodes (channel1d.h: the faces'
  * mean ν_t in the momentum flux, the production from central differences of u): with OpenFOAM's
  * log law (--log-b 5.5667: E = 9.8) on 20 rows it is OpenFOAM's 20-cell wall-function channel.
+ * --backward takes the paper's backward difference for du/dy in the momentum equation and the
+ * production (sec 5.1), a first-order scheme.
  * --log-b B takes the log law u+ = ln(y+)/κ + B (E = exp(κ B)) with the switch to u+ = y+ where
  * the two meet: B = 5.2 is Leroy et al.'s wall law (eq 23), the default E = 9.793 (B = 5.56) Wang,
  * Sun & Hu's (eq 11). --wall-law u_tau scales the law with the friction velocity itself, as
@@ -51,8 +53,8 @@ int main(int argc, char **argv)
       p.bulk_over_rows = 1;
       continue;
     }
-    if (strcmp(o, "--fv") == 0) {
-      m.fv = 1;
+    if (strcmp(o, "--fv") == 0 || strcmp(o, "--backward") == 0) {
+      *(strcmp(o, "--fv") == 0 ? &m.fv : &m.backward) = 1;
       continue;
     }
     if (i + 1 >= argc) {
@@ -122,8 +124,10 @@ int main(int argc, char **argv)
           "%.5g\n",
           p.y_p, m.paper_diffusion ? ", diffusion as eq 41 writes it" : "",
           m.ustar_law ? ", the law scaled by u_tau (Leroy et al. eq 23)" : "",
-          m.fv ? ", a cell-centred finite volume's fluxes and central production" : "", m.e_wall,
-          log(m.e_wall) / m.kappa, m.y_plus_lam);
+          m.fv         ? ", a cell-centred finite volume's fluxes and central production"
+          : m.backward ? ", the paper's backward differences for du/dy"
+                       : "",
+          m.e_wall, log(m.e_wall) / m.kappa, m.y_plus_lam);
   char grid[96];
   if (p.rows > 0)
     snprintf(grid, sizeof grid, "rows = %d (spacing %.6g)%s", p.rows, s.y[1] - s.y[0],
