@@ -144,6 +144,8 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
     bad = "give a positive u_bulk or u_tau";
   else if (p->bulk_over_rows && !rows)
     bad = "a bulk over the rows needs rows";
+  else if (m->fv && m->backward)
+    bad = "one scheme: the finite volume's (--fv) or the backward differences (--backward)";
   if (bad != NULL) {
     fprintf(stderr, "channel1d: %s\n", bad);
     return -1;
