@@ -578,6 +578,11 @@ clsph_failure_test(health_escaped_none ${CASE_DIR}/spill.lua escaped
                    BOUNDS "stopped>0.5" "escaped>0.5" "escaped<1.5" "fluid_now>198.5"
                           "fluid_now<199.5" "lost_vs_escaped>-0.5" "lost_vs_escaped<0.5"
                           "outside<0.5")
+# A metrics() that fails there is a warning: the stop's class and status stay, no metrics.
+clsph_failure_test(health_escaped_metrics_error ${CASE_DIR}/spill.lua escaped
+                   "left the domain by step [0-9]+.*more than run { checks = { escaped = 0 } } lets go"
+                   SETS escaped=0 bad_metrics=1
+                   MESSAGE "metrics\\(\\) refuses the state.*metrics\\(\\) of the state the run stopped in \\(escaped\\) failed: summary.json has none")
 clsph_cli_test(case_checks_escaped ARGS info ${CASE_DIR}/spill.lua --set escaped=2 RC 2
                REGEX "run: checks: escaped is the fraction of the fluid that may leave the domain before the run stops: from 0 \\(none\\) to 1, not 2")
 # A restart across the drops: from the checkpoint at 0.45 s (one particle dropped before it, and

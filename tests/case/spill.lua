@@ -5,7 +5,8 @@
 -- `escaped` of the fluid (run { checks }) has left; checkpoint: s between checkpoints. method:
 -- 0 isph-usaw, 1 isph-stabilized, 2 wcsph-riemann; cluster: the clustered fraction that stops the
 -- run (checks.cluster_fraction: the dummy-wall schemes' coarse surge pairs particles at 0.1 dr).
-param { method = 0, n = 10, t_end = 0.6, escaped = 0.5, checkpoint = 0.45, cluster = 0.005 }
+param { method = 0, n = 10, t_end = 0.6, escaped = 0.5, checkpoint = 0.45, cluster = 0.005,
+        bad_metrics = 0 }
 local H, L, tank, top, g = 0.2, 0.1, 0.3, 0.22, 9.81
 local dr = L / n
 domain { 0, 0, tank, top }
@@ -27,9 +28,11 @@ run { t_end = t_end, output_every = 0.1, checkpoint_every = checkpoint,
 -- fluid_now: the fluid particles left; lost_vs_escaped: those missing from the column's less
 -- the count the run dropped (0: every missing one was counted); outside: fluid left outside the
 -- tank's box (0: what went over the wall was dropped); stopped: 1 when the run stopped early (a
--- metrics() of the state it stopped in, sim.stopped its failure class), else 0
+-- metrics() of the state it stopped in, sim.stopped its failure class), else 0; bad_metrics = 1:
+-- metrics() raises an error
 local column = math.floor(L / dr + 0.5) * math.floor(H / dr + 0.5)
 function metrics(sim)
+  if bad_metrics == 1 then error("metrics() refuses the state") end
   local y = sim.field("pos", 2).value
   local x = sim.field("pos", 1).value
   local inside = 0
