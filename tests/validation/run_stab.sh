@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The validation runs of isph-stabilized (the stabilized ISPH paper, sec 4.1 and 4.2) beside
 # isph-usaw and wcsph-riemann on the same cases, then RESULTS_isph_stabilized.md, the sensor-1
-# chart and the chart of sensors 1 to 4. About an hour on 2 cores (the n = 80 dam breaks are most of it).
+# chart and the chart of sensors 1 to 4. About 2.5 hours on 2 cores (the n = 80 and 160 dam breaks are
+# most of it).
 #   tests/validation/run_stab.sh [BUILD_DIR]     (default build)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -39,6 +40,10 @@ for n in 40 80; do
   run lobovsky_n${n}_stab dam_break stab=1 n=$n t_end=1.1
   run lobovsky_n${n}_stab_gate dam_break stab=1 gate=1 n=$n t_end=1.1
 done
+# the gate at n = 160 (dr = 1.875 mm), the paper's scheme (it clusters after the impact, at
+# t* = 3) and with shifting 0.5 (about an hour alone)
+run lobovsky_n160_stab_gate dam_break stab=1 gate=1 n=160 t_end=1.1 checkpoint=0.1
+run lobovsky_n160_stab_shift_gate dam_break stab=1 gate=1 n=160 t_end=1.1 shift=0.5 checkpoint=0.1
 # the same at n = 40 with pressure_form = "dynamic"
 run lobovsky_n40_stab_dynamic dam_break stab=1 dyn=1 n=40 t_end=1.1
 run lobovsky_n40_stab_dynamic_gate dam_break stab=1 dyn=1 gate=1 n=40 t_end=1.1
@@ -50,6 +55,7 @@ python3 tests/validation/lobovsky_chart.py tests/validation/lobovsky_sensor1 \
   "isph-stabilized (n 40)=$out/lobovsky_n40_stab" \
   "isph-stabilized with gate (n 40)=$out/lobovsky_n40_stab_gate" \
   "isph-stabilized with gate (n 80)=$out/lobovsky_n80_stab_gate" \
+  "isph-stabilized with gate (n 160)=$out/lobovsky_n160_stab_gate" \
   "isph-usaw (n 40)=$out/lobovsky_n40_isph_usaw" \
   "wcsph-riemann (n 80)=$out/lobovsky_n80_wcsph_riemann" || true
 # sensors 1 to 4 (3, 15, 30 and 80 mm above the bed) against the experiment's event 5
