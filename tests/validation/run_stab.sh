@@ -55,7 +55,7 @@ python3 tests/validation/lobovsky_chart.py tests/validation/lobovsky_sensor1 \
   "isph-stabilized (n 40)=$out/lobovsky_n40_stab" \
   "isph-stabilized with gate (n 40)=$out/lobovsky_n40_stab_gate" \
   "isph-stabilized with gate (n 80)=$out/lobovsky_n80_stab_gate" \
-  "isph-stabilized with gate (n 160)=$out/lobovsky_n160_stab_gate" \
+  "isph-stabilized with gate and shifting 0.5 (n 160)=$out/lobovsky_n160_stab_shift_gate" \
   "isph-usaw (n 40)=$out/lobovsky_n40_isph_usaw" \
   "wcsph-riemann (n 80)=$out/lobovsky_n80_wcsph_riemann" || true
 # sensors 1 to 4 (3, 15, 30 and 80 mm above the bed) against the experiment's event 5
