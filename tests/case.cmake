@@ -454,15 +454,16 @@ clsph_run_test(validate_lobovsky_riemann ${CMAKE_SOURCE_DIR}/cases/dam_break.lua
 
 # The health checks of the time loop (host/sim/checks.c): each failure class stops the run with exit
 # status 1, its reason in the message and in summary.json, and its class in "failure".
-# BOUNDS: bounds on the metrics of the state the run stopped in (summary.json metrics_at_stop).
+# BOUNDS: bounds on the metrics of the state the run stopped in (summary.json metrics_at_stop);
+# NO_METRICS: none written (metrics() failed there).
 function(clsph_failure_test name case failure regex)
-  cmake_parse_arguments(T "" "MESSAGE" "SETS;BOUNDS" ${ARGN})
+  cmake_parse_arguments(T "NO_METRICS" "MESSAGE" "SETS;BOUNDS" ${ARGN})
   string(REPLACE ";" "|" sets "${T_SETS}")
   string(REPLACE ";" "|" bounds "${T_BOUNDS}")
   clsph_add_test(${name} LABELS case COMMAND ${CMAKE_COMMAND} -DCLSPH=$<TARGET_FILE:clsph>
                  -DCASE=${case} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/${name} "-DSETS=${sets}"
                  -DFAILURE=${failure} "-DREGEX=${regex}" "-DMESSAGE=${T_MESSAGE}"
-                 "-DBOUNDS=${bounds}" -P ${CASE_DIR}/run_failure.cmake)
+                 "-DBOUNDS=${bounds}" -DNO_METRICS=${T_NO_METRICS} -P ${CASE_DIR}/run_failure.cmake)
 endfunction()
 # Every stop message names the run { checks = { ... } } setting that sets its limit, with its
 # value, or says what to look at where no setting controls the check.
@@ -581,7 +582,7 @@ clsph_failure_test(health_escaped_none ${CASE_DIR}/spill.lua escaped
 # A metrics() that fails there is a warning: the stop's class and status stay, no metrics.
 clsph_failure_test(health_escaped_metrics_error ${CASE_DIR}/spill.lua escaped
                    "left the domain by step [0-9]+.*more than run { checks = { escaped = 0 } } lets go"
-                   SETS escaped=0 bad_metrics=1
+                   SETS escaped=0 bad_metrics=1 NO_METRICS
                    MESSAGE "metrics\\(\\) refuses the state.*metrics\\(\\) of the state the run stopped in \\(escaped\\) failed: summary.json has none")
 clsph_cli_test(case_checks_escaped ARGS info ${CASE_DIR}/spill.lua --set escaped=2 RC 2
                REGEX "run: checks: escaped is the fraction of the fluid that may leave the domain before the run stops: from 0 \\(none\\) to 1, not 2")

@@ -5,7 +5,7 @@
 # pressure solver's, is worded there). The failures of the time loop's checks leave the state
 # that failed them in blowup.h5.
 #   cmake -DCLSPH=exe -DCASE=file -DOUT=dir -DSETS="a=1|b=2" -DFAILURE=energy -DREGEX=...
-#         [-DARGS="--opt|value"] [-DRC=2] [-DBOUNDS="name<v|name>v"] -P ...
+#         [-DARGS="--opt|value"] [-DRC=2] [-DBOUNDS="name<v|name>v"] [-DNO_METRICS=1] -P ...
 string(REPLACE "|" ";" SETS "${SETS}")
 set(args "")
 foreach(s IN LISTS SETS)
@@ -49,6 +49,12 @@ if(BOUNDS)
   include(${CMAKE_CURRENT_LIST_DIR}/bounds.cmake)
 elseif(NOT err AND failure MATCHES "^(nan|error|metrics|interrupted)$")
   message(FATAL_ERROR "metrics of a '${failure}' stop: its state is not one to measure")
+endif()
+if(NO_METRICS) # metrics() failed on the stop: none written, no metrics_at_stop
+  string(JSON nmetrics LENGTH "${json}" metrics)
+  if(NOT err OR NOT nmetrics EQUAL 0)
+    message(FATAL_ERROR "summary.json has metrics (${nmetrics}, metrics_at_stop '${at_stop}')")
+  endif()
 endif()
 if(NOT MESSAGE)
   set(MESSAGE "${REGEX}")
