@@ -6,9 +6,11 @@
 #include <string.h>
 
 #include "clsph_config.h"
+#include "dsolve.h"
 #include "rng.h"
 
 static const double pi = 3.14159265358979323846;
+#define PP_H 2.0 /* smoothing length, spacings (Wendland C2: support 2h) */
 
 static double exact(const struct pproblem_spec *s, double x, double y)
 {
@@ -26,12 +28,12 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
                                   struct pproblem *out)
 {
   enum clsph_status st = CLSPH_OK;
-  static const char *const sources[] = {OPS_SOURCES, POISSON_SOURCES, NULL};
+  static const char *const sources[] = {OPS_SOURCES, POISSON_SOURCES, DSOLVE_SOURCES, NULL};
   struct pproblem pp;
   struct prog_opts o = {0};
   struct rng r;
   real *pos = NULL, *vol = NULL, *b = NULL;
-  cl_uint *dir = NULL;
+  cl_uint *dir = NULL, *gid = NULL;
   const cl_uint zero = 0;
   memset(&pp, 0, sizeof pp);
   pp.dev = dev;
@@ -39,11 +41,20 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
   CLSPH_CHECK(spec->side >= 8, CLSPH_E_INPUT, "pproblem: at least 8 particles per side");
   pp.dr = 1.0 / spec->side;
   const int ghost = spec->singular ? 0 : 4, rows = spec->side + 2 * ghost;
-  pp.n = (size_t)spec->side * (size_t)rows;
-  CLSPH_TRY(smoothing_make(SMOOTHING_WENDLAND_C2, 2, 2.0 * pp.dr, &pp.sm));
+  const int slab = spec->row_hi > 0, lo = slab ? spec->row_lo : 0, hi = slab ? spec->row_hi : rows;
+  CLSPH_CHECK(!slab || (!spec->singular && 0 <= lo && lo < hi && hi <= rows), CLSPH_E_INPUT,
+              "pproblem: rows [%d, %d) are no slab of the %d rows of a regular problem", lo, hi,
+              rows);
+  pp.rows = rows;
+  pp.n = (size_t)spec->side * (size_t)(hi - lo);
+  CLSPH_TRY(smoothing_make(SMOOTHING_WENDLAND_C2, 2, PP_H * pp.dr, &pp.sm));
+  /* a slab's grid spans its rows and a spacing more each side (the jitter moves a particle by
+   * half a spacing at most) */
   struct grid_spec gs = {.dim = 2,
-                         .lo = {0, -ghost * pp.dr},
-                         .hi = {1, 1 + ghost * pp.dr + (spec->singular ? 0.0 : spec->air)},
+                         .lo = {0, slab ? (lo - ghost - 1) * pp.dr : -ghost * pp.dr},
+                         .hi = {1, slab && hi < rows
+                                       ? (hi - ghost + 1) * pp.dr
+                                       : 1 + ghost * pp.dr + (spec->singular ? 0.0 : spec->air)},
                          .support = pp.sm.support,
                          .sm = pp.sm,
                          .periodic = {1, spec->singular}};
@@ -60,12 +71,13 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
   vol = malloc(pp.n * sizeof *vol);
   b = malloc(pp.n * sizeof *b);
   dir = malloc(pp.n * sizeof *dir);
-  CLSPH_CHECK(pos && vol && b && dir, CLSPH_E_NOMEM, "pproblem: out of memory");
+  gid = malloc(pp.n * sizeof *gid);
+  CLSPH_CHECK(pos && vol && b && dir && gid, CLSPH_E_NOMEM, "pproblem: out of memory");
   rng_seed(&r, spec->seed);
   const double scale = spec->scale > 0.0 ? spec->scale : 1.0;
   size_t i = 0;
   for (int k = 0; k < rows; ++k) {
-    for (int m = 0; m < spec->side; ++m, ++i) {
+    for (int m = 0; m < spec->side; ++m) {
       double x = (m + 0.5) * pp.dr, y = (k - ghost + 0.5) * pp.dr;
       if (spec->jitter > 0.0) {
         x += spec->jitter * pp.dr * (rng_uniform(&r) - 0.5);
@@ -73,6 +85,8 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
         x -= floor(x); /* periodic in x (and y when singular) */
         if (spec->singular) y -= floor(y);
       }
+      if (k < lo || k >= hi) continue;
+      gid[i] = (cl_uint)k * (cl_uint)spec->side + (cl_uint)m;
       pos[2 * i] = (real)x;
       pos[2 * i + 1] = (real)y;
       x = (double)pos[2 * i];
@@ -80,6 +94,7 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
       vol[i] = (real)(scale * pp.dr * pp.dr);
       dir[i] = !spec->singular && (k < ghost || k >= ghost + spec->side);
       b[i] = (real)(dir[i] ? exact(spec, x, y) : scale * laplacian(spec, x, y));
+      ++i;
     }
   }
   pset_init(&pp.ps, pp.n, pp.n);
@@ -88,6 +103,7 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
   CLSPH_TRY(pset_add(&pp.ps, dev, "dirichlet", sizeof(cl_uint), dir, &pp.f_dir));
   CLSPH_TRY(pset_add(&pp.ps, dev, "b", sizeof(real), b, &pp.f_b));
   CLSPH_TRY(pset_add(&pp.ps, dev, "x", sizeof(real), NULL, &pp.f_x));
+  CLSPH_TRY(pset_add(&pp.ps, dev, "gid", sizeof(cl_uint), gid, &pp.f_gid));
   CLSPH_TRY(kern_buffer(dev, sizeof zero, &zero, &pp.d_flags, "flags"));
   CLSPH_TRY(kern_buffer(dev, 4 * pp.n * sizeof(real), NULL, &pp.d_L, "L"));
   CLSPH_TRY(grid_sort(&pp.g, dev, pp.n, pset_mem(&pp.ps, pp.f_pos), NULL, pp.d_flags));
@@ -103,6 +119,7 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
 done:
   pproblem_destroy(&pp);
   prog_opts_free(&o);
+  free(gid);
   free(dir);
   free(b);
   free(vol);
@@ -164,4 +181,11 @@ void pproblem_destroy(struct pproblem *pp)
   ops_destroy(&pp->ops);
   if (pp->prog != NULL) clReleaseProgram(pp->prog);
   pp->prog = NULL;
+}
+
+int pproblem_reach_rows(const struct pproblem_spec *spec)
+{
+  /* rows k apart are at least (k − jitter) dr apart, and a pair counts closer than the support
+   * (2h): k < 2h/dr + jitter. The correction enters a row through its own L_i only (poisson.cl). */
+  return (int)floor(2.0 * PP_H + spec->jitter);
 }

@@ -24,6 +24,11 @@ struct pproblem_spec {
   double air;    /* empty grid above the particles (regular problems), unit lengths: the cells a
                     free surface leaves without fluid */
   unsigned long seed;
+  /* a slab of the lattice's rows (the Dirichlet layers counted: row 0 is the lowest of the
+   * regular problem's ghost rows): rows [row_lo, row_hi) only, their global particle index in the
+   * field "gid" (row × side + column); row_hi 0: every row. The jitter is that of the whole
+   * lattice, so slabs of one seed put each particle where the whole problem does. */
+  int row_lo, row_hi;
 };
 
 struct pproblem {
@@ -35,10 +40,11 @@ struct pproblem {
   struct ops ops;
   struct pset ps;
   struct poisson_op po;
-  int f_pos, f_vol, f_dir, f_b, f_x;
+  int f_pos, f_vol, f_dir, f_b, f_x, f_gid;
   cl_mem d_L, d_flags;
   size_t n;
   double dr;
+  int rows; /* of the whole lattice, the Dirichlet layers counted */
 };
 
 /** @brief Build the problem: particles sorted, correction computed, operator bound, x = 0. */
@@ -51,5 +57,9 @@ enum clsph_status pproblem_error(struct pproblem *pp, cl_mem x, double *err);
 enum clsph_status pproblem_read(struct pproblem *pp, cl_mem x, double *out);
 /** @brief Release. */
 void pproblem_destroy(struct pproblem *pp);
+/** @brief The rows of the lattice that one row's unknown reaches through the operator (the
+ *  Laplacian's support and the jitter); a slab that owns rows needs this many more on each side
+ *  (pslab.h). */
+int pproblem_reach_rows(const struct pproblem_spec *spec);
 
 #endif /* CLSPH_PPROBLEM_H */

@@ -461,6 +461,12 @@ enum clsph_status kern_write(const struct dev *dev, cl_mem d, size_t bytes, cons
   return transfer(dev, d, 1, 0, bytes, (void *)(size_t)h, 1);
 }
 
+enum clsph_status kern_write_at(const struct dev *dev, cl_mem d, size_t offset, size_t bytes,
+                                const void *h)
+{
+  return transfer(dev, d, 1, offset, bytes, (void *)(size_t)h, 1);
+}
+
 enum clsph_status kern_write_nb(const struct dev *dev, cl_mem d, size_t bytes, const void *h)
 {
   return transfer(dev, d, 1, 0, bytes, (void *)(size_t)h, 0);

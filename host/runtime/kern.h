@@ -88,6 +88,9 @@ enum clsph_status kern_read_nb(const struct dev *dev, cl_mem d, size_t offset, s
                                void *h);
 /** @brief Blocking copy host -> device. */
 enum clsph_status kern_write(const struct dev *dev, cl_mem d, size_t bytes, const void *h);
+/** @brief Blocking copy host -> device of `bytes` to byte `offset` of the buffer. */
+enum clsph_status kern_write_at(const struct dev *dev, cl_mem d, size_t offset, size_t bytes,
+                                const void *h);
 /** @brief Non-blocking copy host -> device: h must stay as it is until a later blocking transfer
  *  or kern_finish has returned. */
 enum clsph_status kern_write_nb(const struct dev *dev, cl_mem d, size_t bytes, const void *h);

@@ -1,0 +1,213 @@
+/* pslab.c: one rank's slab of the manufactured pressure problem (see pslab.h). */
+#include "pslab.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "clsph_config.h"
+#include "log.h"
+
+enum clsph_status pslab_rows(int rows, int nranks, int rank, int reach, int *lo, int *hi)
+{
+  enum clsph_status st = CLSPH_OK;
+  CLSPH_CHECK(nranks >= 1 && rank >= 0 && rank < nranks, CLSPH_E_INPUT,
+              "rank %d of %d ranks does not exist", rank, nranks);
+  const int thinnest = rows / nranks;
+  CLSPH_CHECK(nranks == 1 || thinnest >= reach, CLSPH_E_INPUT,
+              "%d ranks split the problem's %d rows into slabs of %d rows, thinner than the %d "
+              "rows an unknown reaches: a halo would span more than the two neighbouring ranks; "
+              "use at most %d rank%s or more particles per side",
+              nranks, rows, thinnest, reach, rows / reach > 1 ? rows / reach : 1,
+              rows / reach > 1 ? "s" : "");
+  *lo = (int)((long)rank * rows / nranks);
+  *hi = (int)((long)(rank + 1) * rows / nranks);
+done:
+  return st;
+}
+
+/* ascending global index, for qsort of (global index, position) pairs */
+struct keyed {
+  cl_uint gid;
+  size_t at;
+};
+static int cmp_keyed(const void *a, const void *b)
+{
+  const cl_uint x = ((const struct keyed *)a)->gid, y = ((const struct keyed *)b)->gid;
+  return (x > y) - (x < y);
+}
+
+enum clsph_status pslab_create(const struct dev *dev, const struct pproblem_spec *spec, int rank,
+                               int nranks, struct pslab *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pslab s;
+  struct psolve ps;
+  struct psolve_options o;
+  struct pproblem_spec sp = *spec;
+  cl_uint *gid_sorted = NULL;
+  size_t *arow = NULL, *inv = NULL, *own_at = NULL;
+  int *acol = NULL;
+  double *aval = NULL;
+  real *b_sorted = NULL, *b_new = NULL;
+  struct keyed *halo = NULL;
+  memset(&s, 0, sizeof s);
+  memset(&ps, 0, sizeof ps);
+  CLSPH_CHECK(!spec->singular, CLSPH_E_INPUT,
+              "the split problem is the regular one (Dirichlet layers): a singular problem's "
+              "mean would need one more global sum per product");
+  s.rank = rank;
+  s.nranks = nranks;
+  s.reach = pproblem_reach_rows(spec);
+  const int ghost = 4, rows = spec->side + 2 * ghost;
+  CLSPH_TRY(pslab_rows(rows, nranks, rank, s.reach, &s.row_lo, &s.row_hi));
+  sp.row_lo = s.row_lo - s.reach > 0 ? s.row_lo - s.reach : 0;
+  sp.row_hi = s.row_hi + s.reach < rows ? s.row_hi + s.reach : rows;
+  CLSPH_TRY(pproblem_create(dev, &sp, &s.pp));
+  CLSPH_CHECK(s.pp.rows == rows, CLSPH_E_UNSUPPORTED, "pslab: %d rows, pproblem has %d", rows,
+              s.pp.rows);
+  const size_t n = s.pp.n, side = (size_t)spec->side;
+  gid_sorted = malloc(n * sizeof *gid_sorted);
+  inv = malloc(n * sizeof *inv);
+  b_sorted = malloc(n * sizeof *b_sorted);
+  b_new = malloc(n * sizeof *b_new);
+  halo = malloc(n * sizeof *halo);
+  s.gid = malloc(n * sizeof *s.gid);
+  s.send = malloc(n * sizeof *s.send);
+  CLSPH_CHECK(gid_sorted && inv && b_sorted && b_new && halo && s.gid && s.send, CLSPH_E_NOMEM,
+              "out of memory");
+  CLSPH_TRY(kern_read(dev, pset_mem(&s.pp.ps, s.pp.f_gid), n * sizeof *gid_sorted, gid_sorted));
+  CLSPH_TRY(kern_read(dev, pset_mem(&s.pp.ps, s.pp.f_b), n * sizeof *b_sorted, b_sorted));
+  /* owned first, in the grid's order (its neighbours stay close in memory); then the halo from
+   * below and from above, each by global index */
+  size_t nown = 0, nbelow = 0, nhalo = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const int r = (int)(gid_sorted[i] / side);
+    if (r >= s.row_lo && r < s.row_hi) {
+      inv[i] = nown;
+      s.gid[nown++] = gid_sorted[i];
+    } else {
+      halo[nhalo].gid = gid_sorted[i];
+      halo[nhalo++].at = i;
+      nbelow += r < s.row_lo;
+    }
+  }
+  qsort(halo, nhalo, sizeof *halo, cmp_keyed); /* below's rows come first: lower indices */
+  for (size_t k = 0; k < nhalo; ++k) {
+    inv[halo[k].at] = nown + k;
+    s.gid[nown + k] = halo[k].gid;
+  }
+  int nb = 0;
+  if (rank > 0) {
+    s.nbr[nb] = rank - 1;
+    s.nrecv[nb++] = nbelow;
+  }
+  if (rank + 1 < nranks) {
+    s.nbr[nb] = rank + 1;
+    s.nrecv[nb++] = nhalo - nbelow;
+  }
+  CLSPH_CHECK((rank > 0 || nbelow == 0) && (rank + 1 < nranks || nhalo == nbelow),
+              CLSPH_E_UNSUPPORTED, "pslab: halo rows beyond the outer ranks");
+  /* what each neighbour's halo holds of the owned rows: rows within reach of its slab */
+  size_t nsend = 0;
+  for (int k = 0; k < nb; ++k) {
+    const int below = s.nbr[k] < rank;
+    size_t m = 0;
+    for (size_t i = 0; i < nown; ++i) {
+      const int r = (int)(s.gid[i] / side);
+      if (below ? r < s.row_lo + s.reach : r >= s.row_hi - s.reach) {
+        halo[m].gid = s.gid[i];
+        halo[m++].at = i;
+      }
+    }
+    qsort(halo, m, sizeof *halo, cmp_keyed);
+    for (size_t j = 0; j < m; ++j) s.send[nsend + j] = (cl_uint)halo[j].at;
+    s.nsend[k] = m;
+    nsend += m;
+  }
+  /* the operator's rows on this device, the owned ones renumbered */
+  psolve_defaults(&o);
+  o.precond = PSOLVE_JACOBI;
+  o.apply = PSOLVE_STORED;
+  CLSPH_TRY(psolve_create(dev, s.pp.prog, n, &o, &ps));
+  CLSPH_TRY(psolve_assemble(&ps, &s.pp.po.op, &arow, &acol, &aval));
+  own_at = malloc((nown > 0 ? nown : 1) * sizeof *own_at); /* sorted index of each owned row */
+  CLSPH_CHECK(own_at != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (size_t i = 0; i < n; ++i)
+    if (inv[i] < nown) own_at[inv[i]] = i;
+  size_t nnz = 0;
+  for (size_t i = 0; i < nown; ++i) nnz += arow[own_at[i] + 1] - arow[own_at[i]];
+  s.row = malloc((nown + 1) * sizeof *s.row);
+  s.col = malloc((nnz > 0 ? nnz : 1) * sizeof *s.col);
+  s.val = malloc((nnz > 0 ? nnz : 1) * sizeof *s.val);
+  CLSPH_CHECK(s.row && s.col && s.val, CLSPH_E_NOMEM, "out of memory for %zu entries", nnz);
+  nnz = 0;
+  for (size_t i = 0; i < nown; ++i) {
+    s.row[i] = nnz;
+    const size_t j = own_at[i];
+    for (size_t k = arow[j]; k < arow[j + 1]; ++k, ++nnz) {
+      s.col[nnz] = (int)inv[acol[k]];
+      s.val[nnz] = aval[k];
+    }
+  }
+  s.row[nown] = nnz;
+  for (size_t i = 0; i < n; ++i) b_new[inv[i]] = b_sorted[i];
+  CLSPH_TRY(kern_buffer(dev, n * sizeof(real), b_new, &s.d_b, "pslab b"));
+  for (size_t i = 0; i < n; ++i) b_new[i] = 0;
+  CLSPH_TRY(kern_buffer(dev, n * sizeof(real), b_new, &s.d_x, "pslab x"));
+  s.layout = (struct dsolve_layout){.nown = nown,
+                                    .n = n,
+                                    .row = s.row,
+                                    .col = s.col,
+                                    .val = s.val,
+                                    .nbrs = nb,
+                                    .nsend = s.nsend,
+                                    .send = s.send,
+                                    .nrecv = s.nrecv};
+  *out = s;
+  out->layout.nsend = out->nsend; /* the layout points into the slab's own arrays */
+  out->layout.nrecv = out->nrecv;
+  memset(&s, 0, sizeof s);
+done:
+  psolve_destroy(&ps);
+  pslab_destroy(&s);
+  free(own_at);
+  free(halo);
+  free(b_new);
+  free(b_sorted);
+  free(inv);
+  free(gid_sorted);
+  free(arow);
+  free(acol);
+  free(aval);
+  return st;
+}
+
+enum clsph_status pslab_read_owned(struct pslab *s, cl_mem x, double *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  const size_t nown = s->layout.nown;
+  real *buf = malloc((nown > 0 ? nown : 1) * sizeof *buf);
+  CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(kern_read(s->pp.dev, x, nown * sizeof *buf, buf));
+  for (size_t i = 0; i < nown; ++i) out[i] = (double)buf[i];
+done:
+  free(buf);
+  return st;
+}
+
+void pslab_destroy(struct pslab *s)
+{
+  kern_release(&s->d_b);
+  kern_release(&s->d_x);
+  free(s->row);
+  free(s->col);
+  free(s->val);
+  free(s->send);
+  free(s->gid);
+  s->row = NULL;
+  s->col = NULL;
+  s->val = NULL;
+  s->send = NULL;
+  s->gid = NULL;
+  pproblem_destroy(&s->pp);
+}

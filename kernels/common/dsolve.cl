@@ -1,0 +1,90 @@
+/* dsolve.cl: the vector operations of the pressure solve split across ranks
+ * (solvers/pressure/dsolve.c). A rank's unknowns are its owned rows [0, nown) followed by the halo
+ * [nown, n), the owned rows of its neighbours that its rows reach; the products and the dot
+ * products run over the owned rows only, and the halo of a vector is written from the neighbours
+ * (ds_gather packs what they need of it) before a product reads it. Dot products leave per-group
+ * partial sums (blas1.cl: a fixed number of work-groups, so the order, hence the value, is the
+ * same on every run) that the host adds up and sums over the ranks. */
+
+/* y = A x over the owned rows (stored rows; columns index owned and halo entries) */
+__kernel void ds_spmv(const uint nown, __global const uint *row, __global const uint *col,
+                      __global const real *val, __global const real *x, __global real *y)
+{
+  const uint i = get_global_id(0);
+  if (i >= nown) return;
+  y[i] = blas1_row_dot(R(0.0), row[i], row[i + 1], col, val, x);
+}
+
+/* r = b − A x over the owned rows */
+__kernel void ds_residual(const uint nown, __global const uint *row, __global const uint *col,
+                          __global const real *val, __global const real *x, __global const real *b,
+                          __global real *r)
+{
+  const uint i = get_global_id(0);
+  if (i >= nown) return;
+  r[i] = b[i] - blas1_row_dot(R(0.0), row[i], row[i + 1], col, val, x);
+}
+
+/* Partial sums of (a, b) and (c, d) over the owned rows: partial[2 g] and partial[2 g + 1] of
+ * work-group g, each item summing a strided slice. */
+__kernel void ds_dot2(const uint nown, __global const real *a, __global const real *b,
+                      __global const real *c, __global const real *d, __global real *partial,
+                      __local real *s)
+{
+  const uint l = get_local_id(0), g = get_group_id(0);
+  const uint stride = get_global_size(0);
+  real ab = R(0.0), cd = R(0.0);
+  for (uint i = get_global_id(0); i < nown; i += stride) {
+    ab += a[i] * b[i];
+    cd += c[i] * d[i];
+  }
+  s[l] = ab;
+  blas1_group_sum(s, partial, 2 * g);
+  barrier(CLK_LOCAL_MEM_FENCE);
+  s[l] = cd;
+  blas1_group_sum(s, partial, 2 * g + 1);
+}
+
+/* p = r + β (p − ω v), ph = D⁻¹ p (Jacobi) */
+__kernel void ds_p(const uint nown, const real beta, const real omega, __global const real *r,
+                   __global const real *v, __global const real *dinv, __global real *p,
+                   __global real *ph)
+{
+  const uint i = get_global_id(0);
+  if (i >= nown) return;
+  const real q = r[i] + beta * (p[i] - omega * v[i]);
+  p[i] = q;
+  ph[i] = dinv[i] * q;
+}
+
+/* s = r − α v, sh = D⁻¹ s */
+__kernel void ds_s(const uint nown, const real alpha, __global const real *r,
+                   __global const real *v, __global const real *dinv, __global real *s,
+                   __global real *sh)
+{
+  const uint i = get_global_id(0);
+  if (i >= nown) return;
+  const real q = r[i] - alpha * v[i];
+  s[i] = q;
+  sh[i] = dinv[i] * q;
+}
+
+/* x += α ph + ω sh, r = s − ω t */
+__kernel void ds_x(const uint nown, const real alpha, const real omega, __global const real *ph,
+                   __global const real *sh, __global const real *s, __global const real *t,
+                   __global real *x, __global real *r)
+{
+  const uint i = get_global_id(0);
+  if (i >= nown) return;
+  x[i] += alpha * ph[i] + omega * sh[i];
+  r[i] = s[i] - omega * t[i];
+}
+
+/* buf[k] = x[idx[k]]: the owned values a neighbour's halo holds, packed for the exchange */
+__kernel void ds_gather(const uint m, __global const uint *idx, __global const real *x,
+                        __global real *buf)
+{
+  const uint k = get_global_id(0);
+  if (k >= m) return;
+  buf[k] = x[idx[k]];
+}
