@@ -88,3 +88,78 @@ __kernel void ds_gather(const uint m, __global const uint *idx, __global const r
   if (k >= m) return;
   buf[k] = x[idx[k]];
 }
+
+/* The one-sum iteration (dsolve.c, DSOLVE_ONE_SUM): BiCGStab on B = A D⁻¹ with the products
+ * q = B r and y = B v and every inner product of an iteration in one reduction (Yang & Brent
+ * 2002's rearrangement, "improved BiCGStab"). */
+
+/* p = r + β (p − ω v), v = q + β (v − ω y) (= B p by the recurrence), vh = D⁻¹ v */
+__kernel void ds_pv(const uint nown, const real beta, const real omega, __global const real *r,
+                    __global const real *q, __global const real *y, __global const real *dinv,
+                    __global real *p, __global real *v, __global real *vh)
+{
+  const uint i = get_global_id(0);
+  if (i >= nown) return;
+  const real vi = v[i];
+  p[i] = r[i] + beta * (p[i] - omega * vi);
+  const real w = q[i] + beta * (vi - omega * y[i]);
+  v[i] = w;
+  vh[i] = dinv[i] * w;
+}
+
+/* s = r − α v, t = q − α y, x += D⁻¹ (α p + ω s), r = s − ω t, rh = D⁻¹ r */
+__kernel void ds_xr(const uint nown, const real alpha, const real omega, __global const real *dinv,
+                    __global const real *p, __global const real *v, __global const real *q,
+                    __global const real *y, __global real *x, __global real *r, __global real *rh)
+{
+  const uint i = get_global_id(0);
+  if (i >= nown) return;
+  const real s = r[i] - alpha * v[i], t = q[i] - alpha * y[i], d = dinv[i];
+  x[i] += d * (alpha * p[i] + omega * s);
+  const real rn = s - omega * t;
+  r[i] = rn;
+  rh[i] = d * rn;
+}
+
+/* rh = D⁻¹ r */
+__kernel void ds_scale(const uint nown, __global const real *dinv, __global const real *r,
+                       __global real *rh)
+{
+  const uint i = get_global_id(0);
+  if (i >= nown) return;
+  rh[i] = dinv[i] * r[i];
+}
+
+/* The one-sum iteration's DS_NDOTS inner products over the owned rows, partial[DS_NDOTS g + k] of
+ * work-group g: (r0, v) (r0, q) (r0, y) (r0, r) (q, r) (q, v) (y, r) (y, v) (q, q) (q, y) (y, y)
+ * (r, r). */
+#define DS_NDOTS 12
+__kernel void ds_dots(const uint nown, __global const real *r0, __global const real *r,
+                      __global const real *q, __global const real *v, __global const real *y,
+                      __global real *partial, __local real *s)
+{
+  const uint l = get_local_id(0), g = get_group_id(0);
+  const uint stride = get_global_size(0);
+  real d[DS_NDOTS];
+  for (int k = 0; k < DS_NDOTS; ++k) d[k] = R(0.0);
+  for (uint i = get_global_id(0); i < nown; i += stride) {
+    const real a = r0[i], ri = r[i], qi = q[i], vi = v[i], yi = y[i];
+    d[0] += a * vi;
+    d[1] += a * qi;
+    d[2] += a * yi;
+    d[3] += a * ri;
+    d[4] += qi * ri;
+    d[5] += qi * vi;
+    d[6] += yi * ri;
+    d[7] += yi * vi;
+    d[8] += qi * qi;
+    d[9] += qi * yi;
+    d[10] += yi * yi;
+    d[11] += ri * ri;
+  }
+  for (int k = 0; k < DS_NDOTS; ++k) {
+    s[l] = d[k];
+    blas1_group_sum(s, partial, DS_NDOTS * g + (uint)k);
+    barrier(CLK_LOCAL_MEM_FENCE);
+  }
+}

@@ -52,11 +52,20 @@ struct dsolve_stats {
   double bytes_sent;            /* halo values sent by this rank, bytes */
 };
 
+/** The iteration. DSOLVE_ONE_SUM: BiCGStab on A D⁻¹ rearranged so that every inner product of an
+ *  iteration comes from one reduction (Yang & Brent 2002, "improved BiCGStab"): the products
+ *  q = B r and y = B v, v = B p by recurrence, and the scalars from 12 inner products, one global
+ *  sum an iteration instead of three; the residual's norm in that sum is the one the iteration
+ *  started with, so convergence is seen one iteration late (its two products spent for nothing). */
+enum dsolve_variant { DSOLVE_BICGSTAB = 0, DSOLVE_ONE_SUM };
+
 struct dsolve_result {
   int converged;
   int its;
-  double rnorm; /* ||b − A x|| / ||b|| over every rank */
-  int restarts; /* breakdown restarts */
+  double rnorm;      /* ||r|| / ||b|| of the iteration's residual, over every rank */
+  double rnorm_true; /* ||b − A x|| / ||b|| recomputed at the end (DSOLVE_ONE_SUM, whose v is a
+                      * recurrence; the other: rnorm) */
+  int restarts;      /* breakdown restarts */
   struct dsolve_stats stats;
 };
 
@@ -67,7 +76,7 @@ struct dsolve {
   int nbrs;
   size_t nsend[DSOLVE_MAX_NBRS], nrecv[DSOLVE_MAX_NBRS];
   size_t groups;
-  cl_kernel k_spmv, k_residual, k_dot2, k_p, k_s, k_x, k_gather;
+  cl_kernel k_spmv, k_residual, k_dot2, k_p, k_s, k_x, k_gather, k_pv, k_xr, k_scale, k_dots;
   cl_mem d_row, d_col, d_val, d_dinv, d_send_idx, d_sendbuf;
   cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_partial;
   real *h_send, *h_recv, *h_partial;
@@ -81,7 +90,7 @@ enum clsph_status dsolve_create(const struct dev *dev, cl_program prog,
  *  x the initial guess; b's halo is not read, x's is overwritten). Collective: every rank calls
  *  it. A solve that reaches max_it is reported (converged 0), not an error. */
 enum clsph_status dsolve_solve(struct dsolve *ds, cl_mem b, cl_mem x, double rtol, int max_it,
-                               struct dsolve_result *res);
+                               enum dsolve_variant variant, struct dsolve_result *res);
 /** @brief Release. */
 void dsolve_destroy(struct dsolve *ds);
 

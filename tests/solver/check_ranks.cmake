@@ -1,6 +1,7 @@
 # check_ranks.cmake: run clsph-ranks under mpiexec and check its JSON (tests/CMakeLists.txt,
 # ranks_*). -DMPIEXEC, -DNP, -DEXE, -DOUT, -DARGS (|-separated), -DTOL (the split solve against the
-# whole problem alone, relative), -DITS (iterations within this many of the whole problem's).
+# whole problem alone, relative), -DITS (iterations within this many of the whole problem's),
+# -DRTOL (the solve's tolerance: the one-sum variant's recomputed residual must meet it).
 # The solution's error against the exact one must be the whole problem's to TOL as well.
 string(REPLACE "|" ";" args "${ARGS}")
 file(REMOVE "${OUT}")
@@ -27,11 +28,27 @@ math(EXPR d "${its} - ${its0}")
 if(d GREATER ${ITS} OR d LESS -${ITS})
   message(FATAL_ERROR "${its} iterations split, ${its0} alone: more than ${ITS} apart")
 endif()
-# two exchanges and three sums an iteration, and one of each before the first
-math(EXPR want_ex "2 * ${its} + 1")
-math(EXPR want_sums "3 * ${its} + 1")
-if(NOT ex EQUAL want_ex OR NOT sums EQUAL want_sums)
-  message(FATAL_ERROR "${ex} exchanges and ${sums} sums for ${its} iterations (want ${want_ex}, ${want_sums})")
+string(JSON variant GET "${j}" variant)
+string(JSON restarts GET "${j}" restarts)
+string(JSON rtrue GET "${j}" rnorm_true)
+if(variant STREQUAL "bicgstab")
+  # two exchanges and three sums an iteration, and one of each before the first
+  math(EXPR want_ex "2 * ${its} + 1")
+  math(EXPR want_sums "3 * ${its} + 1")
+  if(NOT ex EQUAL want_ex OR NOT sums EQUAL want_sums)
+    message(FATAL_ERROR "${ex} exchanges and ${sums} sums for ${its} iterations (want ${want_ex}, ${want_sums})")
+  endif()
+else()
+  # one sum an iteration: the one that sees convergence (an iteration late) and, per pass from a
+  # true residual, one for that residual; two exchanges an iteration and one per residual
+  math(EXPR max_sums "${its} + 1 + 2 * (1 + ${restarts})")
+  math(EXPR max_ex "2 * ${its} + 2 + 3 * (1 + ${restarts})")
+  if(sums GREATER max_sums OR ex GREATER max_ex)
+    message(FATAL_ERROR "${ex} exchanges and ${sums} sums for ${its} iterations and ${restarts} restarts (at most ${max_ex}, ${max_sums})")
+  endif()
+  if(rtrue GREATER ${RTOL})
+    message(FATAL_ERROR "the recomputed residual ${rtrue} is above the tolerance ${RTOL}")
+  endif()
 endif()
 if(diff GREATER ${TOL})
   message(FATAL_ERROR "split solution off the whole problem's by ${diff} (> ${TOL})")

@@ -7,7 +7,9 @@
  *   - The exchange lists: what rank r sends its upper neighbour is, in order, the halo that
  *     neighbour reads from below, and back; every unknown is owned once.
  *   - One rank: dsolve (BiCGStab + Jacobi, the host's loop) takes the iterations of psolve's
- *     Jacobi on the whole problem within one, and gives its solution to the solver's tolerance.
+ *     Jacobi on the whole problem within one, and gives its solution to the solver's tolerance;
+ *     the one-sum variant within three, its recomputed residual within the tolerance, one global
+ *     sum an iteration.
  *   - Bad input: too many ranks for the rows, a singular problem, a zero tolerance.
  * Float builds solve to 1e-5 and compare at 2e-4 (the Laplacian's condition number, ~160 at 40
  * per side, times the float tolerance); the rows agree to 1e-5 of their largest entry (the
@@ -205,7 +207,7 @@ static void check_one_rank(const struct dev *dev, struct whole *w)
   const int ok =
       pslab_create(dev, &spec, 0, 1, &s) == CLSPH_OK &&
       dsolve_create(dev, s.pp.prog, &s.layout, &comm, &ds) == CLSPH_OK &&
-      dsolve_solve(&ds, s.d_b, s.d_x, rtol, 5000, &res) == CLSPH_OK &&
+      dsolve_solve(&ds, s.d_b, s.d_x, rtol, 5000, DSOLVE_BICGSTAB, &res) == CLSPH_OK &&
       psolve_create(dev, w->pp.prog, w->pp.n, &o, &ps) == CLSPH_OK &&
       kern_fill(dev, x, &zero, sizeof zero, w->pp.n * sizeof(real)) == CLSPH_OK &&
       psolve_solve(&ps, &w->pp.po.op, pset_mem(&w->pp.ps, w->pp.f_b), x, &pres) == CLSPH_OK;
@@ -230,8 +232,27 @@ static void check_one_rank(const struct dev *dev, struct whole *w)
     m = fmax(m, fabs(xw[w->at[s.gid[i]]]));
   }
   TC_NEAR(d / m, 0.0, agree, "one rank: dsolve's solution = psolve's");
+  /* one global sum an iteration: the same solution, the iterations within 3, the recomputed
+   * residual within the tolerance */
+  struct dsolve_result r1;
+  const real z = 0;
+  if (kern_fill(dev, s.d_x, &z, sizeof z, s.layout.n * sizeof(real)) ||
+      dsolve_solve(&ds, s.d_b, s.d_x, rtol, 5000, DSOLVE_ONE_SUM, &r1) ||
+      pslab_read_owned(&s, s.d_x, xs)) {
+    TC_CHECK(0, "one rank, one sum: the solve runs");
+    goto done;
+  }
+  TC_CHECK(r1.converged && abs(r1.its - pres.its) <= 3 && r1.rnorm_true <= rtol,
+           "one rank, one sum: %d iterations (psolve %d), recomputed residual %.2e", r1.its,
+           pres.its, r1.rnorm_true);
+  TC_CHECK(r1.stats.sums <= r1.its + 1 + 2 * (1 + r1.restarts),
+           "one rank, one sum: %ld global sums for %d iterations", r1.stats.sums, r1.its);
+  d = 0.0;
+  for (size_t i = 0; i < s.layout.nown; ++i) d = fmax(d, fabs(xs[i] - xw[w->at[s.gid[i]]]));
+  TC_NEAR(d / m, 0.0, agree, "one rank, one sum: the solution = psolve's");
   /* a zero tolerance is refused */
-  TC_CHECK(dsolve_solve(&ds, s.d_b, s.d_x, 0.0, 10, &res) == CLSPH_E_INPUT, "rtol 0 is refused");
+  TC_CHECK(dsolve_solve(&ds, s.d_b, s.d_x, 0.0, 10, DSOLVE_BICGSTAB, &res) == CLSPH_E_INPUT,
+           "rtol 0 is refused");
 done:
   free(xs);
   free(xw);
