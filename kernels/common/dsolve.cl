@@ -90,8 +90,8 @@ __kernel void ds_gather(const uint m, __global const uint *idx, __global const r
 }
 
 /* The one-sum iteration (dsolve.c, DSOLVE_ONE_SUM): BiCGStab on B = A D⁻¹ with the products
- * q = B r and y = B v and every inner product of an iteration in one reduction (Yang & Brent
- * 2002's rearrangement, "improved BiCGStab"). */
+ * q = B r and y = B v and every inner product of an iteration in one reduction (after Yang &
+ * Brent 2002, "improved BiCGStab"). */
 
 /* p = r + β (p − ω v), v = q + β (v − ω y) (= B p by the recurrence), vh = D⁻¹ v */
 __kernel void ds_pv(const uint nown, const real beta, const real omega, __global const real *r,

@@ -53,7 +53,7 @@ struct dsolve_stats {
 };
 
 /** The iteration. DSOLVE_ONE_SUM: BiCGStab on A D⁻¹ rearranged so that every inner product of an
- *  iteration comes from one reduction (Yang & Brent 2002, "improved BiCGStab"): the products
+ *  iteration comes from one reduction (after Yang & Brent 2002, "improved BiCGStab"): the products
  *  q = B r and y = B v, v = B p by recurrence, and the scalars from 12 inner products, one global
  *  sum an iteration instead of three; the residual's norm in that sum is the one the iteration
  *  started with, so convergence is seen one iteration late (its two products spent for nothing). */
