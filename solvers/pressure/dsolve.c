@@ -194,6 +194,27 @@ done:
   return st;
 }
 
+/* The guess's residual r = b − A x (d2: ||r||², ||b||²), its relative norm in res; a guess that
+ * meets rtol, or b = 0 (then x = 0), ends the solve converged */
+static enum clsph_status start(struct dsolve *ds, cl_mem b, cl_mem x, double rtol,
+                               struct dsolve_result *res, double d2[2], double *bnorm)
+{
+  enum clsph_status st = CLSPH_OK;
+  const real zero = 0;
+  CLSPH_TRY(residual(ds, b, x, d2, &res->stats));
+  *bnorm = sqrt(d2[1]);
+  res->rnorm = *bnorm > 0.0 ? sqrt(d2[0]) / *bnorm : 0.0;
+  if (!(*bnorm > 0.0)) {
+    CLSPH_TRY(kern_fill(ds->dev, x, &zero, sizeof zero, ds->n * sizeof(real)));
+    res->converged = 1;
+    goto done;
+  }
+  CLSPH_CHECK(isfinite(res->rnorm), CLSPH_E_BLOWUP, "dsolve: the initial residual is not finite");
+  res->converged = res->rnorm <= rtol;
+done:
+  return st;
+}
+
 static enum clsph_status bicgstab(struct dsolve *ds, cl_mem b, cl_mem x, double rtol, int max_it,
                                   struct dsolve_result *res)
 {
@@ -201,22 +222,10 @@ static enum clsph_status bicgstab(struct dsolve *ds, cl_mem b, cl_mem x, double 
   struct dsolve_stats *s = &res->stats;
   const cl_uint n = (cl_uint)ds->nown;
   const real zero = 0;
-  double d2[2];
-  /* r = b − A x, with x's halo from the neighbours */
-  CLSPH_TRY(residual(ds, b, x, d2, s));
-  const double bnorm = sqrt(d2[1]);
-  double rnorm = bnorm > 0.0 ? sqrt(d2[0]) / bnorm : 0.0;
-  res->rnorm = rnorm;
-  if (!(bnorm > 0.0)) { /* b = 0: x = 0 */
-    CLSPH_TRY(kern_fill(ds->dev, x, &zero, sizeof zero, ds->n * sizeof(real)));
-    res->converged = 1;
-    goto done;
-  }
-  CLSPH_CHECK(isfinite(rnorm), CLSPH_E_BLOWUP, "dsolve: the initial residual is not finite");
-  if (rnorm <= rtol) {
-    res->converged = 1;
-    goto done;
-  }
+  double d2[2], bnorm = 0.0;
+  CLSPH_TRY(start(ds, b, x, rtol, res, d2, &bnorm));
+  if (res->converged) goto done;
+  double rnorm = res->rnorm;
   CLSPH_TRY(kern_copy(ds->dev, ds->d_r0, ds->d_r, ds->nown * sizeof(real)));
   CLSPH_TRY(kern_fill(ds->dev, ds->d_p, &zero, sizeof zero, ds->n * sizeof(real)));
   CLSPH_TRY(kern_fill(ds->dev, ds->d_v, &zero, sizeof zero, ds->n * sizeof(real)));
@@ -316,20 +325,9 @@ static enum clsph_status one_sum(struct dsolve *ds, cl_mem b, cl_mem x, double r
   struct dsolve_stats *s = &res->stats;
   const cl_uint n = (cl_uint)ds->nown;
   const real zero = 0;
-  double d2[2], d[DS_NDOTS];
-  CLSPH_TRY(residual(ds, b, x, d2, s));
-  const double bnorm = sqrt(d2[1]);
-  res->rnorm = res->rnorm_true = bnorm > 0.0 ? sqrt(d2[0]) / bnorm : 0.0;
-  if (!(bnorm > 0.0)) { /* b = 0: x = 0 */
-    CLSPH_TRY(kern_fill(ds->dev, x, &zero, sizeof zero, ds->n * sizeof(real)));
-    res->converged = 1;
-    goto done;
-  }
-  CLSPH_CHECK(isfinite(res->rnorm), CLSPH_E_BLOWUP, "dsolve: the initial residual is not finite");
-  if (res->rnorm <= rtol) {
-    res->converged = 1;
-    goto done;
-  }
+  double d2[2], d[DS_NDOTS], bnorm = 0.0;
+  CLSPH_TRY(start(ds, b, x, rtol, res, d2, &bnorm));
+  if (res->converged) goto done;
   /* v = B p is a recurrence, and b − A x drifts from the iteration's r (at 512 per side, 2 ranks:
    * 3.9e-10 against 3.4e-11): a solve that converged on r goes on from the true residual until
    * that one passes too, three times at most */
@@ -415,7 +413,7 @@ enum clsph_status dsolve_solve(struct dsolve *ds, cl_mem b, cl_mem x, double rto
     st = one_sum(ds, b, x, rtol, max_it, res);
   else
     st = bicgstab(ds, b, x, rtol, max_it, res);
-  if (variant != DSOLVE_ONE_SUM) res->rnorm_true = res->rnorm;
+  if (variant != DSOLVE_ONE_SUM || res->rnorm_true == 0.0) res->rnorm_true = res->rnorm;
   res->stats.seconds = now() - t0;
 done:
   return st;
