@@ -127,16 +127,21 @@ done:
   return st;
 }
 
-enum clsph_status pproblem_read(struct pproblem *pp, cl_mem x, double *out)
+enum clsph_status pproblem_read_n(const struct dev *dev, cl_mem x, size_t n, double *out)
 {
   enum clsph_status st = CLSPH_OK;
-  real *buf = malloc(pp->n * sizeof *buf);
+  real *buf = malloc((n > 0 ? n : 1) * sizeof *buf);
   CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory");
-  CLSPH_TRY(kern_read(pp->dev, x, pp->n * sizeof *buf, buf));
-  for (size_t i = 0; i < pp->n; ++i) out[i] = (double)buf[i];
+  CLSPH_TRY(kern_read(dev, x, n * sizeof *buf, buf));
+  for (size_t i = 0; i < n; ++i) out[i] = (double)buf[i];
 done:
   free(buf);
   return st;
+}
+
+enum clsph_status pproblem_read(struct pproblem *pp, cl_mem x, double *out)
+{
+  return pproblem_read_n(pp->dev, x, pp->n, out);
 }
 
 enum clsph_status pproblem_error(struct pproblem *pp, cl_mem x, double *err)

@@ -55,6 +55,8 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
 enum clsph_status pproblem_error(struct pproblem *pp, cl_mem x, double *err);
 /** @brief Read a solution vector to the host in double (sorted order). */
 enum clsph_status pproblem_read(struct pproblem *pp, cl_mem x, double *out);
+/** @brief Read the first n reals of a device vector to the host in double. */
+enum clsph_status pproblem_read_n(const struct dev *dev, cl_mem x, size_t n, double *out);
 /** @brief Release. */
 void pproblem_destroy(struct pproblem *pp);
 /** @brief The rows of the lattice that one row's unknown reaches through the operator (the

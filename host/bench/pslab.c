@@ -184,15 +184,7 @@ done:
 
 enum clsph_status pslab_read_owned(struct pslab *s, cl_mem x, double *out)
 {
-  enum clsph_status st = CLSPH_OK;
-  const size_t nown = s->layout.nown;
-  real *buf = malloc((nown > 0 ? nown : 1) * sizeof *buf);
-  CLSPH_CHECK(buf != NULL, CLSPH_E_NOMEM, "out of memory");
-  CLSPH_TRY(kern_read(s->pp.dev, x, nown * sizeof *buf, buf));
-  for (size_t i = 0; i < nown; ++i) out[i] = (double)buf[i];
-done:
-  free(buf);
-  return st;
+  return pproblem_read_n(s->pp.dev, x, s->layout.nown, out);
 }
 
 void pslab_destroy(struct pslab *s)
