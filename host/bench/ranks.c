@@ -140,8 +140,8 @@ static int parse(int argc, char **argv, struct opts *o, int rank)
     if (!ok) {
       if (rank == 0)
         fprintf(stderr,
-                "clsph-ranks: %s %s is out of range (side 8-4096, kgc 0 or 1, max-it 1-1e6, "
-                "reps 1-100, jitter 0-0.5, rtol from 4 epsilon (%.2g) to 1)\n",
+                "clsph-ranks: %s %s is not a number in its range (side 8-4096, kgc 0 or 1, "
+                "max-it 1-1e6, reps 1-100, jitter 0-0.5, rtol from 4 epsilon (%.2g) to 1)\n",
                 a, v, 4.0 * REAL_EPS);
       return 0;
     }
