@@ -10,7 +10,8 @@
 #include "rng.h"
 
 static const double pi = 3.14159265358979323846;
-#define PP_H 2.0 /* smoothing length, spacings (Wendland C2: support 2h) */
+#define PP_H     2.0 /* smoothing length, spacings (Wendland C2: support 2h) */
+#define PP_GHOST 4   /* Dirichlet rows below y = 0 and above y = 1 (regular problems) */
 
 static double exact(const struct pproblem_spec *s, double x, double y)
 {
@@ -40,7 +41,7 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
   pp.spec = *spec;
   CLSPH_CHECK(spec->side >= 8, CLSPH_E_INPUT, "pproblem: at least 8 particles per side");
   pp.dr = 1.0 / spec->side;
-  const int ghost = spec->singular ? 0 : 4, rows = spec->side + 2 * ghost;
+  const int ghost = spec->singular ? 0 : PP_GHOST, rows = pproblem_rows(spec);
   const int slab = spec->row_hi > 0, lo = slab ? spec->row_lo : 0, hi = slab ? spec->row_hi : rows;
   CLSPH_CHECK(!slab || (!spec->singular && 0 <= lo && lo < hi && hi <= rows), CLSPH_E_INPUT,
               "pproblem: rows [%d, %d) are no slab of the %d rows of a regular problem", lo, hi,
@@ -193,4 +194,9 @@ int pproblem_reach_rows(const struct pproblem_spec *spec)
   /* rows k apart are at least (k − jitter) dr apart, and a pair counts closer than the support
    * (2h): k < 2h/dr + jitter. The correction enters a row through its own L_i only (poisson.cl). */
   return (int)floor(2.0 * PP_H + spec->jitter);
+}
+
+int pproblem_rows(const struct pproblem_spec *spec)
+{
+  return spec->side + (spec->singular ? 0 : 2 * PP_GHOST);
 }

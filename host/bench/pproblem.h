@@ -63,5 +63,7 @@ void pproblem_destroy(struct pproblem *pp);
  *  Laplacian's support and the jitter); a slab that owns rows needs this many more on each side
  *  (pslab.h). */
 int pproblem_reach_rows(const struct pproblem_spec *spec);
+/** @brief The lattice's rows, the Dirichlet layers counted. */
+int pproblem_rows(const struct pproblem_spec *spec);
 
 #endif /* CLSPH_PPROBLEM_H */

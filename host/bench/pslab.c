@@ -58,7 +58,7 @@ enum clsph_status pslab_create(const struct dev *dev, const struct pproblem_spec
   s.rank = rank;
   s.nranks = nranks;
   s.reach = pproblem_reach_rows(spec);
-  const int ghost = 4, rows = spec->side + 2 * ghost;
+  const int rows = pproblem_rows(spec);
   CLSPH_TRY(pslab_rows(rows, nranks, rank, s.reach, &s.row_lo, &s.row_hi));
   sp.row_lo = s.row_lo - s.reach > 0 ? s.row_lo - s.reach : 0;
   sp.row_hi = s.row_hi + s.reach < rows ? s.row_hi + s.reach : rows;
