@@ -114,9 +114,7 @@ enum clsph_status pproblem_create(const struct dev *dev, const struct pproblem_s
     CLSPH_TRY(ops_apply(&pp.ops, OP_CORRECTION, dev, &pp.g, pp.n, P, V, NULL, NULL, pp.d_L, NULL));
   *out = pp;
   memset(&pp, 0, sizeof pp);
-  /* bound after the copy: the operator keeps the address of the grid */
-  poisson_op_bind(&out->po, &out->g, out->n, P, V, spec->kgc ? out->d_L : NULL,
-                  pset_mem(&out->ps, out->f_dir));
+  pproblem_rebind(out); /* after the copy: the operator keeps the address of the grid */
 done:
   pproblem_destroy(&pp);
   prog_opts_free(&o);
@@ -126,6 +124,13 @@ done:
   free(vol);
   free(pos);
   return st;
+}
+
+void pproblem_rebind(struct pproblem *pp)
+{
+  poisson_op_bind(&pp->po, &pp->g, pp->n, pset_mem(&pp->ps, pp->f_pos),
+                  pset_mem(&pp->ps, pp->f_vol), pp->spec.kgc ? pp->d_L : NULL,
+                  pset_mem(&pp->ps, pp->f_dir));
 }
 
 enum clsph_status pproblem_read_n(const struct dev *dev, cl_mem x, size_t n, double *out)

@@ -59,6 +59,9 @@ enum clsph_status pproblem_read(struct pproblem *pp, cl_mem x, double *out);
 enum clsph_status pproblem_read_n(const struct dev *dev, cl_mem x, size_t n, double *out);
 /** @brief Release. */
 void pproblem_destroy(struct pproblem *pp);
+/** @brief Point the operator at the problem where it now lies (after a struct pproblem was copied:
+ *  the operator keeps the addresses of the problem's grid and of itself). */
+void pproblem_rebind(struct pproblem *pp);
 /** @brief The rows of the lattice that one row's unknown reaches through the operator (the
  *  Laplacian's support and the jitter); a slab that owns rows needs this many more on each side
  *  (pslab.h). */

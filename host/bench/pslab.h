@@ -25,14 +25,27 @@ struct pslab {
   cl_uint *send;
   cl_uint *gid;    /* global index of each unknown, dsolve numbering */
   cl_mem d_b, d_x; /* right-hand side and solution, dsolve numbering */
+  /* PSOLVE_MULTIGRID: the rank's own multigrid as the split solve's preconditioner (the local
+   * problem's operator with the halo's rows made Dirichlet rows, its levels aggregating the rank's
+   * cells only) */
+  struct psolve ps;
+  int multigrid;
+  cl_kernel k_to_local, k_back;
+  cl_mem d_map;    /* local (grid-sorted) index → dsolve index */
+  cl_mem d_own_at; /* owned dsolve index → local index */
+  cl_mem d_rl, d_zl;
+  struct dsolve_precond pc;
 };
 
 /** @brief The rows [lo, hi) rank `rank` of `nranks` owns of `rows`, and a clear error when a slab
  *  would be thinner than `reach` rows (its halo would need more than its two neighbours). */
 enum clsph_status pslab_rows(int rows, int nranks, int rank, int reach, int *lo, int *hi);
-/** @brief Build rank `rank`'s part of the regular problem `spec` (spec's rows are set here). */
+/** @brief Build rank `rank`'s part of the regular problem `spec` (spec's rows are set here), with
+ *  the preconditioner `precond` (PSOLVE_JACOBI or PSOLVE_MULTIGRID). */
 enum clsph_status pslab_create(const struct dev *dev, const struct pproblem_spec *spec, int rank,
-                               int nranks, struct pslab *out);
+                               int nranks, enum psolve_precond precond, struct pslab *out);
+/** @brief The preconditioner dsolve_create takes: NULL for Jacobi (dsolve's own). */
+const struct dsolve_precond *pslab_precond(const struct pslab *s);
 /** @brief The owned values of x (dsolve numbering) to the host, in double. */
 enum clsph_status pslab_read_owned(struct pslab *s, cl_mem x, double *out);
 /** @brief Release. */

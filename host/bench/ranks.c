@@ -3,16 +3,18 @@
  *
  *   mpiexec -n 2 clsph-ranks psolve [--side N] [--jitter J] [--kgc 0|1] [--rtol R] [--max-it M]
  *                                   [--reps K] [--device I] [--json FILE] [--no-check]
- *                                   [--one-sum]
+ *                                   [--one-sum] [--precond jacobi|multigrid]
  *
  * Each rank builds its slab of the manufactured problem (pslab.h: its rows and the rows they
  * reach), stores its rows on its device and solves with dsolve (BiCGStab + Jacobi, halo exchanges
- * and global sums through MPI; --one-sum: one global sum an iteration instead of three). Rank 0
+ * and global sums through MPI; --one-sum: one global sum an iteration instead of three;
+ * --precond multigrid: each rank's own multigrid V-cycle on its rows instead of Jacobi). Rank 0
  * gathers the solution by global index and, unless
  * --no-check, solves the whole problem alone with the production solver (psolve.c, the same
- * preconditioner and tolerance) and reports the difference, the iterations of both and the
- * error against the exact solution. It prints the figures and writes them as JSON. Exit codes: 0,
- * 1 failure (a solve that did not converge too), 2 bad command line. */
+ * preconditioner, its multigrid over the whole problem, and tolerance) and reports the difference,
+ * the iterations of both and the error against the exact solution. It prints the figures and writes
+ * them as JSON. Exit codes: 0, 1 failure (a solve that did not converge too), 2 bad command line.
+ */
 #include <math.h>
 #include <mpi.h>
 #include <stdio.h>
@@ -74,6 +76,7 @@ static enum clsph_status mpi_exchange(void *ctx, const real *send, const size_t 
 
 struct opts {
   int side, kgc, max_it, reps, device, check, one_sum;
+  enum psolve_precond precond;
   double jitter, rtol;
   const char *json;
 };
@@ -93,7 +96,7 @@ static int parse(int argc, char **argv, struct opts *o, int rank)
     if (rank == 0)
       fprintf(stderr, "usage: mpiexec -n RANKS clsph-ranks psolve [--side N] [--jitter J] "
                       "[--kgc 0|1] [--rtol R] [--max-it M] [--reps K] [--device I] [--json FILE] "
-                      "[--no-check] [--one-sum]\n");
+                      "[--no-check] [--one-sum] [--precond jacobi|multigrid]\n");
     return 0;
   }
   for (int i = 2; i < argc; ++i) {
@@ -116,6 +119,16 @@ static int parse(int argc, char **argv, struct opts *o, int rank)
     if (strcmp(a, "--json") == 0) {
       o->json = v;
       continue;
+    }
+    if (strcmp(a, "--precond") == 0) {
+      if (strcmp(v, "jacobi") == 0 || strcmp(v, "multigrid") == 0) {
+        o->precond = strcmp(v, "jacobi") == 0 ? PSOLVE_JACOBI : PSOLVE_MULTIGRID;
+        continue;
+      }
+      if (rank == 0)
+        fprintf(stderr, "clsph-ranks: --precond %s: the preconditioners are jacobi and multigrid\n",
+                v);
+      return 0;
     }
     const double x = strtod(v, &end);
     ok = end != v && *end == '\0' && isfinite(x);
@@ -158,8 +171,9 @@ static int cmp_double(const void *a, const void *b)
 /* Rank 0: the whole problem solved alone by psolve (Jacobi, the same tolerance); its iterations,
  * its solution by global index, and the error of `xg` (by global index) against the exact one. */
 static enum clsph_status reference(const struct dev *dev, const struct pproblem_spec *spec,
-                                   double rtol, int max_it, const double *xg, int *its,
-                                   double *diff, double *err, double *err_ref)
+                                   enum psolve_precond precond, double rtol, int max_it,
+                                   const double *xg, int *its, double *diff, double *err,
+                                   double *err_ref)
 {
   enum clsph_status st = CLSPH_OK;
   struct pproblem pp;
@@ -179,7 +193,7 @@ static enum clsph_status reference(const struct dev *dev, const struct pproblem_
   xs = malloc(n * sizeof *xs);
   CLSPH_CHECK(gid && xr && xs, CLSPH_E_NOMEM, "out of memory");
   psolve_defaults(&o);
-  o.precond = PSOLVE_JACOBI;
+  o.precond = precond;
   o.apply = PSOLVE_STORED;
   o.rtol = rtol;
   o.max_it = max_it;
@@ -240,12 +254,12 @@ int main(int argc, char **argv)
   prog_set_cache_dir(NULL);
   struct pproblem_spec spec = {.side = o.side, .jitter = o.jitter, .kgc = o.kgc, .seed = 11};
   CLSPH_TRY(dev_open(o.device, CLSPH_DOUBLE, &dev));
-  CLSPH_TRY(pslab_create(&dev, &spec, rank, size, &slab));
+  CLSPH_TRY(pslab_create(&dev, &spec, rank, size, o.precond, &slab));
   mc.comm = MPI_COMM_WORLD;
   mc.nbrs = slab.layout.nbrs;
   for (int k = 0; k < mc.nbrs; ++k) mc.nbr[k] = slab.nbr[k];
   const struct dsolve_comm comm = {.ctx = &mc, .sum = mpi_sum, .exchange = mpi_exchange};
-  CLSPH_TRY(dsolve_create(&dev, slab.pp.prog, &slab.layout, &comm, &ds));
+  CLSPH_TRY(dsolve_create(&dev, slab.pp.prog, &slab.layout, &comm, pslab_precond(&slab), &ds));
   times = malloc((size_t)o.reps * sizeof *times);
   CLSPH_CHECK(times != NULL, CLSPH_E_NOMEM, "out of memory");
   for (int r = 0; r < o.reps; ++r) { /* cold solves from x = 0; the slowest rank's time */
@@ -293,15 +307,17 @@ int main(int argc, char **argv)
   if (rank == 0) {
     for (size_t k = 0; k < total; ++k) xg[all_gid[k]] = all_x[k];
     if (o.check)
-      CLSPH_TRY(reference(&dev, &spec, o.rtol, o.max_it, xg, &its_ref, &diff, &err, &err_ref));
+      CLSPH_TRY(
+          reference(&dev, &spec, o.precond, o.rtol, o.max_it, xg, &its_ref, &diff, &err, &err_ref));
     const double med = times[o.reps / 2], per = res.its > 0 ? med / res.its : 0.0;
     printf("pressure solve split across %d ranks: %zu unknowns (%d per side, jitter %g, %s), "
            "%s\n",
            size, total, o.side, o.jitter, o.kgc ? "corrected Laplacian" : "Morris Laplacian",
            CLSPH_PRECISION_NAME);
-    printf("  %s: iterations %d (whole problem alone, psolve: %d), relative residual %.2e "
+    printf("  %s, %s: iterations %d (whole problem alone, psolve: %d), relative residual %.2e "
            "(recomputed %.2e), %s\n",
-           o.one_sum ? "BiCGStab with one global sum an iteration" : "BiCGStab", res.its, its_ref,
+           o.one_sum ? "BiCGStab with one global sum an iteration" : "BiCGStab",
+           o.precond == PSOLVE_MULTIGRID ? "each rank's multigrid" : "Jacobi", res.its, its_ref,
            res.rnorm, res.rnorm_true, converged ? "converged" : "NOT converged");
     printf("  solve %.4f s (median of %d), %.3f ms an iteration; in MPI (the last solve, the "
            "rank longest in each): halo exchanges %.1f%%, global sums %.1f%%\n",
@@ -327,6 +343,7 @@ int main(int argc, char **argv)
       cJSON_AddNumberToObject(j, "rnorm", res.rnorm);
       cJSON_AddNumberToObject(j, "rnorm_true", res.rnorm_true);
       cJSON_AddStringToObject(j, "variant", o.one_sum ? "one-sum" : "bicgstab");
+      cJSON_AddStringToObject(j, "precond", o.precond == PSOLVE_MULTIGRID ? "multigrid" : "jacobi");
       cJSON_AddNumberToObject(j, "restarts", res.restarts);
       cJSON_AddNumberToObject(j, "seconds", med);
       cJSON_AddNumberToObject(j, "exchange_mpi_seconds", cost[0]);

@@ -163,3 +163,15 @@ __kernel void ds_dots(const uint nown, __global const real *r0, __global const r
     barrier(CLK_LOCAL_MEM_FENCE);
   }
 }
+
+/* out[i] = in[map[i]] where map[i] < nown (an owned row of the split numbering), else 0: a rank's
+ * owned values into its local problem's order, the halo's left at zero (a preconditioner of the
+ * owned rows alone, pslab.c) */
+__kernel void ds_to_local(const uint n, const uint nown, __global const uint *map,
+                          __global const real *in, __global real *out)
+{
+  const uint i = get_global_id(0);
+  if (i >= n) return;
+  const uint m = map[i];
+  out[i] = m < nown ? in[m] : R(0.0);
+}

@@ -25,7 +25,7 @@ static double now(void)
 
 enum clsph_status dsolve_create(const struct dev *dev, cl_program prog,
                                 const struct dsolve_layout *l, const struct dsolve_comm *comm,
-                                struct dsolve *out)
+                                const struct dsolve_precond *pc, struct dsolve *out)
 {
   enum clsph_status st = CLSPH_OK;
   struct dsolve ds;
@@ -34,6 +34,7 @@ enum clsph_status dsolve_create(const struct dev *dev, cl_program prog,
   memset(&ds, 0, sizeof ds);
   ds.dev = dev;
   ds.comm = *comm;
+  if (pc != NULL) ds.pc = *pc;
   ds.nown = l->nown;
   ds.n = l->n;
   ds.nbrs = l->nbrs;
@@ -239,6 +240,7 @@ static enum clsph_status bicgstab(struct dsolve *ds, cl_mem b, cl_mem x, double 
     CLSPH_TRY(KERN_SET(ds->k_p, KARG(n), KARG(beta), KARG(om), KARG(ds->d_r), KARG(ds->d_v),
                        KARG(ds->d_dinv), KARG(ds->d_p), KARG(ds->d_ph)));
     CLSPH_TRY(kern_launch(ds->dev, ds->k_p, n, NULL));
+    if (ds->pc.apply != NULL) CLSPH_TRY(ds->pc.apply(ds->pc.ctx, ds->d_p, ds->d_ph));
     CLSPH_TRY(halo(ds, ds->d_ph, s));
     CLSPH_TRY(spmv(ds, ds->d_ph, ds->d_v));
     CLSPH_TRY(dots(ds, ds->d_r0, ds->d_v, ds->d_r0, ds->d_v, d2, s));
@@ -258,6 +260,7 @@ static enum clsph_status bicgstab(struct dsolve *ds, cl_mem b, cl_mem x, double 
     CLSPH_TRY(KERN_SET(ds->k_s, KARG(n), KARG(al), KARG(ds->d_r), KARG(ds->d_v), KARG(ds->d_dinv),
                        KARG(ds->d_s), KARG(ds->d_sh)));
     CLSPH_TRY(kern_launch(ds->dev, ds->k_s, n, NULL));
+    if (ds->pc.apply != NULL) CLSPH_TRY(ds->pc.apply(ds->pc.ctx, ds->d_s, ds->d_sh));
     CLSPH_TRY(halo(ds, ds->d_sh, s));
     CLSPH_TRY(spmv(ds, ds->d_sh, ds->d_t));
     CLSPH_TRY(dots(ds, ds->d_t, ds->d_s, ds->d_t, ds->d_t, d2, s));
@@ -408,6 +411,9 @@ enum clsph_status dsolve_solve(struct dsolve *ds, cl_mem b, cl_mem x, double rto
   memset(res, 0, sizeof *res);
   CLSPH_CHECK(rtol > 0.0 && max_it > 0, CLSPH_E_INPUT,
               "dsolve: rtol %g and max_it %d must be positive", rtol, max_it);
+  CLSPH_CHECK(variant != DSOLVE_ONE_SUM || ds->pc.apply == NULL, CLSPH_E_INPUT,
+              "dsolve: the one-sum iteration takes the Jacobi preconditioner only (its products "
+              "are of A D⁻¹)");
   const double t0 = now();
   if (variant == DSOLVE_ONE_SUM)
     st = one_sum(ds, b, x, rtol, max_it, res);

@@ -22,6 +22,14 @@ struct dsolve_comm {
                                 const size_t *nrecv);
 };
 
+/** A preconditioner of the owned rows other than Jacobi (NULL apply: Jacobi): z = M⁻¹ r, both in
+ *  the layout's numbering, reading r's owned values and writing z's (pslab.c: one V-cycle of the
+ *  multigrid of the rank's own rows, its halo's rows Dirichlet rows). */
+struct dsolve_precond {
+  void *ctx;
+  enum clsph_status (*apply)(void *ctx, cl_mem r, cl_mem z);
+};
+
 /** DSOLVE_MAX_NBRS neighbours at most (slabs: the one below and the one above). */
 #define DSOLVE_MAX_NBRS 2
 
@@ -72,6 +80,7 @@ struct dsolve_result {
 struct dsolve {
   const struct dev *dev;
   struct dsolve_comm comm;
+  struct dsolve_precond pc;
   size_t nown, n, nsend_total, nrecv_total;
   int nbrs;
   size_t nsend[DSOLVE_MAX_NBRS], nrecv[DSOLVE_MAX_NBRS];
@@ -82,10 +91,11 @@ struct dsolve {
   real *h_send, *h_recv, *h_partial;
 };
 
-/** @brief Kernels (program with DSOLVE_SOURCES after PSOLVE_SOURCES) and the stored rows. */
+/** @brief Kernels (program with DSOLVE_SOURCES after PSOLVE_SOURCES) and the stored rows; pc NULL
+ *  or with a NULL apply: Jacobi (DSOLVE_ONE_SUM takes Jacobi only). */
 enum clsph_status dsolve_create(const struct dev *dev, cl_program prog,
                                 const struct dsolve_layout *l, const struct dsolve_comm *comm,
-                                struct dsolve *out);
+                                const struct dsolve_precond *pc, struct dsolve *out);
 /** @brief Solve A x = b to ||b − A x|| <= rtol ||b|| (b and x: n reals in the layout's numbering,
  *  x the initial guess; b's halo is not read, x's is overwritten). Collective: every rank calls
  *  it. A solve that reaches max_it is reported (converged 0), not an error. */

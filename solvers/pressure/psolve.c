@@ -673,6 +673,47 @@ static const char *reason_str(enum psolve_reason r)
   return "?";
 }
 
+enum clsph_status psolve_precond_setup(struct psolve *ps, const struct psolve_op *op)
+{
+  enum clsph_status st = CLSPH_OK;
+  const int multigrid = ps->opt.precond == PSOLVE_MULTIGRID;
+  CLSPH_CHECK(op->n <= ps->cap, CLSPH_E_INPUT, "%s preconditioner: %zu unknowns exceed %zu",
+              ps->opt.name, op->n, ps->cap);
+  CLSPH_CHECK(!multigrid || op->grid != NULL, CLSPH_E_INPUT,
+              "%s preconditioner: the multigrid needs unknowns sorted by a grid", ps->opt.name);
+  CLSPH_TRY(store(ps, op, 0)); /* unguarded: the count is read and the buffers grow to it */
+  CLSPH_TRY(diagonal(ps, op));
+  if (multigrid)
+    CLSPH_TRY(mg_setup(&ps->mg, op->grid, op->n, ps->d_row, ps->d_col, ps->d_val, ps->d_valm,
+                       reinforcement(ps), ps->d_dinv));
+  /* a state that never ended, so that the cycle's kernels of "iteration 0" run (krylov.cl) */
+  double big[PSOLVE_STATE] = {0};
+  float bigf[PSOLVE_STATE] = {0};
+  big[0] = 1e30;
+  bigf[0] = 1e30f;
+  if (ps->state_double)
+    CLSPH_TRY(kern_write(ps->dev, ps->d_state, sizeof big, big));
+  else
+    CLSPH_TRY(kern_write(ps->dev, ps->d_state, sizeof bigf, bigf));
+done:
+  return st;
+}
+
+enum clsph_status psolve_precond_apply(struct psolve *ps, const struct psolve_op *op, cl_mem r,
+                                       cl_mem z)
+{
+  enum clsph_status st = CLSPH_OK;
+  if (ps->opt.precond == PSOLVE_MULTIGRID) { /* the cycle's first sweep from zero: t = dw ∘ r */
+    const cl_uint n = (cl_uint)op->n, k = 0;
+    CLSPH_TRY(KERN_SET(ps->k_scale, KARG(n), KARG(k), KARG(ps->d_state), KARG(ps->mg.d_t),
+                       KARG(ps->mg.d_dw), KARG(r)));
+    CLSPH_TRY(launch(ps, ps->k_scale, n));
+  }
+  CLSPH_TRY(precond(ps, op, r, z, ps->d_t, 0));
+done:
+  return st;
+}
+
 /* set_up = 0: the stored layout, diagonal and multigrid levels of the last solve serve again */
 static enum clsph_status solve(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
                                struct psolve_result *res, int set_up)

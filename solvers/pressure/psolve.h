@@ -147,6 +147,14 @@ enum clsph_status psolve_assemble(struct psolve *ps, const struct psolve_op *op,
 /** @brief Solve with UMFPACK on the host (the reference). */
 enum clsph_status psolve_direct(struct psolve *ps, const struct psolve_op *op, cl_mem b, cl_mem x,
                                 struct psolve_result *res);
+/** @brief Set up the preconditioner of the options for op without solving (the stored operator,
+ *  its diagonal, the multigrid's levels): psolve_precond_apply then applies it, e.g. to the rows a
+ *  rank owns of a system split across ranks (dsolve.h). */
+enum clsph_status psolve_precond_setup(struct psolve *ps, const struct psolve_op *op);
+/** @brief z = M⁻¹ r with the preconditioner of the last psolve_precond_setup (one V-cycle of the
+ *  multigrid; D⁻¹ r for Jacobi). */
+enum clsph_status psolve_precond_apply(struct psolve *ps, const struct psolve_op *op, cl_mem r,
+                                       cl_mem z);
 /** @brief Release. */
 void psolve_destroy(struct psolve *ps);
 

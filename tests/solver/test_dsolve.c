@@ -9,7 +9,8 @@
  *   - One rank: dsolve (BiCGStab + Jacobi, the host's loop) takes the iterations of psolve's
  *     Jacobi on the whole problem within one, and gives its solution to the solver's tolerance;
  *     the one-sum variant within three, its recomputed residual within the tolerance, one global
- *     sum an iteration.
+ *     sum an iteration; with the rank's own multigrid (pslab.c) psolve's multigrid iterations
+ *     within one and its solution.
  *   - Bad input: too many ranks for the rows, a singular problem, a zero tolerance.
  * Float builds solve to 1e-5 and compare at 2e-4 (the Laplacian's condition number, ~160 at 40
  * per side, times the float tolerance); the rows agree to 1e-5 of their largest entry (the
@@ -119,7 +120,7 @@ static void check_split(const struct dev *dev, const struct whole *w, int nranks
   memset(s, 0, sizeof s);
   int made = 0;
   for (int r = 0; r < nranks; ++r, ++made)
-    if (pslab_create(dev, &spec, r, nranks, &s[r]) != CLSPH_OK) break;
+    if (pslab_create(dev, &spec, r, nranks, PSOLVE_JACOBI, &s[r]) != CLSPH_OK) break;
   TC_CHECK(made == nranks, "%d ranks: every slab builds", nranks);
   if (made < nranks) goto done;
   /* every unknown owned once */
@@ -205,8 +206,8 @@ static void check_one_rank(const struct dev *dev, struct whole *w)
   o.group_max = 0;
   cl_mem x = pset_mem(&w->pp.ps, w->pp.f_x);
   const int ok =
-      pslab_create(dev, &spec, 0, 1, &s) == CLSPH_OK &&
-      dsolve_create(dev, s.pp.prog, &s.layout, &comm, &ds) == CLSPH_OK &&
+      pslab_create(dev, &spec, 0, 1, PSOLVE_JACOBI, &s) == CLSPH_OK &&
+      dsolve_create(dev, s.pp.prog, &s.layout, &comm, NULL, &ds) == CLSPH_OK &&
       dsolve_solve(&ds, s.d_b, s.d_x, rtol, 5000, DSOLVE_BICGSTAB, &res) == CLSPH_OK &&
       psolve_create(dev, w->pp.prog, w->pp.n, &o, &ps) == CLSPH_OK &&
       kern_fill(dev, x, &zero, sizeof zero, w->pp.n * sizeof(real)) == CLSPH_OK &&
@@ -261,6 +262,62 @@ done:
   pslab_destroy(&s);
 }
 
+/* One rank with its own multigrid: the local problem is the whole one, so dsolve preconditioned
+ * by it (through pslab's renumbering) takes psolve's multigrid iterations within one and gives its
+ * solution; the one-sum iteration refuses it. */
+static void check_one_rank_multigrid(const struct dev *dev, struct whole *w)
+{
+  struct pslab s;
+  struct dsolve ds;
+  struct dsolve_result res;
+  struct psolve ps;
+  struct psolve_options o;
+  struct psolve_result pres;
+  const struct dsolve_comm comm = {.ctx = NULL, .sum = no_sum, .exchange = no_exchange};
+  double *xs = NULL, *xw = NULL;
+  const real zero = 0;
+  memset(&s, 0, sizeof s);
+  memset(&ds, 0, sizeof ds);
+  memset(&ps, 0, sizeof ps);
+  psolve_defaults(&o);
+  o.precond = PSOLVE_MULTIGRID;
+  o.rtol = rtol;
+  o.max_it = 5000;
+  o.group_max = 0;
+  cl_mem x = pset_mem(&w->pp.ps, w->pp.f_x);
+  const int ok =
+      pslab_create(dev, &spec, 0, 1, PSOLVE_MULTIGRID, &s) == CLSPH_OK &&
+      dsolve_create(dev, s.pp.prog, &s.layout, &comm, pslab_precond(&s), &ds) == CLSPH_OK &&
+      dsolve_solve(&ds, s.d_b, s.d_x, rtol, 5000, DSOLVE_BICGSTAB, &res) == CLSPH_OK &&
+      psolve_create(dev, w->pp.prog, w->pp.n, &o, &ps) == CLSPH_OK &&
+      kern_fill(dev, x, &zero, sizeof zero, w->pp.n * sizeof(real)) == CLSPH_OK &&
+      psolve_solve(&ps, &w->pp.po.op, pset_mem(&w->pp.ps, w->pp.f_b), x, &pres) == CLSPH_OK;
+  TC_CHECK(ok, "one rank, multigrid: both solves run");
+  if (!ok) goto done;
+  TC_CHECK(res.converged && pres.reason > 0 && abs(res.its - pres.its) <= 1,
+           "one rank, multigrid: dsolve's %d iterations = psolve's %d (± 1)", res.its, pres.its);
+  xs = malloc(s.layout.nown * sizeof *xs);
+  xw = malloc(w->pp.n * sizeof *xw);
+  if (xs == NULL || xw == NULL || pslab_read_owned(&s, s.d_x, xs) || pproblem_read(&w->pp, x, xw)) {
+    TC_CHECK(0, "one rank, multigrid: read the solutions");
+    goto done;
+  }
+  double d = 0.0, m = 0.0;
+  for (size_t i = 0; i < s.layout.nown; ++i) {
+    d = fmax(d, fabs(xs[i] - xw[w->at[s.gid[i]]]));
+    m = fmax(m, fabs(xw[w->at[s.gid[i]]]));
+  }
+  TC_NEAR(d / m, 0.0, agree, "one rank, multigrid: dsolve's solution = psolve's");
+  TC_CHECK(dsolve_solve(&ds, s.d_b, s.d_x, rtol, 10, DSOLVE_ONE_SUM, &res) == CLSPH_E_INPUT,
+           "one rank, multigrid: the one-sum iteration refuses a preconditioner but Jacobi");
+done:
+  free(xs);
+  free(xw);
+  psolve_destroy(&ps);
+  dsolve_destroy(&ds);
+  pslab_destroy(&s);
+}
+
 int main(void)
 {
   struct dev dev;
@@ -272,6 +329,7 @@ int main(void)
     check_split(&dev, &w, 2);
     check_split(&dev, &w, 3);
     check_one_rank(&dev, &w);
+    check_one_rank_multigrid(&dev, &w);
   }
   whole_free(&w);
   /* bad input: 48 rows of 10 reached at 5 ranks; a singular problem */
@@ -285,7 +343,8 @@ int main(void)
   struct pslab s;
   memset(&s, 0, sizeof s);
   sing.singular = 1;
-  TC_CHECK(pslab_create(&dev, &sing, 0, 2, &s) == CLSPH_E_INPUT, "a singular problem is refused");
+  TC_CHECK(pslab_create(&dev, &sing, 0, 2, PSOLVE_JACOBI, &s) == CLSPH_E_INPUT,
+           "a singular problem is refused");
   pslab_destroy(&s);
   dev_close(&dev);
   return tc_finish("dsolve");
