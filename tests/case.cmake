@@ -610,6 +610,8 @@ clsph_cli_test(solver_rtol_one ARGS info ${CASE_DIR}/bad_solver.lua --set what=4
                REGEX "solver_rtol must be in \\(0, 1\\).*bad_solver.lua: in scheme option solver_rtol")
 clsph_cli_test(solver_group_max_negative ARGS info ${CASE_DIR}/bad_solver.lua --set what=5 RC 2
                REGEX "solver_group_max must be a whole number of unknowns from 0 \\(never\\) to 1e7.*bad_solver.lua: in scheme option solver_group_max")
+clsph_cli_test(solver_fuse_unknown ARGS info ${CASE_DIR}/bad_solver.lua --set what=6 RC 2
+               REGEX "solver_fuse must be \"separate\" or \"fused\".*bad_solver.lua: in scheme option solver_fuse")
 # Healthy runs that the clustering check lets through with the default checks: flows that press
 # particles together as they should, and reach their end (health.* bounds read summary.json's
 # health block). Both came within the old limit, 0.5 dr, and were stopped there.

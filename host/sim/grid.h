@@ -43,6 +43,16 @@ _Static_assert(offsetof(struct grid_dev, sm) == 3 * sizeof(real4) &&
 /** Kernel sources every neighbour program starts with, in order. */
 #define GRID_SOURCES "common/real.h", "common/flags.h", "common/smoothing.h", "common/grid.cl"
 
+/** Items up to which grid_scan runs in one work-group and one launch (grid_scan_group in grid.cl)
+ *  rather than three launches. */
+#define GRID_SCAN_GROUP_MAX 16384
+#define GRID_SCAN_GROUP_WG  64 /* GRID_SCAN_WG in grid.cl */
+
+/** The kernels of the exclusive prefix sum (grid.cl): blocks, top and apply, or one group. */
+struct grid_scan {
+  cl_kernel blocks, top, apply, group;
+};
+
 struct grid {
   struct grid_spec spec;
   struct grid_dev geom;
@@ -50,7 +60,8 @@ struct grid {
   size_t ncells; /* total cells */
   size_t sorted; /* particles the last grid_sort binned (the start table's total) */
   size_t cap;    /* particles the per-particle buffers hold */
-  cl_kernel k_bin, k_scan_blocks, k_scan_top, k_scan_apply, k_scatter, k_order, k_gather;
+  cl_kernel k_bin, k_scatter, k_order, k_gather;
+  struct grid_scan scan;
   cl_mem d_count; /* ncells + 1 counts (the last: particles that left, grid.cl) */
   cl_mem d_block; /* block sums of the scan */
   cl_mem d_start; /* ncells + 1: cell c holds sorted particles start[c] .. start[c+1] − 1 */
@@ -72,12 +83,25 @@ enum clsph_status grid_create(const struct dev *dev, cl_program prog, const stru
  *  the others (the extra cell ncells). */
 enum clsph_status grid_sort(struct grid *g, const struct dev *dev, size_t n, cl_mem d_pos,
                             cl_mem d_kind, cl_mem d_flags);
+/** @brief grid_sort, and with d_id (the particles' original indices before the reorder) in the
+ *  same launch as the cells' ordering d_inv[id] = the index each particle takes in the reorder
+ *  (the inverse of the reordered id field); d_id NULL: grid_sort alone. */
+enum clsph_status grid_sort_inv(struct grid *g, const struct dev *dev, size_t n, cl_mem d_pos,
+                                cl_mem d_kind, cl_mem d_flags, cl_mem d_id, cl_mem d_inv);
 /** Fields one grid_gather launch reorders. */
 #define GRID_GATHER_FIELDS 8
 /** @brief dst[f][k] = src[f][perm[k]] for `count` <= GRID_GATHER_FIELDS fields, field f of
  *  words[f] 32-bit words per particle, in one launch. */
 enum clsph_status grid_gather(struct grid *g, const struct dev *dev, size_t n, int count,
                               const size_t *words, const cl_mem *src, const cl_mem *dst);
+/** @brief Create the scan's kernels from a program built with GRID_SOURCES. */
+enum clsph_status grid_scan_create(cl_program prog, struct grid_scan *s);
+/** @brief start = the exclusive prefix sum of the `items` counts (block: (items + 63) / 64 + 1
+ *  words of scratch): one launch up to GRID_SCAN_GROUP_MAX items, else three. t may be NULL. */
+enum clsph_status grid_scan_run(const struct grid_scan *s, const struct dev *dev, cl_uint items,
+                                cl_mem count, cl_mem block, cl_mem start, struct kern_timer *t);
+/** @brief Release the scan's kernels (safe on a zeroed struct). */
+void grid_scan_destroy(struct grid_scan *s);
 /** @brief Switch per-stage device timing on or off (and reset it). */
 void grid_timing(struct grid *g, int on);
 /** @brief Release kernels and buffers. Safe on a zeroed struct. */

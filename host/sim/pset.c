@@ -56,10 +56,16 @@ void pset_describe(struct pset *ps, int index, enum pfield_type type, int nout, 
   f->output = output;
 }
 
+void pset_temporary(struct pset *ps, int index)
+{
+  ps->f[index].temp = 1;
+  ps->f[index].output = 0;
+}
+
 int pset_find(const struct pset *ps, const char *name)
 {
   for (int k = 0; k < ps->nfields; ++k)
-    if (strcmp(ps->f[k].name, name) == 0) return k;
+    if (!ps->f[k].temp && strcmp(ps->f[k].name, name) == 0) return k;
   return -1;
 }
 
@@ -74,18 +80,20 @@ cl_mem pset_mem(const struct pset *ps, int index)
 enum clsph_status pset_reorder(struct pset *ps, struct grid *g, const struct dev *dev)
 {
   enum clsph_status st = CLSPH_OK;
-  int k = 0;
-  while (k < ps->nfields) {
+  int done[PSET_MAX_FIELDS] = {0};
+  for (;;) { /* a launch takes every field left whose size still has a spare, up to its slots */
     int field[GRID_GATHER_FIELDS], spare[GRID_GATHER_FIELDS], taken[PSET_MAX_FIELDS] = {0};
     size_t words[GRID_GATHER_FIELDS];
     cl_mem src[GRID_GATHER_FIELDS], dst[GRID_GATHER_FIELDS];
     int count = 0;
-    for (; k < ps->nfields && count < GRID_GATHER_FIELDS; ++k) {
+    for (int k = 0; k < ps->nfields && count < GRID_GATHER_FIELDS; ++k) {
       const struct pfield *f = &ps->f[k];
+      if (done[k] || f->temp) continue;
       int s = 0;
       while (s < ps->nscratch && (ps->scratch_elem[s] != f->elem || taken[s])) ++s;
-      if (s == ps->nscratch) break; /* every spare of this size is taken: the next batch */
+      if (s == ps->nscratch) continue; /* every spare of this size is taken: a later launch */
       taken[s] = 1;
+      done[k] = 1;
       field[count] = k;
       spare[count] = s;
       words[count] = f->elem / 4;
@@ -93,6 +101,7 @@ enum clsph_status pset_reorder(struct pset *ps, struct grid *g, const struct dev
       dst[count] = ps->scratch[s];
       ++count;
     }
+    if (count == 0) break;
     CLSPH_TRY(grid_gather(g, dev, ps->n, count, words, src, dst));
     for (int c = 0; c < count; ++c) { /* the gathered copy becomes the field; the old its spare */
       struct pfield *f = &ps->f[field[c]];

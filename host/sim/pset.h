@@ -21,6 +21,7 @@ struct pfield {
   int ncomp;             /* components stored per particle (elem / size of the type) */
   int nout;              /* components that carry data (3-D positions: 3 of 4), <= ncomp */
   int output;            /* written to snapshots (all fields go into checkpoints) */
+  int temp;              /* a value within a step only (pset_temporary): not reordered */
   cl_mem d;              /* device buffer, cap * elem bytes */
 };
 
@@ -42,11 +43,16 @@ enum clsph_status pset_add(struct pset *ps, const struct dev *dev, const char *n
                            const void *init, int *index);
 /** @brief Set a field's element type and the components that carry data (after pset_add). */
 void pset_describe(struct pset *ps, int index, enum pfield_type type, int nout, int output);
-/** @brief Index of the field called `name`, or −1. */
+/** @brief Mark a field (not an output) as a scheme's value within a step, which the scheme makes
+ *  again after every sort before it reads it: the reordering leaves it (its values then belong to
+ *  no particle), and pset_find does not know it. */
+void pset_temporary(struct pset *ps, int index);
+/** @brief Index of the field called `name` (not a temporary), or −1. */
 int pset_find(const struct pset *ps, const char *name);
 /** @brief Current buffer of a field. */
 cl_mem pset_mem(const struct pset *ps, int index);
-/** @brief Reorder every field by the grid's permutation (after grid_sort). */
+/** @brief Reorder every field but the temporaries by the grid's permutation (after grid_sort), as
+ *  few launches as the spare buffers allow. */
 enum clsph_status pset_reorder(struct pset *ps, struct grid *g, const struct dev *dev);
 /** @brief Release every buffer. */
 void pset_destroy(struct pset *ps);

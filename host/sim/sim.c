@@ -347,7 +347,6 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(prog_kernel(sim.prog, "probe_sample", &sim.k_probe));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_max_speed", &sim.k_max_speed));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_count", &sim.k_count));
-  CLSPH_TRY(prog_kernel(sim.prog, "grid_invert", &sim.k_invert));
   CLSPH_TRY(prog_kernel(sim.prog, "domain_check", &sim.k_domain));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_slice_velocity", &sim.k_slice));
   CLSPH_TRY(prog_kernel(sim.prog, "health_sums", &sim.k_health));
@@ -377,14 +376,12 @@ done:
 enum clsph_status sim_sort(struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
-  CLSPH_TRY(grid_sort(&sim->grid, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos),
-                      pset_mem(&sim->ps, sim->f_kind), sim->d_flags));
+  /* the inverse index with the cells' ordering, from the ids before the reorder */
+  CLSPH_TRY(grid_sort_inv(&sim->grid, sim->dev, sim->ps.n, pset_mem(&sim->ps, sim->f_pos),
+                          pset_mem(&sim->ps, sim->f_kind), sim->d_flags,
+                          pset_mem(&sim->ps, sim->f_id), sim->d_inv));
   CLSPH_TRY(pset_reorder(&sim->ps, &sim->grid, sim->dev));
   ++sim->sorts;
-  cl_uint n = (cl_uint)sim->ps.n;
-  cl_mem id = pset_mem(&sim->ps, sim->f_id);
-  CLSPH_TRY(KERN_SET(sim->k_invert, KARG(n), KARG(id), KARG(sim->d_inv)));
-  CLSPH_TRY(kern_launch(sim->dev, sim->k_invert, sim->ps.n, NULL));
 done:
   return st;
 }
@@ -494,11 +491,10 @@ void sim_destroy(struct sim *sim)
   if (sim->k_probe != NULL) clReleaseKernel(sim->k_probe);
   if (sim->k_max_speed != NULL) clReleaseKernel(sim->k_max_speed);
   if (sim->k_count != NULL) clReleaseKernel(sim->k_count);
-  if (sim->k_invert != NULL) clReleaseKernel(sim->k_invert);
   if (sim->k_domain != NULL) clReleaseKernel(sim->k_domain);
   if (sim->k_slice != NULL) clReleaseKernel(sim->k_slice);
   if (sim->k_health != NULL) clReleaseKernel(sim->k_health);
-  sim->k_probe = sim->k_max_speed = sim->k_count = sim->k_invert = sim->k_slice = NULL;
+  sim->k_probe = sim->k_max_speed = sim->k_count = sim->k_slice = NULL;
   sim->k_domain = NULL;
   sim->k_health = NULL;
   kern_release(&sim->d_health);

@@ -60,8 +60,8 @@ struct sim {
   double speed;
   cl_kernel k_count;    /* reduction: nonzero entries of a uint field */
   cl_kernel k_domain;   /* fluid outside the domain's box (domain.c) */
-  cl_kernel k_invert;   /* inv[id[k]] = k */
-  cl_mem d_inv;         /* current index of each original particle index (after sim_sort) */
+  cl_mem d_inv;         /* current index of each original particle index (after sim_sort:
+                         * grid_sort_inv) */
   double body_force[3]; /* body force now, m/s²: the scene's, x under flow-rate control */
   /* a wall group translated at a constant speed over [start, stop) (a gate: solvers/gate sets
    * it), so that the outputs draw its walls where they stand (sim_moved_offset); group NULL:

@@ -32,11 +32,21 @@ __kernel void csr_guard(const uint n, const uint cap, __global uint *row, __glob
   for (uint i = get_local_id(0); i <= n; i += get_local_size(0)) row[i] = 0u;
 }
 
-/* d <- diag(A) */
-__kernel void csr_diag(const uint n, __global const uint *row, __global const real *val,
-                       __global real *d)
+/* d = diag A and dinv = 1 / (d + ε d) (the reinforcement's (1 + ε), blas1_axpy's sum) in one
+ * launch, a zero or non-finite one flagged and taken as 1 (blas1_invert) */
+__kernel void csr_diag_inverse(const uint n, __global const uint *row, __global const real *val,
+                               const real eps, __global real *d, __global real *dinv,
+                               __global uint *flags)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
-  d[i] = val[row[i]];
+  const real a = val[row[i]];
+  d[i] = a;
+  real v = a;
+  v += eps * a;
+  if (!(fabs(v) > R(0.0)) || !isfinite(v)) {
+    flags_raise(flags, CLSPH_FLAG_NAN);
+    v = R(1.0);
+  }
+  dinv[i] = R(1.0) / v;
 }

@@ -4,9 +4,11 @@
  * GRID_SUB cells of its own along each axis. Building the list is a stable counting sort:
  *   grid_bin          cell of each particle, and its rank in the cell (atomic counter)
  *   grid_scan_*       exclusive prefix sum of the counts: start[c] .. start[c+1] is cell c
+ *                     (grid_scan_group: in one launch, for few cells)
  *   grid_scatter      perm[new] = old
  *   grid_order_cells  sorts each cell's slice of perm by old index, so the result does not
- *                     depend on the order the atomics ran in (bit-for-bit reproducible runs)
+ *                     depend on the order the atomics ran in (bit-for-bit reproducible runs), and
+ *                     can write the inverse index of the particles' original ids
  *   grid_gather       applies perm to up to 8 fields at once (dst[new] = src[perm[new]])
  * Periodic axes (-D PERIODIC_X/Y/Z=1) wrap cells and shift the image: r_ij = r_i − (r_j + shift).
  * An open side (-D GRID_OPEN = bits: 1 << a the upper side of axis a, 16 << a the lower; the side
@@ -300,6 +302,35 @@ __kernel void grid_scan_apply(const uint n, __global const uint *count,
   }
 }
 
+/* The same scan in one launch, for at most GRID_SCAN_GROUP_MAX items (grid.h): one work-group of
+ * GRID_SCAN_WG items, each summing a contiguous slice, its first item scanning the slices' sums,
+ * each then writing its slice (where grid_scan_blocks, _top and _apply take three launches) */
+#define GRID_SCAN_WG 64
+__kernel void grid_scan_group(const uint n, __global const uint *count, __global uint *start)
+{
+  __local uint part[GRID_SCAN_WG];
+  const uint l = get_local_id(0), per = (n + GRID_SCAN_WG - 1) / GRID_SCAN_WG;
+  const uint first = min(n, l * per), last = min(n, first + per);
+  uint s = 0;
+  for (uint k = first; k < last; ++k) s += count[k];
+  part[l] = s;
+  barrier(CLK_LOCAL_MEM_FENCE);
+  if (l == 0) {
+    uint a = 0;
+    for (uint w = 0; w < GRID_SCAN_WG; ++w) {
+      const uint v = part[w];
+      part[w] = a;
+      a += v;
+    }
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+  s = part[l];
+  for (uint k = first; k < last; ++k) {
+    start[k] = s;
+    s += count[k];
+  }
+}
+
 __kernel void grid_scatter(const uint n, __global const uint *cell, __global const uint *rank,
                            __global const uint *start, __global uint *perm)
 {
@@ -308,11 +339,14 @@ __kernel void grid_scatter(const uint n, __global const uint *cell, __global con
   perm[start[cell[i]] + rank[i]] = i;
 }
 
-__kernel void grid_order_cells(const uint ncells, __global const uint *start, __global uint *perm)
+__kernel void grid_order_cells(const uint ncells, const uint n, __global const uint *start,
+                               __global uint *perm, const uint with_inv, __global const uint *id,
+                               __global uint *inv)
 {
   const uint c = get_global_id(0);
-  if (c >= ncells) return;
-  const uint first = start[c], last = start[c + 1];
+  if (c > ncells) return;
+  /* the extra cell ncells holds the particles that left (CLSPH_KIND_OUT) up to n */
+  const uint first = start[c], last = c < ncells ? start[c + 1] : n;
   for (uint a = first + 1; a < last; ++a) { /* insertion sort: cells hold a few particles */
     uint v = perm[a];
     uint b = a;
@@ -322,6 +356,8 @@ __kernel void grid_order_cells(const uint ncells, __global const uint *start, __
     }
     perm[b] = v;
   }
+  if (with_inv) /* inv[id[k]] = k of the reordered ids, read from the ids before the reorder */
+    for (uint a = first; a < last; ++a) inv[id[perm[a]]] = a;
 }
 
 /* Reorder up to GRID_GATHER_FIELDS fields in one launch, field f of words.sf 32-bit words per
@@ -348,12 +384,4 @@ __kernel void grid_gather(const uint n, __global const uint *perm, const uint8 w
   GRID_GATHER_ONE(words.s5, s5, d5);
   GRID_GATHER_ONE(words.s6, s6, d6);
   GRID_GATHER_ONE(words.s7, s7, d7);
-}
-
-/* inv[id[k]] = k: where the particle of each original index is now (after a reorder). */
-__kernel void grid_invert(const uint n, __global const uint *id, __global uint *inv)
-{
-  const uint k = get_global_id(0);
-  if (k >= n) return;
-  inv[id[k]] = k;
 }

@@ -147,6 +147,29 @@ __kernel void kr_residual(const uint n, __global const real *b, __global const r
   kr_group_sum2(s, t, part, KR_RR, KR_RHO);
 }
 
+/* kr_dot (b, b), kr_spmv and kr_residual in one pass over the stored rows (csr.cl layout,
+ * diagonal first): r = b − (A + ε diag A) x, with (b, b) into set KR_BB and (r, r) into KR_RR and
+ * KR_RHO, the sums theirs to the bit */
+__kernel void kr_residual_csr(const uint n, __global const real *b, __global const uint *row,
+                              __global const uint *col, __global const real *val, const real eps,
+                              __global const real *x, __global real *r, __global real *part)
+{
+  __local real s[BLAS1_WG], t[BLAS1_WG];
+  real bb = R(0.0), rr = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    const real bi = b[i];
+    const real q = blas1_row_dot(eps * val[row[i]] * x[i], row[i], row[i + 1], col, val, x);
+    const real v = bi - q;
+    r[i] = v;
+    bb += bi * bi;
+    rr += v * v;
+  }
+  s[get_local_id(0)] = bb;
+  t[get_local_id(0)] = rr;
+  kr_group_sum2(s, t, part, KR_BB, KR_RR);
+  if (get_local_id(0) == 0) part[KR_RHO * BLAS1_GROUPS + get_group_id(0)] = t[0];
+}
+
 /* dst = src − mean, the mean from set KR_SUM (a consistent singular system's b and x) */
 __kernel void kr_shift(const uint n, __global const real *part, const uint ngroups,
                        __global const real *src, __global real *dst)
@@ -225,12 +248,48 @@ __kernel void kr_start(const uint n, const uint ngroups, const real rtol, const 
 
 /* Iteration k begins: the residual of k − 1 (sets KR_RR, KR_RHO) ends the solve if it is small
  * or not finite; else ρ' = (r0, r), β = (ρ'/ρ)(α/ω) and p = r + β (p − ω v), and with `scale`
- * t = dw ∘ p for the multigrid. check = 1: the test alone (after the last iteration of a batch).
- * ρ' below noise ||r0|| ||r|| (noise: the precision's epsilon) is the dot product's rounding
- * alone: a breakdown, restarted from r. A smaller bound let a hydrostatic tank's second solve go
- * on with ρ' 16 orders under ρ, and the next α (7e15) ruin x while the recursive residual
- * converged. Here and in kr_s the loop is written twice rather than storing t under `if (scale)`:
- * PoCL 5 (LLVM 15) compiled that conditional store to writes past n (valgrind: 8 bytes past p). */
+ * t = dw ∘ p for the multigrid (fused, mg.cl's mg_begin_down, which also makes the cycle's fine
+ * residual). check = 1: the test alone (after the last iteration of a batch). ρ' below noise
+ * ||r0|| ||r|| (noise: the precision's epsilon) is the dot product's rounding alone: a breakdown,
+ * restarted from r. A smaller bound let a hydrostatic tank's second solve go on with ρ' 16 orders
+ * under ρ, and the next α (7e15) ruin x while the recursive residual converged. Here and in kr_s
+ * the loop is written twice rather than storing t under `if (scale)`: PoCL 5 (LLVM 15) compiled
+ * that conditional store to writes past n (valgrind: 8 bytes past p). kr_begin_scalars: the
+ * scalars, taken by the first item of each work-group; 1 when iteration k goes on, with β, ω. */
+int kr_begin_scalars(__global kreal *st, __global const real *part, const uint k,
+                     const uint ngroups, const uint check, const real noise, real *beta,
+                     real *omega)
+{
+  const int first = get_global_id(0) == 0;
+  const kreal rr = kr_sum(part, KR_RR, ngroups), rho = kr_sum(part, KR_RHO, ngroups);
+  const kreal bnorm = st[KR_BNORM], stop = st[KR_STOP], rn = sqrt(rr);
+  if (!isfinite(rr)) {
+    if (first) kr_end(st, k - 1, -3, rn / bnorm);
+  } else if (rn <= stop) {
+    if (first) kr_end(st, k - 1, rn <= st[KR_ATOL] ? 2 : 1, rn / bnorm);
+  } else if (check) {
+    if (first) st[KR_RNORM] = rn / bnorm;
+  } else if (!isfinite(rho)) {
+    if (first) kr_end(st, k, -3, rn / bnorm);
+  } else if (fabs(rho) <= (kreal)noise * (st[KR_R0NORM] < KR(0.0) ? rn : st[KR_R0NORM]) * rn) {
+    /* breakdown: the host restarts. The state ends the solve at k − 1, so that the rest of
+     * iteration k does nothing (ended at k, its kernels went on with the α of iteration k − 2's
+     * slot and moved x and r by it before the restart) */
+    if (first) kr_end(st, k - 1, KR_RESTART_RHO, rn / bnorm);
+  } else {
+    const uint o = KR_SLOT(k - 1);
+    *beta = (real)((rho / st[o]) * (st[o + 1] / st[o + 2]));
+    *omega = (real)st[o + 2];
+    if (first) {
+      st[KR_SLOT(k)] = rho;
+      st[KR_RNORM] = rn / bnorm;
+      if (st[KR_R0NORM] < KR(0.0)) st[KR_R0NORM] = rn;
+    }
+    return 1;
+  }
+  return 0;
+}
+
 __kernel void kr_begin(const uint n, const uint k, const uint ngroups, const uint check,
                        __global kreal *st, __global const real *part, __global real *p,
                        __global const real *r, __global const real *v, const real noise,
@@ -239,32 +298,11 @@ __kernel void kr_begin(const uint n, const uint k, const uint ngroups, const uin
   __local real beta, omega; /* for the vectors, rounded as the scalars of a host loop were */
   __local int go;
   if (kr_over(st, k)) return;
-  const int first = get_global_id(0) == 0;
   if (get_local_id(0) == 0) {
-    const kreal rr = kr_sum(part, KR_RR, ngroups), rho = kr_sum(part, KR_RHO, ngroups);
-    const kreal bnorm = st[KR_BNORM], stop = st[KR_STOP], rn = sqrt(rr);
-    go = 0;
-    if (!isfinite(rr)) {
-      if (first) kr_end(st, k - 1, -3, rn / bnorm);
-    } else if (rn <= stop) {
-      if (first) kr_end(st, k - 1, rn <= st[KR_ATOL] ? 2 : 1, rn / bnorm);
-    } else if (check) {
-      if (first) st[KR_RNORM] = rn / bnorm;
-    } else if (!isfinite(rho)) {
-      if (first) kr_end(st, k, -3, rn / bnorm);
-    } else if (fabs(rho) <= (kreal)noise * (st[KR_R0NORM] < KR(0.0) ? rn : st[KR_R0NORM]) * rn) {
-      if (first) kr_end(st, k, KR_RESTART_RHO, rn / bnorm); /* breakdown: the host restarts */
-    } else {
-      const uint o = KR_SLOT(k - 1);
-      beta = (real)((rho / st[o]) * (st[o + 1] / st[o + 2]));
-      omega = (real)st[o + 2];
-      go = 1;
-      if (first) {
-        st[KR_SLOT(k)] = rho;
-        st[KR_RNORM] = rn / bnorm;
-        if (st[KR_R0NORM] < KR(0.0)) st[KR_R0NORM] = rn;
-      }
-    }
+    real b = R(0.0), w = R(0.0);
+    go = kr_begin_scalars(st, part, k, ngroups, check, noise, &b, &w);
+    beta = b;
+    omega = w;
   }
   barrier(CLK_LOCAL_MEM_FENCE);
   if (!go) return;
@@ -281,7 +319,27 @@ __kernel void kr_begin(const uint n, const uint k, const uint ngroups, const uin
 }
 
 /* α = ρ' / (r0, v) (set KR_R0V); s = r − α v with (s, s) into set KR_SS, and with `scale`
- * t = dw ∘ s for the multigrid */
+ * t = dw ∘ s for the multigrid (fused, mg.cl's mg_s_down, which also makes the cycle's fine
+ * residual). kr_s_scalars: the scalars, taken by the first item of each work-group; 1 when
+ * iteration k goes on, with α. */
+int kr_s_scalars(__global kreal *st, __global const real *part, const uint k, const uint ngroups,
+                 real *alpha)
+{
+  const int first = get_global_id(0) == 0;
+  const kreal r0v = kr_sum(part, KR_R0V, ngroups);
+  if (!isfinite(r0v)) {
+    if (first) kr_end(st, k, -3, st[KR_RNORM]);
+  } else if (r0v == KR(0.0)) {
+    if (first) kr_end(st, k, -2, st[KR_RNORM]);
+  } else {
+    const kreal a = st[KR_SLOT(k)] / r0v;
+    *alpha = (real)a;
+    if (first) st[KR_SLOT(k) + 1] = a;
+    return 1;
+  }
+  return 0;
+}
+
 __kernel void kr_s(const uint n, const uint k, const uint ngroups, __global kreal *st,
                    __global real *part, __global const real *r, __global const real *v,
                    __global real *s, const uint scale, __global const real *dw, __global real *t)
@@ -290,20 +348,10 @@ __kernel void kr_s(const uint n, const uint k, const uint ngroups, __global krea
   __local real alpha;
   __local int go;
   if (kr_over(st, k)) return;
-  const int first = get_global_id(0) == 0;
   if (get_local_id(0) == 0) {
-    const kreal r0v = kr_sum(part, KR_R0V, ngroups);
-    go = 0;
-    if (!isfinite(r0v)) {
-      if (first) kr_end(st, k, -3, st[KR_RNORM]);
-    } else if (r0v == KR(0.0)) {
-      if (first) kr_end(st, k, -2, st[KR_RNORM]);
-    } else {
-      const kreal a = st[KR_SLOT(k)] / r0v;
-      alpha = (real)a;
-      go = 1;
-      if (first) st[KR_SLOT(k) + 1] = a;
-    }
+    real al = R(0.0);
+    go = kr_s_scalars(st, part, k, ngroups, &al);
+    alpha = al;
   }
   barrier(CLK_LOCAL_MEM_FENCE);
   if (!go) return;

@@ -98,6 +98,7 @@ int mg_neighbour(const int4 n, const int4 a, const int o, const int R, int4 *b)
 }
 
 BLAS1_ROW_DOT(mg_row_dot, mreal) /* the fine rows' float copy (mg_down_csr) */
+#define MG_COMMA ,
 
 /* Σ_o S[r0 + o] x[xo + idx[i0 + o]] over the W entries of a stencil row whose idx is a cell
  * (MG_NONE: none), in four partial sums (blas1_row_dot) */
@@ -157,10 +158,12 @@ __kernel void mg_aggregate(const uint ncells, __global const uint *start, __glob
 __kernel void mg_ap_csr(const uint n, const int4 nc, __global const uint *row,
                         __global const uint *col, __global const real *val,
                         __global const uint *agg, __global const uint *cell, const real eps,
-                        __global mreal *AP, __global mreal *valm)
+                        __global mreal *AP, __global mreal *valm, const real omega,
+                        __global const real *dinv, __global real *dw)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
+  dw[i] = omega * dinv[i]; /* the fine level's damped inverse diagonal */
   const int centre = MG_W1 / 2;
   real acc[MG_W1];
   for (int o = 0; o < MG_W1; ++o) acc[o] = R(0.0);
@@ -209,11 +212,9 @@ __kernel void mg_galerkin_ap(const uint ncells, __global const uint *start,
 
 /* Level l + 1 (stencil at S + sc) from level l (radius Rf, stencil at S + sf): the 2 x 2 (x 2)
  * children of each coarse cell. */
-__kernel void mg_galerkin(const int4 nf, const int Rf, const uint sf, const int4 nc, const uint sc,
-                          __global mreal *S)
+void mg_galerkin_cell(const int4 nf, const int Rf, const uint sf, const int4 nc, const uint sc,
+                      __global mreal *S, const uint K)
 {
-  const uint K = get_global_id(0);
-  if (K >= (uint)nc.w) return;
   const int wf = 2 * Rf + 1;
   const int Wf = DIM == 2 ? wf * wf : wf * wf * wf;
   const int centre = MG_WC / 2;
@@ -236,6 +237,13 @@ __kernel void mg_galerkin(const int4 nf, const int Rf, const uint sf, const int4
   for (int o = 0; o < MG_WC; ++o) S[sc + (size_t)K * MG_WC + o] = (mreal)acc[o];
 }
 
+__kernel void mg_galerkin(const int4 nf, const int Rf, const uint sf, const int4 nc, const uint sc,
+                          __global mreal *S)
+{
+  const uint K = get_global_id(0);
+  if (K < (uint)nc.w) mg_galerkin_cell(nf, Rf, sf, nc, sc, S, K);
+}
+
 /* dw = ω / diag (0 on an empty cell), a level's stencil at S + so, its vectors at dw + vo (cells
  * nc, level l). live bit 0: the row has a nonzero entry (the cycle skips the others: the cells of
  * a free-surface flow's air, most of a tall domain); bit 1: the cell is one the block passes over
@@ -246,14 +254,12 @@ __kernel void mg_galerkin(const int4 nf, const int Rf, const uint sf, const int4
  * (a non-member's x on the way up, which only a zero coefficient or no parent reaches). */
 #define MG_LIVE   1
 #define MG_MEMBER 2
-__kernel void mg_weights(const uint n, const int W, const uint so, __global const mreal *S,
-                         const real omega, const uint vo, __global real *dw, __global uchar *live,
-                         const int l, const int4 nc, const int4 nf, const uint fo,
-                         __global uint *list, __global uint *nlist, __global real *b,
-                         __global real *t, __global real *x)
+void mg_weights_cell(const int W, const uint so, __global const mreal *S, const real omega,
+                     const uint vo, __global real *dw, __global uchar *live, const int l,
+                     const int4 nc, const int4 nf, const uint fo, __global uint *list,
+                     __global uint *nlist, __global real *b, __global real *t, __global real *x,
+                     const uint I)
 {
-  const uint I = get_global_id(0);
-  if (I >= n) return;
   const size_t r0 = so + (size_t)I * W;
   const real d = S[r0 + W / 2];
   dw[vo + I] = d != R(0.0) ? omega / d : R(0.0);
@@ -278,12 +284,45 @@ __kernel void mg_weights(const uint n, const int W, const uint so, __global cons
   }
 }
 
-/* dw = ω dinv */
-__kernel void mg_damp(const uint n, const real omega, __global const real *dinv, __global real *dw)
+__kernel void mg_weights(const uint n, const int W, const uint so, __global const mreal *S,
+                         const real omega, const uint vo, __global real *dw, __global uchar *live,
+                         const int l, const int4 nc, const int4 nf, const uint fo,
+                         __global uint *list, __global uint *nlist, __global real *b,
+                         __global real *t, __global real *x)
 {
-  const uint i = get_global_id(0);
-  if (i >= n) return;
-  dw[i] = omega * dinv[i];
+  const uint I = get_global_id(0);
+  if (I < n) mg_weights_cell(W, so, S, omega, vo, dw, live, l, nc, nf, fo, list, nlist, b, t, x, I);
+}
+
+/* The levels from lb on that fit the block (at most MG_BLOCK cells each), set up in one work-group
+ * and one launch: each level's Galerkin stencils (mg_galerkin, but level 1's: mg_galerkin_ap) and
+ * then its weights and members (mg_weights), which read the finer level's members, in turn */
+__kernel void mg_setup_block(const int lb, const int L, __global const int *info, __global mreal *S,
+                             const real omega, __global real *dw, __global uchar *live,
+                             __global uint *list, __global uint *nlist, __global real *b,
+                             __global real *t, __global real *x)
+{
+  const uint lid = get_local_id(0), ls = get_local_size(0);
+  for (int l = lb; l <= L; ++l) {
+    __global const int *v = info + MG_INFO * l;
+    const int4 nc = (int4)(v[0], v[1], v[2], v[3]);
+    const int W = v[4];
+    const uint so = (uint)v[5], vo = (uint)v[6];
+    int4 nf = (int4)(0);
+    uint fo = 0u;
+    if (l > 1) {
+      __global const int *f = info + MG_INFO * (l - 1);
+      nf = (int4)(f[0], f[1], f[2], f[3]);
+      fo = (uint)f[6];
+      const int Rf = l - 1 == 1 ? MG_R1 : 1;
+      for (uint K = lid; K < (uint)nc.w; K += ls)
+        mg_galerkin_cell(nf, Rf, (uint)f[5], nc, so, S, K);
+      barrier(CLK_GLOBAL_MEM_FENCE);
+    }
+    for (uint I = lid; I < (uint)nc.w; I += ls)
+      mg_weights_cell(W, so, S, omega, vo, dw, live, l, nc, nf, fo, list, nlist, b, t, x, I);
+    barrier(CLK_GLOBAL_MEM_FENCE);
+  }
 }
 
 /* ---- the cycle ----
@@ -295,9 +334,9 @@ __kernel void mg_damp(const uint n, const real omega, __global const real *dinv,
  * its x until the way up overwrites it; the fine level keeps AP (mg_ap_csr). The stencils'
  * neighbours (nb), their parents (pnb) and each cell's parent (par) are tables made with the
  * levels (mg.c). The kernel that makes a level's b makes its t. Launches: the fine res
- * (mg_down_csr; the fine t = dw ∘ r comes with r, from krylov.cl's kr_begin and kr_s), for the
- * levels above MG_BLOCK cells the restriction and one launch a level each way, the small levels in
- * one work-group (mg_block), the fine level up. */
+ * (mg_down_csr, the fine t = dw ∘ r coming with r; in the solve the kernel that makes r makes
+ * both: mg_begin_down, mg_s_down below), for the levels above MG_BLOCK cells the restriction and
+ * one launch a level each way, the small levels in one work-group (mg_block), the fine level up. */
 
 /* Fine level down: res = r − (A + ε diag A) t */
 __kernel void mg_down_csr(const uint n, __global const uint *row, __global const uint *col,
@@ -309,6 +348,102 @@ __kernel void mg_down_csr(const uint n, __global const uint *row, __global const
   const uint i = get_global_id(0);
   if (i >= n) return;
   res[i] = r[i] - mg_row_dot(eps * val[row[i]] * t[i], row[i], row[i + 1], col, val, t);
+}
+
+/* The Krylov vector updates with the fine level down, in one launch each (psolve.c): the kernel
+ * that makes the cycle's input w also makes t = dw ∘ w and res = w − (A + ε diag A) t, a
+ * neighbour's t made from its own vectors as its item makes it (the same expression, so the same
+ * value), where kr_begin or kr_s and then mg_down_csr were two launches. A row's sum reads three or
+ * four vectors a neighbour instead of one. MG_ROW_DOT_AT(NAME, ARGS, T): Σ val[k] T(col[k]) over a
+ * stored row in four partial sums, as blas1_row_dot. */
+#define MG_ROW_DOT_AT(NAME, ARGS, T)                                                               \
+  real NAME(real s, uint k, const uint k1, __global const uint *col, __global const mreal *val,    \
+            __global const real *dw, ARGS)                                                         \
+  {                                                                                                \
+    real s1 = R(0.0), s2 = R(0.0), s3 = R(0.0);                                                    \
+    for (; k + 4 <= k1; k += 4) {                                                                  \
+      s += val[k] * T(col[k]);                                                                     \
+      s1 += val[k + 1] * T(col[k + 1]);                                                            \
+      s2 += val[k + 2] * T(col[k + 2]);                                                            \
+      s3 += val[k + 3] * T(col[k + 3]);                                                            \
+    }                                                                                              \
+    for (; k < k1; ++k) s += val[k] * T(col[k]);                                                   \
+    return (s + s1) + (s2 + s3);                                                                   \
+  }
+/* p = r + β (p' − ω v) and s = r − α v, times dw (kr_begin, kr_s) */
+#define MG_T_P(j) (dw[j] * (r[j] + beta * (pp[j] - omega * v[j])))
+#define MG_T_S(j) (dw[j] * (r[j] - alpha * v[j]))
+MG_ROW_DOT_AT(mg_row_dot_p,
+              __global const real *r MG_COMMA __global const real *pp MG_COMMA
+                  __global const real *v MG_COMMA const real beta MG_COMMA const real omega,
+              MG_T_P)
+MG_ROW_DOT_AT(mg_row_dot_s,
+              __global const real *r MG_COMMA __global const real *v MG_COMMA const real alpha,
+              MG_T_S)
+
+/* kr_begin and mg_down_csr: p = r + β (p' − ω v) into p (p' the last iteration's p, in the
+ * other buffer: a neighbour's item reads it while this one writes), t = dw ∘ p, res = p − A t */
+__kernel void mg_begin_down(const uint n, const uint k, const uint ngroups, __global kreal *st,
+                            __global const real *part, __global const real *pp, __global real *p,
+                            __global const real *r, __global const real *v, const real noise,
+                            __global const real *dw, __global real *t, __global const uint *row,
+                            __global const uint *col, __global const mreal *val, const real eps,
+                            __global real *res)
+{
+  __local real lbeta, lomega;
+  __local int go;
+  if (kr_over(st, k)) return;
+  if (get_local_id(0) == 0) {
+    real b = R(0.0), w = R(0.0);
+    go = kr_begin_scalars(st, part, k, ngroups, 0u, noise, &b, &w);
+    lbeta = b;
+    lomega = w;
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+  if (!go) return;
+  const real beta = lbeta, omega = lomega;
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    const real w = r[i] + beta * (pp[i] - omega * v[i]);
+    const real ti = dw[i] * w;
+    p[i] = w;
+    t[i] = ti;
+    res[i] = w - mg_row_dot_p(eps * val[row[i]] * ti, row[i], row[i + 1], col, val, dw, r, pp, v,
+                              beta, omega);
+  }
+}
+
+/* kr_s and mg_down_csr: s = r − α v with (s, s) into set KR_SS, t = dw ∘ s, res = s − A t
+ */
+__kernel void mg_s_down(const uint n, const uint k, const uint ngroups, __global kreal *st,
+                        __global real *part, __global const real *r, __global const real *v,
+                        __global real *s, __global const real *dw, __global real *t,
+                        __global const uint *row, __global const uint *col,
+                        __global const mreal *val, const real eps, __global real *res)
+{
+  __local real a[BLAS1_WG];
+  __local real lalpha;
+  __local int go;
+  if (kr_over(st, k)) return;
+  if (get_local_id(0) == 0) {
+    real al = R(0.0);
+    go = kr_s_scalars(st, part, k, ngroups, &al);
+    lalpha = al;
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+  if (!go) return;
+  const real alpha = lalpha;
+  real acc = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    const real w = r[i] - alpha * v[i];
+    const real ti = dw[i] * w;
+    s[i] = w;
+    t[i] = ti;
+    acc += w * w;
+    res[i] =
+        w - mg_row_dot_s(eps * val[row[i]] * ti, row[i], row[i + 1], col, val, dw, r, v, alpha);
+  }
+  a[get_local_id(0)] = acc;
+  blas1_group_sum(a, part + KR_SS * BLAS1_GROUPS, get_group_id(0));
 }
 
 /* Level-1 b and t of cell c: Σ res over its aggregated unknowns, times dw */

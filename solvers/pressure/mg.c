@@ -30,7 +30,7 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
             {&mg.k_galerkin_ap, "mg_galerkin_ap"},
             {&mg.k_galerkin, "mg_galerkin"},
             {&mg.k_weights, "mg_weights"},
-            {&mg.k_damp, "mg_damp"},
+            {&mg.k_setup_block, "mg_setup_block"},
             {&mg.k_down_csr, "mg_down_csr"},
             {&mg.k_up_csr, "mg_up_csr"},
             {&mg.k_down, "mg_down"},
@@ -44,6 +44,9 @@ enum clsph_status mg_create(const struct dev *dev, cl_program prog, size_t cap, 
   CLSPH_CL_TRY(clGetKernelWorkGroupInfo(mg.k_block, dev->id, CL_KERNEL_WORK_GROUP_SIZE, sizeof wg,
                                         &wg, NULL));
   mg.block_wg = wg < 256 ? (wg > 0 ? wg : 1) : 256;
+  CLSPH_CL_TRY(clGetKernelWorkGroupInfo(mg.k_setup_block, dev->id, CL_KERNEL_WORK_GROUP_SIZE,
+                                        sizeof wg, &wg, NULL));
+  mg.setup_wg = wg < 256 ? (wg > 0 ? wg : 1) : 256;
   CLSPH_CL_TRY(clGetKernelWorkGroupInfo(mg.k_coarsest, dev->id, CL_KERNEL_WORK_GROUP_SIZE,
                                         sizeof wg, &wg, NULL));
   mg.coarse_wg = wg < MG_COARSE_WG ? (wg > 0 ? wg : 1) : MG_COARSE_WG;
@@ -233,10 +236,9 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
                      KARG(mg->d_agg), KARG(mg->d_cell)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_aggregate, ncells, NULL));
   CLSPH_TRY(KERN_SET(mg->k_ap_csr, KARG(nn), KARG(mg->lv[1].n), KARG(row), KARG(col), KARG(val),
-                     KARG(mg->d_agg), KARG(mg->d_cell), KARG(e), KARG(mg->d_AP), KARG(valm)));
-  CLSPH_TRY(kern_launch(mg->dev, mg->k_ap_csr, n, NULL));
-  CLSPH_TRY(KERN_SET(mg->k_damp, KARG(nn), KARG(omega), KARG(dinv), KARG(mg->d_dw)));
-  CLSPH_TRY(kern_launch(mg->dev, mg->k_damp, n, NULL));
+                     KARG(mg->d_agg), KARG(mg->d_cell), KARG(e), KARG(mg->d_AP), KARG(valm),
+                     KARG(omega), KARG(dinv), KARG(mg->d_dw)));
+  CLSPH_TRY(kern_launch(mg->dev, mg->k_ap_csr, n, NULL)); /* and dw = ω dinv */
   /* The block starts at level 1 where the last solve's level 1 held at most MG_BLOCK cells with
    * fluid (its read has completed: the solve waited for its state after it), else where the
    * levels' cells fit. In the wedge dam break (δr = 0.01 m: 14,500 level-1 cells, about 1,600
@@ -251,7 +253,13 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
   CLSPH_TRY(KERN_SET(mg->k_galerkin_ap, KARG(ncells), KARG(g->d_start), KARG(mg->d_agg),
                      KARG(mg->d_AP), KARG(mg->d_S)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_galerkin_ap, ncells, NULL));
-  for (int l = 1; l <= mg->nlevels; ++l) {
+  /* the levels that fit the block in one work-group (mg_setup_block), the others a launch each:
+   * on the 40² cavity 1 launch a solve instead of 5, whose 96 µs of device time the one core of
+   * the block's work-group takes 140 to 200 µs for on the 2-core CPU; whole runs of the cavity to
+   * t = 1 s took 0.99 (60²) and 1.005 (40²) of the time with a launch a level (medians of 7 and
+   * 5 interleaved pairs) */
+  const int lb = mg->l0_cells;
+  for (int l = 1; l < lb; ++l) {
     v = &mg->lv[l];
     const cl_uint cells = (cl_uint)v->n.s[3], so = (cl_uint)v->so, vo = (cl_uint)v->vo;
     const cl_int W = v->W;
@@ -275,6 +283,13 @@ enum clsph_status mg_setup(struct mg *mg, const struct grid *g, size_t n, cl_mem
                        KARG(mg->d_t_c), KARG(mg->d_x)));
     CLSPH_TRY(kern_launch(mg->dev, mg->k_weights, cells, NULL));
   }
+  if (lb <= mg->nlevels) {
+    const cl_int blb = lb, bL = mg->nlevels;
+    CLSPH_TRY(KERN_SET(mg->k_setup_block, KARG(blb), KARG(bL), KARG(mg->d_info), KARG(mg->d_S),
+                       KARG(omega), KARG(mg->d_cdw), KARG(mg->d_live), KARG(mg->d_list),
+                       KARG(mg->d_nlist), KARG(mg->d_b), KARG(mg->d_t_c), KARG(mg->d_x)));
+    CLSPH_TRY(kern_launch_wg(mg->dev, mg->k_setup_block, mg->setup_wg, mg->setup_wg, NULL));
+  }
   CLSPH_TRY(kern_read_nb(mg->dev, mg->d_nlist, sizeof(cl_uint), sizeof mg->h_live1, &mg->h_live1));
   mg->live1_read = 1;
   CLSPH_TRY(coarsest(mg));
@@ -284,18 +299,28 @@ done:
 
 /* The V(1,1) cycle (mg.cl): the fine level down, the stencil levels above the block down, the
  * block (the small levels down, the coarsest, up again), the levels above it up, the fine level
- * up: 3 launches, and 1 + 2 (l0 − 1) more where the block starts above level 1 (mg_setup). */
+ * up: 3 launches, and 1 + 2 (l0 − 1) more where the block starts above level 1 (mg_setup); 2 and
+ * 1 + 2 (l0 − 1) in mg_apply_coarse. */
 enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem valm, double eps,
                            cl_mem r, cl_mem z, cl_mem state, cl_uint k)
 {
   enum clsph_status st = CLSPH_OK;
-  const cl_uint nn = (cl_uint)n, ncells = (cl_uint)mg->grid->ncells;
+  const cl_uint nn = (cl_uint)n;
   const real e = (real)eps;
-  const int L = mg->nlevels, l0 = mg->l0;
-  /* the fine t = dw ∘ r (the first sweep from zero) came with r (kr_begin, kr_s) */
+  /* the fine t = dw ∘ r (the first sweep from zero) came with r (psolve_precond_apply) */
   CLSPH_TRY(KERN_SET(mg->k_down_csr, KARG(nn), KARG(row), KARG(col), KARG(valm), KARG(e),
                      KARG(mg->d_t), KARG(r), KARG(mg->d_res), KARG(k), KARG(state)));
   CLSPH_TRY(kern_launch(mg->dev, mg->k_down_csr, n, NULL));
+  CLSPH_TRY(mg_apply_coarse(mg, n, z, state, k));
+done:
+  return st;
+}
+
+enum clsph_status mg_apply_coarse(struct mg *mg, size_t n, cl_mem z, cl_mem state, cl_uint k)
+{
+  enum clsph_status st = CLSPH_OK;
+  const cl_uint nn = (cl_uint)n, ncells = (cl_uint)mg->grid->ncells;
+  const int L = mg->nlevels, l0 = mg->l0;
   if (l0 > 1) { /* level 1 (offset 0) outside the block: its b and t here */
     CLSPH_TRY(KERN_SET(mg->k_restrict_csr, KARG(ncells), KARG(mg->grid->d_start), KARG(mg->d_agg),
                        KARG(mg->d_res), KARG(mg->d_cdw), KARG(mg->d_b), KARG(mg->d_t_c), KARG(k),
@@ -343,7 +368,7 @@ void mg_destroy(struct mg *mg)
 {
   release_levels(mg);
   cl_kernel *ks[] = {&mg->k_aggregate, &mg->k_ap_csr,  &mg->k_restrict_csr, &mg->k_galerkin_ap,
-                     &mg->k_galerkin,  &mg->k_weights, &mg->k_damp,         &mg->k_down_csr,
+                     &mg->k_galerkin,  &mg->k_weights, &mg->k_setup_block,  &mg->k_down_csr,
                      &mg->k_up_csr,    &mg->k_down,    &mg->k_up,           &mg->k_block,
                      &mg->k_coarsest};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {

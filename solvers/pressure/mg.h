@@ -41,9 +41,10 @@ struct mg_level {
 struct mg {
   const struct dev *dev;
   double omega; /* Jacobi damping */
-  cl_kernel k_aggregate, k_ap_csr, k_galerkin_ap, k_galerkin, k_weights, k_damp, k_down_csr,
+  cl_kernel k_aggregate, k_ap_csr, k_galerkin_ap, k_galerkin, k_weights, k_setup_block, k_down_csr,
       k_restrict_csr, k_up_csr, k_down, k_up, k_block, k_coarsest;
   size_t block_wg;         /* work-group size of mg_block */
+  size_t setup_wg;         /* and of mg_setup_block */
   size_t coarse_wg;        /* and of mg_coarsest */
   size_t cap;              /* fine unknowns the buffers hold */
   cl_mem d_agg, d_cell;    /* fine level: aggregate (or none), cell of each unknown */
@@ -94,6 +95,9 @@ void mg_report(struct mg *mg);
  * before k). The kernel that made r has made d_t = d_dw ∘ r, the first sweep from zero. */
 enum clsph_status mg_apply(struct mg *mg, size_t n, cl_mem row, cl_mem col, cl_mem valm, double eps,
                            cl_mem r, cl_mem z, cl_mem state, cl_uint k);
+/** @brief The cycle after its fine level down: where the kernel that made r has also made the
+ *  fine residual d_res = r − A d_t (mg.cl's mg_begin_down, mg_s_down), the rest of mg_apply. */
+enum clsph_status mg_apply_coarse(struct mg *mg, size_t n, cl_mem z, cl_mem state, cl_uint k);
 /** @brief Release (safe on a zeroed struct). */
 void mg_destroy(struct mg *mg);
 

@@ -67,6 +67,7 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
   static const char *const applies[] = {"stored", "recompute", NULL};
   static const char *const preconds[] = {"jacobi", "none", "jacobi_sweeps", "multigrid", NULL};
   static const char *const singulars[] = {"regular", "reinforce", "mean", "project", NULL};
+  static const char *const fuses[] = {"separate", "fused", NULL};
   int k;
   if (strcmp(key, "solver") == 0) {
     CLSPH_CHECK((k = pick(text, methods)) >= 0, CLSPH_E_INPUT,
@@ -108,6 +109,10 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
     CLSPH_CHECK(number >= 0 && number <= 1e7 && number == floor(number), CLSPH_E_INPUT,
                 "solver_group_max must be a whole number of unknowns from 0 (never) to 1e7");
     o->group_max = (int)number;
+  } else if (strcmp(key, "fuse") == 0) {
+    CLSPH_CHECK((k = pick(text, fuses)) >= 0, CLSPH_E_INPUT,
+                "solver_fuse must be \"separate\" or \"fused\"");
+    o->fuse = k;
   } else {
     CLSPH_CHECK(0, CLSPH_E_INPUT, "unknown solver option '%s'", key);
   }
@@ -149,13 +154,12 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
             {&ps.k_axpy, "blas1_axpy"},
             {&ps.k_add_diag, "blas1_add_diag"},
             {&ps.k_invert, "blas1_invert"},
-            {&ps.k_csr_diag, "csr_diag"},
-            {&ps.k_guard, "csr_guard"},
-            {&ps.k_scan_blocks, "grid_scan_blocks"},
-            {&ps.k_scan_top, "grid_scan_top"},
-            {&ps.k_scan_apply, "grid_scan_apply"}};
+            {&ps.k_csr_diag_inv, "csr_diag_inverse"},
+            {&ps.k_residual_csr, "kr_residual_csr"},
+            {&ps.k_guard, "csr_guard"}};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i)
     CLSPH_TRY(prog_kernel(prog, ks[i].name, ks[i].k));
+  CLSPH_TRY(grid_scan_create(prog, &ps.scan));
   /* the one-group solve's work-group: as many items as the kernel allows, at most
    * PSOLVE_GROUP_WG (its local partial sums hold that many) */
   size_t wg = 0;
@@ -185,6 +189,11 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
   CLSPH_TRY(kern_buffer(dev, ((ps.cap + 1) / PSOLVE_SCAN_BLOCK + 2) * sizeof(cl_uint), NULL,
                         &ps.d_block, "csr scan blocks"));
   if (opt->precond == PSOLVE_MULTIGRID) CLSPH_TRY(mg_create(dev, prog, ps.cap, &ps.mg));
+  if (opt->precond == PSOLVE_MULTIGRID && opt->fuse) {
+    CLSPH_TRY(prog_kernel(prog, "mg_begin_down", &ps.k_begin_down));
+    CLSPH_TRY(prog_kernel(prog, "mg_s_down", &ps.k_s_down));
+    CLSPH_TRY(kern_buffer(dev, ps.cap * sizeof(real), NULL, &ps.d_p2, "solver vector"));
+  }
   /* what the first solve allocates: the stored operator (a quarter more than its nonzeros,
    * store()) and the multigrid's levels: the coarse stencils (about 3 floats a particle) and the
    * fine rows of A P against the level-1 cells (a value and a cell for each of (2 GRID_SUB + 1)^d
@@ -320,17 +329,11 @@ static enum clsph_status store(struct psolve *ps, const struct psolve_op *op, in
 {
   enum clsph_status st = CLSPH_OK;
   const cl_uint zero = 0;
-  cl_uint items = (cl_uint)op->n + 1, blocks = (items + PSOLVE_SCAN_BLOCK - 1) / PSOLVE_SCAN_BLOCK;
+  cl_uint items = (cl_uint)op->n + 1;
   cl_uint nnz = 0;
   CLSPH_TRY(kern_fill(ps->dev, ps->d_count, &zero, sizeof zero, items * sizeof(cl_uint)));
   CLSPH_TRY(op->row_counts(op->ctx, ps->d_count));
-  CLSPH_TRY(KERN_SET(ps->k_scan_blocks, KARG(items), KARG(ps->d_count), KARG(ps->d_block)));
-  CLSPH_TRY(kern_launch(ps->dev, ps->k_scan_blocks, blocks, NULL));
-  CLSPH_TRY(KERN_SET(ps->k_scan_top, KARG(blocks), KARG(ps->d_block)));
-  CLSPH_TRY(kern_launch_wg(ps->dev, ps->k_scan_top, 1, 1, NULL));
-  CLSPH_TRY(KERN_SET(ps->k_scan_apply, KARG(items), KARG(ps->d_count), KARG(ps->d_block),
-                     KARG(ps->d_row)));
-  CLSPH_TRY(kern_launch(ps->dev, ps->k_scan_apply, blocks, NULL));
+  CLSPH_TRY(grid_scan_run(&ps->scan, ps->dev, items, ps->d_count, ps->d_block, ps->d_row, NULL));
   if (!guarded || ps->nnz_cap == 0) { /* the count, waited for; the buffers grow to it */
     CLSPH_TRY(kern_read_at(ps->dev, ps->d_row, op->n * sizeof(cl_uint), sizeof nnz, &nnz));
     CLSPH_TRY(grow(ps, nnz));
@@ -424,20 +427,20 @@ static enum clsph_status diagonal(struct psolve *ps, const struct psolve_op *op)
   enum clsph_status st = CLSPH_OK;
   cl_uint n = (cl_uint)op->n;
   const cl_uint zero = 0;
-  if (ps->opt.apply == PSOLVE_STORED) {
-    CLSPH_TRY(
-        KERN_SET(ps->k_csr_diag, KARG(n), KARG(ps->d_row), KARG(ps->d_val), KARG(ps->d_diag)));
-    CLSPH_TRY(launch(ps, ps->k_csr_diag, n));
-  } else {
-    CLSPH_TRY(op->diagonal(op->ctx, ps->d_diag));
+  const real e = (real)(PSOLVE_REINFORCED(ps->opt.singular) ? ps->opt.reinforce : 0.0);
+  CLSPH_TRY(kern_fill(ps->dev, ps->d_flags, &zero, sizeof zero, sizeof zero));
+  if (ps->opt.apply == PSOLVE_STORED) { /* one launch (csr.cl) */
+    CLSPH_TRY(KERN_SET(ps->k_csr_diag_inv, KARG(n), KARG(ps->d_row), KARG(ps->d_val), KARG(e),
+                       KARG(ps->d_diag), KARG(ps->d_dinv), KARG(ps->d_flags)));
+    CLSPH_TRY(launch(ps, ps->k_csr_diag_inv, n));
+    goto done;
   }
+  CLSPH_TRY(op->diagonal(op->ctx, ps->d_diag));
   CLSPH_TRY(copy(ps, ps->d_dinv, ps->d_diag, n));
   if (PSOLVE_REINFORCED(ps->opt.singular)) { /* dinv = (1 + ε) diag(A) */
-    real e = (real)ps->opt.reinforce;
     CLSPH_TRY(KERN_SET(ps->k_axpy, KARG(n), KARG(e), KARG(ps->d_diag), KARG(ps->d_dinv)));
     CLSPH_TRY(launch(ps, ps->k_axpy, n));
   }
-  CLSPH_TRY(kern_fill(ps->dev, ps->d_flags, &zero, sizeof zero, sizeof zero));
   CLSPH_TRY(KERN_SET(ps->k_invert, KARG(n), KARG(ps->d_dinv), KARG(ps->d_flags)));
   CLSPH_TRY(launch(ps, ps->k_invert, n)); /* the flag reaches the host with the solve's state */
 done:
@@ -475,6 +478,28 @@ done:
 
 /* ---- the solve ---- */
 
+/* With the multigrid fused (opt.fuse) the Krylov kernels that make p and s also make the cycle's
+ * fine level down (mg.cl's mg_begin_down, mg_s_down), where kr_begin, kr_s and mg_down_csr twice
+ * took 4 launches: 9 launches an iteration with the block from level 1 instead of 11, the same
+ * bits. A neighbour's share of the fine residual is then made from its vectors (three or four
+ * reads instead of one): on the 2-core CPU the two kernels took 145 and 139 µs a launch on the
+ * 60² cavity against 36 + 18 + 2 × 43 µs for the four, and a whole run of the cavity to t = 1 s
+ * took 1.03 (60²) and 1.06 (40²) times the separate kernels' time (medians of 5 interleaved
+ * pairs), so "separate" is the default; a device whose launches cost more than those reads should
+ * gain (not measured: no GPU was at hand). */
+static int fused(const struct psolve *ps)
+{
+  return ps->opt.precond == PSOLVE_MULTIGRID && ps->opt.fuse;
+}
+
+/* The buffer that holds p in iteration k: fused, p alternates between d_p (even k: kr_start's zero
+ * p is iteration 1's p') and d_p2, as mg_begin_down reads the last p while it writes the new one;
+ * else d_p. */
+static cl_mem p_of(const struct psolve *ps, int k)
+{
+  return fused(ps) && (k & 1) ? ps->d_p2 : ps->d_p;
+}
+
 /* Enqueue iteration k (krylov.cl): its kernels return at once once the solve has ended. */
 static enum clsph_status iteration(struct psolve *ps, const struct psolve_op *op, cl_uint k,
                                    cl_mem x, real tiny)
@@ -482,20 +507,45 @@ static enum clsph_status iteration(struct psolve *ps, const struct psolve_op *op
   enum clsph_status st = CLSPH_OK;
   const cl_uint n = (cl_uint)op->n, ng = (cl_uint)ps->ngroups, update = 0;
   const real noise = REAL_EPS; /* (r0, r) below noise ||r0|| ||r||: a breakdown (krylov.cl) */
-  /* with the multigrid, the kernels that make p and s also make its first sweep dw ∘ p, dw ∘ s */
+  /* with the multigrid the kernels that make p and s also make its first sweep dw ∘ p, dw ∘ s
+   * (fused, its fine residual too) */
   const cl_uint scale = ps->opt.precond == PSOLVE_MULTIGRID;
   cl_mem dw = scale ? ps->mg.d_dw : ps->d_q, t = scale ? ps->mg.d_t : ps->d_q;
-  CLSPH_TRY(KERN_SET(ps->k_begin, KARG(n), KARG(k), KARG(ng), KARG(update), KARG(ps->d_state),
-                     KARG(ps->d_partial), KARG(ps->d_p), KARG(ps->d_r), KARG(ps->d_v), KARG(noise),
-                     KARG(scale), KARG(dw), KARG(t)));
-  CLSPH_TRY(launch_groups(ps, ps->k_begin));                 /* ρ', β, p */
-  CLSPH_TRY(precond(ps, op, ps->d_p, ps->d_ph, ps->d_q, k)); /* p̂ <- M⁻¹ p */
+  const cl_mem p = p_of(ps, (int)k);
+  if (fused(ps)) {
+    const real me = (real)reinforcement(ps);
+    const cl_mem pp = p_of(ps, (int)k - 1), res = ps->mg.d_res;
+    CLSPH_TRY(KERN_SET(ps->k_begin_down, KARG(n), KARG(k), KARG(ng), KARG(ps->d_state),
+                       KARG(ps->d_partial), KARG(pp), KARG(p), KARG(ps->d_r), KARG(ps->d_v),
+                       KARG(noise), KARG(dw), KARG(t), KARG(ps->d_row), KARG(ps->d_col),
+                       KARG(ps->d_valm), KARG(me), KARG(res)));
+    CLSPH_TRY(launch_groups(ps, ps->k_begin_down)); /* ρ', β, p, the cycle's fine level down */
+    CLSPH_TRY(mg_apply_coarse(&ps->mg, op->n, ps->d_ph, ps->d_state, k)); /* p̂ <- M⁻¹ p */
+  } else {
+    CLSPH_TRY(KERN_SET(ps->k_begin, KARG(n), KARG(k), KARG(ng), KARG(update), KARG(ps->d_state),
+                       KARG(ps->d_partial), KARG(p), KARG(ps->d_r), KARG(ps->d_v), KARG(noise),
+                       KARG(scale), KARG(dw), KARG(t)));
+    CLSPH_TRY(launch_groups(ps, ps->k_begin));           /* ρ', β, p */
+    CLSPH_TRY(precond(ps, op, p, ps->d_ph, ps->d_q, k)); /* p̂ <- M⁻¹ p */
+  }
   CLSPH_TRY(
       apply_dot(ps, op, ps->d_ph, ps->d_v, k, ps->d_r0, KR_R0V_SET, KR_NO_SET)); /* v, (r0, v) */
-  CLSPH_TRY(KERN_SET(ps->k_s, KARG(n), KARG(k), KARG(ng), KARG(ps->d_state), KARG(ps->d_partial),
-                     KARG(ps->d_r), KARG(ps->d_v), KARG(ps->d_s), KARG(scale), KARG(dw), KARG(t)));
-  CLSPH_TRY(launch_groups(ps, ps->k_s));                     /* α, s = r − α v, (s, s) */
-  CLSPH_TRY(precond(ps, op, ps->d_s, ps->d_sh, ps->d_q, k)); /* ŝ <- M⁻¹ s */
+  if (fused(ps)) {
+    const real me = (real)reinforcement(ps);
+    const cl_mem res = ps->mg.d_res;
+    CLSPH_TRY(KERN_SET(ps->k_s_down, KARG(n), KARG(k), KARG(ng), KARG(ps->d_state),
+                       KARG(ps->d_partial), KARG(ps->d_r), KARG(ps->d_v), KARG(ps->d_s), KARG(dw),
+                       KARG(t), KARG(ps->d_row), KARG(ps->d_col), KARG(ps->d_valm), KARG(me),
+                       KARG(res)));
+    CLSPH_TRY(launch_groups(ps, ps->k_s_down)); /* α, s = r − α v, (s, s), the fine level down */
+    CLSPH_TRY(mg_apply_coarse(&ps->mg, op->n, ps->d_sh, ps->d_state, k)); /* ŝ <- M⁻¹ s */
+  } else {
+    CLSPH_TRY(KERN_SET(ps->k_s, KARG(n), KARG(k), KARG(ng), KARG(ps->d_state), KARG(ps->d_partial),
+                       KARG(ps->d_r), KARG(ps->d_v), KARG(ps->d_s), KARG(scale), KARG(dw),
+                       KARG(t)));
+    CLSPH_TRY(launch_groups(ps, ps->k_s));                     /* α, s = r − α v, (s, s) */
+    CLSPH_TRY(precond(ps, op, ps->d_s, ps->d_sh, ps->d_q, k)); /* ŝ <- M⁻¹ s */
+  }
   CLSPH_TRY(apply_dot(ps, op, ps->d_sh, ps->d_t, k, ps->d_s, KR_TS_SET,
                       KR_TT_SET)); /* t, (t, s), (t, t) */
   CLSPH_TRY(KERN_SET(ps->k_end, KARG(n), KARG(k), KARG(ng), KARG(tiny), KARG(ps->d_state),
@@ -563,23 +613,33 @@ static enum clsph_status bicgstab(struct psolve *ps, const struct psolve_op *op,
   res->its = 0;
   res->restarts = 0;
   /* b (mean-free for a consistent singular system), r = b − A x (x: the initial guess), r0 = r */
-  if (PSOLVE_MEAN_FREE(ps->opt.singular))
-    CLSPH_TRY(remove_mean(ps, op, n, b, ps->d_b));
-  else
-    CLSPH_TRY(copy(ps, ps->d_b, b, n));
-  CLSPH_TRY(dot(ps, n, 0, ps->d_b, ps->d_b, KR_BB_SET));
-  CLSPH_TRY(apply(ps, op, x, ps->d_q, 0));
-  CLSPH_TRY(KERN_SET(ps->k_residual, KARG(n), KARG(ps->d_b), KARG(ps->d_q), KARG(ps->d_r),
-                     KARG(ps->d_partial)));
-  CLSPH_TRY(launch_groups(ps, ps->k_residual));
+  const int mean_free = PSOLVE_MEAN_FREE(ps->opt.singular);
+  if (mean_free) CLSPH_TRY(remove_mean(ps, op, n, b, ps->d_b));
+  const cl_mem bm = mean_free ? ps->d_b : b;
+  if (ps->opt.apply == PSOLVE_STORED) { /* (b, b), A x and r in one pass */
+    const real e = (real)(PSOLVE_REINFORCED(ps->opt.singular) ? ps->opt.reinforce : 0.0);
+    CLSPH_TRY(KERN_SET(ps->k_residual_csr, KARG(n), KARG(bm), KARG(ps->d_row), KARG(ps->d_col),
+                       KARG(ps->d_val), KARG(e), KARG(x), KARG(ps->d_r), KARG(ps->d_partial)));
+    CLSPH_TRY(launch_groups(ps, ps->k_residual_csr));
+  } else {
+    CLSPH_TRY(dot(ps, n, 0, bm, bm, KR_BB_SET));
+    CLSPH_TRY(apply(ps, op, x, ps->d_q, 0));
+    CLSPH_TRY(KERN_SET(ps->k_residual, KARG(n), KARG(bm), KARG(ps->d_q), KARG(ps->d_r),
+                       KARG(ps->d_partial)));
+    CLSPH_TRY(launch_groups(ps, ps->k_residual));
+  }
   CLSPH_TRY(KERN_SET(ps->k_start, KARG(n), KARG(ng), KARG(rtol), KARG(atol), KARG(ps->d_flags),
                      KARG(ps->d_state), KARG(ps->d_partial), KARG(x), KARG(ps->d_r), KARG(ps->d_r0),
                      KARG(ps->d_p), KARG(ps->d_v), KARG(ps->d_x0)));
   CLSPH_TRY(launch_groups(ps, ps->k_start));
-  /* batches: as many iterations as the last solve took and two more, then a quarter of that */
+  /* batches: as many iterations as the last solve took, then a quarter of that. Iterations past
+   * the end cost their launches (11 with the multigrid), a short batch one more read of the
+   * state: the solves of a run take about as many iterations as the last or fewer (the 40²
+   * cavity: 7.1 a step, 0.14 extra reads a step against 2 iterations' launches; the 60² cavity
+   * to t = 1 s 5% faster than with two more, median of 5 interleaved pairs). */
   const int max_it = ps->opt.max_it;
   const int recompute = ps->opt.apply == PSOLVE_RECOMPUTE; /* its kernels have no early exit */
-  int next = 1, batch = recompute ? ps->last_its : ps->last_its + 2;
+  int next = 1, batch = ps->last_its;
   const int group = one_group(ps, op);
   res->one_group = group;
   for (;;) {
@@ -617,20 +677,23 @@ static enum clsph_status bicgstab(struct psolve *ps, const struct psolve_op *op,
     const int k = (int)done_at;
     res->its = k;
     if (reason == KR_RESTART_RHO || reason == KR_RESTART_OMEGA) {
-      /* a vanishing ρ' restarts iteration k (twice in a row: give up), a vanishing ω the next */
+      /* a vanishing ρ' at iteration k + 1 (which then did nothing: the state ends at k) restarts
+       * it (twice in a row: give up), a vanishing ω at iteration k the next: either way the next
+       * is k + 1, and reads the slot of k */
       const int rho = reason == KR_RESTART_RHO;
-      if (rho && restarted_at == k - 1) {
+      if (rho && restarted_at == k) {
         res->reason = PSOLVE_DIVERGED_BREAKDOWN;
         break;
       }
-      if (rho) restarted_at = k;
+      if (rho) restarted_at = k + 1;
       ++res->restarts;
-      const cl_uint slot = (cl_uint)(rho ? k - 1 : k);
+      const cl_uint slot = (cl_uint)k;
+      next = k + 1;
+      const cl_mem pp = p_of(ps, next - 1); /* the p the next iteration starts from */
       CLSPH_TRY(KERN_SET(ps->k_restart, KARG(n), KARG(slot), KARG(ps->d_state), KARG(ps->d_partial),
-                         KARG(ps->d_r), KARG(ps->d_r0), KARG(ps->d_p), KARG(ps->d_v)));
+                         KARG(ps->d_r), KARG(ps->d_r0), KARG(pp), KARG(ps->d_v)));
       CLSPH_TRY(launch_groups(ps, ps->k_restart));
-      next = rho ? k : k + 1;
-      batch = recompute ? 1 : ps->last_its + 2;
+      batch = recompute ? 1 : ps->last_its;
       if (next > max_it) {
         res->reason = PSOLVE_DIVERGED_ITS;
         break;
@@ -843,20 +906,21 @@ done:
 void psolve_destroy(struct psolve *ps)
 {
   cl_kernel *ks[] = {
-      &ps->k_dot,        &ps->k_dot_ts,   &ps->k_residual, &ps->k_shift,       &ps->k_start,
-      &ps->k_begin,      &ps->k_s,        &ps->k_end,      &ps->k_restart,     &ps->k_total,
-      &ps->k_spmv,       &ps->k_spmv_dot, &ps->k_scale,    &ps->k_sweep,       &ps->k_axpy,
-      &ps->k_add_diag,   &ps->k_invert,   &ps->k_csr_diag, &ps->k_scan_blocks, &ps->k_scan_top,
-      &ps->k_scan_apply, &ps->k_wtotal,   &ps->k_wshift,   &ps->k_guard,       &ps->k_group};
+      &ps->k_dot,      &ps->k_dot_ts,   &ps->k_residual,     &ps->k_shift,        &ps->k_start,
+      &ps->k_begin,    &ps->k_s,        &ps->k_end,          &ps->k_restart,      &ps->k_total,
+      &ps->k_spmv,     &ps->k_spmv_dot, &ps->k_scale,        &ps->k_sweep,        &ps->k_axpy,
+      &ps->k_add_diag, &ps->k_invert,   &ps->k_csr_diag_inv, &ps->k_residual_csr, &ps->k_wtotal,
+      &ps->k_wshift,   &ps->k_guard,    &ps->k_group,        &ps->k_begin_down,   &ps->k_s_down};
   for (size_t i = 0; i < sizeof ks / sizeof *ks; ++i) {
     if (*ks[i] != NULL) clReleaseKernel(*ks[i]);
     *ks[i] = NULL;
   }
+  grid_scan_destroy(&ps->scan);
   kern_release(&ps->d_state);
   cl_mem *ms[] = {&ps->d_r,       &ps->d_r0,    &ps->d_p,   &ps->d_v,    &ps->d_s,    &ps->d_t,
                   &ps->d_ph,      &ps->d_sh,    &ps->d_q,   &ps->d_dinv, &ps->d_diag, &ps->d_b,
                   &ps->d_partial, &ps->d_flags, &ps->d_row, &ps->d_col,  &ps->d_val,  &ps->d_count,
-                  &ps->d_block,   &ps->d_valm,  &ps->d_x0};
+                  &ps->d_block,   &ps->d_valm,  &ps->d_x0,  &ps->d_p2};
   for (size_t i = 0; i < sizeof ms / sizeof *ms; ++i) kern_release(ms[i]);
   mg_destroy(&ps->mg);
   kern_reserve(-ps->reserved);

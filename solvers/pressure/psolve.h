@@ -67,6 +67,9 @@ struct psolve_options {
   int group_max;       /* systems of at most this many unknowns are solved in one work-group and
                         * one launch (krylov_group.cl; stored operator, the multigrid's levels all
                         * in its block, or Jacobi); 0: never */
+  int fuse; /* with the multigrid: 1, the Krylov kernels that make p and s make the cycle's fine
+             * level down too (mg.cl's mg_begin_down, mg_s_down: 9 launches an iteration instead of
+             * 11, each fused row sum reading 3 or 4 vectors a neighbour instead of 1) */
 };
 
 /** Reasons: > 0 converged, < 0 failed. */
@@ -95,11 +98,14 @@ struct psolve {
   size_t cap;   /* vector length the buffers hold */
   int failures; /* consecutive non-converged solves */
   cl_kernel k_dot, k_dot_ts, k_residual, k_shift, k_start, k_begin, k_s, k_end, k_restart, k_total,
-      k_spmv, k_spmv_dot, k_scale, k_sweep, k_axpy, k_add_diag, k_invert, k_csr_diag, k_scan_blocks,
-      k_scan_top, k_scan_apply, k_guard, k_wtotal, k_wshift, k_group;
+      k_spmv, k_spmv_dot, k_scale, k_sweep, k_axpy, k_add_diag, k_invert, k_csr_diag_inv,
+      k_residual_csr, k_guard, k_wtotal, k_wshift, k_group;
+  cl_kernel k_begin_down, k_s_down; /* with the multigrid: kr_begin, kr_s and its fine level down */
+  struct grid_scan scan;            /* the stored rows' offsets (grid.h) */
   cl_mem d_r, d_r0, d_p, d_v, d_s, d_t, d_ph, d_sh, d_q, d_dinv, d_diag, d_b, d_partial, d_flags,
       d_x0;
-  cl_mem d_state;                               /* the iteration's state (krylov.cl) */
+  cl_mem d_p2;    /* with the multigrid, p of every other iteration (mg_begin_down: p_of()) */
+  cl_mem d_state; /* the iteration's state (krylov.cl) */
   cl_mem d_row, d_col, d_val, d_count, d_block; /* stored layout */
   cl_mem d_valm;                                /* the multigrid's copy of d_val (mg.h) */
   size_t nnz_cap;
@@ -126,7 +132,8 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
  *  psolve_set's "solver", `solver_X` its "X". */
 #define PSOLVE_OPTION_NAMES                                                                        \
   "solver", "solver_apply", "solver_precond", "solver_sweeps", "solver_singular",                  \
-      "solver_reinforce", "solver_rtol", "solver_atol", "solver_max_it", "solver_group_max"
+      "solver_reinforce", "solver_rtol", "solver_atol", "solver_max_it", "solver_group_max",       \
+      "solver_fuse"
 
 /** @brief Kernels (from a program built with PSOLVE_SOURCES) and work vectors for n unknowns. */
 enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n,

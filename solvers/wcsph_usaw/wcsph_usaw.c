@@ -192,6 +192,7 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   for (size_t k = 0; k < sizeof hidden / sizeof *hidden; ++k) {
     CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
+    pset_temporary(ps, *hidden[k].f); /* each made in the step after its sort, then read */
   }
   /* volumes: m/ρ0 for the fluid, none for the wall vertices (as in isph-usaw) */
   for (size_t k = 0; k < geo->n; ++k)

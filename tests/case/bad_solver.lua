@@ -7,6 +7,7 @@ local bad = {
   { solver_max_it = 0 },    -- no iteration at all
   { solver_rtol = 1 },      -- nothing to solve for
   { solver_group_max = -4 }, -- not a number of unknowns
+  { solver_fuse = "yes" },   -- not a way of launching the kernels
 }
 local opts = { "isph-usaw" }
 for k, v in pairs(bad[what]) do opts[k] = v end

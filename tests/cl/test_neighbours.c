@@ -1,7 +1,10 @@
 /* test_neighbours.c: the device cell-linked list returns exactly the brute-force neighbour sets
  * on random particle clouds, in 2-D and 3-D, with and without periodic axes, after reordering;
- * the reordering applies the permutation to every field; the sort is deterministic and a second
- * sort of sorted particles is the identity; a particle outside the grid raises the flag. */
+ * the reordering applies the permutation to every field but a temporary (pset_temporary), which
+ * it leaves as it was and pset_find does not know; the sort's inverse index (grid_sort_inv) is
+ * that of the reordered ids; the sort is deterministic and a second sort of sorted particles is
+ * the identity; a particle outside the grid raises the flag. The prefix sum (grid_scan_run) in one
+ * work-group and in three launches equals the host's on random counts. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -50,6 +53,48 @@ static int cmp_uint(const void *a, const void *b)
   return (x > y) - (x < y);
 }
 
+/* grid_scan_run on random counts, in one work-group (at most GRID_SCAN_GROUP_MAX items) and in
+ * three launches (more), against the host's exclusive prefix sum */
+static void check_scan(const struct dev *dev, cl_program prog, const char *name)
+{
+  const cl_uint sizes[2] = {1000u, GRID_SCAN_GROUP_MAX + 4321u};
+  struct grid_scan sc;
+  memset(&sc, 0, sizeof sc);
+  if (grid_scan_create(prog, &sc)) {
+    TC_CHECK(0, "%s: scan kernels", name);
+    return;
+  }
+  for (int k = 0; k < 2; ++k) {
+    const cl_uint m = sizes[k];
+    cl_uint *cnt = calloc(m, sizeof *cnt), *got = calloc(m, sizeof *got);
+    cl_mem d_c = NULL, d_b = NULL, d_s = NULL;
+    struct rng r;
+    rng_seed(&r, 99 + m);
+    for (cl_uint i = 0; i < m; ++i) cnt[i] = (cl_uint)(rng_uniform(&r) * 7.0);
+    int bad = -1;
+    if (cnt && got && !kern_buffer(dev, m * sizeof(cl_uint), cnt, &d_c, "counts") &&
+        !kern_buffer(dev, ((m + 63) / 64 + 1) * sizeof(cl_uint), NULL, &d_b, "blocks") &&
+        !kern_buffer(dev, m * sizeof(cl_uint), NULL, &d_s, "starts") &&
+        !grid_scan_run(&sc, dev, m, d_c, d_b, d_s, NULL) &&
+        !kern_read(dev, d_s, m * sizeof(cl_uint), got)) {
+      bad = 0;
+      cl_uint a = 0;
+      for (cl_uint i = 0; i < m; ++i) {
+        bad += got[i] != a;
+        a += cnt[i];
+      }
+    }
+    TC_CHECK(bad == 0, "%s: prefix sum of %u counts (%s) equals the host's (%d wrong)", name, m,
+             m <= GRID_SCAN_GROUP_MAX ? "one work-group" : "three launches", bad);
+    kern_release(&d_c);
+    kern_release(&d_b);
+    kern_release(&d_s);
+    free(cnt);
+    free(got);
+  }
+  grid_scan_destroy(&sc);
+}
+
 static void run_case(const struct dev *dev, const char *src, const struct cloud_case *c)
 {
   static const char *const sources[] = {GRID_SOURCES, NULL};
@@ -61,8 +106,10 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
   struct rng r;
   cl_program prog = NULL;
   cl_kernel k = NULL;
-  cl_mem d_flags = NULL, d_count = NULL, d_list = NULL;
-  int i_pos = 0, i_id = 0, i_tag = 0;
+  cl_mem d_flags = NULL, d_count = NULL, d_list = NULL, d_inv = NULL;
+  int i_pos = 0, i_id = 0, i_tag = 0, i_temp = 0;
+  cl_uint *inv = calloc(n, sizeof *inv);
+  real *temp = calloc(n, sizeof *temp);
   real *pos0 = calloc(n * stride, sizeof *pos0), *pos = calloc(n * stride, sizeof *pos);
   real *tag0 = calloc(n, sizeof *tag0), *tag = calloc(n, sizeof *tag);
   cl_uint *id0 = calloc(n, sizeof *id0), *id = calloc(n, sizeof *id);
@@ -95,25 +142,40 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
       prog_build_extra(dev, sources, "tests/cl/neighbours_test.cl", src, &o, &prog) ||
       prog_kernel(prog, "test_neigh_list", &k) || grid_create(dev, prog, &spec, n, &g))
     goto fail;
+  check_scan(dev, prog, c->name);
   start = calloc(g.ncells + 1, sizeof *start);
   if (kern_buffer(dev, sizeof zero, &zero, &d_flags, "flags") ||
       kern_buffer(dev, n * sizeof(cl_uint), NULL, &d_count, "count") ||
       kern_buffer(dev, n * MAXN * sizeof(cl_uint), NULL, &d_list, "list") ||
+      kern_buffer(dev, n * sizeof(cl_uint), NULL, &d_inv, "inverse") ||
       pset_add(&ps, dev, "pos", stride * sizeof(real), pos0, &i_pos) ||
       pset_add(&ps, dev, "id", sizeof(cl_uint), id0, &i_id) ||
+      pset_add(&ps, dev, "temp", sizeof(real), tag0, &i_temp) ||
       pset_add(&ps, dev, "tag", sizeof(real), tag0, &i_tag))
     goto fail;
+  pset_temporary(&ps, i_temp);
 
-  /* sort, keep the permutation, reorder */
-  if (grid_sort(&g, dev, n, pset_mem(&ps, i_pos), NULL, d_flags) ||
+  /* sort with the inverse of the ids, keep the permutation, reorder */
+  if (grid_sort_inv(&g, dev, n, pset_mem(&ps, i_pos), NULL, d_flags, pset_mem(&ps, i_id), d_inv) ||
+      kern_read(dev, d_inv, n * sizeof(cl_uint), inv) ||
       kern_read(dev, g.d_perm, n * sizeof(cl_uint), perm) ||
       kern_read(dev, g.d_start, (g.ncells + 1) * sizeof(cl_uint), start) ||
       pset_reorder(&ps, &g, dev) ||
       kern_read(dev, pset_mem(&ps, i_pos), n * stride * sizeof(real), pos) ||
       kern_read(dev, pset_mem(&ps, i_id), n * sizeof(cl_uint), id) ||
       kern_read(dev, pset_mem(&ps, i_tag), n * sizeof(real), tag) ||
+      kern_read(dev, pset_mem(&ps, i_temp), n * sizeof(real), temp) ||
       kern_read(dev, d_flags, sizeof flags, &flags))
     goto fail;
+  int bad_inv = 0, bad_temp = 0;
+  for (size_t k2 = 0; k2 < n; ++k2) {
+    bad_inv += id[k2] >= n || inv[id[k2]] != k2;
+    bad_temp += temp[k2] != tag0[k2];
+  }
+  TC_CHECK(bad_inv == 0, "%s: inv[id[k]] = k after the sort (%d wrong)", c->name, bad_inv);
+  TC_CHECK(bad_temp == 0 && pset_find(&ps, "temp") == -1 && pset_find(&ps, "tag") == i_tag,
+           "%s: the temporary left as it was (%d moved) and unknown to pset_find", c->name,
+           bad_temp);
 
   /* the permutation, and every field reordered by it */
   int bad_field = 0, bad_perm = 0, bad_order = 0;
@@ -191,6 +253,7 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
 fail:
   TC_CHECK(0, "%s: set-up and device calls succeed", c->name);
 done:
+  kern_release(&d_inv);
   kern_release(&d_list);
   kern_release(&d_count);
   kern_release(&d_flags);
@@ -200,6 +263,8 @@ done:
   if (prog != NULL) clReleaseProgram(prog);
   prog_opts_free(&o);
   free(start);
+  free(inv);
+  free(temp);
   free(want);
   free(list);
   free(cnt);
