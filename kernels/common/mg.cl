@@ -412,8 +412,7 @@ __kernel void mg_begin_down(const uint n, const uint k, const uint ngroups, __gl
   }
 }
 
-/* kr_s and mg_down_csr: s = r − α v with (s, s) into set KR_SS, t = dw ∘ s, res = s − A t
- */
+/* kr_s and mg_down_csr: s = r − α v, (s, s) into set KR_SS, t = dw ∘ s, res = s − A t */
 __kernel void mg_s_down(const uint n, const uint k, const uint ngroups, __global kreal *st,
                         __global real *part, __global const real *r, __global const real *v,
                         __global real *s, __global const real *dw, __global real *t,
