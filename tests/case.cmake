@@ -504,6 +504,8 @@ clsph_failure_test(health_wall_crossing ${CMAKE_SOURCE_DIR}/cases/cavity.lua wal
 # floor (δr) 0 or in (0, 1].
 clsph_cli_test(case_cavity_bad_switch ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set corners=2
                RC 2 REGEX "cavity.lua:[0-9]+: cavity: corners must be 0 or 1, not 2")
+clsph_cli_test(case_cavity_bad_fuse ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set fuse=0.5
+               RC 2 REGEX "cavity.lua:[0-9]+: cavity: fuse must be 0 or 1, not 0.5")
 clsph_cli_test(case_cavity_bad_hdr ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set hdr=-1
                RC 2 REGEX "cavity: hdr \\(h/δr\\) must be 0 \\(the scheme.s\\) or in \\(0, 10.*, not -1")
 clsph_cli_test(case_cavity_bad_floor ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set floor=2
