@@ -160,7 +160,6 @@ static enum clsph_status metric_probe(void *ctx, const char *name, const char *f
   struct sim *sim = begin(ctx);
   const struct scene *s = sim->scene;
   const struct scene_probe *pr = NULL;
-  double out[4];
   for (int k = 0; k < s->nprobes; ++k)
     if (strcmp(s->probes[k].name, name) == 0) pr = &s->probes[k];
   METRIC_REFUSE(pr != NULL, "the case declares no probe '%s'", name);
@@ -169,8 +168,25 @@ static enum clsph_status metric_probe(void *ctx, const char *name, const char *f
   const struct pfield *f = &sim->ps.f[idx];
   METRIC_REFUSE(f->type == PF_REAL && f->ncomp <= 4, "field '%s' cannot be interpolated", field);
   METRIC_REFUSE(comp >= 0 && comp < f->nout, "field '%s' has %d components", field, f->nout);
-  CLSPH_TRY(sim_sample_probes(sim, idx, 1, pr, out));
-  *value = out[comp];
+  /* every probe of the case at once, kept for the next one asked in this state */
+  struct sim_probe_cache *c = &sim->probe_cache;
+  if (c->v == NULL || c->field != idx || c->step != sim->step || c->sorts != sim->sorts ||
+      c->time != sim->time) {
+    free(c->v);
+    c->v = malloc((size_t)s->nprobes * (size_t)f->ncomp * sizeof *c->v);
+    CLSPH_CHECK(c->v != NULL, CLSPH_E_NOMEM, "out of memory");
+    st = sim_sample_probes(sim, idx, s->nprobes, s->probes, c->v);
+    if (st != CLSPH_OK) {
+      free(c->v);
+      c->v = NULL;
+      goto done;
+    }
+    c->field = idx;
+    c->step = sim->step;
+    c->sorts = sim->sorts;
+    c->time = sim->time;
+  }
+  *value = c->v[(size_t)(pr - s->probes) * (size_t)f->ncomp + (size_t)comp];
 done:
   return st;
 }

@@ -495,6 +495,8 @@ void sim_destroy(struct sim *sim)
   if (sim->k_slice != NULL) clReleaseKernel(sim->k_slice);
   if (sim->k_health != NULL) clReleaseKernel(sim->k_health);
   sim->k_probe = sim->k_max_speed = sim->k_count = sim->k_slice = NULL;
+  free(sim->probe_cache.v);
+  sim->probe_cache.v = NULL;
   sim->k_domain = NULL;
   sim->k_health = NULL;
   kern_release(&sim->d_health);

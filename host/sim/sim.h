@@ -136,11 +136,21 @@ struct sim {
                          * case's sample(), checkpoints), each timed from an idle device, s */
   unsigned long digest; /* geometry_digest of the scene: checkpoints record it */
   double mem_estimate;  /* device memory the run needs, estimated at set-up, bytes */
-  char status[1024];    /* "ok" or why the run stopped */
-  char failure[32];     /* "none", or the class of the failure (summary.json "failure"): "nan",
-                         * "escaped", "neighbours", "wall_crossing", "solver", "clustering",
-                         * "energy", "dt_collapse", "dt_bound", "flow_control", "metrics",
-                         * "interrupted", "error" */
+  /* every probe's value of one field in one state (metrics.c's sim.probe: the sensors a case's
+   * sample() reads one by one cost one launch and one read together); valid while v != NULL and
+   * field, step, sorts and time are the run's */
+  struct sim_probe_cache {
+    int field;
+    long step;
+    unsigned long sorts;
+    double time;
+    double *v; /* nprobes x the field's components */
+  } probe_cache;
+  char status[1024]; /* "ok" or why the run stopped */
+  char failure[32];  /* "none", or the class of the failure (summary.json "failure"): "nan",
+                      * "escaped", "neighbours", "wall_crossing", "solver", "clustering",
+                      * "energy", "dt_collapse", "dt_bound", "flow_control", "metrics",
+                      * "interrupted", "error" */
 };
 
 /** @brief Set up a simulation of a scene: geometry, program, fields, scheme. Nothing is written. */
