@@ -34,6 +34,10 @@ struct pset {
   int nscratch;
 };
 
+/* The least capacity of a set: NEIGH_FOR4 (kernels/common/grid.cl) loads four particles at a time.
+ */
+#define PSET_MIN_CAP 4
+
 /** @brief Empty set of n particles with room for cap. */
 void pset_init(struct pset *ps, size_t n, size_t cap);
 /** @brief Add a field of `elem` bytes per particle, initialised from `init` (n elements) or

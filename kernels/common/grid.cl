@@ -243,6 +243,157 @@ int neigh_next(struct neigh_iter *it, const struct grid *g, __global const uint 
   for (neigh_begin(&(IT), &(G), (X)); neigh_range(&(IT), &(G), (CS));)                             \
     for (uint J = (IT).j; J < (IT).end; ++J)
 
+/* ---- four candidates a pass ----
+ * NEIGH_FOR4(it, g, cell_start, x, b) { ... } visits the ranges of NEIGH_FOR four particles at a
+ * time, b .. b + 3, as one vector of four lanes (real4: SIMD on a CPU, where the one-at-a-time
+ * loop's branch on the distance is taken at random for about half the candidates). The lanes
+ * that belong to the range and were not visited before are neigh_live4(&it, b); the last pass
+ * of a range starts at its end − 4, so that every load is one vector load of particles that
+ * exist (a particle set holds at least 4: PSET_MIN_CAP). A dead lane reads some other particle:
+ * its terms must be selected away (lanes_keep), not multiplied by zero. Sums in lanes are added
+ * at the end as (s0 + s1) + (s2 + s3): a fixed order, not that of NEIGH_FOR. */
+#if CLSPH_DOUBLE
+typedef long4 lanes_mask;
+#define LANES_MASK(c) convert_long4(c)
+#else
+typedef int4 lanes_mask;
+#define LANES_MASK(c) (c)
+#endif
+
+uint neigh_base4(const struct neigh_iter *it)
+{
+  return it->end >= 4u ? min(it->j, it->end - 4u) : 0u;
+}
+
+lanes_mask neigh_live4(const struct neigh_iter *it, const uint b)
+{
+  const uint4 k = (uint4)(b) + (uint4)(0u, 1u, 2u, 3u);
+  return LANES_MASK(k >= (uint4)(it->j) && k < (uint4)(it->end));
+}
+
+#define NEIGH_FOR4(IT, G, CS, X, B)                                                                \
+  for (neigh_begin(&(IT), &(G), (X)); neigh_range(&(IT), &(G), (CS));)                             \
+    for (uint B; (IT).j < (IT).end && ((B) = neigh_base4(&(IT)), 1); (IT).j += 4u)
+
+/* Four vectors, one lane each. */
+struct lanesv {
+  real4 x, y;
+#if DIM == 3
+  real4 z;
+#endif
+};
+
+real4 lanes_load(__global const real *a, const uint b)
+{
+  return vload4(0, a + b);
+}
+
+uint4 lanes_load_u(__global const uint *a, const uint b)
+{
+  return vload4(0, a + b);
+}
+
+struct lanesv lanes_load_v(__global const realv *a, const uint b)
+{
+  struct lanesv v;
+  __global const real *f = (__global const real *)(a + b);
+#if DIM == 2
+  const real8 q = vload8(0, f);
+  v.x = q.even;
+  v.y = q.odd;
+#else
+  const real8 q0 = vload8(0, f), q1 = vload8(1, f); /* x y z w of four particles */
+  v.x = (real4)(q0.s04, q1.s04);
+  v.y = (real4)(q0.s15, q1.s15);
+  v.z = (real4)(q0.s26, q1.s26);
+#endif
+  return v;
+}
+
+/* x − (p + shift), lane by lane */
+struct lanesv lanes_rel(const realv x, const struct lanesv p, const realv shift)
+{
+  struct lanesv r;
+  r.x = x.x - (p.x + shift.x);
+  r.y = x.y - (p.y + shift.y);
+#if DIM == 3
+  r.z = x.z - (p.z + shift.z);
+#endif
+  return r;
+}
+
+/* a − b with a the same vector in every lane */
+struct lanesv lanes_sub_from(const realv a, const struct lanesv b)
+{
+  return lanes_rel(a, b, (realv)(R(0.0)));
+}
+
+real4 lanes_dot(const struct lanesv a, const struct lanesv b)
+{
+  real4 d = a.x * b.x + a.y * b.y;
+#if DIM == 3
+  d += a.z * b.z;
+#endif
+  return d;
+}
+
+/* a · v with v the same vector in every lane */
+real4 lanes_dot1(const struct lanesv a, const realv v)
+{
+  real4 d = a.x * v.x + a.y * v.y;
+#if DIM == 3
+  d += a.z * v.z;
+#endif
+  return d;
+}
+
+real4 lanes_keep(const real4 v, const lanes_mask live)
+{
+  return select((real4)(R(0.0)), v, live);
+}
+
+real lanes_sum(const real4 s)
+{
+  return (s.x + s.y) + (s.z + s.w);
+}
+
+/* lanes k ≠ i: the particle itself left out */
+lanes_mask neigh_other4(const uint b, const uint i)
+{
+  return LANES_MASK((uint4)(b) + (uint4)(0u, 1u, 2u, 3u) != (uint4)(i));
+}
+
+struct lanesv lanes_zero_v(void)
+{
+  struct lanesv z;
+  z.x = z.y = (real4)(R(0.0));
+#if DIM == 3
+  z.z = z.x;
+#endif
+  return z;
+}
+
+/* acc += w a, lane by lane (a vector sum kept in lanes: lanes_total_v at the end) */
+void lanes_acc_v(struct lanesv *acc, const real4 w, const struct lanesv a)
+{
+  acc->x += w * a.x;
+  acc->y += w * a.y;
+#if DIM == 3
+  acc->z += w * a.z;
+#endif
+}
+
+realv lanes_total_v(const struct lanesv acc)
+{
+  realv s = (realv)(R(0.0));
+  s.x = lanes_sum(acc.x);
+  s.y = lanes_sum(acc.y);
+#if DIM == 3
+  s.z = lanes_sum(acc.z);
+#endif
+  return s;
+}
+
 /* ---- building the list ---- */
 
 /* kind: the particles' kinds where use_kind (the fluid's grid), else unread */

@@ -70,15 +70,26 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
   realv gf = (realv)(R(0.0)); /* Σ_b V_b ∇w_ab: into the fluid (and the walls) */
   realv gw = (realv)(R(0.0)); /* ∇γ_a = Σ_s ∇γ_as: away from the walls */
   struct neigh_iter it;
-  NEIGH_FOR(it, g, cell_start, x, j) {
-    realv r = x - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
-    d -= vol[j] * smoothing_f(g.sm, sqrt(r2)) * r2; /* r_ab·∇w_ab = F r² */
-    if (kind[j] == ISPH_FLUID) wet += vol[j] * smoothing_w(g.sm, sqrt(r2));
-    gf += vol[j] * smoothing_f(g.sm, sqrt(r2)) * r;
-    if (with_rhs) div -= vol[j] * smoothing_f(g.sm, sqrt(r2)) * dot(us - ustar[j], r);
+  /* four at a time (grid.cl) */
+  real4 d4 = (real4)(R(0.0)), wet4 = d4, div4 = d4;
+  struct lanesv gf4 = lanes_zero_v();
+  NEIGH_FOR4(it, g, cell_start, x, b)
+  {
+    const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
+    const real4 r2 = lanes_dot(r, r), rr = sqrt(r2), vj = lanes_load(vol, b);
+    const uint4 kj = lanes_load_u(kind, b);
+    const lanes_mask take =
+        neigh_live4(&it, b) & neigh_other4(b, i) & LANES_MASK(kj <= (uint4)(ISPH_VERTEX));
+    const real4 vf = lanes_keep(vj * smoothing_f4(g.sm, rr), take);
+    d4 -= vf * r2; /* r_ab·∇w_ab = F r² */
+    wet4 += lanes_keep(vj * smoothing_w4(g.sm, rr), take & LANES_MASK(kj == (uint4)(ISPH_FLUID)));
+    lanes_acc_v(&gf4, vf, r);
+    if (with_rhs) div4 -= vf * lanes_dot(lanes_sub_from(us, lanes_load_v(ustar, b)), r);
   }
+  d = lanes_sum(d4);
+  wet = lanes_sum(wet4);
+  gf = lanes_total_v(gf4);
+  div = lanes_sum(div4);
   NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);

@@ -62,16 +62,27 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   real div = R(0.0), wall = R(0.0), dens = vol[i] * smoothing_w(g.sm, R(0.0));
   uint near_surface = 0;
   struct neigh_iter it;
-  NEIGH_FOR(it, g, cell_start, x, j) {
-    realv r = x - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
-    div -= vol[j] * smoothing_f(g.sm, sqrt(r2)) * dot(us - ustar[j], r);
+  /* four at a time (grid.cl), div as isph_free_surface sums it (the same bits) */
+  real4 div4 = (real4)(R(0.0)), dens4 = div4;
+  lanes_mask near4 = (lanes_mask)(0);
+  NEIGH_FOR4(it, g, cell_start, x, b)
+  {
+    const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
+    const real4 r2 = lanes_dot(r, r), rr = sqrt(r2), vj = lanes_load(vol, b);
+    const uint4 kj = lanes_load_u(kind, b);
+    const lanes_mask take =
+        neigh_live4(&it, b) & neigh_other4(b, i) & LANES_MASK(kj <= (uint4)(ISPH_VERTEX));
+    const real4 vf = lanes_keep(vj * smoothing_f4(g.sm, rr), take);
+    div4 -= vf * lanes_dot(lanes_sub_from(us, lanes_load_v(ustar, b)), r);
     if (relax > R(0.0)) {
-      dens += vol[j] * smoothing_w(g.sm, sqrt(r2));
-      near_surface |= free_surface[j];
+      dens4 += lanes_keep(vj * smoothing_w4(g.sm, rr), take);
+      near4 |=
+          take & (r2 < g.sm.support2) & LANES_MASK(lanes_load_u(free_surface, b) != (uint4)(0u));
     }
   }
+  div = lanes_sum(div4);
+  dens += lanes_sum(dens4);
+  near_surface = any(near4);
   NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);

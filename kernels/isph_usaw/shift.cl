@@ -34,21 +34,35 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   realv cx = (realv)(R(0.0)), cu = (realv)(R(0.0)); /* collisions: move and velocity change */
   int near_surface = 0;
   struct neigh_iter it;
-  NEIGH_FOR(it, g, cell_start, x, j) {
-    realv r = x - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 >= g.sm.support2 || kind[j] > ISPH_VERTEX) continue;
-    near_surface |= free_surface[j] && r2 < near2; /* near the free surface: no shift */
-    if (j == i) continue;
-    gc += vol[j] * smoothing_f(g.sm, sqrt(r2)) * r;
-    if (guard && kind[j] == ISPH_FLUID && r2 < cd * cd) {
-      const real len = sqrt(r2);
-      const realv e = usaw_pair_dir(r, len, dr0, id[i], id[j]);
+  /* four at a time (grid.cl) */
+  struct lanesv gc4 = lanes_zero_v();
+  lanes_mask near4 = (lanes_mask)(0);
+  NEIGH_FOR4(it, g, cell_start, x, b)
+  {
+    const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
+    const real4 r2 = lanes_dot(r, r);
+    const uint4 kj = lanes_load_u(kind, b);
+    const lanes_mask part =
+        neigh_live4(&it, b) & (r2 < g.sm.support2) & LANES_MASK(kj <= (uint4)(ISPH_VERTEX));
+    /* near the free surface (i itself too): no shift */
+    near4 |= part & (r2 < near2) & LANES_MASK(lanes_load_u(free_surface, b) != (uint4)(0u));
+    const lanes_mask take = part & neigh_other4(b, i);
+    lanes_acc_v(&gc4, lanes_keep(lanes_load(vol, b) * smoothing_f4(g.sm, sqrt(r2)), take), r);
+    if (!guard || !any(take & LANES_MASK(kj == (uint4)(ISPH_FLUID)) & (r2 < cd * cd))) continue;
+    for (uint k = 0; k < 4u; ++k) { /* rare: the collisions one pair at a time */
+      const uint j = b + k;
+      if (j < it.j || j >= it.end || j == i || kind[j] != ISPH_FLUID) continue;
+      const realv rv = x - (pos[j] + it.shift);
+      const real len = length(rv);
+      if (len >= cd) continue;
+      const realv e = usaw_pair_dir(rv, len, dr0, id[i], id[j]);
       const real vn = dot(u - vel[j], e);
       if (vn < R(0.0)) cu -= R(0.5) * (R(1.0) + USAW_RESTITUTION) * vn * e;
       cx += R(0.5) * (cd - len) * e;
     }
   }
+  gc = lanes_total_v(gc4);
+  near_surface = any(near4);
   const real lcx = length(cx);
   if (lcx > R(0.5) * cd) cx *= R(0.5) * cd / lcx;
   if (near_surface) {
@@ -77,13 +91,17 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   shift[i] = dr;
 #if ISPH_SHIFT_VCORR
   /* first-order velocity correction (eq 38) */
-  realv du = (realv)(R(0.0));
-  NEIGH_FOR(it, g, cell_start, x, j) {
-    realv r = x - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
-    du -= vol[j] * (u - vel[j]) * (smoothing_f(g.sm, sqrt(r2)) * dot(r, dr));
+  struct lanesv du4 = lanes_zero_v();
+  NEIGH_FOR4(it, g, cell_start, x, b)
+  { /* i itself adds nothing (u_ab = 0) */
+    const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
+    const lanes_mask take =
+        neigh_live4(&it, b) & LANES_MASK(lanes_load_u(kind, b) <= (uint4)(ISPH_VERTEX));
+    const real4 w = lanes_keep(
+        lanes_load(vol, b) * smoothing_f4(g.sm, sqrt(lanes_dot(r, r))) * lanes_dot1(r, dr), take);
+    lanes_acc_v(&du4, -w, lanes_sub_from(u, lanes_load_v(vel, b)));
   }
+  realv du = lanes_total_v(du4);
   NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv us = R(0.5) * (wall_vel[inv[seg_v1[s]]] + wall_vel[inv[seg_v2[s]]]);

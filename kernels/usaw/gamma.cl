@@ -92,11 +92,8 @@ real usaw_gamma_seg(const struct smooth sm, realv x, realv a, realv b, realv n, 
          (sb * usaw_psi(q0, zb) - sa * usaw_psi(q0, za));
 }
 
-#ifndef USAW_GL
-#define USAW_GL 8 /* Gauss-Legendre points of the segment integral of eq 6 */
-#endif
-
-/* ∇γ_as = n ∫ w over the part of the segment inside the support (eq 6), Gauss-Legendre. */
+/* ∇γ_as = n ∫ w over the part of the segment inside the support (eq 6), eight-point
+ * Gauss-Legendre. */
 realv usaw_grad_gamma_seg(const struct smooth sm, realv x, realv a, realv b, realv n)
 {
   const real gx[8] = {R(-0.9602898564975363), R(-0.7966664774136267), R(-0.5255324099163290),
@@ -114,12 +111,14 @@ realv usaw_grad_gamma_seg(const struct smooth sm, realv x, realv a, realv b, rea
   const real reach = sqrt(reach2), yfoot = dot(x - a, t); /* foot at a + yfoot t */
   const real lo = fmax(R(0.0), yfoot - reach), hi = fmin(len, yfoot + reach);
   if (hi <= lo) return (realv)(R(0.0));
-  real s = R(0.0);
-  for (int k = 0; k < USAW_GL; ++k) {
-    real y = R(0.5) * (lo + hi) + R(0.5) * (hi - lo) * gx[k];
-    real dy = y - yfoot;
-    s += gw[k] * smoothing_w(sm, sqrt(d * d + dy * dy));
-  }
+  /* the eight points as two vectors of four (smoothing_w4) */
+  const real4 x0 = (real4)(gx[0], gx[1], gx[2], gx[3]), x1 = (real4)(gx[4], gx[5], gx[6], gx[7]);
+  const real4 w0 = (real4)(gw[0], gw[1], gw[2], gw[3]), w1 = (real4)(gw[4], gw[5], gw[6], gw[7]);
+  const real4 dy0 = R(0.5) * (lo + hi) + R(0.5) * (hi - lo) * x0 - yfoot;
+  const real4 dy1 = R(0.5) * (lo + hi) + R(0.5) * (hi - lo) * x1 - yfoot;
+  const real4 sv = w0 * smoothing_w4(sm, sqrt(d * d + dy0 * dy0)) +
+                   w1 * smoothing_w4(sm, sqrt(d * d + dy1 * dy1));
+  const real s = lanes_sum(sv);
   return R(0.5) * (hi - lo) * s * n;
 }
 

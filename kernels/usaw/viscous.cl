@@ -49,16 +49,25 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
 #endif
   realv lap = (realv)(R(0.0));
   struct neigh_iter it;
-  NEIGH_FOR(it, g, cell_start, x, j) {
-    realv r = x - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
+  struct lanesv lap4 = lanes_zero_v();
+  /* four at a time (grid.cl), i itself left out (a vertex's u is not vel[i] under the model) */
+  NEIGH_FOR4(it, g, cell_start, x, b)
+  {
+    const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
+    const lanes_mask take = neigh_live4(&it, b) &
+                            LANES_MASK(lanes_load_u(kind, b) <= (uint4)(ISPH_VERTEX)) &
+                            LANES_MASK((uint4)(b) + (uint4)(0u, 1u, 2u, 3u) != (uint4)(i));
 #if USAW_TURB
-    lap += (R(2.0) * nu + nti + nu_t[j]) * vol[j] * smoothing_f(g.sm, sqrt(r2)) * (u - vel[j]);
+    const real4 nu_ab = R(2.0) * nu + nti + lanes_load(nu_t, b);
 #else
-    lap += R(2.0) * vol[j] * smoothing_f(g.sm, sqrt(r2)) * (u - vel[j]); /* r·∇w / r² = F */
+    const real4 nu_ab = (real4)(R(2.0));
 #endif
+    /* r·∇w / r² = F */
+    const real4 wf =
+        lanes_keep(nu_ab * lanes_load(vol, b) * smoothing_f4(g.sm, sqrt(lanes_dot(r, r))), take);
+    lanes_acc_v(&lap4, wf, lanes_sub_from(u, lanes_load_v(vel, b)));
   }
+  lap = lanes_total_v(lap4);
   /* the wall term −Σ_s c_s P_s (u − u_s), c_s = 2ν|∇γ_as|/(γ_a δr_as), P_s = I − n_s n_sᵀ,
    * taken at u*: M = Σ_s c_s P_s, b = Σ_s c_s P_s u_s */
   real m11 = R(0.0), m12 = R(0.0), m22 = R(0.0);

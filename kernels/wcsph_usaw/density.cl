@@ -27,18 +27,23 @@ __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const rea
   if (kind[i] != ISPH_FLUID) return;
   const realv x = pos[i], u = vel[i];
   const real ra = rho[i];
-  real div = R(0.0), diff = R(0.0);
+  real4 div4 = (real4)(R(0.0)), diff4 = (real4)(R(0.0));
   struct neigh_iter it;
-  NEIGH_FOR(it, g, cell_start, x, j) {
-    realv r = x - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 >= g.sm.support2 || j == i || kind[j] != ISPH_FLUID) continue;
-    real rr = sqrt(r2), f = smoothing_f(g.sm, rr);
-    div += vol[j] * f * dot(u - vel[j], r);
+  /* the fluid four at a time (grid.cl); i itself adds nothing (r = 0, u_ab = 0) */
+  NEIGH_FOR4(it, g, cell_start, x, b)
+  {
+    const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
+    const real4 rr = sqrt(lanes_dot(r, r));
+    const lanes_mask fluid = LANES_MASK(lanes_load_u(kind, b) == (uint4)(ISPH_FLUID));
+    const real4 vf =
+        lanes_keep(lanes_load(vol, b) * smoothing_f4(g.sm, rr), neigh_live4(&it, b) & fluid);
+    div4 += vf * lanes_dot(lanes_sub_from(u, lanes_load_v(vel, b)), r);
     /* the hydrostatic part of the density difference is not diffused: ρ_H,a − ρ_H,b = ρ0 g·r/c0²
      * (g·r_ab = |g| (z_b − z_a)) */
-    diff += vol[j] * (ra - rho[j] - rho0_c2 * dot(gravity, r)) * f * rr; /* r·∇w / r = F r */
+    diff4 +=
+        vf * (ra - lanes_load(rho, b) - rho0_c2 * lanes_dot1(r, gravity)) * rr; /* r·∇w/r = F r */
   }
+  real div = lanes_sum(div4), diff = lanes_sum(diff4);
   NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);

@@ -28,18 +28,36 @@ __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv
   realv cu = (realv)(R(0.0)); /* collisions (usaw/common.cl), in scenes with gravity */
   const real cd = USAW_COLLIDE * dr0;
   struct neigh_iter it;
-  NEIGH_FOR(it, g, cell_start, x, j) {
-    realv r = x - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 >= g.sm.support2 || j == i || kind[j] > ISPH_VERTEX) continue;
-    const real pb = p[j] - rho0 * dot(gravity, pos[j] + it.shift) - p_ref;
-    grad += vol[j] * (pa + pb) * smoothing_f(g.sm, sqrt(r2)) * r;
-    if (guard && kind[j] == ISPH_FLUID && r2 < cd * cd) {
-      const realv e = usaw_pair_dir(r, sqrt(r2), dr0, id[i], id[j]);
+  struct lanesv grad4 = lanes_zero_v();
+  /* four at a time (grid.cl); i itself adds nothing to the gradient (r = 0) */
+  NEIGH_FOR4(it, g, cell_start, x, b)
+  {
+    const struct lanesv pj = lanes_load_v(pos, b), r = lanes_rel(x, pj, it.shift);
+    const real4 r2 = lanes_dot(r, r);
+    const uint4 kj = lanes_load_u(kind, b);
+    const lanes_mask live = neigh_live4(&it, b);
+    /* P_b = p_b − ρ0 g·r_b − p_ref with r_b = x − r */
+    const real4 pb = lanes_load(p, b) - rho0 * (dot(gravity, x) - lanes_dot1(r, gravity)) - p_ref;
+    const real4 wf = lanes_keep(lanes_load(vol, b) * (pa + pb) * smoothing_f4(g.sm, sqrt(r2)),
+                                live & LANES_MASK(kj <= (uint4)(ISPH_VERTEX)));
+    lanes_acc_v(&grad4, wf, r);
+    if (!guard) continue;
+    const uint4 jj = (uint4)(b) + (uint4)(0u, 1u, 2u, 3u);
+    const lanes_mask close = live & LANES_MASK(kj == (uint4)(ISPH_FLUID)) &
+                             LANES_MASK(jj != (uint4)(i)) & (r2 < cd * cd);
+    if (!any(close)) continue;
+    for (uint k = 0; k < 4u; ++k) { /* rare: the collisions one pair at a time */
+      const uint j = b + k;
+      if (j < it.j || j >= it.end || j == i || kind[j] != ISPH_FLUID) continue;
+      const realv rv = x - (pos[j] + it.shift);
+      const real rl = length(rv);
+      if (rl >= cd) continue;
+      const realv e = usaw_pair_dir(rv, rl, dr0, id[i], id[j]);
       const real vn = dot(ustar[i] - ustar[j], e);
       if (vn < R(0.0)) cu -= R(0.5) * (R(1.0) + USAW_RESTITUTION) * vn * e;
     }
   }
+  grad = lanes_total_v(grad4);
   NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
     const real ps = R(0.5) * (p[inv[seg_v1[s]]] + p[inv[seg_v2[s]]]) -

@@ -3,8 +3,9 @@
  * the reordering applies the permutation to every field but a temporary (pset_temporary), which
  * it leaves as it was and pset_find does not know; the sort's inverse index (grid_sort_inv) is
  * that of the reordered ids; the sort is deterministic and a second sort of sorted particles is
- * the identity; a particle outside the grid raises the flag. The prefix sum (grid_scan_run) in one
- * work-group and in three launches equals the host's on random counts. */
+ * the identity; a particle outside the grid raises the flag. The loop four at a time (NEIGH_FOR4)
+ * gives the same sets, also in a set of three particles (fewer than its four lanes). The prefix sum
+ * (grid_scan_run) in one work-group and in three launches equals the host's on random counts. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -95,6 +96,40 @@ static void check_scan(const struct dev *dev, cl_program prog, const char *name)
   grid_scan_destroy(&sc);
 }
 
+/* A device's neighbour lists (count, list: MAXN a particle, current indices) against brute force,
+ * in original ids; returns the pairs listed. */
+static long check_lists(const struct cloud_case *c, size_t n, size_t stride, double support,
+                        const real *pos0, const cl_uint *id, const cl_uint *cnt,
+                        const cl_uint *list, cl_uint *want, int four)
+{
+  long missing = 0, extra = 0, pairs = 0;
+  int overflow = 0;
+  for (size_t a = 0; a < n; ++a) {
+    if (c->outside && id[a] == 0) continue; /* clamped into an edge cell: not a real position */
+    overflow |= cnt[a] > MAXN;
+    size_t m = cnt[a] < MAXN ? cnt[a] : MAXN;
+    for (size_t q = 0; q < m; ++q) want[q] = id[list[a * MAXN + q]];
+    qsort(want, m, sizeof *want, cmp_uint);
+    pairs += (long)m;
+    size_t q = 0;
+    for (size_t b = 0; b < n; ++b) {
+      if (c->outside && b == 0) continue;
+      while (q < m && want[q] < b) ++q, ++extra; /* device listed a non-existent index */
+      int in = q < m && want[q] == b;
+      int bf = brute(c, pos0, stride, id[a], b, support);
+      if (in) ++q;
+      if (bf == 1 && !in) ++missing;
+      if (bf == 0 && in) ++extra;
+    }
+    extra += (long)(m - q);
+  }
+  TC_CHECK(!overflow, "%s: test list width %d suffices", c->name, MAXN);
+  TC_CHECK(missing == 0 && extra == 0,
+           "%s: neighbour sets %s equal brute force (%ld pairs; %ld missing, %ld extra)", c->name,
+           four ? "four at a time" : "one at a time", pairs, missing, extra);
+  return pairs;
+}
+
 static void run_case(const struct dev *dev, const char *src, const struct cloud_case *c)
 {
   static const char *const sources[] = {GRID_SOURCES, NULL};
@@ -105,7 +140,7 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
   struct pset ps;
   struct rng r;
   cl_program prog = NULL;
-  cl_kernel k = NULL;
+  cl_kernel k = NULL, k4 = NULL;
   cl_mem d_flags = NULL, d_count = NULL, d_list = NULL, d_inv = NULL;
   int i_pos = 0, i_id = 0, i_tag = 0, i_temp = 0;
   cl_uint *inv = calloc(n, sizeof *inv);
@@ -140,7 +175,8 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
   spec.sm = sm;
   if (grid_define(&spec, &o) || smoothing_define(&sm, &o) ||
       prog_build_extra(dev, sources, "tests/cl/neighbours_test.cl", src, &o, &prog) ||
-      prog_kernel(prog, "test_neigh_list", &k) || grid_create(dev, prog, &spec, n, &g))
+      prog_kernel(prog, "test_neigh_list", &k) || prog_kernel(prog, "test_neigh_list4", &k4) ||
+      grid_create(dev, prog, &spec, n, &g))
     goto fail;
   check_scan(dev, prog, c->name);
   start = calloc(g.ncells + 1, sizeof *start);
@@ -199,40 +235,20 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
   TC_CHECK(((flags & 4u) != 0) == (c->outside != 0), "%s: escaped flag %s", c->name,
            c->outside ? "raised" : "clear");
 
-  /* neighbour sets against brute force, in original ids */
+  /* neighbour sets against brute force, in original ids: the loop one at a time (NEIGH_FOR, as
+   * neigh_next) and four at a time (NEIGH_FOR4) */
   cl_uint np = (cl_uint)n, maxn = MAXN;
   cl_mem d_pos = pset_mem(&ps, i_pos);
-  if (KERN_SET(k, KARG(np), KARG(g.geom), KARG(g.d_start), KARG(d_pos), KARG(maxn), KARG(d_count),
-               KARG(d_list)) ||
-      kern_launch(dev, k, n, NULL) || kern_read(dev, d_count, n * sizeof(cl_uint), cnt) ||
-      kern_read(dev, d_list, n * MAXN * sizeof(cl_uint), list))
-    goto fail;
-  long missing = 0, extra = 0, pairs = 0;
-  int overflow = 0;
-  for (size_t a = 0; a < n; ++a) {
-    if (c->outside && id[a] == 0) continue; /* clamped into an edge cell: not a real position */
-    overflow |= cnt[a] > MAXN;
-    size_t m = cnt[a] < MAXN ? cnt[a] : MAXN;
-    for (size_t q = 0; q < m; ++q) want[q] = id[list[a * MAXN + q]];
-    qsort(want, m, sizeof *want, cmp_uint);
-    pairs += (long)m;
-    size_t q = 0;
-    for (size_t b = 0; b < n; ++b) {
-      if (c->outside && b == 0) continue;
-      while (q < m && want[q] < b) ++q, ++extra; /* device listed a non-existent index */
-      int in = q < m && want[q] == b;
-      int bf = brute(c, pos0, stride, id[a], b, sm.support);
-      if (in) ++q;
-      if (bf == 1 && !in) ++missing;
-      if (bf == 0 && in) ++extra;
-    }
-    extra += (long)(m - q);
+  long pairs = 0;
+  for (int four = 0; four < 2; ++four) {
+    cl_kernel kl = four ? k4 : k;
+    if (KERN_SET(kl, KARG(np), KARG(g.geom), KARG(g.d_start), KARG(d_pos), KARG(maxn),
+                 KARG(d_count), KARG(d_list)) ||
+        kern_launch(dev, kl, n, NULL) || kern_read(dev, d_count, n * sizeof(cl_uint), cnt) ||
+        kern_read(dev, d_list, n * MAXN * sizeof(cl_uint), list))
+      goto fail;
+    pairs = check_lists(c, n, stride, sm.support, pos0, id, cnt, list, want, four);
   }
-  TC_CHECK(!overflow, "%s: test list width %d suffices", c->name, MAXN);
-  TC_CHECK(missing == 0 && extra == 0,
-           "%s: neighbour sets equal brute force (%ld pairs; %ld missing, %ld extra)", c->name,
-           pairs, missing, extra);
-
   /* a second sort of sorted particles is the identity; sorting the original again repeats perm */
   int not_identity = 0, not_repeat = 0;
   if (grid_sort(&g, dev, n, pset_mem(&ps, i_pos), NULL, d_flags) ||
@@ -259,6 +275,7 @@ done:
   kern_release(&d_flags);
   pset_destroy(&ps);
   grid_destroy(&g);
+  if (k4 != NULL) clReleaseKernel(k4);
   if (k != NULL) clReleaseKernel(k);
   if (prog != NULL) clReleaseProgram(prog);
   prog_opts_free(&o);
@@ -295,6 +312,7 @@ int main(int argc, char **argv)
       {"2-D periodic, 3 big cells", 2, {1, 1, 0}, {0.305, 0.31, 0}, 0.05, 400, 0, 1},
       {"2-D walls, 3 cells/support", 2, {0, 0, 0}, {1.0, 0.7, 0}, 0.025, 4000, 0, 3},
       {"2-D one particle outside", 2, {0, 0, 0}, {1.0, 1.0, 0}, 0.025, 3000, 1, 0},
+      {"2-D three particles", 2, {0, 0, 0}, {0.2, 0.2, 0}, 0.05, 3, 0, 0},
       {"3-D walls", 3, {0, 0, 0}, {1.0, 0.8, 0.6}, 0.06, 4000, 0, 0},
       {"3-D periodic x, y, z", 3, {1, 1, 1}, {1.0, 0.8, 0.6}, 0.06, 4000, 0, 0},
       {"3-D periodic x, big cells", 3, {1, 0, 0}, {1.0, 0.8, 0.6}, 0.06, 4000, 0, 1},
