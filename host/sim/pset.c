@@ -11,7 +11,7 @@ void pset_init(struct pset *ps, size_t n, size_t cap)
   memset(ps, 0, sizeof *ps);
   ps->n = n;
   ps->cap = cap < n ? n : cap;
-  /* the neighbour loops four at a time load four particles even from a set of fewer (grid.cl) */
+  /* the neighbour loops in lanes load NEIGH_W particles even from a set of fewer (grid.cl) */
   if (ps->cap < PSET_MIN_CAP) ps->cap = PSET_MIN_CAP;
 }
 

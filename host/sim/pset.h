@@ -34,9 +34,9 @@ struct pset {
   int nscratch;
 };
 
-/* The least capacity of a set: NEIGH_FOR4 (kernels/common/grid.cl) loads four particles at a time.
- */
-#define PSET_MIN_CAP 4
+/* The least capacity of a set: NEIGH_FOR_LANES (kernels/common/grid.cl) loads NEIGH_W particles
+ * at a time (4 in double, 8 in float). */
+#define PSET_MIN_CAP 8
 
 /** @brief Empty set of n particles with room for cap. */
 void pset_init(struct pset *ps, size_t n, size_t cap);

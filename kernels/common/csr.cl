@@ -19,29 +19,29 @@ __kernel void csr_count(const uint n, const struct grid g, __global const uint *
   count[i] = c;
 }
 
-/* The same rows four neighbours at a time (NEIGH_FOR4, grid.cl), for a coefficient kernel that
- * runs the same loop and the same test (csr_lanes_in; poisson_coeffs): a pair at the edge of the
- * support, where the two ways of summing r² may round apart, is in both or in neither. */
-lanes_mask csr_lanes_in(const struct neigh_iter *it, const uint b, const uint i, const real4 r2,
-                        const real support2)
+/* The same rows NEIGH_W neighbours at a time (NEIGH_FOR_LANES, grid.cl), for a coefficient kernel
+ * that runs the same loop and the same test (csr_lanes_in; poisson_coeffs): a pair at the edge of
+ * the support, where the two ways of summing r² may round apart, is in both or in neither. */
+maskw csr_lanes_in(const struct neigh_iter *it, const uint b, const uint i, const realw r2,
+                   const real support2)
 {
-  return neigh_live4(it, b) & neigh_other4(b, i) & (r2 < support2);
+  return neigh_live(it, b) & neigh_other(b, i) & (r2 < support2);
 }
 
-__kernel void csr_count4(const uint n, const struct grid g, __global const uint *cell_start,
-                         __global const realv *pos, __global uint *count)
+__kernel void csr_count_lanes(const uint n, const struct grid g, __global const uint *cell_start,
+                              __global const realv *pos, __global uint *count)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
   const realv x = pos[i];
-  lanes_mask c = (lanes_mask)(0);
+  uint c = 0;
   struct neigh_iter it;
-  NEIGH_FOR4(it, g, cell_start, x, b)
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
   {
     const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
-    c -= csr_lanes_in(&it, b, i, lanes_dot(r, r), g.sm.support2); /* a true lane is −1 */
+    c += lanes_count(csr_lanes_in(&it, b, i, lanes_dot(r, r), g.sm.support2));
   }
-  count[i] = 1u + (uint)(c.x + c.y + c.z + c.w);
+  count[i] = 1u + c;
 }
 
 /* After the scan, in one work-group: when the nonzeros row[n] pass the capacity of the stored

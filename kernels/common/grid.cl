@@ -243,69 +243,77 @@ int neigh_next(struct neigh_iter *it, const struct grid *g, __global const uint 
   for (neigh_begin(&(IT), &(G), (X)); neigh_range(&(IT), &(G), (CS));)                             \
     for (uint J = (IT).j; J < (IT).end; ++J)
 
-/* ---- four candidates a pass ----
- * NEIGH_FOR4(it, g, cell_start, x, b) { ... } visits the ranges of NEIGH_FOR four particles at a
- * time, b .. b + 3, as one vector of four lanes (real4: SIMD on a CPU, where the one-at-a-time
- * loop's branch on the distance is taken at random for about half the candidates). The lanes
- * that belong to the range and were not visited before are neigh_live4(&it, b); the last pass
- * of a range starts at its end − 4, so that every load is one vector load of particles that
- * exist (a particle set holds at least 4: PSET_MIN_CAP). A dead lane reads some other particle:
- * its terms must be selected away (lanes_keep), not multiplied by zero. Sums in lanes are added
- * at the end as (s0 + s1) + (s2 + s3): a fixed order, not that of NEIGH_FOR. */
-#if CLSPH_DOUBLE
-typedef long4 lanes_mask;
-#define LANES_MASK(c) convert_long4(c)
-#else
-typedef int4 lanes_mask;
-#define LANES_MASK(c) (c)
-#endif
-
-uint neigh_base4(const struct neigh_iter *it)
+/* ---- candidates in lanes ----
+ * NEIGH_FOR_LANES(it, g, cell_start, x, b) { ... } visits the ranges of NEIGH_FOR NEIGH_W
+ * particles at a time (4 in double, 8 in float: real.h), b .. b + NEIGH_W − 1, as one vector of
+ * lanes (realw: SIMD on a CPU, where the one-at-a-time loop's branch on the distance is taken at
+ * random for about half the candidates). The lanes that belong to the range and were not visited
+ * before are neigh_live(&it, b); the last pass of a range starts at its end − NEIGH_W, so that
+ * every load is one vector load of particles that exist (a particle set holds at least NEIGH_W:
+ * PSET_MIN_CAP). A dead lane reads some other particle: its weight must be selected away
+ * (lanes_keep), and what the weight multiplies must be finite for every particle. Sums in lanes
+ * are added at the end in a fixed order (lanes_sum), not that of NEIGH_FOR. */
+uint neigh_lane_base(const struct neigh_iter *it)
 {
-  return it->end >= 4u ? min(it->j, it->end - 4u) : 0u;
+  return it->end >= (uint)NEIGH_W ? min(it->j, it->end - (uint)NEIGH_W) : 0u;
 }
 
-lanes_mask neigh_live4(const struct neigh_iter *it, const uint b)
+maskw neigh_live(const struct neigh_iter *it, const uint b)
 {
-  const uint4 k = (uint4)(b) + (uint4)(0u, 1u, 2u, 3u);
-  return LANES_MASK(k >= (uint4)(it->j) && k < (uint4)(it->end));
+  const uintw k = (uintw)(b) + LANES_IOTA;
+  return LANES_MASK(k >= (uintw)(it->j) && k < (uintw)(it->end));
 }
 
-#define NEIGH_FOR4(IT, G, CS, X, B)                                                                \
+/* lanes k ≠ i: the particle itself left out */
+maskw neigh_other(const uint b, const uint i)
+{
+  return LANES_MASK((uintw)(b) + LANES_IOTA != (uintw)(i));
+}
+
+#define NEIGH_FOR_LANES(IT, G, CS, X, B)                                                           \
   for (neigh_begin(&(IT), &(G), (X)); neigh_range(&(IT), &(G), (CS));)                             \
-    for (uint B; (IT).j < (IT).end && ((B) = neigh_base4(&(IT)), 1); (IT).j += 4u)
+    for (uint B; (IT).j < (IT).end && ((B) = neigh_lane_base(&(IT)), 1); (IT).j += NEIGH_W)
 
-/* Four vectors, one lane each. */
+/* NEIGH_W vectors, one lane each. */
 struct lanesv {
-  real4 x, y;
+  realw x, y;
 #if DIM == 3
-  real4 z;
+  realw z;
 #endif
 };
 
-real4 lanes_load(__global const real *a, const uint b)
+realw lanes_load(__global const real *a, const uint b)
 {
-  return vload4(0, a + b);
+  return LANES_VLOAD(0, a + b);
 }
 
-uint4 lanes_load_u(__global const uint *a, const uint b)
+uintw lanes_load_u(__global const uint *a, const uint b)
 {
-  return vload4(0, a + b);
+  return LANES_VLOAD(0, a + b);
 }
 
 struct lanesv lanes_load_v(__global const realv *a, const uint b)
 {
   struct lanesv v;
   __global const real *f = (__global const real *)(a + b);
-#if DIM == 2
+#if DIM == 2 && NEIGH_W == 4
   const real8 q = vload8(0, f);
   v.x = q.even;
   v.y = q.odd;
-#else
+#elif DIM == 2
+  const real16 q = vload16(0, f);
+  v.x = q.even;
+  v.y = q.odd;
+#elif NEIGH_W == 4
   const real8 q0 = vload8(0, f), q1 = vload8(1, f); /* x y z w of four particles */
-  v.x = (real4)(q0.s04, q1.s04);
-  v.y = (real4)(q0.s15, q1.s15);
-  v.z = (real4)(q0.s26, q1.s26);
+  v.x = (realw)(q0.s04, q1.s04);
+  v.y = (realw)(q0.s15, q1.s15);
+  v.z = (realw)(q0.s26, q1.s26);
+#else
+  const real16 q0 = vload16(0, f), q1 = vload16(1, f); /* x y z w of eight particles */
+  v.x = (realw)(q0.s048c, q1.s048c);
+  v.y = (realw)(q0.s159d, q1.s159d);
+  v.z = (realw)(q0.s26ae, q1.s26ae);
 #endif
   return v;
 }
@@ -328,9 +336,9 @@ struct lanesv lanes_sub_from(const realv a, const struct lanesv b)
   return lanes_rel(a, b, (realv)(R(0.0)));
 }
 
-real4 lanes_dot(const struct lanesv a, const struct lanesv b)
+realw lanes_dot(const struct lanesv a, const struct lanesv b)
 {
-  real4 d = a.x * b.x + a.y * b.y;
+  realw d = a.x * b.x + a.y * b.y;
 #if DIM == 3
   d += a.z * b.z;
 #endif
@@ -338,35 +346,47 @@ real4 lanes_dot(const struct lanesv a, const struct lanesv b)
 }
 
 /* a · v with v the same vector in every lane */
-real4 lanes_dot1(const struct lanesv a, const realv v)
+realw lanes_dot1(const struct lanesv a, const realv v)
 {
-  real4 d = a.x * v.x + a.y * v.y;
+  realw d = a.x * v.x + a.y * v.y;
 #if DIM == 3
   d += a.z * v.z;
 #endif
   return d;
 }
 
-real4 lanes_keep(const real4 v, const lanes_mask live)
+realw lanes_keep(const realw v, const maskw live)
 {
-  return select((real4)(R(0.0)), v, live);
+  return select((realw)(R(0.0)), v, live);
 }
 
-real lanes_sum(const real4 s)
+/* the lanes' sum: (s0 + s1) + (s2 + s3), the halves added first in float */
+real lanes_sum(const realw s)
 {
-  return (s.x + s.y) + (s.z + s.w);
+#if NEIGH_W == 8
+  const real4 t = s.lo + s.hi;
+#else
+  const real4 t = s;
+#endif
+  return (t.x + t.y) + (t.z + t.w);
 }
 
-/* lanes k ≠ i: the particle itself left out */
-lanes_mask neigh_other4(const uint b, const uint i)
+/* the lanes set in m */
+uint lanes_count(const maskw m)
 {
-  return LANES_MASK((uint4)(b) + (uint4)(0u, 1u, 2u, 3u) != (uint4)(i));
+  const intw c = -LANES_INT(m);
+#if NEIGH_W == 8
+  const int4 t = c.lo + c.hi;
+#else
+  const int4 t = c;
+#endif
+  return (uint)((t.x + t.y) + (t.z + t.w));
 }
 
 struct lanesv lanes_zero_v(void)
 {
   struct lanesv z;
-  z.x = z.y = (real4)(R(0.0));
+  z.x = z.y = (realw)(R(0.0));
 #if DIM == 3
   z.z = z.x;
 #endif
@@ -374,7 +394,7 @@ struct lanesv lanes_zero_v(void)
 }
 
 /* acc += w a, lane by lane (a vector sum kept in lanes: lanes_total_v at the end) */
-void lanes_acc_v(struct lanesv *acc, const real4 w, const struct lanesv a)
+void lanes_acc_v(struct lanesv *acc, const realw w, const struct lanesv a)
 {
   acc->x += w * a.x;
   acc->y += w * a.y;

@@ -6,27 +6,28 @@
  *                    particle whose value the right-hand side prescribes)
  * Three entry points share one pair term: poisson_apply (recomputes the kernel terms at every
  * application), poisson_coeffs (writes them once into the CSR layout of csr.cl, four neighbours
- * at a time: poisson_pair4, with csr_count4's rows) and poisson_diag (the diagonal, for Jacobi).
- * With KGC the matrix is not symmetric. */
+ * at a time: poisson_pair_lanes, with csr_count_lanes's rows) and poisson_diag (the diagonal, for
+ * Jacobi). With KGC the matrix is not symmetric. */
 real poisson_pair(const struct smooth sm, realm L_i, real vol_j, realv r, real r2)
 {
   return R(2.0) * vol_j * dot(r, op_grad_w(L_i, smoothing_f(sm, sqrt(r2)), r)) /
          (r2 + smooth_eta2(sm));
 }
 
-/* The same pair term of four neighbours at once (NEIGH_FOR4, grid.cl): r·L_i F r = F rᵀ L_i r. */
-real4 poisson_pair4(const struct smooth sm, realm L_i, real4 vol_j, const struct lanesv r,
-                    const real4 r2)
+/* The same pair term of four neighbours at once (NEIGH_FOR_LANES, grid.cl): r·L_i F r = F rᵀ L_i r.
+ */
+realw poisson_pair_lanes(const struct smooth sm, realm L_i, realw vol_j, const struct lanesv r,
+                         const realw r2)
 {
 #if KGC && DIM == 2
-  const real4 q = L_i.s0 * r.x * r.x + R(2.0) * L_i.s1 * r.x * r.y + L_i.s2 * r.y * r.y;
+  const realw q = L_i.s0 * r.x * r.x + R(2.0) * L_i.s1 * r.x * r.y + L_i.s2 * r.y * r.y;
 #elif KGC
-  const real4 q = L_i.s0 * r.x * r.x + L_i.s3 * r.y * r.y + L_i.s5 * r.z * r.z +
+  const realw q = L_i.s0 * r.x * r.x + L_i.s3 * r.y * r.y + L_i.s5 * r.z * r.z +
                   R(2.0) * (L_i.s1 * r.x * r.y + L_i.s2 * r.x * r.z + L_i.s4 * r.y * r.z);
 #else
-  const real4 q = r2;
+  const realw q = r2;
 #endif
-  return R(2.0) * vol_j * smoothing_f4(sm, sqrt(r2)) * q / (r2 + smooth_eta2(sm));
+  return R(2.0) * vol_j * smoothing_fl(sm, sqrt(r2)) * q / (r2 + smooth_eta2(sm));
 }
 
 __kernel void poisson_apply(OP_ARGS, __global const uint *dirichlet, __global const real *x,
@@ -61,20 +62,23 @@ __kernel void poisson_coeffs(OP_ARGS, __global const uint *dirichlet, __global c
   const realv xi = pos[i];
   const realm L_i = OP_LOAD_L(i);
   uint k = row[i] + 1;
-  real4 diag4 = (real4)(R(0.0));
+  realw diag4 = (realw)(R(0.0));
   struct neigh_iter it;
-  /* four at a time (grid.cl), the entries in the order and by the test of csr_count4 */
-  NEIGH_FOR4(it, g, cell_start, xi, b)
+  /* in lanes (grid.cl), the entries in the order and by the test of csr_count_lanes */
+  NEIGH_FOR_LANES(it, g, cell_start, xi, b)
   {
     const struct lanesv r = lanes_rel(xi, lanes_load_v(pos, b), it.shift);
-    const real4 r2 = lanes_dot(r, r);
-    const int4 in = convert_int4(csr_lanes_in(&it, b, i, r2, g.sm.support2));
+    const realw r2 = lanes_dot(r, r);
+    const maskw in = csr_lanes_in(&it, b, i, r2, g.sm.support2);
     if (!any(in)) continue;
-    const real4 c = fixed ? (real4)(R(0.0)) : poisson_pair4(g.sm, L_i, lanes_load(vol, b), r, r2);
-    diag4 += select((real4)(R(0.0)), c, LANES_MASK(in));
-    const int lane[4] = {in.x, in.y, in.z, in.w};
-    const real cl[4] = {c.x, c.y, c.z, c.w};
-    for (uint q = 0; q < 4u; ++q) {
+    const realw c =
+        fixed ? (realw)(R(0.0)) : poisson_pair_lanes(g.sm, L_i, lanes_load(vol, b), r, r2);
+    diag4 += lanes_keep(c, in);
+    int lane[NEIGH_W];
+    real cl[NEIGH_W];
+    LANES_VSTORE_I(LANES_INT(in), 0, lane);
+    LANES_VSTORE_R(c, 0, cl);
+    for (uint q = 0; q < (uint)NEIGH_W; ++q) {
       if (!lane[q]) continue;
       col[k] = b + q;
       val[k] = -cl[q];

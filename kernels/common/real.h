@@ -9,6 +9,7 @@ typedef double real;
 typedef double2 real2;
 typedef double4 real4;
 typedef double8 real8;
+typedef double16 real16;
 #define REAL_EPS DBL_EPSILON
 #define R(x)     x
 #else
@@ -16,8 +17,37 @@ typedef float real;
 typedef float2 real2;
 typedef float4 real4;
 typedef float8 real8;
+typedef float16 real16;
 #define REAL_EPS FLT_EPSILON
 #define R(x)     x##f
+#endif
+
+/* The neighbour loops' lanes (NEIGH_FOR_LANES, grid.cl): a vector of NEIGH_W reals, 256 bits in
+ * either precision. maskw is what comparing two realw gives (lanes all ones or all zeros). */
+#if CLSPH_DOUBLE
+#define NEIGH_W 4
+typedef double4 realw;
+typedef long4 maskw;
+typedef uint4 uintw;
+typedef int4 intw;
+#define LANES_IOTA     ((uint4)(0u, 1u, 2u, 3u))
+#define LANES_MASK(c)  convert_long4(c) /* an int4 comparison as a mask of realw */
+#define LANES_INT(m)   convert_int4(m)
+#define LANES_VLOAD    vload4
+#define LANES_VSTORE_I vstore4
+#define LANES_VSTORE_R vstore4
+#else
+#define NEIGH_W        8
+typedef float8 realw;
+typedef int8 maskw;
+typedef uint8 uintw;
+typedef int8 intw;
+#define LANES_IOTA     ((uint8)(0u, 1u, 2u, 3u, 4u, 5u, 6u, 7u))
+#define LANES_MASK(c)  (c)
+#define LANES_INT(m)   (m)
+#define LANES_VLOAD    vload8
+#define LANES_VSTORE_I vstore8
+#define LANES_VSTORE_R vstore8
 #endif
 
 #ifndef DIM

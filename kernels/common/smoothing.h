@@ -68,44 +68,38 @@ real smoothing_f(const struct smooth sm, real r)
 #endif
 }
 
-/* The same functions of four distances at once (the neighbour loops four at a time, grid.cl);
- * lane by lane equal to smoothing_w and smoothing_f. */
-#if CLSPH_DOUBLE
-#define SMOOTH_MASK4(c) convert_long4(c)
-#else
-#define SMOOTH_MASK4(c) (c)
-#endif
-real4 smoothing_w4(const struct smooth sm, const real4 r)
+/* The same functions of NEIGH_W distances at once (the neighbour loops in lanes, grid.cl); lane
+ * by lane equal to smoothing_w and smoothing_f (test smoothing). */
+realw smoothing_wl(const struct smooth sm, const realw r)
 {
-  const real4 q = r * sm.inv_h;
+  const realw q = r * sm.inv_h;
 #if SMOOTHING == SMOOTHING_WENDLAND_C2
-  const real4 t = fmax(R(1.0) - R(0.5) * q, R(0.0)), t2 = t * t;
-  const real4 w = sm.alpha * t2 * t2 * (R(1.0) + R(2.0) * q);
+  const realw t = fmax(R(1.0) - R(0.5) * q, R(0.0)), t2 = t * t;
+  const realw w = sm.alpha * t2 * t2 * (R(1.0) + R(2.0) * q);
 #elif SMOOTHING == SMOOTHING_CUBIC_SPLINE
-  const real4 t = fmax(R(2.0) - q, R(0.0));
-  const real4 w =
-      select(sm.alpha * R(0.25) * t * t * t,
-             sm.alpha * (R(1.0) - R(1.5) * q * q + R(0.75) * q * q * q), SMOOTH_MASK4(q < R(1.0)));
+  const realw t = fmax(R(2.0) - q, R(0.0));
+  const realw w = select(sm.alpha * R(0.25) * t * t * t,
+                         sm.alpha * (R(1.0) - R(1.5) * q * q + R(0.75) * q * q * q), q < R(1.0));
 #elif SMOOTHING == SMOOTHING_GAUSSIAN
-  const real4 w = sm.alpha * fmax(exp(-q * q) - R(1.2340980408667956e-4), R(0.0));
+  const realw w = sm.alpha * fmax(exp(-q * q) - R(1.2340980408667956e-4), R(0.0));
 #endif
-  return select((real4)(R(0.0)), w, SMOOTH_MASK4(r < sm.support));
+  return select((realw)(R(0.0)), w, r < sm.support);
 }
 
-real4 smoothing_f4(const struct smooth sm, const real4 r)
+realw smoothing_fl(const struct smooth sm, const realw r)
 {
-  const real4 q = r * sm.inv_h;
+  const realw q = r * sm.inv_h;
   const real ih2 = sm.inv_h * sm.inv_h;
 #if SMOOTHING == SMOOTHING_WENDLAND_C2
-  const real4 t = fmax(R(1.0) - R(0.5) * q, R(0.0));
-  const real4 f = R(-5.0) * sm.alpha * t * t * t * ih2;
+  const realw t = fmax(R(1.0) - R(0.5) * q, R(0.0));
+  const realw f = R(-5.0) * sm.alpha * t * t * t * ih2;
 #elif SMOOTHING == SMOOTHING_CUBIC_SPLINE
-  const real4 t = fmax(R(2.0) - q, R(0.0));
+  const realw t = fmax(R(2.0) - q, R(0.0));
   /* q = 0 (the particle itself) is in the first branch: the division by it is not selected */
-  const real4 f = select(R(-0.75) * sm.alpha * t * t / q * ih2,
-                         sm.alpha * (R(-3.0) + R(2.25) * q) * ih2, SMOOTH_MASK4(q < R(1.0)));
+  const realw f = select(R(-0.75) * sm.alpha * t * t / q * ih2,
+                         sm.alpha * (R(-3.0) + R(2.25) * q) * ih2, q < R(1.0));
 #elif SMOOTHING == SMOOTHING_GAUSSIAN
-  const real4 f = R(-2.0) * sm.alpha * exp(-q * q) * ih2;
+  const realw f = R(-2.0) * sm.alpha * exp(-q * q) * ih2;
 #endif
-  return select((real4)(R(0.0)), f, SMOOTH_MASK4(r < sm.support));
+  return select((realw)(R(0.0)), f, r < sm.support);
 }

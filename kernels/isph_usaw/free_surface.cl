@@ -70,19 +70,19 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
   realv gf = (realv)(R(0.0)); /* Σ_b V_b ∇w_ab: into the fluid (and the walls) */
   realv gw = (realv)(R(0.0)); /* ∇γ_a = Σ_s ∇γ_as: away from the walls */
   struct neigh_iter it;
-  /* four at a time (grid.cl) */
-  real4 d4 = (real4)(R(0.0)), wet4 = d4, div4 = d4;
+  /* in lanes (grid.cl) */
+  realw d4 = (realw)(R(0.0)), wet4 = d4, div4 = d4;
   struct lanesv gf4 = lanes_zero_v();
-  NEIGH_FOR4(it, g, cell_start, x, b)
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
   {
     const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
-    const real4 r2 = lanes_dot(r, r), rr = sqrt(r2), vj = lanes_load(vol, b);
-    const uint4 kj = lanes_load_u(kind, b);
-    const lanes_mask take =
-        neigh_live4(&it, b) & neigh_other4(b, i) & LANES_MASK(kj <= (uint4)(ISPH_VERTEX));
-    const real4 vf = lanes_keep(vj * smoothing_f4(g.sm, rr), take);
+    const realw r2 = lanes_dot(r, r), rr = sqrt(r2), vj = lanes_load(vol, b);
+    const uintw kj = lanes_load_u(kind, b);
+    const maskw take =
+        neigh_live(&it, b) & neigh_other(b, i) & LANES_MASK(kj <= (uintw)(ISPH_VERTEX));
+    const realw vf = lanes_keep(vj * smoothing_fl(g.sm, rr), take);
     d4 -= vf * r2; /* r_ab·∇w_ab = F r² */
-    wet4 += lanes_keep(vj * smoothing_w4(g.sm, rr), take & LANES_MASK(kj == (uint4)(ISPH_FLUID)));
+    wet4 += lanes_keep(vj * smoothing_wl(g.sm, rr), take & LANES_MASK(kj == (uintw)(ISPH_FLUID)));
     lanes_acc_v(&gf4, vf, r);
     if (with_rhs) div4 -= vf * lanes_dot(lanes_sub_from(us, lanes_load_v(ustar, b)), r);
   }

@@ -62,22 +62,22 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   real div = R(0.0), wall = R(0.0), dens = vol[i] * smoothing_w(g.sm, R(0.0));
   uint near_surface = 0;
   struct neigh_iter it;
-  /* four at a time (grid.cl), div as isph_free_surface sums it (the same bits) */
-  real4 div4 = (real4)(R(0.0)), dens4 = div4;
-  lanes_mask near4 = (lanes_mask)(0);
-  NEIGH_FOR4(it, g, cell_start, x, b)
+  /* in lanes (grid.cl), div as isph_free_surface sums it (the same bits) */
+  realw div4 = (realw)(R(0.0)), dens4 = div4;
+  maskw near4 = (maskw)(0);
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
   {
     const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
-    const real4 r2 = lanes_dot(r, r), rr = sqrt(r2), vj = lanes_load(vol, b);
-    const uint4 kj = lanes_load_u(kind, b);
-    const lanes_mask take =
-        neigh_live4(&it, b) & neigh_other4(b, i) & LANES_MASK(kj <= (uint4)(ISPH_VERTEX));
-    const real4 vf = lanes_keep(vj * smoothing_f4(g.sm, rr), take);
+    const realw r2 = lanes_dot(r, r), rr = sqrt(r2), vj = lanes_load(vol, b);
+    const uintw kj = lanes_load_u(kind, b);
+    const maskw take =
+        neigh_live(&it, b) & neigh_other(b, i) & LANES_MASK(kj <= (uintw)(ISPH_VERTEX));
+    const realw vf = lanes_keep(vj * smoothing_fl(g.sm, rr), take);
     div4 -= vf * lanes_dot(lanes_sub_from(us, lanes_load_v(ustar, b)), r);
     if (relax > R(0.0)) {
-      dens4 += lanes_keep(vj * smoothing_w4(g.sm, rr), take);
+      dens4 += lanes_keep(vj * smoothing_wl(g.sm, rr), take);
       near4 |=
-          take & (r2 < g.sm.support2) & LANES_MASK(lanes_load_u(free_surface, b) != (uint4)(0u));
+          take & (r2 < g.sm.support2) & LANES_MASK(lanes_load_u(free_surface, b) != (uintw)(0u));
     }
   }
   div = lanes_sum(div4);

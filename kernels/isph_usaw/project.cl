@@ -52,24 +52,24 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   int near_air = ISPH_GRAD_CORR == 2 || free_surface[i];
   uint wet = 0; /* fluid neighbours */
   struct neigh_iter it;
-  /* four at a time (grid.cl) */
+  /* in lanes (grid.cl) */
   struct lanesv grad4 = lanes_zero_v(), mx4 = grad4, my4 = grad4;
-  lanes_mask wet4 = (lanes_mask)(0), air4 = wet4;
-  NEIGH_FOR4(it, g, cell_start, x, b)
+  maskw air4 = (maskw)(0);
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
   {
     const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
-    const real4 r2 = lanes_dot(r, r);
-    const uint4 kj = lanes_load_u(kind, b);
-    const lanes_mask take = neigh_live4(&it, b) & neigh_other4(b, i) & (r2 < g.sm.support2) &
-                            LANES_MASK(kj <= (uint4)(ISPH_VERTEX));
-    const lanes_mask fluid = take & LANES_MASK(kj == (uint4)(ISPH_FLUID));
-    wet4 -= fluid; /* a true lane is −1 */
-    const real4 vf = lanes_keep(lanes_load(vol, b) * smoothing_f4(g.sm, sqrt(r2)), take);
+    const realw r2 = lanes_dot(r, r);
+    const uintw kj = lanes_load_u(kind, b);
+    const maskw take = neigh_live(&it, b) & neigh_other(b, i) & (r2 < g.sm.support2) &
+                       LANES_MASK(kj <= (uintw)(ISPH_VERTEX));
+    const maskw fluid = take & LANES_MASK(kj == (uintw)(ISPH_FLUID));
+    wet += lanes_count(fluid);
+    const realw vf = lanes_keep(lanes_load(vol, b) * smoothing_fl(g.sm, sqrt(r2)), take);
 #if ISPH_GRAD_SYM
     lanes_acc_v(&grad4, -(pa - lanes_load(p, b)) * vf, r);
     lanes_acc_v(&mx4, -r.x * vf, r);
     lanes_acc_v(&my4, -r.y * vf, r);
-    air4 |= fluid & LANES_MASK(lanes_load_u(free_surface, b) != (uint4)(0u));
+    air4 |= fluid & LANES_MASK(lanes_load_u(free_surface, b) != (uintw)(0u));
 #else
     lanes_acc_v(&grad4, (pa + lanes_load(p, b)) * vf, r);
 #endif
@@ -77,7 +77,6 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   grad = lanes_total_v(grad4);
   mx = lanes_total_v(mx4);
   my = lanes_total_v(my4);
-  wet = (uint)(wet4.x + wet4.y + wet4.z + wet4.w);
   near_air |= any(air4);
   NEIGH_FOR(it, g_seg, seg_start, x, s) {
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;

@@ -34,22 +34,22 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
   realv cx = (realv)(R(0.0)), cu = (realv)(R(0.0)); /* collisions: move and velocity change */
   int near_surface = 0;
   struct neigh_iter it;
-  /* four at a time (grid.cl) */
+  /* in lanes (grid.cl) */
   struct lanesv gc4 = lanes_zero_v();
-  lanes_mask near4 = (lanes_mask)(0);
-  NEIGH_FOR4(it, g, cell_start, x, b)
+  maskw near4 = (maskw)(0);
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
   {
     const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
-    const real4 r2 = lanes_dot(r, r);
-    const uint4 kj = lanes_load_u(kind, b);
-    const lanes_mask part =
-        neigh_live4(&it, b) & (r2 < g.sm.support2) & LANES_MASK(kj <= (uint4)(ISPH_VERTEX));
+    const realw r2 = lanes_dot(r, r);
+    const uintw kj = lanes_load_u(kind, b);
+    const maskw part =
+        neigh_live(&it, b) & (r2 < g.sm.support2) & LANES_MASK(kj <= (uintw)(ISPH_VERTEX));
     /* near the free surface (i itself too): no shift */
-    near4 |= part & (r2 < near2) & LANES_MASK(lanes_load_u(free_surface, b) != (uint4)(0u));
-    const lanes_mask take = part & neigh_other4(b, i);
-    lanes_acc_v(&gc4, lanes_keep(lanes_load(vol, b) * smoothing_f4(g.sm, sqrt(r2)), take), r);
-    if (!guard || !any(take & LANES_MASK(kj == (uint4)(ISPH_FLUID)) & (r2 < cd * cd))) continue;
-    for (uint k = 0; k < 4u; ++k) { /* rare: the collisions one pair at a time */
+    near4 |= part & (r2 < near2) & LANES_MASK(lanes_load_u(free_surface, b) != (uintw)(0u));
+    const maskw take = part & neigh_other(b, i);
+    lanes_acc_v(&gc4, lanes_keep(lanes_load(vol, b) * smoothing_fl(g.sm, sqrt(r2)), take), r);
+    if (!guard || !any(take & LANES_MASK(kj == (uintw)(ISPH_FLUID)) & (r2 < cd * cd))) continue;
+    for (uint k = 0; k < (uint)NEIGH_W; ++k) { /* rare: the collisions one pair at a time */
       const uint j = b + k;
       if (j < it.j || j >= it.end || j == i || kind[j] != ISPH_FLUID) continue;
       const realv rv = x - (pos[j] + it.shift);
@@ -92,13 +92,13 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
 #if ISPH_SHIFT_VCORR
   /* first-order velocity correction (eq 38) */
   struct lanesv du4 = lanes_zero_v();
-  NEIGH_FOR4(it, g, cell_start, x, b)
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
   { /* i itself adds nothing (u_ab = 0) */
     const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
-    const lanes_mask take =
-        neigh_live4(&it, b) & LANES_MASK(lanes_load_u(kind, b) <= (uint4)(ISPH_VERTEX));
-    const real4 w = lanes_keep(
-        lanes_load(vol, b) * smoothing_f4(g.sm, sqrt(lanes_dot(r, r))) * lanes_dot1(r, dr), take);
+    const maskw take =
+        neigh_live(&it, b) & LANES_MASK(lanes_load_u(kind, b) <= (uintw)(ISPH_VERTEX));
+    const realw w = lanes_keep(
+        lanes_load(vol, b) * smoothing_fl(g.sm, sqrt(lanes_dot(r, r))) * lanes_dot1(r, dr), take);
     lanes_acc_v(&du4, -w, lanes_sub_from(u, lanes_load_v(vel, b)));
   }
   realv du = lanes_total_v(du4);

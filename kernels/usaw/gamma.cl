@@ -111,13 +111,19 @@ realv usaw_grad_gamma_seg(const struct smooth sm, realv x, realv a, realv b, rea
   const real reach = sqrt(reach2), yfoot = dot(x - a, t); /* foot at a + yfoot t */
   const real lo = fmax(R(0.0), yfoot - reach), hi = fmin(len, yfoot + reach);
   if (hi <= lo) return (realv)(R(0.0));
-  /* the eight points as two vectors of four (smoothing_w4) */
-  const real4 x0 = (real4)(gx[0], gx[1], gx[2], gx[3]), x1 = (real4)(gx[4], gx[5], gx[6], gx[7]);
-  const real4 w0 = (real4)(gw[0], gw[1], gw[2], gw[3]), w1 = (real4)(gw[4], gw[5], gw[6], gw[7]);
-  const real4 dy0 = R(0.5) * (lo + hi) + R(0.5) * (hi - lo) * x0 - yfoot;
-  const real4 dy1 = R(0.5) * (lo + hi) + R(0.5) * (hi - lo) * x1 - yfoot;
-  const real4 sv = w0 * smoothing_w4(sm, sqrt(d * d + dy0 * dy0)) +
-                   w1 * smoothing_w4(sm, sqrt(d * d + dy1 * dy1));
+#if NEIGH_W == 8 /* the eight points as one vector (smoothing_wl) */
+  const realw xg = (realw)(gx[0], gx[1], gx[2], gx[3], gx[4], gx[5], gx[6], gx[7]);
+  const realw wg = (realw)(gw[0], gw[1], gw[2], gw[3], gw[4], gw[5], gw[6], gw[7]);
+  const realw dy = R(0.5) * (lo + hi) + R(0.5) * (hi - lo) * xg - yfoot;
+  const realw sv = wg * smoothing_wl(sm, sqrt(d * d + dy * dy));
+#else /* as two vectors of four */
+  const realw x0 = (realw)(gx[0], gx[1], gx[2], gx[3]), x1 = (realw)(gx[4], gx[5], gx[6], gx[7]);
+  const realw w0 = (realw)(gw[0], gw[1], gw[2], gw[3]), w1 = (realw)(gw[4], gw[5], gw[6], gw[7]);
+  const realw dy0 = R(0.5) * (lo + hi) + R(0.5) * (hi - lo) * x0 - yfoot;
+  const realw dy1 = R(0.5) * (lo + hi) + R(0.5) * (hi - lo) * x1 - yfoot;
+  const realw sv = w0 * smoothing_wl(sm, sqrt(d * d + dy0 * dy0)) +
+                   w1 * smoothing_wl(sm, sqrt(d * d + dy1 * dy1));
+#endif
   const real s = lanes_sum(sv);
   return R(0.5) * (hi - lo) * s * n;
 }

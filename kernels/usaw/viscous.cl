@@ -50,21 +50,21 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   realv lap = (realv)(R(0.0));
   struct neigh_iter it;
   struct lanesv lap4 = lanes_zero_v();
-  /* four at a time (grid.cl), i itself left out (a vertex's u is not vel[i] under the model) */
-  NEIGH_FOR4(it, g, cell_start, x, b)
+  /* in lanes (grid.cl), i itself left out (a vertex's u is not vel[i] under the model) */
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
   {
     const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
-    const lanes_mask take = neigh_live4(&it, b) &
-                            LANES_MASK(lanes_load_u(kind, b) <= (uint4)(ISPH_VERTEX)) &
-                            LANES_MASK((uint4)(b) + (uint4)(0u, 1u, 2u, 3u) != (uint4)(i));
+    const maskw take = neigh_live(&it, b) &
+                       LANES_MASK(lanes_load_u(kind, b) <= (uintw)(ISPH_VERTEX)) &
+                       neigh_other(b, i);
 #if USAW_TURB
-    const real4 nu_ab = R(2.0) * nu + nti + lanes_load(nu_t, b);
+    const realw nu_ab = R(2.0) * nu + nti + lanes_load(nu_t, b);
 #else
-    const real4 nu_ab = (real4)(R(2.0));
+    const realw nu_ab = (realw)(R(2.0));
 #endif
     /* r·∇w / r² = F */
-    const real4 wf =
-        lanes_keep(nu_ab * lanes_load(vol, b) * smoothing_f4(g.sm, sqrt(lanes_dot(r, r))), take);
+    const realw wf =
+        lanes_keep(nu_ab * lanes_load(vol, b) * smoothing_fl(g.sm, sqrt(lanes_dot(r, r))), take);
     lanes_acc_v(&lap4, wf, lanes_sub_from(u, lanes_load_v(vel, b)));
   }
   lap = lanes_total_v(lap4);

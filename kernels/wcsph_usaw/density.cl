@@ -27,16 +27,16 @@ __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const rea
   if (kind[i] != ISPH_FLUID) return;
   const realv x = pos[i], u = vel[i];
   const real ra = rho[i];
-  real4 div4 = (real4)(R(0.0)), diff4 = (real4)(R(0.0));
+  realw div4 = (realw)(R(0.0)), diff4 = (realw)(R(0.0));
   struct neigh_iter it;
-  /* the fluid four at a time (grid.cl); i itself adds nothing (r = 0, u_ab = 0) */
-  NEIGH_FOR4(it, g, cell_start, x, b)
+  /* the fluid in lanes (grid.cl); i itself adds nothing (r = 0, u_ab = 0) */
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
   {
     const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
-    const real4 rr = sqrt(lanes_dot(r, r));
-    const lanes_mask fluid = LANES_MASK(lanes_load_u(kind, b) == (uint4)(ISPH_FLUID));
-    const real4 vf =
-        lanes_keep(lanes_load(vol, b) * smoothing_f4(g.sm, rr), neigh_live4(&it, b) & fluid);
+    const realw rr = sqrt(lanes_dot(r, r));
+    const maskw fluid = LANES_MASK(lanes_load_u(kind, b) == (uintw)(ISPH_FLUID));
+    const realw vf =
+        lanes_keep(lanes_load(vol, b) * smoothing_fl(g.sm, rr), neigh_live(&it, b) & fluid);
     div4 += vf * lanes_dot(lanes_sub_from(u, lanes_load_v(vel, b)), r);
     /* the hydrostatic part of the density difference is not diffused: ρ_H,a − ρ_H,b = ρ0 g·r/c0²
      * (g·r_ab = |g| (z_b − z_a)) */
@@ -59,17 +59,20 @@ __kernel void wcsph_vertex_pressure(USAW_PART_ARGS, __global const real *rho, co
   if (i >= n || kind[i] != ISPH_VERTEX) return;
   const realv x = pos[i], nv = normal[i];
   const real cos_half = cos(ISPH_PI * gam[i]); /* cos(θ_v/2), γ_v = θ_v/2π */
-  real s = R(0.0), ws = R(0.0);
+  realw s4 = (realw)(R(0.0)), ws4 = s4;
   struct neigh_iter it;
-  NEIGH_FOR(it, g, cell_start, x, j) {
-    realv r = x - (pos[j] + it.shift);
-    real r2 = dot(r, r);
-    if (r2 >= g.sm.support2 || kind[j] != ISPH_FLUID) continue;
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
+  { /* in lanes (grid.cl) */
+    const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
+    const realw rr = sqrt(lanes_dot(r, r));
     /* r_b − r_v within θ_v/2 of n_v (a little slack: the fluid next to the wall, along it) */
-    if (-dot(r, nv) < (cos_half - R(1e-3)) * sqrt(r2)) continue;
-    real w = vol[j] * smoothing_w(g.sm, sqrt(r2));
-    s += w * (p[j] + rho[j] * dot(gravity, r)); /* r = r_v − r_b */
-    ws += w;
+    const maskw take = neigh_live(&it, b) &
+                       LANES_MASK(lanes_load_u(kind, b) == (uintw)(ISPH_FLUID)) &
+                       (-lanes_dot1(r, nv) >= (cos_half - R(1e-3)) * rr);
+    const realw w = lanes_keep(lanes_load(vol, b) * smoothing_wl(g.sm, rr), take);
+    s4 += w * (lanes_load(p, b) + lanes_load(rho, b) * lanes_dot1(r, gravity)); /* r = r_v − r_b */
+    ws4 += w;
   }
+  const real s = lanes_sum(s4), ws = lanes_sum(ws4);
   p[i] = ws > R(0.0) ? s / ws : R(0.0);
 }

@@ -29,24 +29,23 @@ __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv
   const real cd = USAW_COLLIDE * dr0;
   struct neigh_iter it;
   struct lanesv grad4 = lanes_zero_v();
-  /* four at a time (grid.cl); i itself adds nothing to the gradient (r = 0) */
-  NEIGH_FOR4(it, g, cell_start, x, b)
+  /* in lanes (grid.cl); i itself adds nothing to the gradient (r = 0) */
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
   {
     const struct lanesv pj = lanes_load_v(pos, b), r = lanes_rel(x, pj, it.shift);
-    const real4 r2 = lanes_dot(r, r);
-    const uint4 kj = lanes_load_u(kind, b);
-    const lanes_mask live = neigh_live4(&it, b);
+    const realw r2 = lanes_dot(r, r);
+    const uintw kj = lanes_load_u(kind, b);
+    const maskw live = neigh_live(&it, b);
     /* P_b = p_b − ρ0 g·r_b − p_ref with r_b = x − r */
-    const real4 pb = lanes_load(p, b) - rho0 * (dot(gravity, x) - lanes_dot1(r, gravity)) - p_ref;
-    const real4 wf = lanes_keep(lanes_load(vol, b) * (pa + pb) * smoothing_f4(g.sm, sqrt(r2)),
-                                live & LANES_MASK(kj <= (uint4)(ISPH_VERTEX)));
+    const realw pb = lanes_load(p, b) - rho0 * (dot(gravity, x) - lanes_dot1(r, gravity)) - p_ref;
+    const realw wf = lanes_keep(lanes_load(vol, b) * (pa + pb) * smoothing_fl(g.sm, sqrt(r2)),
+                                live & LANES_MASK(kj <= (uintw)(ISPH_VERTEX)));
     lanes_acc_v(&grad4, wf, r);
     if (!guard) continue;
-    const uint4 jj = (uint4)(b) + (uint4)(0u, 1u, 2u, 3u);
-    const lanes_mask close = live & LANES_MASK(kj == (uint4)(ISPH_FLUID)) &
-                             LANES_MASK(jj != (uint4)(i)) & (r2 < cd * cd);
+    const maskw close =
+        live & LANES_MASK(kj == (uintw)(ISPH_FLUID)) & neigh_other(b, i) & (r2 < cd * cd);
     if (!any(close)) continue;
-    for (uint k = 0; k < 4u; ++k) { /* rare: the collisions one pair at a time */
+    for (uint k = 0; k < (uint)NEIGH_W; ++k) { /* rare: the collisions one pair at a time */
       const uint j = b + k;
       if (j < it.j || j >= it.end || j == i || kind[j] != ISPH_FLUID) continue;
       const realv rv = x - (pos[j] + it.shift);

@@ -70,7 +70,7 @@ enum clsph_status poisson_op_create(const struct dev *dev, cl_program prog, stru
   CLSPH_TRY(prog_kernel(prog, "poisson_apply", &po.k_apply));
   CLSPH_TRY(prog_kernel(prog, "poisson_coeffs", &po.k_coeffs));
   CLSPH_TRY(prog_kernel(prog, "poisson_diag", &po.k_diag));
-  CLSPH_TRY(prog_kernel(prog, "csr_count4", &po.k_count));
+  CLSPH_TRY(prog_kernel(prog, "csr_count_lanes", &po.k_count));
   *out = po;
   memset(&po, 0, sizeof po);
 done:

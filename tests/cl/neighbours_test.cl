@@ -20,8 +20,8 @@ __kernel void test_neigh_list(const uint n, const struct grid g, __global const 
   count[i] = c;
 }
 
-/* The same lists from the loop four at a time (NEIGH_FOR4): the live lanes within the support. */
-__kernel void test_neigh_list4(const uint n, const struct grid g, __global const uint *cell_start,
+/* The same lists from the loop in lanes (NEIGH_FOR_LANES): the live lanes within the support. */
+__kernel void test_neigh_lanes(const uint n, const struct grid g, __global const uint *cell_start,
                                __global const realv *pos, const uint maxn, __global uint *count,
                                __global uint *list)
 {
@@ -30,12 +30,12 @@ __kernel void test_neigh_list4(const uint n, const struct grid g, __global const
   const realv x = pos[i];
   uint c = 0;
   struct neigh_iter it;
-  NEIGH_FOR4(it, g, cell_start, x, b)
+  NEIGH_FOR_LANES(it, g, cell_start, x, b)
   {
     const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
-    const int4 in = convert_int4(neigh_live4(&it, b) & (lanes_dot(r, r) < g.sm.support2));
-    const int lane[4] = {in.x, in.y, in.z, in.w};
-    for (uint k = 0; k < 4u; ++k) {
+    int lane[NEIGH_W];
+    LANES_VSTORE_I(LANES_INT(neigh_live(&it, b) & (lanes_dot(r, r) < g.sm.support2)), 0, lane);
+    for (uint k = 0; k < (uint)NEIGH_W; ++k) {
       if (!lane[k]) continue;
       if (c < maxn) list[i * maxn + c] = b + k;
       ++c;

@@ -3,8 +3,8 @@
  * the reordering applies the permutation to every field but a temporary (pset_temporary), which
  * it leaves as it was and pset_find does not know; the sort's inverse index (grid_sort_inv) is
  * that of the reordered ids; the sort is deterministic and a second sort of sorted particles is
- * the identity; a particle outside the grid raises the flag. The loop four at a time (NEIGH_FOR4)
- * gives the same sets, also in a set of three particles (fewer than its four lanes). The prefix sum
+ * the identity; a particle outside the grid raises the flag. The loop in lanes (NEIGH_FOR_LANES)
+ * gives the same sets, also in a set of three particles (fewer than its lanes). The prefix sum
  * (grid_scan_run) in one work-group and in three launches equals the host's on random counts. */
 #include <math.h>
 #include <stdio.h>
@@ -126,7 +126,7 @@ static long check_lists(const struct cloud_case *c, size_t n, size_t stride, dou
   TC_CHECK(!overflow, "%s: test list width %d suffices", c->name, MAXN);
   TC_CHECK(missing == 0 && extra == 0,
            "%s: neighbour sets %s equal brute force (%ld pairs; %ld missing, %ld extra)", c->name,
-           four ? "four at a time" : "one at a time", pairs, missing, extra);
+           four ? "in lanes" : "one at a time", pairs, missing, extra);
   return pairs;
 }
 
@@ -175,7 +175,7 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
   spec.sm = sm;
   if (grid_define(&spec, &o) || smoothing_define(&sm, &o) ||
       prog_build_extra(dev, sources, "tests/cl/neighbours_test.cl", src, &o, &prog) ||
-      prog_kernel(prog, "test_neigh_list", &k) || prog_kernel(prog, "test_neigh_list4", &k4) ||
+      prog_kernel(prog, "test_neigh_list", &k) || prog_kernel(prog, "test_neigh_lanes", &k4) ||
       grid_create(dev, prog, &spec, n, &g))
     goto fail;
   check_scan(dev, prog, c->name);
@@ -236,7 +236,7 @@ static void run_case(const struct dev *dev, const char *src, const struct cloud_
            c->outside ? "raised" : "clear");
 
   /* neighbour sets against brute force, in original ids: the loop one at a time (NEIGH_FOR, as
-   * neigh_next) and four at a time (NEIGH_FOR4) */
+   * neigh_next) and in lanes (NEIGH_FOR4) */
   cl_uint np = (cl_uint)n, maxn = MAXN;
   cl_mem d_pos = pset_mem(&ps, i_pos);
   long pairs = 0;

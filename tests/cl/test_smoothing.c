@@ -1,7 +1,7 @@
 /* test_smoothing.c: each smoothing function, evaluated on the device, integrates to 1 in 1, 2
  * and 3 dimensions (Gauss-Legendre quadrature over the radius, panels split where the function is
  * piecewise), its derivative matches a central finite difference, it is zero outside its support
- * and never negative; the four-lane forms (smoothing_w4, smoothing_f4) equal the scalar ones. */
+ * and never negative; the forms in lanes (smoothing_wl, smoothing_fl) equal the scalar ones. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -67,23 +67,24 @@ done:
   return st;
 }
 
-/* The largest differences, relative to the largest magnitude, between the four-at-a-time and
- * the one-at-a-time W and F at m radii (m a multiple of 4). */
-static enum clsph_status eval4(const struct dev *dev, cl_kernel k, const struct smoothing *sm,
-                               size_t m, const double *r, double *dw, double *df)
+/* The largest differences, relative to the largest magnitude, between W and F in lanes and one
+ * at a time at m radii (m a multiple of 8). */
+static enum clsph_status eval_lanes(const struct dev *dev, cl_kernel k, const struct smoothing *sm,
+                                    size_t m, const double *r, double *dw, double *df)
 {
   enum clsph_status st = CLSPH_OK;
   cl_mem d[5] = {NULL, NULL, NULL, NULL, NULL};
   real *buf = malloc(5 * m * sizeof *buf);
-  CLSPH_CHECK(buf != NULL && m % 4 == 0, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_CHECK(buf != NULL && m % 8 == 0, CLSPH_E_NOMEM, "out of memory");
   for (size_t i = 0; i < m; ++i) buf[i] = (real)r[i];
   CLSPH_TRY(kern_buffer(dev, m * sizeof(real), buf, &d[0], "r"));
   for (int b = 1; b < 5; ++b) CLSPH_TRY(kern_buffer(dev, m * sizeof(real), NULL, &d[b], "out"));
-  cl_uint n4 = (cl_uint)(m / 4);
+  const size_t lanes = CLSPH_DOUBLE ? 4 : 8; /* NEIGH_W (real.h) */
+  cl_uint nw = (cl_uint)(m / lanes);
   const struct smooth_dev smd = smoothing_dev(sm);
   CLSPH_TRY(
-      KERN_SET(k, KARG(smd), KARG(n4), KARG(d[0]), KARG(d[1]), KARG(d[2]), KARG(d[3]), KARG(d[4])));
-  CLSPH_TRY(kern_launch(dev, k, m / 4, NULL));
+      KERN_SET(k, KARG(smd), KARG(nw), KARG(d[0]), KARG(d[1]), KARG(d[2]), KARG(d[3]), KARG(d[4])));
+  CLSPH_TRY(kern_launch(dev, k, m / lanes, NULL));
   for (int b = 1; b < 5; ++b) CLSPH_TRY(kern_read(dev, d[b], m * sizeof(real), buf + b * m));
   double wmax = 0.0, fmax_ = 0.0, ew = 0.0, ef = 0.0;
   for (size_t i = 0; i < m; ++i) {
@@ -185,19 +186,19 @@ static void check_one(const struct dev *dev, const char *test_src, enum smoothin
   TC_CHECK(outside == 0, "%s %dD: W = 0 for r >= %g h (%d nonzero)", name, dim,
            smoothing_qmax(kind), outside);
 
-  /* four at a time (smoothing_w4, smoothing_f4) against one at a time, on radii through the
+  /* in lanes (smoothing_wl, smoothing_fl) against one at a time, on radii through the
    * support, the kinks and beyond it: the same formulas, up to the compiler's contractions (a
    * few ε of the largest value) */
   cl_kernel k4 = NULL;
   double lane_w = 0.0, lane_f = 0.0;
-  if (prog_kernel(prog, "test_smoothing_eval4", &k4) != CLSPH_OK ||
-      eval4(dev, k4, &sm, 3 * FD_N, fr, &lane_w, &lane_f) != CLSPH_OK) {
-    TC_CHECK(0, "%s %dD: four at a time runs", name, dim);
+  if (prog_kernel(prog, "test_smoothing_eval_lanes", &k4) != CLSPH_OK ||
+      eval_lanes(dev, k4, &sm, 3 * FD_N, fr, &lane_w, &lane_f) != CLSPH_OK) {
+    TC_CHECK(0, "%s %dD: the lanes run", name, dim);
   } else {
     const double eps = CLSPH_DOUBLE ? 2.2e-16 : 1.2e-7;
-    TC_NEAR(lane_w, 0.0, 8 * eps, "%s %dD: smoothing_w4 = smoothing_w (relative to max W)", name,
+    TC_NEAR(lane_w, 0.0, 8 * eps, "%s %dD: smoothing_wl = smoothing_w (relative to max W)", name,
             dim);
-    TC_NEAR(lane_f, 0.0, 8 * eps, "%s %dD: smoothing_f4 = smoothing_f (relative to max |F|)", name,
+    TC_NEAR(lane_f, 0.0, 8 * eps, "%s %dD: smoothing_fl = smoothing_f (relative to max |F|)", name,
             dim);
   }
   if (k4 != NULL) clReleaseKernel(k4);
