@@ -32,15 +32,18 @@ enum clsph_status pset_add(struct pset *ps, const struct dev *dev, const char *n
   f->nout = f->ncomp;
   f->output = 1;
   CLSPH_TRY(kern_buffer(dev, ps->cap * elem, NULL, &f->d, name));
-  if (init != NULL)
-    CLSPH_TRY(kern_write(dev, f->d, ps->n * elem, init));
-  else
-    CLSPH_TRY(kern_fill(dev, f->d, &zero, sizeof zero, ps->cap * elem));
+  /* zeros past the particles too: the neighbour loops in lanes read up to NEIGH_W − 1 of them in
+   * a set of fewer than NEIGH_W particles (grid.cl), and a dead lane's weight is zero, its terms
+   * must be finite */
+  CLSPH_TRY(kern_fill(dev, f->d, &zero, sizeof zero, ps->cap * elem));
+  if (init != NULL) CLSPH_TRY(kern_write(dev, f->d, ps->n * elem, init));
   /* spare buffers for the reordering: one per field of this size, up to PSET_SPARES_PER_SIZE */
   int have = 0;
   for (int s = 0; s < ps->nscratch; ++s) have += ps->scratch_elem[s] == elem;
   if (have < PSET_SPARES_PER_SIZE) {
     CLSPH_TRY(kern_buffer(dev, ps->cap * elem, NULL, &ps->scratch[ps->nscratch], "reorder spare"));
+    /* a field's buffer after a reordering: its tail past the particles zero as well */
+    CLSPH_TRY(kern_fill(dev, ps->scratch[ps->nscratch], &zero, sizeof zero, ps->cap * elem));
     ps->scratch_elem[ps->nscratch++] = elem;
   }
   *index = ps->nfields++;
