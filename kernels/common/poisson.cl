@@ -5,7 +5,7 @@
  *   (A x)_i = x_i   for a Dirichlet row (dirichlet[i] != 0: a free-surface, outflow or boundary
  *                    particle whose value the right-hand side prescribes)
  * Three entry points share one pair term: poisson_apply (recomputes the kernel terms at every
- * application), poisson_coeffs (writes them once into the CSR layout of csr.cl, four neighbours
+ * application), poisson_coeffs (writes them once into the CSR layout of csr.cl, NEIGH_W neighbours
  * at a time: poisson_pair_lanes, with csr_count_lanes's rows) and poisson_diag (the diagonal, for
  * Jacobi). With KGC the matrix is not symmetric. */
 real poisson_pair(const struct smooth sm, realm L_i, real vol_j, realv r, real r2)
@@ -14,7 +14,8 @@ real poisson_pair(const struct smooth sm, realm L_i, real vol_j, realv r, real r
          (r2 + smooth_eta2(sm));
 }
 
-/* The same pair term of four neighbours at once (NEIGH_FOR_LANES, grid.cl): r·L_i F r = F rᵀ L_i r.
+/* The same pair term of NEIGH_W neighbours at once (NEIGH_FOR_LANES, grid.cl): r·L_i F r = F rᵀ L_i
+ * r.
  */
 realw poisson_pair_lanes(const struct smooth sm, realm L_i, realw vol_j, const struct lanesv r,
                          const realw r2)
