@@ -36,7 +36,8 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
                            __global const real *P, __global const real *pt, const real rho,
                            const real dt, const realv gravity, __global const uint *free_surface,
                            __global const real *divr, const uint free_flow,
-                           const uint stop_at_walls, __global realv *vel, __global realv *acc)
+                           const uint stop_at_walls, __global realv *vel, __global realv *acc,
+                           __global realv *acc_p)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ISPH_FLUID) return;
@@ -139,6 +140,8 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
    * same guard, shift.cl). Only in scenes with gravity (stop_at_walls), where a free surface is
    * physics: in a confined flow a particle taken for free surface is a symptom, and a wall crossing
    * there must show (the cavity's stability map). */
+  /* the pressure's acceleration, where the next prediction takes its wall term (viscous.cl) */
+  acc_p[i] = (u_new - ustar[i]) / dt;
   if (stop_at_walls)
     u_new = usaw_wall_guard(x, u_new, dt,
                             g.sm.support / (free_surface[i] || wet == 0u ? R(8.0) : R(16.0)), g_seg,

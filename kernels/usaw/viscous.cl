@@ -32,7 +32,8 @@
 #endif
 __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel, const real dt,
                            const real nu, const real d_min, const realv accel,
-                           __global realv *ustar, __global realv *visc USAW_PREDICT_TURB_ARGS)
+                           __global realv *ustar, __global realv *visc,
+                           __global const realv *acc_p USAW_PREDICT_TURB_ARGS)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] > ISPH_VERTEX) return;
@@ -97,18 +98,27 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     m22 += c * (R(1.0) - nn.y * nn.y);
     b += c * (us - dot(us, nn) * nn);
   }
-  /* fluid: (I + δt M) u* = u + δt (ν lap/γ + b + g + f), a 2 x 2 solve (det ≥ 1 as M ≥ 0);
-   * vertices: the paper's explicit u* = u + δt (ν lap/γ − M u + b + g + f) */
+  /* fluid: the wall term at v = u* + δt q, q = acc_p the pressure's acceleration of the last step
+   * (the projection's (ũ − u*)/δt, or wcsph-usaw's pressure force), v the best guess of the new
+   * velocity: (I + δt M) v = u + δt (ν lap/γ + b + g + f + q), a 2 x 2 solve (det ≥ 1 as M ≥ 0),
+   * u* = v − δt q. Taken at u* itself, the wall dragged on the body force that the pressure
+   * balances: in a tank at rest u* = g δt, so the first row by a side wall lagged the rest by
+   * g δt² c each step (c the wall term's rate), a sliding the projection cannot take back
+   * (normal to the wall it is divergence-free); it grew to 0.025 √(gH) in 5 s at δr = 0.02 m with
+   * d_min = δr/2. With q a steady state is exact for the pressure's part as for the body force's
+   * (ν lap/γ + b − M u + g + f + q = 0).
+   * Vertices: the paper's explicit u* = u + δt (ν lap/γ − M u + b + g + f) */
   const real ti = kind[i] == ISPH_FLUID ? dt : R(0.0), te = dt - ti;
+  const realv q = ti * acc_p[i];
   realv mu;
   mu.x = m11 * u.x + m12 * u.y;
   mu.y = m12 * u.x + m22 * u.y;
-  const realv rhs = u + dt * (lap_scale * lap / gam[i] + b + accel) - te * mu;
+  const realv rhs = u + dt * (lap_scale * lap / gam[i] + b + accel) - te * mu + q;
   const real a11 = R(1.0) + ti * m11, a12 = ti * m12, a22 = R(1.0) + ti * m22;
   const real det = a11 * a22 - a12 * a12;
   realv us;
-  us.x = (a22 * rhs.x - a12 * rhs.y) / det;
-  us.y = (a11 * rhs.y - a12 * rhs.x) / det;
+  us.x = (a22 * rhs.x - a12 * rhs.y) / det - q.x;
+  us.y = (a11 * rhs.y - a12 * rhs.x) / det - q.y;
 #if USAW_TURB
   if (vertex) { /* eq 24: the viscous term alone moves it, along the wall (∇γ_v is its normal) */
     const realv gv = ggam[i];

@@ -17,7 +17,7 @@ __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv
                              __global const real *p, __global const real *rho, const real dt,
                              const real rho0, const realv gravity, const real p_ref,
                              const uint guard, const real dr0, __global const uint *id,
-                             __global realv *vel)
+                             __global realv *vel, __global realv *acc_p)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != ISPH_FLUID) return;
@@ -63,7 +63,10 @@ __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv
                     rho0 * dot(gravity, R(0.5) * (a + b)) - p_ref;
     grad -= (pa + ps) * usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
   }
-  realv u = ustar[i] + cu - dt / rho[i] * (grad / gam[i] + rho0 * gravity);
+  /* the pressure's acceleration, where the next prediction takes its wall term (viscous.cl) */
+  const realv ap = -(grad / gam[i] + rho0 * gravity) / rho[i];
+  acc_p[i] = ap;
+  realv u = ustar[i] + cu + dt * ap;
   /* In scenes with gravity, isph-usaw's wall guard (usaw/common.cl; our departure from the
    * paper): a particle that would come within h q_max/16 of a wall loses its velocity into it.
    * At the free surface p ≈ 0 holds nothing off the wall: in the wedge case the meniscus of the

@@ -36,7 +36,7 @@ struct isph {
   struct psolve ps;
   struct psolve_options popt;
   int f_p, f_P, f_ustar, f_visc, f_gam, f_ggam, f_free, f_theta, f_shift, f_vnew, f_rhs, f_divr,
-      f_acc, f_normal;
+      f_acc, f_normal, f_acc_p;
   cl_kernel k_half, k_predict, k_free, k_rhs, k_pressure, k_no_tension, k_project, k_shift, k_apply,
       k_strain;
   cl_mem d_strain;  /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
@@ -234,7 +234,7 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
                 {"visc", rv, &is->f_visc},     {"grad_gamma", rv, &is->f_ggam},
                 {"shift", rv, &is->f_shift},   {"vel_new", rv, &is->f_vnew},
                 {"acc", rv, &is->f_acc},       {"rhs", sizeof(real), &is->f_rhs},
-                {"normal", rv, &is->f_normal}};
+                {"normal", rv, &is->f_normal}, {"acc_p", rv, &is->f_acc_p}};
   for (size_t k = 0; k < sizeof hidden / sizeof *hidden; ++k) {
     CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
@@ -394,6 +394,8 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_predict, &i, sizeof accel, &accel));
   CLSPH_TRY(arg(is->k_predict, &i, sizeof ustar, &ustar));
   CLSPH_TRY(arg(is->k_predict, &i, sizeof visc, &visc));
+  cl_mem acc_p = pset_mem(ps, is->f_acc_p); /* the pressure's acceleration of the last step */
+  CLSPH_TRY(arg(is->k_predict, &i, sizeof acc_p, &acc_p));
   CLSPH_TRY(usaw_turb_predict_args(sim, &is->turb, pset_mem(ps, is->f_ggam), is->k_predict, &i));
   CLSPH_TRY(kern_launch(sim->dev, is->k_predict, ps->n, NULL));
   /* k and ε (the k-ε model) */
@@ -497,6 +499,7 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_project, &i, sizeof vel, &vel));
   cl_mem acc = pset_mem(ps, is->f_acc); /* the accelerations, kept for the next free surface */
   CLSPH_TRY(arg(is->k_project, &i, sizeof acc, &acc));
+  CLSPH_TRY(arg(is->k_project, &i, sizeof acc_p, &acc_p));
   CLSPH_TRY(kern_launch(sim->dev, is->k_project, ps->n, NULL));
   /* largest |u̇_a| of the fluid (49), for the next step's length: read at the step's end */
   CLSPH_TRY(sim_max_norm_deferred(sim, acc, 0, &is->carry[ISPH_ACC]));

@@ -31,7 +31,7 @@
 struct wcsph {
   struct usaw_walls walls;
   struct usaw_turb turb; /* the k-ε model, when the scene declares it */
-  int f_rho, f_drho, f_p, f_gam, f_ggam, f_theta, f_ustar, f_visc, f_vnormal;
+  int f_rho, f_drho, f_p, f_gam, f_ggam, f_theta, f_ustar, f_visc, f_vnormal, f_acc_p;
   cl_kernel k_cont, k_vertex, k_predict, k_velocity, k_advance, k_strain;
   cl_mem d_strain; /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
   double c0, p_bg, mass;
@@ -194,6 +194,10 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
     pset_temporary(ps, *hidden[k].f); /* each made in the step after its sort, then read */
   }
+  /* the pressure's acceleration of the last step, where the prediction takes its wall term
+   * (usaw/viscous.cl): kept across the sorts */
+  CLSPH_TRY(pset_add(ps, sim->dev, "acc_p", rv, NULL, &ws->f_acc_p));
+  pset_describe(ps, ws->f_acc_p, PF_REAL, 0, 0);
   /* volumes: m/ρ0 for the fluid, none for the wall vertices (as in isph-usaw) */
   for (size_t k = 0; k < geo->n; ++k)
     buf[k] = geo->kind[k] == KIND_VERTEX ? (real)0 : (real)(sc->dr * sc->dr);
@@ -237,6 +241,7 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   cl_mem kind = pset_mem(ps, sim->f_kind), vol = pset_mem(ps, sim->f_vol);
   cl_mem rho = pset_mem(ps, ws->f_rho), drho = pset_mem(ps, ws->f_drho), p = pset_mem(ps, ws->f_p);
   cl_mem ustar = pset_mem(ps, ws->f_ustar), visc = pset_mem(ps, ws->f_visc);
+  cl_mem acc_p = pset_mem(ps, ws->f_acc_p);
   cl_uint n = (cl_uint)ps->n;
   if (ws->walls.turning && ws->walls.t_now != sim->time) { /* a restart: the walls at t^n */
     CLSPH_TRY(usaw_walls_turn(&ws->walls, sim, sim->time));
@@ -250,6 +255,7 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
     p = pset_mem(ps, ws->f_p);
     ustar = pset_mem(ps, ws->f_ustar);
     visc = pset_mem(ps, ws->f_visc);
+    acc_p = pset_mem(ps, ws->f_acc_p);
   }
   CLSPH_TRY(usaw_walls_gamma(&ws->walls, sim->dev, ps->n, pos, pset_mem(ps, ws->f_theta),
                              pset_mem(ps, ws->f_gam), pset_mem(ps, ws->f_ggam), sim->d_flags));
@@ -270,6 +276,7 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   ARG(ws->k_predict, i, accel);
   ARG(ws->k_predict, i, ustar);
   ARG(ws->k_predict, i, visc);
+  ARG(ws->k_predict, i, acc_p);
   CLSPH_TRY(usaw_turb_predict_args(sim, &ws->turb, pset_mem(ps, ws->f_ggam), ws->k_predict, &i));
   CLSPH_TRY(kern_launch(sim->dev, ws->k_predict, ps->n, NULL));
   /* k and ε (the k-ε model) */
@@ -292,6 +299,7 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   cl_mem id = pset_mem(ps, sim->f_id);
   ARG(ws->k_velocity, i, id);
   ARG(ws->k_velocity, i, vel);
+  ARG(ws->k_velocity, i, acc_p);
   CLSPH_TRY(kern_launch(sim->dev, ws->k_velocity, ps->n, NULL));
   /* dρ/dt with u^{n+1} (at r^n), after the velocity: ρ^{n+1} = ρ^n + δt D{u^{n+1}} as
    * r^{n+1} = r^n + δt u^{n+1}, symplectic Euler for the pair (ρ, u) as for (r, u). The paper gives
