@@ -8,8 +8,9 @@
 -- of the run, gives C_D = F_D/(µ⟨v⟩) against 106.77 (Liu et al., tests/data/
 -- liu1998_cylinder_array_cd.csv). n is the number of particles across the channel (the paper's
 -- 120; even, so that Lc is a whole number of spacings). The viscous time (H Rc)²/ν is 16 s; the
--- paper runs 80 s. --set wcsph=1 runs the WCSPH baseline.
-param { n = 120, t_end = 80, wcsph = 0, outputs = 80 }
+-- paper runs 80 s. --set wcsph=1 runs the WCSPH baseline. segment_cache: the scheme option (slots
+-- a particle, 0 none: the same bits; -1, the default, the scheme's own).
+param { n = 120, t_end = 80, wcsph = 0, outputs = 80, segment_cache = -1 }
 
 local Rc, L, H = 0.02, 6, 2
 local Lc, height = L * Rc, 2 * H * Rc
@@ -19,15 +20,16 @@ local dr = height / n
 
 domain { 0, 0, Lc, height, periodic = "x" }
 particles { dr = dr }
+local cache = segment_cache >= 0 and segment_cache or nil
 if wcsph == 1 then
   -- The time step of this very viscous flow is the viscous bound 0.125 h²/ν for both schemes
   -- (the paper: "the time-step is the same with WCSPH and ISPH"), which the CFL bound
   -- 0.2 h/c0 matches at c0 = 1.6 ν/h (h = 2 dr); 10 times the largest speed would be 1000
   -- times slower and let the density vary by far more than the flow's pressure differences
   -- (about 0.02 Pa, against ρ c0² = 0.4 Pa at n = 20 and 14 Pa at n = 120).
-  scheme { "wcsph-usaw", sound_speed = 1.6 * (mu / rho) / (2 * dr) }
+  scheme { "wcsph-usaw", sound_speed = 1.6 * (mu / rho) / (2 * dr), segment_cache = cache }
 else
-  scheme "isph-usaw"
+  scheme { "isph-usaw", segment_cache = cache }
 end
 fluid { density = rho, viscosity = mu / rho,
         -- the slice of width δr ending at x = Lc holds the last lattice column in its middle

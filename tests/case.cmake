@@ -340,6 +340,35 @@ clsph_cli_test(case_wall_distance_floor_wcsph ARGS info ${bad_floor} --set what=
 clsph_cli_test(case_wall_distance_floor_nan ARGS info ${bad_floor} --set what=4 RC 2
                REGEX "${floor_range}.*, not -?nan")
 
+# The segment cache (usaw/gamma.cl): usaw_gamma keeps each particle's segments of non-zero ∇γ_as
+# and their quadrature for the sweeps, which otherwise walk the segment grid; both ways must give
+# the same bits, with 8 slots (the default) and with 2 (most particles by the wavy floor overflow
+# and walk). The case's sloped segments cross the periodic seam: a wrong image in a slot (the x
+# shift taken as 0) fails all three (measured).
+foreach(v isph wcsph)
+  set(w 0)
+  if(v STREQUAL "wcsph")
+    set(w 1)
+  endif()
+  foreach(k 8 2)
+    clsph_add_test(seg_cache_${v}_${k} LABELS case COMMAND ${CMAKE_COMMAND}
+                   -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CASE_DIR}/seg_cache.lua
+                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/seg_cache_${v}_${k} "-DSETS=wcsph=${w}"
+                   -DSETS_A=segment_cache=0 -DSETS_B=segment_cache=${k} "-DEXACT=pos|vel|p"
+                   -P ${CASE_DIR}/same_state.cmake)
+  endforeach()
+endforeach()
+set(bad_cache ${CASE_DIR}/bad_segment_cache.lua)
+set(cache_range "segment_cache must be a whole number of segments a particle from 0 .none. to 64")
+clsph_cli_test(case_segment_cache_fraction ARGS info ${bad_cache} RC 2
+               REGEX "bad_segment_cache.lua: ${cache_range}, not 2.5")
+clsph_cli_test(case_segment_cache_negative ARGS info ${bad_cache} --set what=1 RC 2
+               REGEX "${cache_range}, not -1")
+clsph_cli_test(case_segment_cache_text ARGS info ${bad_cache} --set what=2 RC 2
+               REGEX "segment_cache must be a whole number of segments a particle, not \"many\"")
+clsph_cli_test(case_segment_cache_wcsph ARGS info ${bad_cache} --set what=3 RC 2
+               REGEX "${cache_range}, not 65")
+
 # The infinite array of cylinders in a channel (Leroy et al. 2014 sec 4.2), coarse: 20 particles
 # across the channel (the paper's 120), 12 s (the drag is steady within 0.1% from 8 s on at this
 # resolution), flow-rate control of the body force (eqs 67-68), C_D = F_D/(µ⟨v⟩) against

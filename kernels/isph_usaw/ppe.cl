@@ -83,11 +83,11 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   div = lanes_sum(div4);
   dens += lanes_sum(dens4);
   near_surface = any(near4);
-  NEIGH_FOR(it, g_seg, seg_start, x, s) {
-    const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
-    const realv gg = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
-    isph_rhs_seg(us, ustar, visc, inv[seg_v1[s]], inv[seg_v2[s]], gg, &div, &wall);
-  }
+  struct usaw_segs si; /* the segments of non-zero ∇γ_as (gamma.cl) */
+  uint s;
+  realv sh, gg;
+  USAW_SEGS_FOR(si, x, i, s, sh, gg)
+  isph_rhs_seg(us, ustar, visc, inv[seg_v1[s]], inv[seg_v2[s]], gg, &div, &wall);
   rhs[i] = rho / dt * div + R(2.0) * rho * wall;
   if (relax > R(0.0) && kind[i] == ISPH_FLUID && !near_surface) rhs[i] += relax * (gam[i] - dens);
 }

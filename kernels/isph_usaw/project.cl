@@ -79,8 +79,12 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   mx = lanes_total_v(mx4);
   my = lanes_total_v(my4);
   near_air |= any(air4);
-  NEIGH_FOR(it, g_seg, seg_start, x, s) {
-    const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
+  struct usaw_segs si; /* the segments of non-zero ∇γ_as (gamma.cl) */
+  uint s;
+  realv sh, gs;
+  USAW_SEGS_FOR(si, x, i, s, sh, gs)
+  {
+    const realv a = seg_a[s] + sh, b = seg_b[s] + sh;
     const uint v1 = inv[seg_v1[s]], v2 = inv[seg_v2[s]];
     /* a segment above the free surface borders air: its P says nothing about the fluid's, so
      * it takes the particle's own value. It is above the water line when both its vertices are
@@ -100,7 +104,6 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     if (free_flow) ps = fmax(ps, pa);
 #endif
 #if ISPH_GRAD_SYM
-    const realv gs = usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
     grad += (pa - ps) * gs;
     if (!above) { /* a segment above the water line adds nothing to G−{P} */
       const realv rs = x - R(0.5) * (a + b);
@@ -108,7 +111,7 @@ __kernel void isph_project(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
       my += rs.y * gs;
     }
 #else
-    grad -= (pa + ps) * usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
+    grad -= (pa + ps) * gs;
 #endif
   }
 #if ISPH_GRAD_SYM

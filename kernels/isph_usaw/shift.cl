@@ -102,10 +102,13 @@ __kernel void isph_shift(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *ve
     lanes_acc_v(&du4, -w, lanes_sub_from(u, lanes_load_v(vel, b)));
   }
   realv du = lanes_total_v(du4);
-  NEIGH_FOR(it, g_seg, seg_start, x, s) {
-    const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
+  struct usaw_segs si; /* the segments of non-zero ∇γ_as (gamma.cl) */
+  uint s;
+  realv sh, gg;
+  USAW_SEGS_FOR(si, x, i, s, sh, gg)
+  {
     const realv us = R(0.5) * (wall_vel[inv[seg_v1[s]]] + wall_vel[inv[seg_v2[s]]]);
-    du += (u - us) * dot(usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]), dr);
+    du += (u - us) * dot(gg, dr);
   }
   vel_out[i] = u + du / gam[i] + cu;
 #else

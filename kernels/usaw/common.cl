@@ -10,11 +10,12 @@
 #define ISPH_VERTEX 1u
 #define ISPH_PI     R(3.14159265358979323846)
 
-/* The arguments every stage passes for the segments. */
-#define USAW_SEG_ARGS                                                                              \
+/* The arguments every stage passes for the segments, then the segment cache's (gamma.cl). */
+#define USAW_SEG_BASE_ARGS                                                                         \
   const struct grid g_seg, __global const uint *seg_start, __global const realv *seg_a,            \
       __global const realv *seg_b, __global const realv *seg_n, __global const uint *seg_v1,       \
       __global const uint *seg_v2, __global const uint *inv
+#define USAW_SEG_ARGS USAW_SEG_BASE_ARGS USAW_CACHE_ARGS
 
 /* The particle arguments every stage passes. */
 #define USAW_PART_ARGS                                                                             \
@@ -36,7 +37,7 @@ real isph_wrap(real x, real lo, real len)
  * wall, relative to the wall's velocity when moving_walls (vel, the wall vertices' velocities).
  * Past the end of a segment the direction is the one from its end point: over a convex corner the
  * segment's own normal would brake the flow that leaves the corner along the next segment. */
-realv usaw_wall_guard(const realv x, realv m, const real tau, const real margin, USAW_SEG_ARGS,
+realv usaw_wall_guard(const realv x, realv m, const real tau, const real margin, USAW_SEG_BASE_ARGS,
                       __global const realv *vel, const int moving_walls)
 {
   struct neigh_iter it;

@@ -76,9 +76,12 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
 #if !USAW_TURB
   const real cg = R(2.0) * nu / gam[i];
 #endif
-  NEIGH_FOR(it, g_seg, seg_start, x, s) {
-    const realv a = seg_a[s] + it.shift, e = seg_b[s] + it.shift, nn = seg_n[s];
-    const realv gg = usaw_grad_gamma_seg(g.sm, x, a, e, nn);
+  struct usaw_segs si; /* the segments of non-zero ∇γ_as (gamma.cl) */
+  uint s;
+  realv sh, gg;
+  USAW_SEGS_FOR(si, x, i, s, sh, gg)
+  {
+    const realv a = seg_a[s] + sh, e = seg_b[s] + sh, nn = seg_n[s];
     const real ggn = length(gg);
     if (ggn == R(0.0)) continue;
     const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);

@@ -44,10 +44,13 @@ __kernel void wcsph_continuity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const rea
         vf * (ra - lanes_load(rho, b) - rho0_c2 * lanes_dot1(r, gravity)) * rr; /* r·∇w/r = F r */
   }
   real div = lanes_sum(div4), diff = lanes_sum(diff4);
-  NEIGH_FOR(it, g_seg, seg_start, x, s) {
-    const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
+  struct usaw_segs si; /* the segments of non-zero ∇γ_as (gamma.cl) */
+  uint s;
+  realv sh, gg;
+  USAW_SEGS_FOR(si, x, i, s, sh, gg)
+  {
     const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
-    div -= dot(u - us, usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]));
+    div -= dot(u - us, gg);
   }
   drho[i] = (ra * div + c0 * diff) / gam[i];
 }

@@ -57,11 +57,15 @@ __kernel void wcsph_velocity(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv
     }
   }
   grad = lanes_total_v(grad4);
-  NEIGH_FOR(it, g_seg, seg_start, x, s) {
-    const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift;
+  struct usaw_segs si; /* the segments of non-zero ∇γ_as (gamma.cl) */
+  uint s;
+  realv sh, gg;
+  USAW_SEGS_FOR(si, x, i, s, sh, gg)
+  {
+    const realv a = seg_a[s] + sh, b = seg_b[s] + sh;
     const real ps = R(0.5) * (p[inv[seg_v1[s]]] + p[inv[seg_v2[s]]]) -
                     rho0 * dot(gravity, R(0.5) * (a + b)) - p_ref;
-    grad -= (pa + ps) * usaw_grad_gamma_seg(g.sm, x, a, b, seg_n[s]);
+    grad -= (pa + ps) * gg;
   }
   /* the pressure's acceleration, where the next prediction takes its wall term (viscous.cl) */
   const realv ap = -(grad / gam[i] + rho0 * gravity) / rho[i];

@@ -81,6 +81,11 @@ static const char *const options[] = {"shifting",
                                       PSOLVE_OPTION_NAMES,
                                       NULL};
 
+/* The segment cache's default (kernels/usaw/gamma.cl): none. γ is evaluated twice a step, and each
+ * filling serves two sweeps or one: the wedge dam break to 0.6 s took 1.02 of the time with 8
+ * slots (farm-bench, medians of 3 pairs). */
+#define ISPH_SEG_CACHE 0
+
 /* -D switches: the pressure-gradient form of the projection. */
 static enum clsph_status isph_define(const struct sim *sim, struct prog_opts *o)
 {
@@ -134,6 +139,7 @@ static enum clsph_status isph_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "ISPH_GRAD_CORR", corr));
   CLSPH_TRY(prog_opts_define_int(o, "ISPH_SHIFT_VCORR", vcorr));
   CLSPH_TRY(usaw_turb_define(sim, o));
+  CLSPH_TRY(usaw_seg_cache_define(sim->scene, ISPH_SEG_CACHE, o));
 done:
   return st;
 }
@@ -273,6 +279,7 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   pset_describe(ps, is->f_theta, PF_REAL, 0, 0);
   /* segments, kernels, solver */
   CLSPH_TRY(usaw_walls_from_geom(sim->dev, sim->prog, geo, sim->scene, &sim->gspec, &is->walls));
+  CLSPH_TRY(usaw_walls_cache(&is->walls, sim->scene, ISPH_SEG_CACHE));
   struct {
     cl_kernel *k;
     const char *name;

@@ -31,6 +31,74 @@ done:
   return st;
 }
 
+enum clsph_status usaw_seg_cache_option(const struct scene *sc, unsigned dflt, unsigned *slots)
+{
+  enum clsph_status st = CLSPH_OK;
+  *slots = dflt;
+  for (int i = 0; i < sc->noptions; ++i) {
+    const struct scene_option *o = &sc->options[i];
+    if (strcmp(o->key, "segment_cache") != 0) continue;
+    CLSPH_CHECK(o->is_number, CLSPH_E_INPUT,
+                "%s: segment_cache must be a whole number of segments a particle, not \"%s\"",
+                sc->case_path, o->text);
+    CLSPH_CHECK(o->number == floor(o->number) && o->number >= 0.0 && o->number <= 64.0,
+                CLSPH_E_INPUT,
+                "%s: segment_cache must be a whole number of segments a particle from 0 (none) to "
+                "64, not %g",
+                sc->case_path, o->number);
+    *slots = (unsigned)o->number;
+  }
+done:
+  return st;
+}
+
+enum clsph_status usaw_seg_cache_define(const struct scene *sc, unsigned dflt, struct prog_opts *o)
+{
+  enum clsph_status st = CLSPH_OK;
+  unsigned k = 0;
+  CLSPH_TRY(usaw_seg_cache_option(sc, dflt, &k));
+  CLSPH_TRY(prog_opts_define_int(o, "USAW_SEG_CACHE", (long)k));
+done:
+  return st;
+}
+
+enum clsph_status usaw_walls_cache(struct usaw_walls *w, const struct scene *sc, unsigned dflt)
+{
+  enum clsph_status st = CLSPH_OK;
+  unsigned slots = 0;
+  CLSPH_TRY(usaw_seg_cache_option(sc, dflt, &slots));
+  /* gamma.cl: a slot keeps the segment's index in 28 bits, its periodic image in 4 */
+  CLSPH_CHECK(slots == 0 || w->ps.n < (size_t)1 << 28, CLSPH_E_UNSUPPORTED,
+              "%s: %zu wall segments, more than the segment cache indexes (2^28): set "
+              "segment_cache = 0",
+              sc->case_path, w->ps.n);
+  w->cache_k = slots;
+done:
+  return st;
+}
+
+/* The cache's buffers for n particles (grown with a margin); a new count says "walk the grid"
+ * (K + 1) until usaw_gamma has filled it. */
+static enum clsph_status cache_reserve(struct usaw_walls *w, const struct dev *dev, size_t n)
+{
+  enum clsph_status st = CLSPH_OK;
+  if (w->cache_k == 0 || (n <= w->cache_n && w->d_cache_cnt != NULL)) goto done;
+  const size_t cap = n + n / 8 + 64;
+  kern_release(&w->d_cache_cnt);
+  kern_release(&w->d_cache_list);
+  kern_release(&w->d_cache_gg);
+  CLSPH_TRY(kern_buffer(dev, cap * sizeof(cl_uint), NULL, &w->d_cache_cnt, "segment cache counts"));
+  CLSPH_TRY(kern_buffer(dev, cap * w->cache_k * sizeof(cl_uint), NULL, &w->d_cache_list,
+                        "segment cache"));
+  CLSPH_TRY(kern_buffer(dev, cap * w->cache_k * 2 * sizeof(real), NULL, &w->d_cache_gg,
+                        "segment cache gradients"));
+  const cl_uint walk = (cl_uint)w->cache_k + 1u;
+  CLSPH_TRY(kern_fill(dev, w->d_cache_cnt, &walk, sizeof walk, cap * sizeof walk));
+  w->cache_n = cap;
+done:
+  return st;
+}
+
 enum clsph_status usaw_wall_guard_option(const struct scene *sc, int auto_on, cl_uint *on)
 {
   enum clsph_status st = CLSPH_OK;
@@ -228,6 +296,12 @@ enum clsph_status usaw_walls_gamma(struct usaw_walls *w, const struct dev *dev, 
   CLSPH_TRY(KERN_SET(w->k_gamma, KARG(np), KARG(w->g.geom), KARG(w->g.d_start), KARG(a), KARG(b),
                      KARG(nn), KARG(joint), KARG(d_pos), KARG(d_theta), KARG(d_gamma),
                      KARG(d_grad_gamma), KARG(d_flags)));
+  if (w->cache_k > 0) {
+    CLSPH_TRY(cache_reserve(w, dev, n));
+    CLSPH_TRY(kern_set_at(w->k_gamma, 12, KARG(w->d_cache_cnt)));
+    CLSPH_TRY(kern_set_at(w->k_gamma, 13, KARG(w->d_cache_list)));
+    CLSPH_TRY(kern_set_at(w->k_gamma, 14, KARG(w->d_cache_gg)));
+  }
   CLSPH_TRY(kern_launch(dev, w->k_gamma, n, NULL));
 done:
   return st;
@@ -455,6 +529,12 @@ enum clsph_status usaw_kernel_prefix(struct sim *sim, struct usaw_walls *w, cl_m
                      KARG(vol), KARG(kind), KARG(gam), KARG(w->g.geom), KARG(w->g.d_start),
                      KARG(sa), KARG(sb), KARG(sn), KARG(v1), KARG(v2), KARG(sim->d_inv)));
   *next = 15;
+  if (w->cache_k > 0) { /* USAW_CACHE_ARGS */
+    CLSPH_TRY(cache_reserve(w, sim->dev, n));
+    CLSPH_TRY(kern_set_at(k, (*next)++, KARG(w->d_cache_cnt)));
+    CLSPH_TRY(kern_set_at(k, (*next)++, KARG(w->d_cache_list)));
+    CLSPH_TRY(kern_set_at(k, (*next)++, KARG(w->d_cache_gg)));
+  }
 done:
   return st;
 }
@@ -466,7 +546,8 @@ void usaw_walls_destroy(struct usaw_walls *w)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
     *ks[k] = NULL;
   }
-  cl_mem *ms[] = {&w->d_rot, &w->d_seg_turn, &w->d_seg0, &w->d_vert_turn, &w->d_vert0};
+  cl_mem *ms[] = {&w->d_rot,   &w->d_seg_turn,  &w->d_seg0,       &w->d_vert_turn,
+                  &w->d_vert0, &w->d_cache_cnt, &w->d_cache_list, &w->d_cache_gg};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
   w->turning = 0;
   kern_release(&w->d_flags);

@@ -45,6 +45,11 @@ struct usaw_walls {
   int f_vnormal;      /* the particle field of the vertices' normals that usaw_walls_turn turns
                        * with them (the scheme's; −1: none) */
   cl_kernel k_turn_vertices, k_turn_segments;
+  /* the segment cache (kernels/usaw/gamma.cl, -D USAW_SEG_CACHE): slots a particle (0: none), and
+   * for cache_n particles their counts, the slots' segments and their ∇γ_as */
+  unsigned cache_k;
+  size_t cache_n;
+  cl_mem d_cache_cnt, d_cache_list, d_cache_gg;
 };
 
 /** @brief Upload the segments and sort them into their grid.
@@ -82,7 +87,7 @@ enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
                                   struct wall_force *f);
 /** The scheme options both USAW schemes take: their viscous wall term's distance floor
  *  (kernels/usaw/viscous.cl) and the wall guard (usaw_wall_guard, kernels/usaw/common.cl). */
-#define USAW_WALL_OPTION_NAMES "wall_distance_floor", "wall_guard"
+#define USAW_WALL_OPTION_NAMES "wall_distance_floor", "wall_guard", "segment_cache"
 /** @brief Whether the wall guard is on: the option wall_guard ("on", "off", or "auto", the
  *  default, which takes `auto_on`: the scheme's own rule). */
 enum clsph_status usaw_wall_guard_option(const struct scene *sc, int auto_on, cl_uint *on);
@@ -90,6 +95,14 @@ enum clsph_status usaw_wall_guard_option(const struct scene *sc, int auto_on, cl
  *  wall_distance_floor (spacings, in (0, 1]; 1 is the paper's δr), or the scheme's default
  *  `spacings`, times δr. */
 enum clsph_status usaw_wall_distance_floor(const struct scene *sc, double spacings, double *d_min);
+/** @brief The segment cache's slots a particle (kernels/usaw/gamma.cl): the option segment_cache
+ *  (0: none, up to 64), else the scheme's default dflt. */
+enum clsph_status usaw_seg_cache_option(const struct scene *sc, unsigned dflt, unsigned *slots);
+/** @brief The -D switches of the segment cache (USAW_SEG_CACHE), the scheme's default dflt. */
+enum clsph_status usaw_seg_cache_define(const struct scene *sc, unsigned dflt, struct prog_opts *o);
+/** @brief Turn the segment cache on as the option says (the scheme's default dflt), after
+ *  usaw_walls_from_geom() and with the program that usaw_seg_cache_define() made. */
+enum clsph_status usaw_walls_cache(struct usaw_walls *w, const struct scene *sc, unsigned dflt);
 /** @brief Release. */
 /** @brief The particle and segment arguments every USAW kernel starts with (USAW_PART_ARGS,
  *  USAW_SEG_ARGS; gam: γ of the particles); *next gets the next argument's index. */
