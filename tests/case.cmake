@@ -368,6 +368,8 @@ clsph_cli_test(case_segment_cache_text ARGS info ${bad_cache} --set what=2 RC 2
                REGEX "segment_cache must be a whole number of segments a particle, not \"many\"")
 clsph_cli_test(case_segment_cache_wcsph ARGS info ${bad_cache} --set what=3 RC 2
                REGEX "${cache_range}, not 65")
+clsph_cli_test(case_segment_cache_nan ARGS info ${bad_cache} --set what=4 RC 2
+               REGEX "${cache_range}, not -?nan")
 
 # The infinite array of cylinders in a channel (Leroy et al. 2014 sec 4.2), coarse: 20 particles
 # across the channel (the paper's 120), 12 s (the drag is steady within 0.1% from 8 s on at this
@@ -434,8 +436,9 @@ clsph_run_test(run_wedge_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.
 # measured errors with a margin; the wall times are in RESULTS.md.
 # Hydrostatic tank, δr = 0.02 m, 5 s: pressure within 1% below 3 δr (measured 2.2e-6), largest
 # speed below 1e-3 √(gH) (measured 2.5e-5; 0.025 while the implicit wall term dragged on u*
-# itself, usaw/viscous.cl), no particle through a wall.
-clsph_run_test(validate_hydrostatic ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua LABELS slow
+# itself, usaw/viscous.cl), no particle through a wall. In CI (3 s): labelled slow, it failed
+# unseen from 64a2674 to d11dd0d.
+clsph_run_test(validate_hydrostatic ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua
                BOUNDS "pressure_error<0.01" "speed_ratio<1e-3" "crossed_wall<0.5")
 # The same with wcsph-usaw (measured 0.45% and 8.5e-4 √(gH), 19580 steps).
 clsph_run_test(validate_hydrostatic_wcsph ${CMAKE_SOURCE_DIR}/cases/hydrostatic.lua LABELS slow

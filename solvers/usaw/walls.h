@@ -86,7 +86,8 @@ enum clsph_status usaw_wall_force(const struct dev *dev, const struct geom *geo,
                                   cl_mem d_inv, double mu, double t, const char *group,
                                   struct wall_force *f);
 /** The scheme options both USAW schemes take: their viscous wall term's distance floor
- *  (kernels/usaw/viscous.cl) and the wall guard (usaw_wall_guard, kernels/usaw/common.cl). */
+ *  (kernels/usaw/viscous.cl), the wall guard (usaw_wall_guard, kernels/usaw/common.cl) and the
+ *  segment cache (kernels/usaw/gamma.cl). */
 #define USAW_WALL_OPTION_NAMES "wall_distance_floor", "wall_guard", "segment_cache"
 /** @brief Whether the wall guard is on: the option wall_guard ("on", "off", or "auto", the
  *  default, which takes `auto_on`: the scheme's own rule). */
