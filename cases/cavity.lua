@@ -13,7 +13,8 @@
 -- (eq 38); floor sets the USAW schemes' wall_distance_floor, the least wall distance of the
 -- viscous wall term in spacings (0: the scheme's, δr/2 for isph-usaw) (the study
 -- cavity_re100_causes in tests/harness/studies.txt measures each); fuse = 1 sets isph-usaw's
--- solver_fuse = "fused" (the README's pressure solver).
+-- solver_fuse = "fused" (the README's pressure solver); guess = 0 sets its pressure_guess = "last"
+-- (the solve starts from the last step's pressure instead of the last two extrapolated).
 -- dim = 3 (with riemann = 1) runs it in 3-D: the box `span` spacings deep along z, periodic
 -- there, its lid the face y = 1 sliding at {U, 0, 0} (box_wall { ..., lid_velocity, lid_face }):
 -- a 2-D flow in a 3-D code, which must reproduce the 2-D run. Its metrics are the 2-D run's, the
@@ -22,11 +23,11 @@
 -- same plane (the lid's force is 2-D only).
 param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, riemann = 0, ard = 0, tvf = 2, dens = 0, c0 = 10, alpha = 0.2,
         shift = 0.7, checkpoint = 0, hdr = 0, guard = 0, corners = 0, shift_velocity = 1,
-        floor = 0, dim = 2, span = 9, fuse = 0 }
+        floor = 0, dim = 2, span = 9, fuse = 0, guess = 1 }
 
 local U = 1
 for _, sw in ipairs({{"guard", guard}, {"corners", corners}, {"shift_velocity", shift_velocity},
-                     {"fuse", fuse}}) do
+                     {"fuse", fuse}, {"guess", guess}}) do
   if sw[2] ~= 0 and sw[2] ~= 1 then
     error(("cavity: %s must be 0 or 1, not %g"):format(sw[1], sw[2]))
   end
@@ -56,7 +57,8 @@ elseif wcsph == 1 then -- the paper's baseline: c0 = 10 U and a background press
 else
   scheme { "isph-usaw", shifting = shift, wall_guard = guard == 1 and "on" or nil,
            shift_velocity = shift_velocity == 0 and "off" or nil,
-           wall_distance_floor = wall_floor, solver_fuse = fuse == 1 and "fused" or nil }
+           wall_distance_floor = wall_floor, solver_fuse = fuse == 1 and "fused" or nil,
+           pressure_guess = guess == 0 and "last" or nil }
 end
 fluid { density = 1, viscosity = U / re }
 if dim == 3 then -- the box, its lid the face y = 1 (its edges' dummies at rest, geometry3.c)

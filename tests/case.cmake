@@ -537,6 +537,18 @@ clsph_failure_test(health_wall_crossing ${CMAKE_SOURCE_DIR}/cases/cavity.lua wal
 # floor (δr) 0 or in (0, 1].
 clsph_cli_test(case_cavity_bad_switch ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set corners=2
                RC 2 REGEX "cavity.lua:[0-9]+: cavity: corners must be 0 or 1, not 2")
+# isph-usaw's pressure_guess: the solve started from the last two steps' pressures extrapolated
+# in time takes fewer iterations than from the last step's (30² cavity, Re 100, to t = 2 s: 6.4
+# against 6.8 a step in double; RATIO leaves half of that margin)
+clsph_add_test(pressure_guess_iterations LABELS case COMMAND ${CMAKE_COMMAND}
+               -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/cavity.lua
+               -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/pressure_guess_iterations
+               "-DSETS_A=n=30|t_end=2" "-DSETS_B=n=30|t_end=2|guess=0" -DRATIO=0.98
+               -P ${CASE_DIR}/fewer_iterations.cmake)
+clsph_cli_test(case_pressure_guess ARGS info ${CASE_DIR}/bad_pressure_guess.lua RC 2
+               REGEX "bad_pressure_guess.lua: pressure_guess must be \"linear\" .* or \"last\"")
+clsph_cli_test(case_pressure_guess_number ARGS info ${CASE_DIR}/bad_pressure_guess.lua --set what=2
+               RC 2 REGEX "bad_pressure_guess.lua: pressure_guess must be \"linear\"")
 clsph_cli_test(case_cavity_bad_fuse ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set fuse=0.5
                RC 2 REGEX "cavity.lua:[0-9]+: cavity: fuse must be 0 or 1, not 0.5")
 clsph_cli_test(case_cavity_bad_hdr ARGS info ${CMAKE_SOURCE_DIR}/cases/cavity.lua --set hdr=-1

@@ -36,9 +36,9 @@ struct isph {
   struct psolve ps;
   struct psolve_options popt;
   int f_p, f_P, f_ustar, f_visc, f_gam, f_ggam, f_free, f_theta, f_shift, f_vnew, f_rhs, f_divr,
-      f_acc, f_normal, f_acc_p;
+      f_acc, f_normal, f_acc_p, f_P_last;
   cl_kernel k_half, k_predict, k_free, k_rhs, k_pressure, k_no_tension, k_project, k_shift, k_apply,
-      k_strain;
+      k_strain, k_guess;
   cl_mem d_strain;  /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
   cl_mem d_guess;   /* the pressure solve's initial guess, kept for a second try (solve) */
   long resolves;    /* solves tried again with a reinforced diagonal */
@@ -48,6 +48,7 @@ struct isph {
   cl_uint guard;    /* the wall guard (project.cl, shift.cl): wall_guard, by default with gravity */
   double u_wall;    /* largest wall speed, m/s */
   double d_min;     /* smallest wall distance of the viscous wall term, m (usaw/viscous.cl) */
+  int guess_linear; /* pressure_guess = "linear": the solve starts from P extrapolated in time */
   /* carried from step to step, and over a restart (isph_persist): the largest particle
    * acceleration of the last step, m/s² (the next step's length), and whether the last step had a
    * free surface (1, 0; −1: not known yet), the guess for this one's pressure equation */
@@ -77,6 +78,7 @@ static const char *const options[] = {"shifting",
                                       "gradient_correction",
                                       "shift_velocity",
                                       "density_relaxation",
+                                      "pressure_guess",
                                       USAW_WALL_OPTION_NAMES,
                                       PSOLVE_OPTION_NAMES,
                                       NULL};
@@ -177,6 +179,12 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
    * pressure: within 0.03% of ρg(H − z) (tank, δr = 0.02 m, 5 s) against 8.9% at 3δr with p̃ = 0
    * on the particles. free_surface_offset = 0 gives that literal reading. */
   is->fs_offset = 0.5;
+  /* The pressure solve starts from the last two steps' P extrapolated linearly in time
+   * (isph_pressure_guess, ppe.cl) rather than from the last step's: BiCGStab stops at
+   * solver_rtol ||b||, so a closer start saves iterations. 40² cavity, Re 100, to t = 5 s: 7.02 →
+   * 6.49 iterations a step; 120², Re 1000, to 1.5 s: 10.57 → 10.37; the wedge dam break to 0.5 s
+   * 10.33 → 10.12. */
+  is->guess_linear = 1;
   for (int i = 0; i < sim->scene->noptions; ++i) {
     const struct scene_option *o = &sim->scene->options[i];
     if (strcmp(o->key, "shifting") == 0) {
@@ -194,6 +202,15 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
                   "divergence-free projection) to 1, not %g",
                   sim->scene->case_path, o->number);
       is->relax = o->number;
+    }
+    if (strcmp(o->key, "pressure_guess") == 0) {
+      CLSPH_CHECK(!o->is_number && (!strcmp(o->text, "linear") || !strcmp(o->text, "last")),
+                  CLSPH_E_INPUT,
+                  "%s: pressure_guess must be \"linear\" (the pressure solve starts from the "
+                  "last two steps' pressures extrapolated in time) or \"last\" (from the last "
+                  "step's)",
+                  sim->scene->case_path);
+      is->guess_linear = strcmp(o->text, "linear") == 0;
     }
     if (strcmp(o->key, "free_surface_offset") == 0) {
       CLSPH_CHECK(o->is_number && o->number >= 0.0 && o->number <= 1.0, CLSPH_E_INPUT,
@@ -236,11 +253,17 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
     const char *name;
     size_t elem;
     int *f;
-  } hidden[] = {{"P", sizeof(real), &is->f_P}, {"ustar", rv, &is->f_ustar},
-                {"visc", rv, &is->f_visc},     {"grad_gamma", rv, &is->f_ggam},
-                {"shift", rv, &is->f_shift},   {"vel_new", rv, &is->f_vnew},
-                {"acc", rv, &is->f_acc},       {"rhs", sizeof(real), &is->f_rhs},
-                {"normal", rv, &is->f_normal}, {"acc_p", rv, &is->f_acc_p}};
+  } hidden[] = {{"P", sizeof(real), &is->f_P},
+                {"ustar", rv, &is->f_ustar},
+                {"visc", rv, &is->f_visc},
+                {"grad_gamma", rv, &is->f_ggam},
+                {"shift", rv, &is->f_shift},
+                {"vel_new", rv, &is->f_vnew},
+                {"acc", rv, &is->f_acc},
+                {"rhs", sizeof(real), &is->f_rhs},
+                {"normal", rv, &is->f_normal},
+                {"acc_p", rv, &is->f_acc_p},
+                {"P_last", sizeof(real), &is->f_P_last}};
   for (size_t k = 0; k < sizeof hidden / sizeof *hidden; ++k) {
     CLSPH_TRY(pset_add(ps, sim->dev, hidden[k].name, hidden[k].elem, NULL, hidden[k].f));
     pset_describe(ps, *hidden[k].f, PF_REAL, 0, 0);
@@ -283,11 +306,12 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   struct {
     cl_kernel *k;
     const char *name;
-  } ks[] = {{&is->k_half, "isph_half_move"},    {&is->k_predict, "usaw_predict"},
-            {&is->k_free, "isph_free_surface"}, {&is->k_rhs, "isph_ppe_rhs"},
-            {&is->k_pressure, "isph_pressure"}, {&is->k_no_tension, "isph_no_tension"},
-            {&is->k_project, "isph_project"},   {&is->k_shift, "isph_shift"},
-            {&is->k_apply, "isph_apply_shift"}, {&is->k_strain, "usaw_vertex_strain"}};
+  } ks[] = {{&is->k_half, "isph_half_move"},      {&is->k_predict, "usaw_predict"},
+            {&is->k_free, "isph_free_surface"},   {&is->k_rhs, "isph_ppe_rhs"},
+            {&is->k_pressure, "isph_pressure"},   {&is->k_no_tension, "isph_no_tension"},
+            {&is->k_project, "isph_project"},     {&is->k_shift, "isph_shift"},
+            {&is->k_apply, "isph_apply_shift"},   {&is->k_strain, "usaw_vertex_strain"},
+            {&is->k_guess, "isph_pressure_guess"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
   CLSPH_TRY(kern_buffer(sim->dev, 3 * ps->cap * sizeof(real), NULL, &is->d_strain, "strain"));
@@ -459,7 +483,14 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
     CLSPH_TRY(kern_launch(sim->dev, is->k_rhs, ps->n, NULL));
   }
   is->ps.opt.singular = singular_mode(is, guess);
+  cl_uint n = (cl_uint)ps->n;
   poisson_op_bind(&is->po, &sim->grid, ps->n, pos, pset_mem(ps, sim->f_vol), NULL, fs);
+  if (is->guess_linear) { /* the solve's initial guess (ppe.cl): none before the first step */
+    const real theta = (real)(sim->dt > 0.0 ? dt / sim->dt : 0.0);
+    cl_mem Pl = pset_mem(ps, is->f_P_last);
+    CLSPH_TRY(KERN_SET(is->k_guess, KARG(n), KARG(theta), KARG(P), KARG(Pl)));
+    CLSPH_TRY(kern_launch(sim->dev, is->k_guess, ps->n, NULL));
+  }
   struct psolve_result res;
   CLSPH_TRY(solve(sim, is, rhs, P, &res));
   if (known) { /* the solve has waited: the partial counts are here */
@@ -476,7 +507,6 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   is->carry[ISPH_FREE] = nfree > 0.0 ? 1.0 : 0.0;
   sim->solver_its = res.its;
   sim->solver_res = res.rnorm;
-  cl_uint n = (cl_uint)ps->n;
   CLSPH_TRY(KERN_SET(is->k_pressure, KARG(n), KARG(pos), KARG(P), KARG(rho), KARG(grav), KARG(p)));
   CLSPH_TRY(kern_launch(sim->dev, is->k_pressure, ps->n, NULL));
   /* no tension next to the air (scenes with gravity, where a free surface is physics; ppe.cl) */
@@ -611,8 +641,9 @@ static void isph_destroy(void *state)
 {
   struct isph *is = state;
   if (is == NULL) return;
-  cl_kernel *ks[] = {&is->k_half,       &is->k_predict, &is->k_free,  &is->k_rhs,   &is->k_pressure,
-                     &is->k_no_tension, &is->k_project, &is->k_shift, &is->k_apply, &is->k_strain};
+  cl_kernel *ks[] = {&is->k_half,     &is->k_predict,    &is->k_free,    &is->k_rhs,
+                     &is->k_pressure, &is->k_no_tension, &is->k_project, &is->k_shift,
+                     &is->k_apply,    &is->k_strain,     &is->k_guess};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   kern_release(&is->d_strain);
