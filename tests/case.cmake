@@ -1331,10 +1331,13 @@ clsph_cli_test(case_water_wheel_bad_rtol ARGS info ${CMAKE_SOURCE_DIR}/cases/wat
 # is not zero next to a wall, and not on the walls' recorded force (the paper: "high values of the
 # latter lead to inaccurate results"). Without the weighted mean isph-usaw's reinforced solves
 # stopped converging within 0.1 s (the pressure's level grew to 6e5 Pa), and without the guard
-# its jet took particles 0.36 dr behind the baffles' corners.
+# its jet took particles 0.36 dr behind the baffles' corners. In float the flow rate at 1 s
+# depends on the order of the solver's sums by some per cent (its tolerance is 1e-5): −1.1% and
+# −4.2% under OpenFOAM's with the stored rows' reductions strided and in contiguous runs
+# (blas1.cl; double +1.43% either way, 2026-12-05), hence ±6%.
 clsph_run_test(run_fish_pass ${CMAKE_SOURCE_DIR}/cases/fish_pass.lua
                SETS n=8 t_end=1 every=0.5
-               BOUNDS "crossed_wall<0.5" "flow_rate_dev_now>-0.04" "flow_rate_dev_now<0.04"
+               BOUNDS "crossed_wall<0.5" "flow_rate_dev_now>-0.06" "flow_rate_dev_now<0.06"
                "flow_rate_history_rms<0.08" "momentum_residual>-0.05" "momentum_residual<0.02"
                "solver.iterations_max<30")
 clsph_run_test(run_fish_pass_weak ${CMAKE_SOURCE_DIR}/cases/fish_pass.lua

@@ -365,6 +365,19 @@ enum clsph_status prog_build_extra(const struct dev *dev, const char *const *sou
 
   last_from_cache = 0;
   CLSPH_TRY(prog_opts_define_int(&all, "CLSPH_DOUBLE", CLSPH_DOUBLE));
+  /* how a work-item of a reduction over stored rows takes them (blas1.cl's BLAS1_FOR_ROWS): a
+   * contiguous run except on a GPU, where strided rows read coalesced; CLSPH_REDUCE_ROWS =
+   * "strided" or "contiguous" chooses (the tests run the solver both ways) */
+  int contiguous = !(dev->type & CL_DEVICE_TYPE_GPU);
+  const char *rows = getenv("CLSPH_REDUCE_ROWS");
+  if (rows != NULL && rows[0] != '\0') {
+    CLSPH_CHECK(strcmp(rows, "strided") == 0 || strcmp(rows, "contiguous") == 0, CLSPH_E_INPUT,
+                "CLSPH_REDUCE_ROWS must be \"strided\" or \"contiguous\" (or unset: contiguous "
+                "except on a GPU), not \"%s\"",
+                rows);
+    contiguous = strcmp(rows, "contiguous") == 0;
+  }
+  CLSPH_TRY(prog_opts_define_int(&all, "BLAS1_CONTIGUOUS_ROWS", contiguous));
   CLSPH_TRY(opts_append(&all, "-cl-std=CL1.2"));
   if (fast_math) CLSPH_TRY(opts_append(&all, "-cl-fast-relaxed-math"));
   if (opts != NULL && opts->len > 0) CLSPH_TRY(opts_append(&all, "%s", opts->text));

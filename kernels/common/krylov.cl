@@ -110,7 +110,7 @@ __kernel void kr_dot(const uint n, const uint k, __global const kreal *st, __glo
   __local real s[BLAS1_WG];
   if (kr_over(st, k)) return;
   real acc = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) acc += x[i] * y[i];
+  BLAS1_FOR(i, n) acc += x[i] * y[i];
   s[get_local_id(0)] = acc;
   blas1_group_sum(s, part + set * BLAS1_GROUPS, get_group_id(0));
 }
@@ -122,7 +122,8 @@ __kernel void kr_dot_ts(const uint n, const uint k, __global const kreal *st,
   __local real a[BLAS1_WG], b[BLAS1_WG];
   if (kr_over(st, k)) return;
   real acc = R(0.0), acc2 = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+  BLAS1_FOR(i, n)
+  {
     acc += t[i] * s[i];
     acc2 += t[i] * t[i];
   }
@@ -137,7 +138,8 @@ __kernel void kr_residual(const uint n, __global const real *b, __global const r
 {
   __local real s[BLAS1_WG], t[BLAS1_WG];
   real acc = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+  BLAS1_FOR(i, n)
+  {
     const real v = b[i] - q[i];
     r[i] = v;
     acc += v * v;
@@ -156,7 +158,8 @@ __kernel void kr_residual_csr(const uint n, __global const real *b, __global con
 {
   __local real s[BLAS1_WG], t[BLAS1_WG];
   real bb = R(0.0), rr = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+  BLAS1_FOR_ROWS(i, n)
+  {
     const real bi = b[i];
     const real q = blas1_row_dot(eps * val[row[i]] * x[i], row[i], row[i + 1], col, val, x);
     const real v = bi - q;
@@ -177,7 +180,7 @@ __kernel void kr_shift(const uint n, __global const real *part, const uint ngrou
   __local real c;
   if (get_local_id(0) == 0) c = (real)(kr_sum(part, KR_SUM, ngroups) / (kreal)n);
   barrier(CLK_LOCAL_MEM_FENCE);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) dst[i] = src[i] - c;
+  BLAS1_FOR(i, n) dst[i] = src[i] - c;
 }
 
 /* dst = src − Σ w src / Σ w, the sums of kr_wtotal */
@@ -188,7 +191,7 @@ __kernel void kr_wshift(const uint n, __global const real *part, const uint ngro
   if (get_local_id(0) == 0)
     c = (real)(kr_sum(part, KR_SUM, ngroups) / kr_sum(part, KR_TT, ngroups));
   barrier(CLK_LOCAL_MEM_FENCE);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) dst[i] = src[i] - c;
+  BLAS1_FOR(i, n) dst[i] = src[i] - c;
 }
 
 /* Start: ||b|| (set KR_BB) and ||r|| (set KR_RR) decide whether there is anything to do; if so,
@@ -234,7 +237,8 @@ __kernel void kr_start(const uint n, const uint ngroups, const real rtol, const 
   }
   barrier(CLK_LOCAL_MEM_FENCE);
   if (what == 2) return;
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+  BLAS1_FOR(i, n)
+  {
     if (what == 1) {
       x[i] = R(0.0);
     } else {
@@ -307,14 +311,15 @@ __kernel void kr_begin(const uint n, const uint k, const uint ngroups, const uin
   barrier(CLK_LOCAL_MEM_FENCE);
   if (!go) return;
   if (scale) { /* and the multigrid's first sweep (mg.cl) */
-    for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    BLAS1_FOR(i, n)
+    {
       const real w = r[i] + beta * (p[i] - omega * v[i]);
       p[i] = w;
       t[i] = dw[i] * w;
     }
   } else {
-    for (uint i = get_global_id(0); i < n; i += get_global_size(0))
-      p[i] = r[i] + beta * (p[i] - omega * v[i]);
+    BLAS1_FOR(i, n)
+    p[i] = r[i] + beta * (p[i] - omega * v[i]);
   }
 }
 
@@ -357,14 +362,16 @@ __kernel void kr_s(const uint n, const uint k, const uint ngroups, __global krea
   if (!go) return;
   real acc = R(0.0);
   if (scale) { /* and the multigrid's first sweep (mg.cl) */
-    for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    BLAS1_FOR(i, n)
+    {
       const real w = r[i] - alpha * v[i];
       s[i] = w;
       t[i] = dw[i] * w;
       acc += w * w;
     }
   } else {
-    for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    BLAS1_FOR(i, n)
+    {
       const real w = r[i] - alpha * v[i];
       s[i] = w;
       acc += w * w;
@@ -413,11 +420,12 @@ __kernel void kr_end_iteration(const uint n, const uint k, const uint ngroups, c
   barrier(CLK_LOCAL_MEM_FENCE);
   if (mode == 0) return;
   if (mode == 1) {
-    for (uint i = get_global_id(0); i < n; i += get_global_size(0)) x[i] += alpha * ph[i];
+    BLAS1_FOR(i, n) x[i] += alpha * ph[i];
     return;
   }
   real acc = R(0.0), acc2 = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+  BLAS1_FOR(i, n)
+  {
     x[i] += alpha * ph[i] + omega * sh[i];
     const real w = s[i] - omega * t[i];
     r[i] = w;
@@ -444,7 +452,8 @@ __kernel void kr_restart(const uint n, const uint slot, __global kreal *st, __gl
     st[KR_REASON] = KR(0.0);
   }
   real acc = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+  BLAS1_FOR(i, n)
+  {
     r0[i] = r[i];
     p[i] = R(0.0);
     v[i] = R(0.0);
@@ -459,7 +468,7 @@ __kernel void kr_total(const uint n, __global const real *x, __global real *part
 {
   __local real s[BLAS1_WG];
   real acc = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) acc += x[i];
+  BLAS1_FOR(i, n) acc += x[i];
   s[get_local_id(0)] = acc;
   blas1_group_sum(s, part + KR_SUM * BLAS1_GROUPS, get_group_id(0));
 }
@@ -472,7 +481,8 @@ __kernel void kr_wtotal(const uint n, __global const real *w, __global const rea
   __local real s[BLAS1_WG];
   __local real t[BLAS1_WG];
   real acc = R(0.0), wacc = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+  BLAS1_FOR(i, n)
+  {
     acc += w[i] * x[i];
     wacc += w[i];
   }
@@ -496,10 +506,8 @@ __kernel void kr_spmv(const uint n, const uint k, __global const kreal *st,
 
 /* kr_spmv and the dot product that follows it in one pass, over the reductions' fixed work-groups:
  * y = (A + ε diag A) x, with the partial sums of (a, y) into set sa and, unless sb is KR_NO_SET,
- * of (y, y) into set sb. Each item takes the rows kr_dot and kr_dot_ts would give it, in their
- * order, so the sums are theirs to the bit. Strided rows read memory coalesced on a GPU; on a CPU
- * the pass costs about what the two launches did (a contiguous run of rows per item was 15%
- * faster on the device there, and no faster in wall time). */
+ * of (y, y) into set sb. An item's rows: BLAS1_FOR_ROWS (blas1.cl), strided on a GPU, the rows
+ * kr_dot and kr_dot_ts would give it (the sums theirs to the bit), a contiguous run elsewhere. */
 #define KR_NO_SET 0xffffffffu
 __kernel void kr_spmv_dot(const uint n, const uint k, __global const kreal *st,
                           __global const uint *row, __global const uint *col,
@@ -510,7 +518,8 @@ __kernel void kr_spmv_dot(const uint n, const uint k, __global const kreal *st,
   __local real s[BLAS1_WG], q[BLAS1_WG];
   if (kr_over(st, k)) return;
   real acc = R(0.0), acc2 = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+  BLAS1_FOR_ROWS(i, n)
+  {
     const real yi = blas1_row_dot(eps * val[row[i]] * x[i], row[i], row[i + 1], col, val, x);
     y[i] = yi;
     acc += a[i] * yi;

@@ -402,7 +402,8 @@ __kernel void mg_begin_down(const uint n, const uint k, const uint ngroups, __gl
   barrier(CLK_LOCAL_MEM_FENCE);
   if (!go) return;
   const real beta = lbeta, omega = lomega;
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+  BLAS1_FOR(i, n)
+  {
     const real w = r[i] + beta * (pp[i] - omega * v[i]);
     const real ti = dw[i] * w;
     p[i] = w;
@@ -432,7 +433,8 @@ __kernel void mg_s_down(const uint n, const uint k, const uint ngroups, __global
   if (!go) return;
   const real alpha = lalpha;
   real acc = R(0.0);
-  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+  BLAS1_FOR(i, n)
+  {
     const real w = r[i] - alpha * v[i];
     const real ti = dw[i] * w;
     s[i] = w;
