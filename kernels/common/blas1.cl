@@ -6,21 +6,44 @@
 #define BLAS1_WG 64
 #endif
 
-/* The rows of a reduction's work-item: strided by the launch's size (BLAS1_FOR), so that
- * neighbouring items take neighbouring rows: coalesced on a GPU, and on a CPU, where PoCL runs a
- * work-group's items as one loop vectorised across them, contiguous vectors. A kernel whose item
- * sums a stored row (kr_spmv_dot, kr_residual_csr) is not vectorised there: each item then reads
- * its rows apart from the others', and a contiguous run of rows per item (BLAS1_FOR_ROWS with
- * BLAS1_CONTIGUOUS_ROWS, the host's choice on all but a GPU, prog.c) reads them in order: PoCL on
- * 2 cores, kr_spmv_dot on the 240² cavity (58560 rows) 682 µs a launch against 2695 strided,
- * kr_residual_csr 822 against 3262, on the 120² 163 against 193 (the vector kernels, kr_s,
- * kr_begin, took 3 times as long in runs there). Every item loops over a whole run and skips the
- * rows past n: with a trip count of its own, 0 past the last row, PoCL 3.1 entered the loop of a
- * work-group's first empty item when the group's others had rows, and ran it 2^32 times (the 80²
- * to 130² cavities, where n is no multiple of the run). */
-#define BLAS1_FOR(i, n) for (uint i = get_global_id(0); i < (n); i += get_global_size(0))
+/* The rows of a reduction's work-item. On a GPU both loops below stride by the launch's size, so
+ * that neighbouring items take neighbouring rows (coalesced). On other devices (the host's
+ * BLAS1_CONTIGUOUS_ROWS, prog.c; CLSPH_REDUCE_ROWS chooses) PoCL runs a work-group's items one
+ * after the other as a loop, vectorised across them where it can: BLAS1_FOR gives each work-group
+ * a contiguous chunk of rows, its items strided by the group's size (contiguous vectors, and one
+ * stream a group instead of one every launch's size), and BLAS1_FOR_ROWS, for the kernels whose
+ * item sums a stored row (kr_spmv_dot, kr_residual_csr), which PoCL does not vectorise, gives each
+ * item a contiguous run of rows, read in order. PoCL on 2 cores, the 240² cavity (58560 rows),
+ * µs a launch, strided → these: kr_spmv_dot 2739 → 758, kr_residual_csr 3231 → 884,
+ * kr_end_iteration 430 → 182, kr_begin 244 → 116; on the 120² about the same either way, but
+ * kr_spmv_dot 226 → 177 (with contiguous runs in the vector kernels too they took 3 times as long
+ * there). Every item loops as many times as the group's others and skips the rows past its end:
+ * with a trip count of its own, 0 past the last row, PoCL 3.1 entered the loop of a work-group's
+ * first empty item when the group's others had rows, and ran it 2^32 times (the 80² to 130²
+ * cavities). The sums' order is fixed by the launch, so the same on every run. */
 #ifndef BLAS1_CONTIGUOUS_ROWS
 #define BLAS1_CONTIGUOUS_ROWS 0
+#endif
+#if BLAS1_CONTIGUOUS_ROWS
+/* the work-group's chunk of rows, blas1_chunk(n) of them from group × blas1_chunk(n); each item
+ * loops over the chunk rounded up to the group's size */
+uint blas1_chunk(const uint n)
+{
+  const uint groups = (uint)get_num_groups(0);
+  return (n + groups - 1u) / groups;
+}
+uint blas1_chunk_span(const uint n)
+{
+  const uint l = (uint)get_local_size(0);
+  return (blas1_chunk(n) + l - 1u) / l * l;
+}
+#define BLAS1_FOR(i, n)                                                                            \
+  for (uint i##_c = (uint)get_local_id(0), i##_k = blas1_chunk(n), i##_s = blas1_chunk_span(n),    \
+            i = (uint)get_group_id(0) * i##_k + i##_c;                                             \
+       i##_c < i##_s; i##_c += (uint)get_local_size(0), i += (uint)get_local_size(0))              \
+    if (i##_c < i##_k && i < (n))
+#else
+#define BLAS1_FOR(i, n) for (uint i = get_global_id(0); i < (n); i += get_global_size(0))
 #endif
 #if BLAS1_CONTIGUOUS_ROWS
 uint blas1_run(const uint n)
