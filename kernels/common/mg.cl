@@ -402,7 +402,7 @@ __kernel void mg_begin_down(const uint n, const uint k, const uint ngroups, __gl
   barrier(CLK_LOCAL_MEM_FENCE);
   if (!go) return;
   const real beta = lbeta, omega = lomega;
-  BLAS1_FOR(i, n)
+  BLAS1_FOR_ROWS(i, n)
   {
     const real w = r[i] + beta * (pp[i] - omega * v[i]);
     const real ti = dw[i] * w;
@@ -433,13 +433,18 @@ __kernel void mg_s_down(const uint n, const uint k, const uint ngroups, __global
   if (!go) return;
   const real alpha = lalpha;
   real acc = R(0.0);
+  /* (s, s) over kr_s's rows (the same sum), the rows' sums over the stored rows' (blas1.cl) */
   BLAS1_FOR(i, n)
+  {
+    const real w = r[i] - alpha * v[i];
+    acc += w * w;
+  }
+  BLAS1_FOR_ROWS(i, n)
   {
     const real w = r[i] - alpha * v[i];
     const real ti = dw[i] * w;
     s[i] = w;
     t[i] = ti;
-    acc += w * w;
     res[i] =
         w - mg_row_dot_s(eps * val[row[i]] * ti, row[i], row[i + 1], col, val, dw, r, v, alpha);
   }
