@@ -13,7 +13,8 @@
 -- (eq 38); floor sets the USAW schemes' wall_distance_floor, the least wall distance of the
 -- viscous wall term in spacings (0: the scheme's, δr/2 for isph-usaw) (the study
 -- cavity_re100_causes in tests/harness/studies.txt measures each); fuse = 1 sets isph-usaw's
--- solver_fuse = "fused" (the README's pressure solver); guess = 0 sets its pressure_guess = "last"
+-- solver_fuse = "fused" and fuse = 2 "separate" (the README's pressure solver; 0 leaves its
+-- "auto": fused on a GPU, separate elsewhere); guess = 0 sets its pressure_guess = "last"
 -- (the solve starts from the last step's pressure instead of the last two extrapolated).
 -- dim = 3 (with riemann = 1) runs it in 3-D: the box `span` spacings deep along z, periodic
 -- there, its lid the face y = 1 sliding at {U, 0, 0} (box_wall { ..., lid_velocity, lid_face }):
@@ -27,10 +28,13 @@ param { re = 100, n = 120, t_end = 30, cfl = 1, wcsph = 0, riemann = 0, ard = 0,
 
 local U = 1
 for _, sw in ipairs({{"guard", guard}, {"corners", corners}, {"shift_velocity", shift_velocity},
-                     {"fuse", fuse}, {"guess", guess}}) do
+                     {"guess", guess}}) do
   if sw[2] ~= 0 and sw[2] ~= 1 then
     error(("cavity: %s must be 0 or 1, not %g"):format(sw[1], sw[2]))
   end
+end
+if fuse ~= 0 and fuse ~= 1 and fuse ~= 2 then
+  error(("cavity: fuse must be 0, 1 or 2, not %g"):format(fuse))
 end
 if not (hdr == 0 or (hdr > 0 and hdr <= 10)) then
   error(("cavity: hdr (h/δr) must be 0 (the scheme's) or in (0, 10], not %g"):format(hdr))
@@ -57,7 +61,7 @@ elseif wcsph == 1 then -- the paper's baseline: c0 = 10 U and a background press
 else
   scheme { "isph-usaw", shifting = shift, wall_guard = guard == 1 and "on" or nil,
            shift_velocity = shift_velocity == 0 and "off" or nil,
-           wall_distance_floor = wall_floor, solver_fuse = fuse == 1 and "fused" or nil,
+           wall_distance_floor = wall_floor, solver_fuse = ({"fused", "separate"})[fuse],
            pressure_guess = guess == 0 and "last" or nil }
 end
 fluid { density = 1, viscosity = U / re }

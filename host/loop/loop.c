@@ -192,10 +192,8 @@ static enum clsph_status blowup_checks(struct sim *sim, int at_end)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
-  CLSPH_TRY(sim_domain_check(sim));
-  CLSPH_TRY(sim_check_flags(sim));
-  if (s->checks.every > 0 && (sim->step % s->checks.every == 0 || at_end))
-    CLSPH_TRY(sim_check_health(sim));
+  const int health = s->checks.every > 0 && (sim->step % s->checks.every == 0 || at_end);
+  CLSPH_TRY(sim_check_step(sim, health));
 done:
   return st;
 }

@@ -77,13 +77,23 @@ done:
   return st;
 }
 
-enum clsph_status sim_check_flags(struct sim *sim)
+static enum clsph_status health_launch(struct sim *sim, real *part, size_t *groups);
+static enum clsph_status health_judge(struct sim *sim, const real *part, size_t groups);
+
+enum clsph_status sim_check_step(struct sim *sim, int health)
 {
   enum clsph_status st = CLSPH_OK;
   cl_uint f[4] = {0, 0, 0, 0}; /* flags.h: bits, behind walls, deepest, left the domain */
   float depth = 0.0f;          /* the deepest crossing of the step, m */
-  /* the step-end maxima come with the flags: one wait */
+  real *part = NULL;           /* the health sums' partials */
+  size_t groups = 0;
+  /* the domain check, the step-end maxima and the health sums come with the flags: one wait */
   CLSPH_TRY(sim_deferred_enqueue(sim));
+  if (health) {
+    part = malloc(5 * SIM_REDUCE_MAX_GROUPS * sizeof *part);
+    CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
+    CLSPH_TRY(health_launch(sim, part, &groups));
+  }
   CLSPH_TRY(kern_read(sim->dev, sim->d_flags, sizeof f, f));
   sim_deferred_finish(sim);
   cl_uint flags = f[0];
@@ -138,31 +148,43 @@ enum clsph_status sim_check_flags(struct sim *sim)
   } else if (out > 0) {
     st = drop_escaped(sim, out);
   }
+  if (st == CLSPH_OK && health) st = health_judge(sim, part, groups);
 done:
+  free(part);
   return st;
 }
 
-enum clsph_status sim_check_health(struct sim *sim)
+/* The health sums (health.cl), their read queued into part (5 SIM_REDUCE_MAX_GROUPS reals) for
+ * the flags' blocking read to complete. The kernel skips all but the fluid, so the particles the
+ * step-end domain check has just marked as gone (sorted last here) are left out, as they are
+ * dropped. */
+static enum clsph_status health_launch(struct sim *sim, real *part, size_t *groups)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene_checks *c = &sim->scene->checks;
-  const double dr = sim->scene->dr;
-  real *part = NULL;
-  const size_t groups = sim_reduce_groups(sim->ps.n);
-  part = malloc(5 * groups * sizeof *part);
-  CLSPH_CHECK(part != NULL, CLSPH_E_NOMEM, "out of memory");
+  *groups = sim_reduce_groups(sim->ps.n);
   /* the spacing needs a current cell table (sorting is idempotent: the next step sees the same) */
   CLSPH_TRY(sim_sort(sim));
   cl_uint n = (cl_uint)sim->ps.n;
-  const double limit = c->cluster_h * sim->sm.h; /* the clustering distance, m */
-  const real close = (real)limit;
+  const real close = (real)(c->cluster_h * sim->sm.h); /* the clustering distance, m */
   cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
   cl_mem vol = pset_mem(&sim->ps, sim->f_vol), kind = pset_mem(&sim->ps, sim->f_kind);
   CLSPH_TRY(KERN_SET(sim->k_health, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start),
                      KARG(pos), KARG(vel), KARG(vol), KARG(kind), KARG(close),
                      KARG(sim->d_health)));
-  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_health, groups * 64, 64, NULL));
-  CLSPH_TRY(kern_read(sim->dev, sim->d_health, 5 * groups * sizeof *part, part));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_health, *groups * 64, 64, NULL));
+  CLSPH_TRY(kern_read_nb(sim->dev, sim->d_health, 0, 5 * *groups * sizeof *part, part));
+done:
+  return st;
+}
+
+/* The health checks on the sums health_launch has read. */
+static enum clsph_status health_judge(struct sim *sim, const real *part, size_t groups)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene_checks *c = &sim->scene->checks;
+  const double dr = sim->scene->dr;
+  const double limit = c->cluster_h * sim->sm.h; /* the clustering distance, m */
   double e = 0.0, v = 0.0, clustered = 0.0, count = 0.0, dmin = HUGE_VAL;
   for (size_t g = 0; g < groups; ++g) {
     e += (double)part[5 * g];
@@ -200,6 +222,5 @@ enum clsph_status sim_check_health(struct sim *sim)
     st = sim_fail(sim, "energy");
   }
 done:
-  free(part);
   return st;
 }

@@ -19,7 +19,8 @@ void sim_open_sides(const struct scene *s, int open_lo[3], int open_hi[3])
   }
 }
 
-enum clsph_status sim_domain_check(struct sim *sim)
+enum clsph_status sim_step_end(struct sim *sim, int nvec, const cl_mem *vec, const int *kinds,
+                               const size_t *slot)
 {
   enum clsph_status st = CLSPH_OK;
   const struct scene *s = sim->scene;
@@ -32,13 +33,18 @@ enum clsph_status sim_domain_check(struct sim *sim)
     hi.s[a] = (real)s->hi[a];
     open |= (up_hi[a] ? 1u << a : 0u) | (up_lo[a] ? 16u << a : 0u);
   }
+  CLSPH_CHECK(nvec >= 0 && nvec <= 2, CLSPH_E_INPUT, "step_end takes 0 to 2 vectors, not %d", nvec);
   const real margin = (real)s->dr;
-  cl_uint n = (cl_uint)sim->ps.n;
+  const cl_uint n = (cl_uint)sim->ps.n, nv = (cl_uint)nvec;
   cl_mem pos = pset_mem(&sim->ps, sim->f_pos), kind = pset_mem(&sim->ps, sim->f_kind);
-  if (n == 0) goto done;
-  CLSPH_TRY(KERN_SET(sim->k_domain, KARG(n), KARG(pos), KARG(kind), KARG(lo), KARG(hi),
-                     KARG(margin), KARG(open), KARG(sim->d_flags)));
-  CLSPH_TRY(kern_launch(sim->dev, sim->k_domain, sim->ps.n, NULL));
+  cl_mem v0 = nvec > 0 ? vec[0] : pos, v1 = nvec > 1 ? vec[1] : v0;
+  const cl_int k0 = nvec > 0 ? kinds[0] : -1, k1 = nvec > 1 ? kinds[1] : -1;
+  const cl_uint at0 = nvec > 0 ? (cl_uint)slot[0] : 0u, at1 = nvec > 1 ? (cl_uint)slot[1] : 0u;
+  const size_t groups = sim_reduce_groups(sim->ps.n);
+  CLSPH_TRY(KERN_SET(sim->k_step_end, KARG(n), KARG(pos), KARG(kind), KARG(lo), KARG(hi),
+                     KARG(margin), KARG(open), KARG(nv), KARG(v0), KARG(k0), KARG(at0), KARG(v1),
+                     KARG(k1), KARG(at1), KARG(sim->d_deferred), KARG(sim->d_flags)));
+  CLSPH_TRY(kern_launch_wg(sim->dev, sim->k_step_end, groups * 64, 64, NULL));
 done:
   return st;
 }

@@ -126,14 +126,53 @@ done:
   return st;
 }
 
-/* The deferred maxima and, when max_dt has asked for it, the largest speed: launched here, read
- * with one non-blocking transfer that the flags' blocking read completes (sim_check_flags). */
+enum clsph_status sim_max_field_deferred(struct sim *sim, int field, int kind, double *dest)
+{
+  enum clsph_status st = CLSPH_OK;
+  CLSPH_CHECK(sim->nlazy < SIM_DEFERRED, CLSPH_E_INPUT, "more than %d step-end maxima in one step",
+              SIM_DEFERRED);
+  sim->lazy[sim->nlazy].field = field;
+  sim->lazy[sim->nlazy].kind = kind;
+  sim->lazy[sim->nlazy++].dest = dest;
+done:
+  return st;
+}
+
+/* The domain check, the largest speed when max_dt has asked for it and the fields' maxima asked
+ * for this step: one launch (domain.cl step_end; a third vector and more launch their own), then
+ * one non-blocking transfer of every deferred maximum that the flags' blocking read completes
+ * (sim_check_step). */
 enum clsph_status sim_deferred_enqueue(struct sim *sim)
 {
   enum clsph_status st = CLSPH_OK;
-  if (sim->speed_kind != SIM_KIND_UNSET)
-    CLSPH_TRY(
-        sim_max_norm_deferred(sim, pset_mem(&sim->ps, sim->f_vel), sim->speed_kind, &sim->speed));
+  cl_mem vec[2];
+  int kinds[2], nvec = 0;
+  size_t slot[2];
+  double *dest[2];
+  if (sim->speed_kind != SIM_KIND_UNSET) {
+    vec[nvec] = pset_mem(&sim->ps, sim->f_vel);
+    kinds[nvec] = sim->speed_kind;
+    dest[nvec++] = &sim->speed;
+  }
+  for (int k = 0; k < sim->nlazy; ++k) {
+    cl_mem v = pset_mem(&sim->ps, sim->lazy[k].field); /* as the step's sorts have left it */
+    if (nvec < 2) {
+      vec[nvec] = v;
+      kinds[nvec] = sim->lazy[k].kind;
+      dest[nvec++] = sim->lazy[k].dest;
+    } else
+      CLSPH_TRY(sim_max_norm_deferred(sim, v, sim->lazy[k].kind, sim->lazy[k].dest));
+  }
+  sim->nlazy = 0;
+  const size_t groups = sim_reduce_groups(sim->ps.n);
+  CLSPH_CHECK(sim->ndeferred + nvec <= SIM_DEFERRED, CLSPH_E_INPUT,
+              "more than %d step-end maxima in one step", SIM_DEFERRED);
+  for (int v = 0; v < nvec; ++v) {
+    slot[v] = (size_t)sim->ndeferred * SIM_REDUCE_MAX_GROUPS;
+    sim->deferred_groups[sim->ndeferred] = groups;
+    sim->deferred_to[sim->ndeferred++] = dest[v];
+  }
+  CLSPH_TRY(sim_step_end(sim, nvec, vec, kinds, slot));
   if (sim->ndeferred > 0)
     CLSPH_TRY(kern_read_nb(sim->dev, sim->d_deferred, 0,
                            (size_t)sim->ndeferred * SIM_REDUCE_MAX_GROUPS * sizeof(real),

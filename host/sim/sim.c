@@ -347,7 +347,7 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
   CLSPH_TRY(prog_kernel(sim.prog, "probe_sample", &sim.k_probe));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_max_speed", &sim.k_max_speed));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_count", &sim.k_count));
-  CLSPH_TRY(prog_kernel(sim.prog, "domain_check", &sim.k_domain));
+  CLSPH_TRY(prog_kernel(sim.prog, "step_end", &sim.k_step_end));
   CLSPH_TRY(prog_kernel(sim.prog, "reduce_slice_velocity", &sim.k_slice));
   CLSPH_TRY(prog_kernel(sim.prog, "health_sums", &sim.k_health));
   CLSPH_TRY(kern_buffer(dev, 5 * sim_reduce_groups(sim.ps.cap) * sizeof(real), NULL, &sim.d_health,
@@ -491,13 +491,13 @@ void sim_destroy(struct sim *sim)
   if (sim->k_probe != NULL) clReleaseKernel(sim->k_probe);
   if (sim->k_max_speed != NULL) clReleaseKernel(sim->k_max_speed);
   if (sim->k_count != NULL) clReleaseKernel(sim->k_count);
-  if (sim->k_domain != NULL) clReleaseKernel(sim->k_domain);
+  if (sim->k_step_end != NULL) clReleaseKernel(sim->k_step_end);
   if (sim->k_slice != NULL) clReleaseKernel(sim->k_slice);
   if (sim->k_health != NULL) clReleaseKernel(sim->k_health);
   sim->k_probe = sim->k_max_speed = sim->k_count = sim->k_slice = NULL;
   free(sim->probe_cache.v);
   sim->probe_cache.v = NULL;
-  sim->k_domain = NULL;
+  sim->k_step_end = NULL;
   sim->k_health = NULL;
   kern_release(&sim->d_health);
   kern_release(&sim->d_inv);

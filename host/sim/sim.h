@@ -48,18 +48,23 @@ struct sim {
   cl_kernel k_probe;     /* interpolation at arbitrary points */
   cl_kernel k_max_speed; /* reduction */
   cl_mem d_partial;      /* per-work-group partial results of reductions */
-  /* maxima read with the flags at the end of the step (sim_check_flags), so that the host waits
+  /* maxima read with the flags at the end of the step (sim_check_step), so that the host waits
    * once there: the largest speed the next max_dt asks for, and sim_max_norm_deferred's */
   cl_mem d_deferred; /* SIM_DEFERRED slots of SIM_REDUCE_MAX_GROUPS partials */
   real *h_deferred;
   double *deferred_to[SIM_DEFERRED];    /* where each launched slot's maximum goes */
   size_t deferred_groups[SIM_DEFERRED]; /* and how many partials it has */
   int ndeferred;                        /* slots launched this step */
+  struct sim_lazy {                     /* sim_max_field_deferred: launched at the step's end */
+    int field, kind;
+    double *dest;
+  } lazy[SIM_DEFERRED];
+  int nlazy;
   int speed_kind;  /* the kind sim_max_speed was last asked for (SIM_KIND_UNSET: never) */
   int speed_ready; /* 1: speed is the step-end value for the next sim_max_speed(speed_kind) */
   double speed;
   cl_kernel k_count;    /* reduction: nonzero entries of a uint field */
-  cl_kernel k_domain;   /* fluid outside the domain's box (domain.c) */
+  cl_kernel k_step_end; /* the domain check and the step-end maxima (domain.c) */
   cl_mem d_inv;         /* current index of each original particle index (after sim_sort:
                          * grid_sort_inv) */
   double body_force[3]; /* body force now, m/s²: the scene's, x under flow-rate control */
@@ -122,7 +127,7 @@ struct sim {
   cl_kernel k_health; /* reduction: kinetic energy, volume and spacing of the fluid */
   cl_mem d_health;    /* its per-work-group results */
   double u_ref;       /* the scene's velocity scale of the energy check, m/s (0: no check) */
-  /* health checks of this run (sim_check_health), the whole-run state a restart continues:
+  /* health checks of this run (sim_check_step), the whole-run state a restart continues:
    * health_checks     checks done;
    * energy_ratio_max  the largest kinetic energy of the fluid over ½ M U² (U = u_ref);
    * spacing_min       the smallest nearest-fluid-neighbour distance over dr (HUGE_VAL: none yet);
@@ -159,28 +164,32 @@ enum clsph_status sim_create(const struct dev *dev, const struct scene *scene, s
 enum clsph_status sim_info(struct sim *sim);
 /** @brief Sort the particles by cell and reorder every field (before each step). */
 enum clsph_status sim_sort(struct sim *sim);
-/** @brief Read the error flags; a raised flag ends the run with a reason in sim->status and its
- *  class in sim->failure, except CLSPH_FLAG_WALL (a fluid particle behind a wall), which is
- *  counted and cleared, and ends the run only when the particle is more than the scene's
- *  checks.wall_depth dr behind the wall. Fluid that left the domain (sim_domain_check) is
- *  counted and dropped: sorted past the other particles, which then number fewer (sim->ps.n);
- *  the run ends when more than checks.escaped of the fluid has left. */
-enum clsph_status sim_check_flags(struct sim *sim);
-/** @brief The health checks (scene checks): particle clustering, the fraction of the fluid
- *  whose nearest fluid neighbour is closer than checks.cluster_h h (h the smoothing length),
- *  above checks.cluster_fraction; and energy growth, the kinetic energy of the fluid above
- *  checks.energy times ½ M U² (M its mass, U = sim->u_ref). Reduced on the device; a failed
- *  check ends the run (CLSPH_E_BLOWUP) with the reason in sim->status and sim->failure. */
-enum clsph_status sim_check_health(struct sim *sim);
+/** @brief The checks at a step's end, with one wait: the domain check and the step-end maxima
+ *  (sim_deferred_enqueue), the health checks when `health`, then the error flags. A raised flag
+ *  ends the run with a reason in sim->status and its class in sim->failure, except
+ *  CLSPH_FLAG_WALL (a fluid particle behind a wall), which is counted and cleared, and ends the
+ *  run only when the particle is more than the scene's checks.wall_depth dr behind the wall.
+ *  Fluid that left the domain (sim_step_end) is counted and dropped: sorted past the other
+ *  particles, which then number fewer (sim->ps.n); the run ends when more than checks.escaped of
+ *  the fluid has left. The health checks (scene checks): particle clustering, the fraction of the
+ *  fluid whose nearest fluid neighbour is closer than checks.cluster_h h (h the smoothing
+ *  length), above checks.cluster_fraction; and energy growth, the kinetic energy of the fluid
+ *  above checks.energy times ½ M U² (M its mass, U = sim->u_ref). A failed check ends the run
+ *  (CLSPH_E_BLOWUP) with the reason in sim->status and sim->failure. */
+enum clsph_status sim_check_step(struct sim *sim, int health);
 /** @brief Record a failed check: its class into sim->failure (the reason is already in
  *  sim->status), logged once; returns CLSPH_E_BLOWUP. */
 enum clsph_status sim_fail(struct sim *sim, const char *failure);
 /** @brief Flow-rate control (Leroy et al. 2014 eqs 67-68): set the x body force for a step of
  *  length dt from the slice velocity; one row to `log` (flow_control.csv) when not NULL. */
 enum clsph_status sim_flow_control(struct sim *sim, double dt, FILE *log);
-/** @brief Mark and count (for sim_check_flags) the fluid particles more than dr beyond the
- *  domain's box on a non-periodic axis, but for the side gravity points away from. */
-enum clsph_status sim_domain_check(struct sim *sim);
+/** @brief (sim_deferred_enqueue) One launch at the step's end: mark and count (for
+ *  sim_check_step) the fluid particles more than dr beyond the domain's box on a non-periodic axis,
+ *  but for the side gravity points away from; then the largest norm of nvec (0 to 2) vectors, each
+ *  over the particles of its kind (−1: all) as the check leaves them, into d_deferred from
+ *  slot[v] on. */
+enum clsph_status sim_step_end(struct sim *sim, int nvec, const cl_mem *vec, const int *kinds,
+                               const size_t *slot);
 /** @brief The sides gravity points away from (more than half of it along the axis), open to
  *  splashes: 1 per axis for its lower and upper side; 0 for periodic and absent axes. */
 void sim_open_sides(const struct scene *s, int open_lo[3], int open_hi[3]);
@@ -195,15 +204,19 @@ void sim_moved_offset(const struct sim *sim, double t, double d[3]);
 /** @brief Largest norm of a vector field (2 reals per particle) over one kind (−1: all). */
 enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *vmax);
 /** @brief The same maximum without waiting for it: *dest receives it at the step's end, when
- *  sim_check_flags reads it with the flags (dest must outlive the step). */
+ *  sim_check_step reads it with the flags (dest must outlive the step). */
 enum clsph_status sim_max_norm_deferred(struct sim *sim, cl_mem d_vec, int kind, double *dest);
+/** @brief The largest norm of a particle field (a vector) at the step's end, in the launch of the
+ *  domain check (sim_step_end): the field as it stands then, reordered by the step's sorts, into
+ *  *dest (which must outlive the step) with the flags' read. */
+enum clsph_status sim_max_field_deferred(struct sim *sim, int field, int kind, double *dest);
 /** @brief sim_count without waiting: part (SIM_REDUCE_MAX_GROUPS reals) receives `groups` partial
  *  counts to add up once a later blocking transfer has returned. */
 enum clsph_status sim_count_queued(struct sim *sim, cl_mem d_field, real *part, size_t *groups);
-/** @brief (sim_check_flags) Launch the step-end speed and queue the read of every deferred
- *  maximum. */
+/** @brief (sim_check_step) Launch the domain check with the step-end speed and fields' maxima
+ *  (sim_step_end) and queue the read of every deferred maximum. */
 enum clsph_status sim_deferred_enqueue(struct sim *sim);
-/** @brief (sim_check_flags, after a blocking read) Hand each deferred maximum to its place. */
+/** @brief (sim_check_step, after a blocking read) Hand each deferred maximum to its place. */
 void sim_deferred_finish(struct sim *sim);
 /** @brief Mean x velocity and count of the fluid particles with x0 <= x < x1 (modulo the period
  *  on a periodic x axis), reduced on the device. */

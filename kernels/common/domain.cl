@@ -10,13 +10,8 @@
  * falls back, the cell grid clamping it into its top cells. The grid itself reaches several
  * spacings beyond the domain, for the wall and section layers: its own escape test alone let a
  * jet run 0.75 m out of a unit box. */
-__kernel void domain_check(const uint n, __global const realv *pos, __global uint *kind,
-                           const real4 lo, const real4 hi, const real margin, const uint open,
-                           __global uint *flags)
+int domain_left(const realv x, const real4 lo, const real4 hi, const real margin, const uint open)
 {
-  const uint i = get_global_id(0);
-  if (i >= n || kind[i] != 0u) return;
-  const realv x = pos[i];
   int beyond = 0, far = 0, above = 0;
 #define DOMAIN_AXIS(C, A, PER)                                                                     \
   if (!(PER)) {                                                                                    \
@@ -42,8 +37,48 @@ __kernel void domain_check(const uint n, __global const realv *pos, __global uin
   DOMAIN_AXIS(REALV_Z(x), 2, PERIODIC_Z)
 #endif
 #undef DOMAIN_AXIS
-  if (far || (beyond && above)) {
-    kind[i] = CLSPH_KIND_OUT;
-    atomic_inc(&flags[3]);
+  return far || (beyond && above);
+}
+
+/* The step's end in one launch (host/sim/domain.c, sim_step_end): the domain check above over
+ * the fluid, then the largest norm of up to `nvec` (0 to 2) vector fields, v0 over the particles
+ * of kind kind0 and v1 over kind1 (all kinds when negative), the kinds as the check leaves them:
+ * one partial per work-group at partial[at0 + group] and partial[at1 + group] (reduce.cl's
+ * layout), a non-finite norm raising CLSPH_FLAG_NAN. */
+__kernel void step_end(const uint n, __global const realv *pos, __global uint *kind, const real4 lo,
+                       const real4 hi, const real margin, const uint open, const uint nvec,
+                       __global const realv *v0, const int kind0, const uint at0,
+                       __global const realv *v1, const int kind1, const uint at1,
+                       __global real *partial, __global uint *flags)
+{
+  __local real s[REDUCE_WG];
+  const uint l = get_local_id(0);
+  real m0 = R(0.0), m1 = R(0.0);
+  for (uint i = get_global_id(0); i < n; i += get_global_size(0)) {
+    uint k = kind[i];
+    if (k == 0u && domain_left(pos[i], lo, hi, margin, open)) {
+      kind[i] = k = CLSPH_KIND_OUT;
+      atomic_inc(&flags[3]);
+    }
+    if (nvec > 0u && (kind0 < 0 || k == (uint)kind0)) {
+      const real a = length(v0[i]);
+      if (!isfinite(a)) flags_raise(flags, CLSPH_FLAG_NAN);
+      m0 = fmax(m0, a);
+    }
+    if (nvec > 1u && (kind1 < 0 || k == (uint)kind1)) {
+      const real a = length(v1[i]);
+      if (!isfinite(a)) flags_raise(flags, CLSPH_FLAG_NAN);
+      m1 = fmax(m1, a);
+    }
+  }
+  if (nvec > 0u) {
+    s[l] = m0;
+    reduce_local_max(s);
+    if (l == 0u) partial[at0 + get_group_id(0)] = s[0];
+  }
+  if (nvec > 1u) {
+    s[l] = m1;
+    reduce_local_max(s);
+    if (l == 0u) partial[at1 + get_group_id(0)] = s[0];
   }
 }

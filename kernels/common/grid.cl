@@ -58,6 +58,11 @@ int grid_axis(real x, real lo, real inv_cell, int n, int periodic, int open, int
 {
   const real u = (x - lo) * inv_cell;
   int c;
+  if (isnan(u)) { /* a non-finite position (whose kernel has raised CLSPH_FLAG_NAN): a cell in
+                   * the grid, as (int) NaN is none (a sort may run before the flags are read) */
+    *escaped = 1;
+    return 0;
+  }
   if (periodic) {
     c = (int)floor(u);
     c %= n;

@@ -17,7 +17,9 @@
  * same loops make the pressure equation's right-hand side (isph_ppe_rhs, ppe.cl, in the same
  * order: the same bits), which a row takes from its own flag alone unless density_relaxation is
  * on: one sweep over the neighbours and the segments' quadrature a step less (the wedge: about
- * 2.7 of 45 ms a step). */
+ * 2.7 of 45 ms a step). The same launch counts the free-surface rows into count[0] (which the
+ * host reads with the pressure solve's first wait) and, with guess, makes the solve's initial
+ * guess: two launches a step less. */
 #ifndef ISPH_IMPACT_STEPS
 #define ISPH_IMPACT_STEPS 10
 #endif
@@ -53,10 +55,19 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
                                 __global realv *normal, const uint with_rhs,
                                 __global const realv *ustar, __global const realv *visc,
                                 const real rho, const realv gravity, const real surface_offset,
-                                __global const realv *acc, __global real *rhs)
+                                __global const realv *acc, __global real *rhs, const uint guess,
+                                const real theta, __global real *P, __global real *P_last,
+                                __global uint *count)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
+  if (guess) { /* the pressure solve's initial guess, P extrapolated linearly in time from the last
+                * two steps' solutions: P + θ (P − P_last), θ = δt_n / δt_(n−1) (0 at a run's
+                * first step); P_last <- P */
+    const real last = P[i];
+    P[i] = last + theta * (last - P_last[i]);
+    P_last[i] = last;
+  }
   if (kind[i] > ISPH_VERTEX) {
     free_surface[i] = 0u;
     if (with_rhs) rhs[i] = R(0.0);
@@ -122,6 +133,7 @@ __kernel void isph_free_surface(USAW_PART_ARGS, USAW_SEG_ARGS, __global const re
   const int dry = wet < ISPH_WET * gam[i], splash = wet < ISPH_SPLASH * gam[i];
   const uint fs = kind[i] == ISPH_VERTEX ? dry : d <= R(1.5) && (!hitting || splash);
   free_surface[i] = fs;
+  if (fs) atomic_inc(count); /* zeroed by the step's first half move (move.cl) */
   if (with_rhs)
     rhs[i] = fs ? isph_rhs_surface(rho, surface_offset, gravity, acc[i], nrm, x)
                 : rho / dt * div + R(2.0) * rho * wall;

@@ -92,18 +92,6 @@ __kernel void isph_ppe_rhs(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   if (relax > R(0.0) && kind[i] == ISPH_FLUID && !near_surface) rhs[i] += relax * (gam[i] - dens);
 }
 
-/* The pressure solve's initial guess, P extrapolated linearly in time from the last two steps'
- * solutions: P + θ (P − P_last), θ = δt_n / δt_(n−1) (0 at a run's first step); P_last <- P. */
-__kernel void isph_pressure_guess(const uint n, const real theta, __global real *P,
-                                  __global real *P_last)
-{
-  const uint i = get_global_id(0);
-  if (i >= n) return;
-  const real a = P[i];
-  P[i] = a + theta * (a - P_last[i]);
-  P_last[i] = a;
-}
-
 /* p̃ = P + ρ g·r */
 __kernel void isph_pressure(const uint n, __global const realv *pos, __global const real *P,
                             const real rho, const realv gravity, __global real *p)

@@ -38,9 +38,10 @@ struct isph {
   int f_p, f_P, f_ustar, f_visc, f_gam, f_ggam, f_free, f_theta, f_shift, f_vnew, f_rhs, f_divr,
       f_acc, f_normal, f_acc_p, f_P_last;
   cl_kernel k_half, k_predict, k_free, k_rhs, k_pressure, k_no_tension, k_project, k_shift, k_apply,
-      k_strain, k_guess;
+      k_strain;
   cl_mem d_strain;  /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
   cl_mem d_guess;   /* the pressure solve's initial guess, kept for a second try (solve) */
+  cl_mem d_count;   /* the free-surface rows of the step (free_surface.cl; zeroed by move.cl) */
   long resolves;    /* solves tried again with a reinforced diagonal */
   double c_shift;   /* shifting coefficient (0: off) */
   double fs_offset; /* distance of the free surface beyond its particles, in dr */
@@ -53,7 +54,7 @@ struct isph {
    * acceleration of the last step, m/s² (the next step's length), and whether the last step had a
    * free surface (1, 0; −1: not known yet), the guess for this one's pressure equation */
   double carry[2];
-  real part[SIM_REDUCE_MAX_GROUPS]; /* the free-surface count's partials (queued read) */
+  cl_uint nfree; /* the free-surface rows' count (queued read) */
 };
 #define ISPH_ACC  0
 #define ISPH_FREE 1
@@ -180,10 +181,10 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
    * on the particles. free_surface_offset = 0 gives that literal reading. */
   is->fs_offset = 0.5;
   /* The pressure solve starts from the last two steps' P extrapolated linearly in time
-   * (isph_pressure_guess, ppe.cl) rather than from the last step's: BiCGStab stops at
-   * solver_rtol ||b||, so a closer start saves iterations. 40² cavity, Re 100, to t = 5 s: 7.02 →
-   * 6.49 iterations a step; 120², Re 1000, to 1.5 s: 10.57 → 10.37; the wedge dam break to 0.5 s
-   * 10.33 → 10.12. */
+   * (in isph_free_surface's launch, free_surface.cl) rather than from the last step's: BiCGStab
+   * stops at solver_rtol ||b||, so a closer start saves iterations. 40² cavity, Re 100, to t = 5
+   * s: 7.02 → 6.49 iterations a step; 120², Re 1000, to 1.5 s: 10.57 → 10.37; the wedge dam break
+   * to 0.5 s 10.33 → 10.12. */
   is->guess_linear = 1;
   for (int i = 0; i < sim->scene->noptions; ++i) {
     const struct scene_option *o = &sim->scene->options[i];
@@ -306,16 +307,16 @@ static enum clsph_status isph_create(struct sim *sim, void **state)
   struct {
     cl_kernel *k;
     const char *name;
-  } ks[] = {{&is->k_half, "isph_half_move"},      {&is->k_predict, "usaw_predict"},
-            {&is->k_free, "isph_free_surface"},   {&is->k_rhs, "isph_ppe_rhs"},
-            {&is->k_pressure, "isph_pressure"},   {&is->k_no_tension, "isph_no_tension"},
-            {&is->k_project, "isph_project"},     {&is->k_shift, "isph_shift"},
-            {&is->k_apply, "isph_apply_shift"},   {&is->k_strain, "usaw_vertex_strain"},
-            {&is->k_guess, "isph_pressure_guess"}};
+  } ks[] = {{&is->k_half, "isph_half_move"},    {&is->k_predict, "usaw_predict"},
+            {&is->k_free, "isph_free_surface"}, {&is->k_rhs, "isph_ppe_rhs"},
+            {&is->k_pressure, "isph_pressure"}, {&is->k_no_tension, "isph_no_tension"},
+            {&is->k_project, "isph_project"},   {&is->k_shift, "isph_shift"},
+            {&is->k_apply, "isph_apply_shift"}, {&is->k_strain, "usaw_vertex_strain"}};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     CLSPH_TRY(prog_kernel(sim->prog, ks[k].name, ks[k].k));
   CLSPH_TRY(kern_buffer(sim->dev, 3 * ps->cap * sizeof(real), NULL, &is->d_strain, "strain"));
   CLSPH_TRY(kern_buffer(sim->dev, ps->cap * sizeof(real), NULL, &is->d_guess, "pressure guess"));
+  CLSPH_TRY(kern_buffer(sim->dev, sizeof(cl_uint), NULL, &is->d_count, "free-surface count"));
   CLSPH_TRY(usaw_turb_create(sim, &is->turb));
   CLSPH_TRY(poisson_op_create(sim->dev, sim->prog, &is->po));
   CLSPH_TRY(psolve_create(sim->dev, sim->prog, ps->cap, &is->popt, &is->ps));
@@ -339,7 +340,7 @@ static enum clsph_status half_move(struct sim *sim, struct isph *is, double dt)
   cl_mem pos = pset_mem(&sim->ps, sim->f_pos), vel = pset_mem(&sim->ps, sim->f_vel);
   cl_mem kind = pset_mem(&sim->ps, sim->f_kind);
   CLSPH_TRY(KERN_SET(is->k_half, KARG(n), KARG(hdt), KARG(sim->grid.geom), KARG(pos), KARG(vel),
-                     KARG(kind), KARG(sim->d_flags)));
+                     KARG(kind), KARG(sim->d_flags), KARG(is->d_count)));
   CLSPH_TRY(kern_launch(sim->dev, is->k_half, sim->ps.n, NULL));
 done:
   return st;
@@ -452,17 +453,27 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_free, &i, sizeof off, &off));
   CLSPH_TRY(arg(is->k_free, &i, sizeof acc_last, &acc_last));
   CLSPH_TRY(arg(is->k_free, &i, sizeof rhs, &rhs));
+  /* the solve's initial guess (free_surface.cl): none before the first step */
+  const cl_uint guess_now = (cl_uint)is->guess_linear;
+  const real theta = (real)(sim->dt > 0.0 ? dt / sim->dt : 0.0);
+  cl_mem Pl = pset_mem(ps, is->f_P_last);
+  CLSPH_TRY(arg(is->k_free, &i, sizeof guess_now, &guess_now));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof theta, &theta));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof P, &P));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof Pl, &Pl));
+  CLSPH_TRY(arg(is->k_free, &i, sizeof is->d_count, &is->d_count));
   CLSPH_TRY(kern_launch(sim->dev, is->k_free, ps->n, NULL));
   /* A free surface makes the pressure equation regular; without one it is singular (reinforced).
    * The count comes with the solve's first wait: the last step's answer is the guess, and a wrong
    * one (a surface appeared or closed) solves again with the right form. */
   double nfree = 0.0;
-  size_t groups = 0;
   const int known = is->carry[ISPH_FREE] >= 0.0;
   if (known)
-    CLSPH_TRY(sim_count_queued(sim, fs, is->part, &groups));
-  else
-    CLSPH_TRY(sim_count(sim, fs, &nfree));
+    CLSPH_TRY(kern_read_nb(sim->dev, is->d_count, 0, sizeof is->nfree, &is->nfree));
+  else {
+    CLSPH_TRY(kern_read(sim->dev, is->d_count, sizeof is->nfree, &is->nfree));
+    nfree = (double)is->nfree;
+  }
   const int guess = known ? is->carry[ISPH_FREE] > 0.0 : nfree > 0.0;
   /* 4. pressure equation: P = p̃ + ρgz, previous P as the initial guess; the right-hand side
    * here where the relaxation reads the neighbours' flags */
@@ -485,16 +496,10 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   is->ps.opt.singular = singular_mode(is, guess);
   cl_uint n = (cl_uint)ps->n;
   poisson_op_bind(&is->po, &sim->grid, ps->n, pos, pset_mem(ps, sim->f_vol), NULL, fs);
-  if (is->guess_linear) { /* the solve's initial guess (ppe.cl): none before the first step */
-    const real theta = (real)(sim->dt > 0.0 ? dt / sim->dt : 0.0);
-    cl_mem Pl = pset_mem(ps, is->f_P_last);
-    CLSPH_TRY(KERN_SET(is->k_guess, KARG(n), KARG(theta), KARG(P), KARG(Pl)));
-    CLSPH_TRY(kern_launch(sim->dev, is->k_guess, ps->n, NULL));
-  }
   struct psolve_result res;
   CLSPH_TRY(solve(sim, is, rhs, P, &res));
   if (known) { /* the solve has waited: the partial counts are here */
-    for (size_t g = 0; g < groups; ++g) nfree += (double)is->part[g];
+    nfree = (double)is->nfree;
     if ((nfree > 0.0) != guess) {
       log_debug("isph-usaw: step %ld: the free surface %s; the pressure equation again, %s",
                 sim->step, guess ? "is gone" : "is back", guess ? "reinforced" : "regular");
@@ -539,7 +544,7 @@ static enum clsph_status isph_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(arg(is->k_project, &i, sizeof acc_p, &acc_p));
   CLSPH_TRY(kern_launch(sim->dev, is->k_project, ps->n, NULL));
   /* largest |u̇_a| of the fluid (49), for the next step's length: read at the step's end */
-  CLSPH_TRY(sim_max_norm_deferred(sim, acc, 0, &is->carry[ISPH_ACC]));
+  CLSPH_TRY(sim_max_field_deferred(sim, is->f_acc, 0, &is->carry[ISPH_ACC]));
   CLSPH_TRY(half_move(sim, is, dt));
   CLSPH_TRY(usaw_walls_turn(&is->walls, sim, sim->time + dt));
   /* 6. shifting at r̃ */
@@ -641,13 +646,13 @@ static void isph_destroy(void *state)
 {
   struct isph *is = state;
   if (is == NULL) return;
-  cl_kernel *ks[] = {&is->k_half,     &is->k_predict,    &is->k_free,    &is->k_rhs,
-                     &is->k_pressure, &is->k_no_tension, &is->k_project, &is->k_shift,
-                     &is->k_apply,    &is->k_strain,     &is->k_guess};
+  cl_kernel *ks[] = {&is->k_half,       &is->k_predict, &is->k_free,  &is->k_rhs,   &is->k_pressure,
+                     &is->k_no_tension, &is->k_project, &is->k_shift, &is->k_apply, &is->k_strain};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   kern_release(&is->d_strain);
   kern_release(&is->d_guess);
+  kern_release(&is->d_count);
   usaw_turb_destroy(&is->turb);
   psolve_destroy(&is->ps);
   poisson_op_destroy(&is->po);

@@ -20,7 +20,7 @@ struct kepsilon {
  *  turbulence { }'s; ν_t = nu_t_start where it is a number (a delayed model's), else C_μ k²/ε. */
 enum clsph_status kepsilon_create(struct sim *sim, double nu_t_start, struct kepsilon *ke);
 /** @brief At the end of a step whose update filled d_nut2: the largest ν_t and the clip counts
- *  come back with the step's closing read (sim_check_flags), without a wait of their own; the
+ *  come back with the step's closing read (sim_check_step), without a wait of their own; the
  *  counts are summary.json's (sim->turb_clip_counts). */
 enum clsph_status kepsilon_step_end(struct sim *sim, struct kepsilon *ke);
 void kepsilon_destroy(struct kepsilon *ke);

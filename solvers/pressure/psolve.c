@@ -50,6 +50,7 @@ void psolve_defaults(struct psolve_options *o)
   o->max_failures = 10;
   o->name = "pressure";
   o->group_max = PSOLVE_GROUP_MAX;
+  o->fuse = PSOLVE_FUSE_AUTO;
 }
 
 static int pick(const char *text, const char *const *names)
@@ -67,7 +68,7 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
   static const char *const applies[] = {"stored", "recompute", NULL};
   static const char *const preconds[] = {"jacobi", "none", "jacobi_sweeps", "multigrid", NULL};
   static const char *const singulars[] = {"regular", "reinforce", "mean", "project", NULL};
-  static const char *const fuses[] = {"separate", "fused", NULL};
+  static const char *const fuses[] = {"separate", "fused", "auto", NULL};
   int k;
   if (strcmp(key, "solver") == 0) {
     CLSPH_CHECK((k = pick(text, methods)) >= 0, CLSPH_E_INPUT,
@@ -111,7 +112,7 @@ enum clsph_status psolve_set(struct psolve_options *o, const char *key, const ch
     o->group_max = (int)number;
   } else if (strcmp(key, "fuse") == 0) {
     CLSPH_CHECK((k = pick(text, fuses)) >= 0, CLSPH_E_INPUT,
-                "solver_fuse must be \"separate\" or \"fused\"");
+                "solver_fuse must be \"separate\", \"fused\" or \"auto\"");
     o->fuse = k;
   } else {
     CLSPH_CHECK(0, CLSPH_E_INPUT, "unknown solver option '%s'", key);
@@ -128,6 +129,9 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
   memset(&ps, 0, sizeof ps);
   ps.dev = dev;
   ps.opt = *opt;
+  /* "auto": fused on a GPU, where a launch costs more against the sweeps; separate elsewhere (on
+   * PoCL the fused sweeps took longer than the launches they save: README) */
+  if (ps.opt.fuse == PSOLVE_FUSE_AUTO) ps.opt.fuse = (dev->type & CL_DEVICE_TYPE_GPU) != 0;
   ps.cap = n > 0 ? n : 1;
   size_t groups = (ps.cap + PSOLVE_WG - 1) / PSOLVE_WG;
   ps.ngroups = groups < 64 ? (int)groups : 64;
@@ -189,7 +193,7 @@ enum clsph_status psolve_create(const struct dev *dev, cl_program prog, size_t n
   CLSPH_TRY(kern_buffer(dev, ((ps.cap + 1) / PSOLVE_SCAN_BLOCK + 2) * sizeof(cl_uint), NULL,
                         &ps.d_block, "csr scan blocks"));
   if (opt->precond == PSOLVE_MULTIGRID) CLSPH_TRY(mg_create(dev, prog, ps.cap, &ps.mg));
-  if (opt->precond == PSOLVE_MULTIGRID && opt->fuse) {
+  if (opt->precond == PSOLVE_MULTIGRID && ps.opt.fuse) {
     CLSPH_TRY(prog_kernel(prog, "mg_begin_down", &ps.k_begin_down));
     CLSPH_TRY(prog_kernel(prog, "mg_s_down", &ps.k_s_down));
     CLSPH_TRY(kern_buffer(dev, ps.cap * sizeof(real), NULL, &ps.d_p2, "solver vector"));

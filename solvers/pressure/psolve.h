@@ -69,8 +69,12 @@ struct psolve_options {
                         * in its block, or Jacobi); 0: never */
   int fuse; /* with the multigrid: 1, the Krylov kernels that make p and s make the cycle's fine
              * level down too (mg.cl's mg_begin_down, mg_s_down: 9 launches an iteration instead of
-             * 11, each fused row sum reading 3 or 4 vectors a neighbour instead of 1) */
+             * 11, each fused row sum reading 3 or 4 vectors a neighbour instead of 1); 0: not;
+             * PSOLVE_FUSE_AUTO (the default): 1 on a GPU, 0 elsewhere (psolve_create) */
 };
+
+/** psolve_options.fuse: fused on a GPU, separate elsewhere. */
+#define PSOLVE_FUSE_AUTO 2
 
 /** Reasons: > 0 converged, < 0 failed. */
 enum psolve_reason {

@@ -419,6 +419,7 @@ static void fused_case(struct dev *dev, const struct pproblem_spec *spec, enum p
   memset(&pf, 0, sizeof pf);
   options(&o, PSOLVE_BICGSTAB, PSOLVE_STORED, PSOLVE_MULTIGRID, sing);
   o.group_max = 0; /* the launches, whatever the size */
+  o.fuse = 0;      /* separate, whatever the device ("auto": check_fused) */
   of = o;
   of.fuse = 1;
   if (!mg_problem(dev, spec, &o, &pp, &ps, &x1, &x2) ||
@@ -470,6 +471,21 @@ static void check_fused(struct dev *dev)
   fused_case(dev, &jit, PSOLVE_REGULAR, "jittered corrected 32");
   fused_case(dev, &sng, PSOLVE_REINFORCE, "singular reinforced 32");
   fused_case(dev, &air, PSOLVE_REGULAR, "Dirichlet 40 under air");
+  /* the default, "auto": fused on a GPU, separate elsewhere */
+  struct psolve_options o;
+  struct pproblem pp;
+  struct psolve ps;
+  memset(&ps, 0, sizeof ps);
+  psolve_defaults(&o);
+  const int gpu = (dev->type & CL_DEVICE_TYPE_GPU) != 0;
+  TC_CHECK(o.fuse == PSOLVE_FUSE_AUTO, "solver_fuse's default is \"auto\" (%d)", o.fuse);
+  if (pproblem_create(dev, &d40, &pp) == CLSPH_OK) {
+    TC_CHECK(psolve_create(dev, pp.prog, pp.n, &o, &ps) == CLSPH_OK && ps.opt.fuse == gpu,
+             "\"auto\" on a %s: fused %d", gpu ? "GPU" : "non-GPU device", ps.opt.fuse);
+    psolve_destroy(&ps);
+    pproblem_destroy(&pp);
+  } else
+    TC_CHECK(0, "auto: the problem's set-up");
 }
 
 /* The one-group solve (krylov_group.cl, solver_group_max) against the iteration's launches on

@@ -69,7 +69,7 @@ print(f"{name}: {d.get('device')}, {d.get('precision')}, status {d.get('status')
 PY
 }
 
-one cavity40 clsph 60 cases/cavity.lua n=40 t_end=0.5
+one cavity40_separate clsph 60 cases/cavity.lua n=40 t_end=0.5 fuse=2
 one cavity40_fused clsph 60 cases/cavity.lua n=40 t_end=0.5 fuse=1
 one cavity240_re1000 clsph 120 cases/cavity.lua n=240 re=1000 t_end=0.5
 one cavity240_re1000_float clsph-float 120 cases/cavity.lua n=240 re=1000 t_end=0.5
