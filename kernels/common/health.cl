@@ -1,4 +1,4 @@
-/* health.cl: what the time loop's health checks need (host/sim/checks.c, sim_check_health), reduced
+/* health.cl: what the time loop's health checks need (host/sim/checks.c, sim_check_step), reduced
  * on the device over the fluid particles (kind 0): the kinetic energy  Σ_i V_i |v_i|²   (times ρ0/2
  * on the host) and the volume Σ_i V_i, the spacing         d_i = min_j |r_ij|, j ≠ i a fluid
  * particle within the support (the support when there is none): the smallest d_i, and the number of
