@@ -20,9 +20,10 @@
 -- wedge 4% under the run at 0.1, half the steps), and wcsph-usaw's own constants (cfl = 1).
 -- relax: isph-usaw's density_relaxation (0, the paper's projection, by default).
 -- segment_cache: the scheme option (slots a particle, 0 none: the same bits; -1, the default, the
--- scheme's own).
+-- scheme's own). momentum: wcsph-usaw's option, 1 "fused", 2 "separate" (the same bits), 0 its
+-- default.
 param { dr = 0.01, t_end = 2, nu = 1e-2, wcsph = 0, offset = 0.5, cfl = 0, relax = 0,
-        segment_cache = -1 }
+        segment_cache = -1, momentum = 0 }
 
 local g, H, L, top = 9.81, 1.0, 2.0, 1.6
 local column = 0.6
@@ -32,7 +33,8 @@ domain { 0, 0, L, top }
 particles { dr = dr }
 local cache = segment_cache >= 0 and segment_cache or nil
 if wcsph == 1 then -- the paper's baseline: c0 = 20 m/s and a Ferrari density correction
-  scheme { "wcsph-usaw", sound_speed = 20, segment_cache = cache }
+  local forms = { [1] = "fused", [2] = "separate" }
+  scheme { "wcsph-usaw", sound_speed = 20, segment_cache = cache, momentum = forms[momentum] }
 else
   scheme { "isph-usaw", free_surface_offset = offset, density_relaxation = relax,
            segment_cache = cache }

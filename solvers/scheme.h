@@ -41,6 +41,10 @@ struct scheme_ops {
                                   * NULL-terminated; NULL: none */
   int sorts_first;               /* 1: its step moves the particles and sorts them before it
                                   * looks for a neighbour, so the loop does not sort before it */
+  int checks_domain;             /* 1: its step marks the fluid that left the domain as it moves
+                                  * it (domain_left, kernels/common/domain.cl, with the box of
+                                  * sim_domain_box), so a step that asks for no step-end maximum
+                                  * launches no step_end (host/sim/reduce.c) */
   /** -D switches of the scheme's kernels (NULL: none). */
   enum clsph_status (*define)(const struct sim *sim, struct prog_opts *o);
   /** Add the scheme's particle fields and kernels; called after the common fields exist. */

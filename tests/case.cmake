@@ -441,6 +441,23 @@ clsph_run_test(run_wedge_coarse_wcsph ${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.
                SETS dr=0.02 wcsph=1
                BOUNDS "crossed_wall<0.5" "max_speed_over_sqrt_gH<1" "wedge_force_mean>900"
                       "wedge_force_mean<1400")
+# wcsph-usaw's momentum = "fused" (the default without k-ε: u* and the pressure force in one
+# sweep, then the collisions and the wall guard, wcsph_usaw/update.cl)
+# against "separate" (usaw_predict and wcsph_velocity, the k-ε model's path): the same bits. The
+# coarse wedge to 0.5 s collides (with the collisions left out of wcsph_finish the fused run stops
+# at t = 0.428 s, particles clustered: measured), so the marks of wcsph_momentum are tested too.
+clsph_add_test(wcsph_momentum_fused LABELS case COMMAND ${CMAKE_COMMAND}
+               -DCLSPH=$<TARGET_FILE:clsph> -DCASE=${CMAKE_SOURCE_DIR}/cases/dam_break_wedge.lua
+               -DOUT=${CMAKE_CURRENT_BINARY_DIR}/runs/wcsph_momentum "-DSETS=wcsph=1|dr=0.02|t_end=0.5"
+               -DSETS_A=momentum=1 -DSETS_B=momentum=2 "-DEXACT=pos|vel|p"
+               -P ${CASE_DIR}/same_state.cmake)
+set(momentum_values "momentum must be \"fused\" .*, \"separate\" or \"auto\" .*")
+clsph_cli_test(momentum_word ARGS info ${CASE_DIR}/bad_momentum.lua --set what=1 RC 2
+               REGEX "bad_momentum.lua: ${momentum_values}, not \"merged\"")
+clsph_cli_test(momentum_number ARGS info ${CASE_DIR}/bad_momentum.lua --set what=2 RC 2
+               REGEX "bad_momentum.lua: ${momentum_values}, not the number 1")
+clsph_cli_test(momentum_fused_ke ARGS info ${CASE_DIR}/bad_momentum.lua --set what=3 RC 2
+               REGEX "bad_momentum.lua: momentum = \"fused\" has no form under the k-epsilon model")
 
 # Validation runs at the papers' resolutions (label "slow": not in CI; tests/validation/run.sh
 # runs them with the rest and regenerates RESULTS.md). The bounds are the issue's criteria or the

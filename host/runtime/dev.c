@@ -150,6 +150,8 @@ static enum clsph_status describe(const struct dev_entry *e, struct dev *d)
   CLSPH_CL_TRY(clGetDeviceInfo(e->id, CL_DEVICE_DOUBLE_FP_CONFIG, sizeof fp, &fp, NULL));
   CLSPH_CL_TRY(
       clGetDeviceInfo(e->id, CL_DEVICE_MAX_WORK_GROUP_SIZE, sizeof d->max_wg, &d->max_wg, NULL));
+  CLSPH_CL_TRY(clGetDeviceInfo(e->id, CL_DEVICE_NATIVE_VECTOR_WIDTH_DOUBLE, sizeof d->native_double,
+                               &d->native_double, NULL));
   CLSPH_CL_TRY(clGetDeviceInfo(e->id, CL_DEVICE_GLOBAL_MEM_SIZE, sizeof d->global_mem,
                                &d->global_mem, NULL));
   CLSPH_CL_TRY(clGetDeviceInfo(e->id, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof d->max_alloc,

@@ -45,6 +45,7 @@ struct dev {
   char driver[256];             /* driver version */
   cl_device_type type;          /* CL_DEVICE_TYPE_GPU, _CPU, ... */
   int fp64;                     /* 1 when cl_khr_fp64 is usable */
+  cl_uint native_double;        /* CL_DEVICE_NATIVE_VECTOR_WIDTH_DOUBLE (8 on AVX-512) */
   size_t max_wg;                /* largest work-group size */
   size_t wg;                    /* work-group size used for 1-D launches */
   cl_ulong global_mem;          /* bytes */

@@ -14,26 +14,31 @@ static const char *kernel_name(cl_kernel k, char *buf, size_t size)
 
 enum clsph_status kern_set(cl_kernel k, size_t nargs, const struct karg *args)
 {
+  return kern_set_from(k, 0, nargs, args);
+}
+
+enum clsph_status kern_set_from(cl_kernel k, cl_uint first, size_t nargs, const struct karg *args)
+{
   enum clsph_status st = CLSPH_OK;
   char name[128];
   /* no more than the kernel takes (fewer: kern_set_at sets the rest): PoCL crashes on an argument
    * index past the kernel's instead of returning CL_INVALID_ARG_INDEX */
   cl_uint have = 0;
   cl_int err = clGetKernelInfo(k, CL_KERNEL_NUM_ARGS, sizeof have, &have, NULL);
-  if (err != CL_SUCCESS || nargs > have) {
+  if (err != CL_SUCCESS || first + nargs > have) {
     if (err != CL_SUCCESS)
       log_error("clGetKernelInfo(CL_KERNEL_NUM_ARGS): %s", dev_cl_error_str(err));
     else
       log_error("kernel %s takes %u arguments, the host passes %zu",
-                kernel_name(k, name, sizeof name), have, nargs);
+                kernel_name(k, name, sizeof name), have, first + nargs);
     st = CLSPH_E_CL;
     goto done;
   }
   for (size_t i = 0; i < nargs; ++i) {
-    err = clSetKernelArg(k, (cl_uint)i, args[i].size, args[i].ptr);
+    err = clSetKernelArg(k, first + (cl_uint)i, args[i].size, args[i].ptr);
     if (err != CL_SUCCESS) {
-      log_error("clSetKernelArg(%s, argument %zu): %s", kernel_name(k, name, sizeof name), i,
-                dev_cl_error_str(err));
+      log_error("clSetKernelArg(%s, argument %zu): %s", kernel_name(k, name, sizeof name),
+                first + i, dev_cl_error_str(err));
       st = CLSPH_E_CL;
       goto done;
     }

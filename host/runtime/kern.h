@@ -18,6 +18,11 @@ struct karg {
 
 /** @brief Set all arguments of a kernel, in signature order. */
 enum clsph_status kern_set(cl_kernel k, size_t nargs, const struct karg *args);
+/** @brief Set arguments first .. first + nargs − 1 (after those another call set). */
+enum clsph_status kern_set_from(cl_kernel k, cl_uint first, size_t nargs, const struct karg *args);
+#define KERN_SET_AT(k, first, ...)                                                                 \
+  kern_set_from((k), (first), sizeof((struct karg[]){__VA_ARGS__}) / sizeof(struct karg),          \
+                (struct karg[]){__VA_ARGS__})
 /** @brief Set one argument (for kernels whose arguments are set in several steps). */
 enum clsph_status kern_set_at(cl_kernel k, cl_uint index, struct karg a);
 #define KERN_SET(k, ...)                                                                           \

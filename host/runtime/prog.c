@@ -352,6 +352,24 @@ enum clsph_status prog_build(const struct dev *dev, const char *const *sources,
   return prog_build_extra(dev, sources, NULL, NULL, opts, out);
 }
 
+/* The neighbour loops' lanes in double (real.h's NEIGH_W): 8 where the device's own double
+ * vectors are that wide (AVX-512: PoCL says 8), else 4 (256 bits; a GPU says 1); CLSPH_LANES = 4
+ * or 8 chooses (the tests run both). Float takes 8. */
+enum clsph_status prog_neigh_lanes(const struct dev *dev, int *lanes)
+{
+  enum clsph_status st = CLSPH_OK;
+  *lanes = CLSPH_DOUBLE && dev->native_double < 8 ? 4 : 8;
+  const char *env = getenv("CLSPH_LANES");
+  if (env != NULL && env[0] != '\0') {
+    CLSPH_CHECK(strcmp(env, "8") == 0 || (CLSPH_DOUBLE && strcmp(env, "4") == 0), CLSPH_E_INPUT,
+                "CLSPH_LANES must be %s (or unset: the device's double vector width), not \"%s\"",
+                CLSPH_DOUBLE ? "4 or 8" : "8 in a float build", env);
+    *lanes = env[0] - '0';
+  }
+done:
+  return st;
+}
+
 enum clsph_status prog_build_extra(const struct dev *dev, const char *const *sources,
                                    const char *extra_name, const char *extra_text,
                                    const struct prog_opts *opts, cl_program *out)
@@ -378,6 +396,9 @@ enum clsph_status prog_build_extra(const struct dev *dev, const char *const *sou
     contiguous = strcmp(rows, "contiguous") == 0;
   }
   CLSPH_TRY(prog_opts_define_int(&all, "BLAS1_CONTIGUOUS_ROWS", contiguous));
+  int lanes = 0;
+  CLSPH_TRY(prog_neigh_lanes(dev, &lanes));
+  CLSPH_TRY(prog_opts_define_int(&all, "NEIGH_LANES", lanes));
   CLSPH_TRY(opts_append(&all, "-cl-std=CL1.2"));
   if (fast_math) CLSPH_TRY(opts_append(&all, "-cl-fast-relaxed-math"));
   if (opts != NULL && opts->len > 0) CLSPH_TRY(opts_append(&all, "%s", opts->text));

@@ -33,6 +33,8 @@ void prog_set_cache_dir(const char *dir);
 /** @brief Allow -cl-fast-relaxed-math (off by default; tests never use it). */
 void prog_set_fast_math(int on);
 
+/** @brief The neighbour loops' lanes the programs for dev take (NEIGH_W: 4 or 8; CLSPH_LANES). */
+enum clsph_status prog_neigh_lanes(const struct dev *dev, int *lanes);
 /** @brief Append "-D NAME=VALUE" (VALUE NULL: "-D NAME"). */
 enum clsph_status prog_opts_define(struct prog_opts *o, const char *name, const char *value);
 /** @brief Append "-D NAME=V" for an integer. */

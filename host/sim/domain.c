@@ -19,22 +19,31 @@ void sim_open_sides(const struct scene *s, int open_lo[3], int open_hi[3])
   }
 }
 
+void sim_domain_box(const struct sim *sim, real4 *lo, real4 *hi, real *margin, cl_uint *open)
+{
+  const struct scene *s = sim->scene;
+  int up_lo[3], up_hi[3];
+  sim_open_sides(s, up_lo, up_hi);
+  *lo = (real4){{0}};
+  *hi = (real4){{0}};
+  *open = 0;
+  for (int a = 0; a < s->dim; ++a) {
+    lo->s[a] = (real)s->lo[a];
+    hi->s[a] = (real)s->hi[a];
+    *open |= (up_hi[a] ? 1u << a : 0u) | (up_lo[a] ? 16u << a : 0u);
+  }
+  *margin = (real)s->dr;
+}
+
 enum clsph_status sim_step_end(struct sim *sim, int nvec, const cl_mem *vec, const int *kinds,
                                const size_t *slot)
 {
   enum clsph_status st = CLSPH_OK;
-  const struct scene *s = sim->scene;
-  real4 lo = {{0}}, hi = {{0}};
-  int up_lo[3], up_hi[3];
-  sim_open_sides(s, up_lo, up_hi);
-  cl_uint open = 0;
-  for (int a = 0; a < s->dim; ++a) {
-    lo.s[a] = (real)s->lo[a];
-    hi.s[a] = (real)s->hi[a];
-    open |= (up_hi[a] ? 1u << a : 0u) | (up_lo[a] ? 16u << a : 0u);
-  }
+  real4 lo, hi;
+  real margin;
+  cl_uint open;
+  sim_domain_box(sim, &lo, &hi, &margin, &open);
   CLSPH_CHECK(nvec >= 0 && nvec <= 2, CLSPH_E_INPUT, "step_end takes 0 to 2 vectors, not %d", nvec);
-  const real margin = (real)s->dr;
   const cl_uint n = (cl_uint)sim->ps.n, nv = (cl_uint)nvec;
   cl_mem pos = pset_mem(&sim->ps, sim->f_pos), kind = pset_mem(&sim->ps, sim->f_kind);
   cl_mem v0 = nvec > 0 ? vec[0] : pos, v1 = nvec > 1 ? vec[1] : v0;

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "kern.h"
+#include "scheme.h"
 #include "sim.h"
 
 enum clsph_status sim_count_queued(struct sim *sim, cl_mem d_field, real *part, size_t *groups)
@@ -172,7 +173,8 @@ enum clsph_status sim_deferred_enqueue(struct sim *sim)
     sim->deferred_groups[sim->ndeferred] = groups;
     sim->deferred_to[sim->ndeferred++] = dest[v];
   }
-  CLSPH_TRY(sim_step_end(sim, nvec, vec, kinds, slot));
+  /* a scheme whose step checked the domain (scheme_ops.checks_domain) needs no launch for it */
+  if (nvec > 0 || !sim->scheme->checks_domain) CLSPH_TRY(sim_step_end(sim, nvec, vec, kinds, slot));
   if (sim->ndeferred > 0)
     CLSPH_TRY(kern_read_nb(sim->dev, sim->d_deferred, 0,
                            (size_t)sim->ndeferred * SIM_REDUCE_MAX_GROUPS * sizeof(real),

@@ -190,6 +190,10 @@ enum clsph_status sim_flow_control(struct sim *sim, double dt, FILE *log);
  *  slot[v] on. */
 enum clsph_status sim_step_end(struct sim *sim, int nvec, const cl_mem *vec, const int *kinds,
                                const size_t *slot);
+/** @brief The domain check's box (sim_step_end, domain.cl's domain_left): lower and upper
+ *  corners, the margin (dr) and the open sides' bits, for a scheme that checks as it moves
+ *  (scheme_ops.checks_domain). */
+void sim_domain_box(const struct sim *sim, real4 *lo, real4 *hi, real *margin, cl_uint *open);
 /** @brief The sides gravity points away from (more than half of it along the axis), open to
  *  splashes: 1 per axis for its lower and upper side; 0 for periodic and absent axes. */
 void sim_open_sides(const struct scene *s, int open_lo[3], int open_hi[3]);

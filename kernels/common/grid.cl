@@ -250,8 +250,8 @@ int neigh_next(struct neigh_iter *it, const struct grid *g, __global const uint 
 
 /* ---- candidates in lanes ----
  * NEIGH_FOR_LANES(it, g, cell_start, x, b) { ... } visits the ranges of NEIGH_FOR NEIGH_W
- * particles at a time (4 in double, 8 in float: real.h), b .. b + NEIGH_W − 1, as one vector of
- * lanes (realw: SIMD on a CPU, where the one-at-a-time loop's branch on the distance is taken at
+ * particles at a time (4 or 8 in double, 8 in float: real.h), b .. b + NEIGH_W − 1, as one vector
+ * of lanes (realw: SIMD on a CPU, where the one-at-a-time loop's branch on the distance is taken at
  * random for about half the candidates). The lanes that belong to the range and were not visited
  * before are neigh_live(&it, b); the last pass of a range starts at its end − NEIGH_W, so that
  * every load is one vector load of particles that exist (a particle set holds at least NEIGH_W:
@@ -374,6 +374,17 @@ real lanes_sum(const realw s)
   const real4 t = s;
 #endif
   return (t.x + t.y) + (t.z + t.w);
+}
+
+/* the smallest lane */
+real lanes_min(const realw s)
+{
+#if NEIGH_W == 8
+  const real4 t = fmin(s.lo, s.hi);
+#else
+  const real4 t = s;
+#endif
+  return fmin(fmin(t.x, t.y), fmin(t.z, t.w));
 }
 
 /* the lanes set in m */
@@ -538,8 +549,18 @@ __kernel void grid_order_cells(const uint ncells, const uint n, __global const u
 
 /* Reorder up to GRID_GATHER_FIELDS fields in one launch, field f of words.sf 32-bit words per
  * particle: df[i] = sf[perm[i]]; a slot with 0 words is unused. */
+/* The common widths (a real, a realv in float or double) as one vector copy: the loop over a
+ * width known only at run time copied a word at a time (on the wedge dam break, PoCL: 67 µs a
+ * launch). */
 #define GRID_GATHER_ONE(w, s, d)                                                                   \
-  for (uint c = 0; c < (w); ++c) (d)[i * (w) + c] = (s)[k * (w) + c]
+  if ((w) == 4u)                                                                                   \
+    vstore4(vload4(k, s), i, d);                                                                   \
+  else if ((w) == 2u)                                                                              \
+    vstore2(vload2(k, s), i, d);                                                                   \
+  else if ((w) == 1u)                                                                              \
+    (d)[i] = (s)[k];                                                                               \
+  else                                                                                             \
+    for (uint c = 0; c < (w); ++c) (d)[i * (w) + c] = (s)[k * (w) + c]
 
 __kernel void grid_gather(const uint n, __global const uint *perm, const uint8 words,
                           __global const uint *s0, __global uint *d0, __global const uint *s1,

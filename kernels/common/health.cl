@@ -21,14 +21,16 @@ __kernel void health_sums(const uint n, const struct grid g, __global const uint
     e += vol[i] * dot(vel[i], vel[i]);
     v += vol[i];
     m += R(1.0);
-    real d2 = g.sm.support2;
+    realw d2 = (realw)(g.sm.support2);
     struct neigh_iter it;
-    NEIGH_FOR(it, g, cell_start, x, j) {
-      if (j == i || kind[j] != 0u) continue;
-      const realv r = x - (pos[j] + it.shift);
-      d2 = fmin(d2, dot(r, r));
+    NEIGH_FOR_LANES(it, g, cell_start, x, b)
+    { /* in lanes (grid.cl) */
+      const struct lanesv r = lanes_rel(x, lanes_load_v(pos, b), it.shift);
+      const maskw take =
+          neigh_live(&it, b) & neigh_other(b, i) & LANES_MASK(lanes_load_u(kind, b) == (uintw)(0u));
+      d2 = select(d2, fmin(d2, lanes_dot(r, r)), take);
     }
-    const real d = sqrt(d2);
+    const real d = sqrt(lanes_min(d2));
     dmin = fmin(dmin, d);
     c += d < close ? R(1.0) : R(0.0);
   }

@@ -23,9 +23,25 @@ typedef float16 real16;
 #endif
 
 /* The neighbour loops' lanes (NEIGH_FOR_LANES, grid.cl): a vector of NEIGH_W reals, 256 bits in
- * either precision. maskw is what comparing two realw gives (lanes all ones or all zeros). */
-#if CLSPH_DOUBLE
-#define NEIGH_W 4
+ * double and float, or 8 doubles (512 bits) with NEIGH_LANES = 8 (the host's choice: AVX-512,
+ * host/runtime/prog.c). maskw is what comparing two realw gives (lanes all ones or all zeros). */
+#ifndef NEIGH_LANES
+#define NEIGH_LANES 4
+#endif
+#if CLSPH_DOUBLE && NEIGH_LANES == 8
+#define NEIGH_W 8
+typedef double8 realw;
+typedef long8 maskw;
+typedef uint8 uintw;
+typedef int8 intw;
+#define LANES_IOTA     ((uint8)(0u, 1u, 2u, 3u, 4u, 5u, 6u, 7u))
+#define LANES_MASK(c)  convert_long8(c) /* an int8 comparison as a mask of realw */
+#define LANES_INT(m)   convert_int8(m)
+#define LANES_VLOAD    vload8
+#define LANES_VSTORE_I vstore8
+#define LANES_VSTORE_R vstore8
+#elif CLSPH_DOUBLE
+#define NEIGH_W        4
 typedef double4 realw;
 typedef long4 maskw;
 typedef uint4 uintw;

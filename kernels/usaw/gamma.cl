@@ -300,7 +300,13 @@ realv usaw_grad_gamma_line(const struct smooth sm, realv x, realv a, realv b, re
  * several segments share the nearest point (a corner), the particle is in the fluid when it is in
  * front of any of them; a closest point at the free end of an open wall decides nothing. A
  * crossing raises CLSPH_FLAG_WALL, counts in flags[1], and keeps the deepest distance behind the
- * wall (m) in flags[2] as the bits of a float (non-negative floats order as their bits do). */
+ * wall (m) in flags[2] as the bits of a float (non-negative floats order as their bits do).
+ * A scheme that reads no ∇γ_a (-D USAW_GRAD_GAMMA=0: wcsph-usaw without the k-ε model, whose
+ * sweeps take each segment's ∇γ_as) gets zeros: on the wedge dam break the sum was a quarter of
+ * this kernel's time. */
+#ifndef USAW_GRAD_GAMMA
+#define USAW_GRAD_GAMMA 1
+#endif
 __kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const uint *seg_start,
                          __global const realv *seg_a, __global const realv *seg_b,
                          __global const realv *seg_n, __global const uint *seg_joint,
@@ -325,7 +331,9 @@ __kernel void usaw_gamma(const uint n, const struct grid g_seg, __global const u
     const realv a = seg_a[s] + it.shift, b = seg_b[s] + it.shift, nn = seg_n[s];
     const uint joint = seg_joint[s];
     g -= usaw_gamma_seg(g_seg.sm, x, a, b, nn, joint);
+#if USAW_GRAD_GAMMA
     gg += usaw_grad_gamma_line(g_seg.sm, x, a, b, nn, joint);
+#endif
 #if USAW_SEG_CACHE /* the sweeps' ∇γ_as (above) */
     const realv q = usaw_grad_gamma_seg(g_seg.sm, x, a, b, nn);
     if (q.x != R(0.0) || q.y != R(0.0)) {

@@ -30,6 +30,53 @@
 #else
 #define USAW_PREDICT_TURB_ARGS
 #endif
+/* The wall term's sums over the segments (below): M = Σ_s c_s P_s and b = Σ_s c_s P_s u_s,
+ * P_s = I − n_s n_sᵀ. */
+struct usaw_wall_m {
+  real m11, m12, m22;
+  realv b;
+};
+
+void usaw_wall_m_add(struct usaw_wall_m *w, const real c, const realv nn, const realv us)
+{
+  w->m11 += c * (R(1.0) - nn.x * nn.x);
+  w->m12 -= c * nn.x * nn.y;
+  w->m22 += c * (R(1.0) - nn.y * nn.y);
+  w->b += c * (us - dot(us, nn) * nn);
+}
+
+/* M u */
+realv usaw_wall_mu(const struct usaw_wall_m *w, const realv u)
+{
+  realv mu;
+  mu.x = w->m11 * u.x + w->m12 * u.y;
+  mu.y = w->m12 * u.x + w->m22 * u.y;
+  return mu;
+}
+
+/* δr_as = max(r_as·n_s, d_min) (eq 17), r_as from the segment's middle */
+real usaw_seg_drs(const realv x, const realv a, const realv e, const realv nn, const real d_min)
+{
+  return fmax(dot(x - R(0.5) * (a + e), nn), d_min);
+}
+
+/* u* from the sums: lapg = the fluid's viscous term (ν lap/γ), ti = δt for a fluid particle (the
+ * wall term implicit, below) and 0 for a vertex, acc = its acc_p of the last step. */
+realv usaw_predict_solve(const struct usaw_wall_m *w, const realv u, const realv lapg,
+                         const realv accel, const real dt, const real ti, const realv acc)
+{
+  const real te = dt - ti;
+  const realv q = ti * acc;
+  const realv mu = usaw_wall_mu(w, u);
+  const realv rhs = u + dt * (lapg + w->b + accel) - te * mu + q;
+  const real a11 = R(1.0) + ti * w->m11, a12 = ti * w->m12, a22 = R(1.0) + ti * w->m22;
+  const real det = a11 * a22 - a12 * a12;
+  realv us;
+  us.x = (a22 * rhs.x - a12 * rhs.y) / det - q.x;
+  us.y = (a11 * rhs.y - a12 * rhs.x) / det - q.y;
+  return us;
+}
+
 __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *vel, const real dt,
                            const real nu, const real d_min, const realv accel,
                            __global realv *ustar, __global realv *visc,
@@ -71,8 +118,7 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
   lap = lanes_total_v(lap4);
   /* the wall term −Σ_s c_s P_s (u − u_s), c_s = 2ν|∇γ_as|/(γ_a δr_as), P_s = I − n_s n_sᵀ,
    * taken at u*: M = Σ_s c_s P_s, b = Σ_s c_s P_s u_s */
-  real m11 = R(0.0), m12 = R(0.0), m22 = R(0.0);
-  realv b = (realv)(R(0.0));
+  struct usaw_wall_m wm = {R(0.0), R(0.0), R(0.0), (realv)(R(0.0))};
 #if !USAW_TURB
   const real cg = R(2.0) * nu / gam[i];
 #endif
@@ -85,7 +131,7 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
     const real ggn = length(gg);
     if (ggn == R(0.0)) continue;
     const realv us = R(0.5) * (vel[inv[seg_v1[s]]] + vel[inv[seg_v2[s]]]);
-    const real drs = fmax(dot(x - R(0.5) * (a + e), nn), d_min);
+    const real drs = usaw_seg_drs(x, a, e, nn, d_min);
 #if USAW_TURB /* eq 22: u*²_as along t_as, the rate 2 u*²/u_t of the tangential slip (eq 23) */
     const real rate = usaw_wall_rate(u - us, nn, drs, nu);
     const real c = rate * ggn / gam[i];
@@ -96,10 +142,7 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
 #else
     const real c = cg * ggn / drs;
 #endif
-    m11 += c * (R(1.0) - nn.x * nn.x);
-    m12 -= c * nn.x * nn.y;
-    m22 += c * (R(1.0) - nn.y * nn.y);
-    b += c * (us - dot(us, nn) * nn);
+    usaw_wall_m_add(&wm, c, nn, us);
   }
   /* fluid: the wall term at v = u* + δt q, q = acc_p the pressure's acceleration of the last step
    * (the projection's (ũ − u*)/δt, or wcsph-usaw's pressure force), v the best guess of the new
@@ -111,22 +154,14 @@ __kernel void usaw_predict(USAW_PART_ARGS, USAW_SEG_ARGS, __global const realv *
    * d_min = δr/2. With q a steady state is exact for the pressure's part as for the body force's
    * (ν lap/γ + b − M u + g + f + q = 0).
    * Vertices: the paper's explicit u* = u + δt (ν lap/γ − M u + b + g + f) */
-  const real ti = kind[i] == ISPH_FLUID ? dt : R(0.0), te = dt - ti;
-  const realv q = ti * acc_p[i];
-  realv mu;
-  mu.x = m11 * u.x + m12 * u.y;
-  mu.y = m12 * u.x + m22 * u.y;
-  const realv rhs = u + dt * (lap_scale * lap / gam[i] + b + accel) - te * mu + q;
-  const real a11 = R(1.0) + ti * m11, a12 = ti * m12, a22 = R(1.0) + ti * m22;
-  const real det = a11 * a22 - a12 * a12;
-  realv us;
-  us.x = (a22 * rhs.x - a12 * rhs.y) / det - q.x;
-  us.y = (a11 * rhs.y - a12 * rhs.x) / det - q.y;
+  const real ti = kind[i] == ISPH_FLUID ? dt : R(0.0);
+  const realv us = usaw_predict_solve(&wm, u, lap_scale * lap / gam[i], accel, dt, ti, acc_p[i]);
 #if USAW_TURB
   if (vertex) { /* eq 24: the viscous term alone moves it, along the wall (∇γ_v is its normal) */
     const realv gv = ggam[i];
     const real gl = length(gv);
-    const realv av = lap / gam[i] + b - mu; /* L_v{μ_E, u}/ρ at the vertex's own velocity */
+    /* L_v{μ_E, u}/ρ at the vertex's own velocity */
+    const realv av = lap / gam[i] + wm.b - usaw_wall_mu(&wm, u);
     realv uv = u + dt * av;
     if (gl > R(0.0)) uv -= dot(uv, gv / gl) * (gv / gl);
     u_vertex[i] = uv;

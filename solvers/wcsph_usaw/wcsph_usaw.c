@@ -11,7 +11,8 @@
  * background_pressure p_bg (Pa, default 0; the paper uses one for the cavity), density_diffusion
  * (factor of the Ferrari term, 1), pressure_form ("total": G+ of p, the paper's; "dynamic": G+ of
  * the pressure less its hydrostatic part, which holds a tank at rest but glues a moving free
- * surface, update.cl).
+ * surface, update.cl), momentum ("fused": u* and the pressure force in one sweep of the
+ * neighbours, the default but under the k-ε model; "separate": two, the same bits; update.cl).
  * Time step (48-49) with u_ref = c0: min(0.2 h/c0, 0.125 h²/ν, 0.25 √(h/|a|)).
  * Under the k-ε model (turbulence { model = "k-epsilon" }, solvers/usaw/turbulence.h) the
  * prediction takes μ_E = μ + μ_T and the wall law (eq 22), k and ε advance after it (eqs 18-19),
@@ -31,8 +32,9 @@
 struct wcsph {
   struct usaw_walls walls;
   struct usaw_turb turb; /* the k-ε model, when the scene declares it */
-  int f_rho, f_drho, f_p, f_gam, f_ggam, f_theta, f_ustar, f_visc, f_vnormal, f_acc_p;
+  int f_rho, f_drho, f_p, f_gam, f_ggam, f_theta, f_ustar, f_visc, f_vnormal, f_acc_p, f_close;
   cl_kernel k_cont, k_vertex, k_predict, k_velocity, k_advance, k_strain;
+  cl_kernel k_momentum, k_finish; /* without the k-ε model: prediction and pressure in one sweep */
   cl_mem d_strain; /* rate of strain at the wall vertices, 3 reals each (wall_force.cl) */
   double c0, p_bg, mass;
   double d_min;     /* smallest wall distance of the viscous wall term, m (usaw/viscous.cl) */
@@ -40,6 +42,7 @@ struct wcsph {
   int dynamic;      /* 1: G+ of P (pressure_form = "dynamic"), 0: G+ of p (the paper's) */
   double diffusion; /* factor of the Ferrari density diffusion (1: as published, 0: off) */
   cl_uint guard;    /* the wall guard (update.cl): wall_guard, by default with gravity or turning */
+  int fused;        /* momentum = "fused": u* and the pressure force in one sweep (update.cl) */
 };
 
 static const char *const sources[] = {"usaw/gamma.cl",        "usaw/common.cl",
@@ -47,8 +50,13 @@ static const char *const sources[] = {"usaw/gamma.cl",        "usaw/common.cl",
                                       "common/kepsilon.cl",   "usaw/turbulence.cl",
                                       "usaw/viscous.cl",      "wcsph_usaw/density.cl",
                                       "wcsph_usaw/update.cl", NULL};
-static const char *const options[] = {"sound_speed",   "background_pressure",  "density_diffusion",
-                                      "pressure_form", USAW_WALL_OPTION_NAMES, NULL};
+static const char *const options[] = {"sound_speed",
+                                      "background_pressure",
+                                      "density_diffusion",
+                                      "pressure_form",
+                                      "momentum",
+                                      USAW_WALL_OPTION_NAMES,
+                                      NULL};
 
 static enum clsph_status prefix(struct sim *sim, struct wcsph *ws, cl_kernel k, int with_segments,
                                 cl_uint *next)
@@ -78,12 +86,15 @@ done:
  * pairs). */
 #define WCSPH_SEG_CACHE 8
 
-/* -D switches: the k-ε model's (solvers/usaw/turbulence.h), the segment cache's (walls.h). */
+/* -D switches: the k-ε model's (solvers/usaw/turbulence.h), the segment cache's (walls.h), and
+ * no ∇γ_a without the model. */
 static enum clsph_status wcsph_define(const struct sim *sim, struct prog_opts *o)
 {
   enum clsph_status st = CLSPH_OK;
   CLSPH_TRY(usaw_turb_define(sim, o));
   CLSPH_TRY(usaw_seg_cache_define(sim->scene, WCSPH_SEG_CACHE, o));
+  /* ∇γ_a (usaw/gamma.cl) only for the k-ε model's vertices (usaw/viscous.cl) */
+  if (!sim->scene->turb.on) CLSPH_TRY(prog_opts_define_int(o, "USAW_GRAD_GAMMA", 0));
 done:
   return st;
 }
@@ -106,6 +117,7 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   sound_velocity_scale(sc, geo, &vs);
   ws->c0 = 10.0 * vs.u; /* Leroy et al. 2014 sec 3.4: 10 U */
   int c0_given = 0;
+  const char *momentum = "auto";
   ws->diffusion = 1.0;
   for (int i = 0; i < sc->noptions; ++i) {
     const struct scene_option *o = &sc->options[i];
@@ -123,6 +135,18 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
           !o->is_number && (strcmp(o->text, "total") == 0 || strcmp(o->text, "dynamic") == 0),
           CLSPH_E_INPUT, "%s: pressure_form must be \"total\" or \"dynamic\"", sc->case_path);
       ws->dynamic = strcmp(o->text, "dynamic") == 0;
+    } else if (strcmp(o->key, "momentum") == 0) {
+      /* "fused" (without the k-ε model, the default) or "separate": the same bits (update.cl) */
+#define WCSPH_MOMENTUM_VALUES                                                                      \
+  "%s: momentum must be \"fused\" (the prediction and the pressure force in one sweep), "          \
+  "\"separate\" or \"auto\" (fused but under the k-epsilon model), "
+      CLSPH_CHECK(!o->is_number, CLSPH_E_INPUT, WCSPH_MOMENTUM_VALUES "not the number %g",
+                  sc->case_path, o->number);
+      CLSPH_CHECK(strcmp(o->text, "fused") == 0 || strcmp(o->text, "separate") == 0 ||
+                      strcmp(o->text, "auto") == 0,
+                  CLSPH_E_INPUT, WCSPH_MOMENTUM_VALUES "not \"%s\"", sc->case_path, o->text);
+#undef WCSPH_MOMENTUM_VALUES
+      momentum = o->text;
     } else if (strcmp(o->key, "background_pressure") == 0) {
       CLSPH_CHECK(o->is_number && o->number >= 0.0, CLSPH_E_INPUT,
                   "%s: background_pressure must be a pressure >= 0 (Pa)", sc->case_path);
@@ -141,6 +165,11 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   else
     log_info("wcsph-usaw: sound speed c0 = %.4g m/s = 10 U, U = %.4g m/s from %s", ws->c0, vs.u,
              vs.what);
+  CLSPH_CHECK(!sc->turb.on || strcmp(momentum, "fused") != 0, CLSPH_E_INPUT,
+              "%s: momentum = \"fused\" has no form under the k-epsilon model (k and epsilon "
+              "advance between the prediction and the pressure force): \"separate\" or \"auto\"",
+              sc->case_path);
+  ws->fused = !sc->turb.on && strcmp(momentum, "separate") != 0;
   ws->mass = sc->rho0 * sc->dr * sc->dr;
   /* the paper's δr (eq 17) by default: δr/2, which isph-usaw takes, lowers the 20² cavity's u
    * error at Re 100 from 0.131 U to 0.094 U, but the lid, pulling harder, drives more particles
@@ -224,6 +253,13 @@ static enum clsph_status wcsph_create(struct sim *sim, void **state)
   CLSPH_TRY(prog_kernel(sim->prog, "usaw_vertex_strain", &ws->k_strain));
   CLSPH_TRY(kern_buffer(sim->dev, 3 * ps->cap * sizeof(real), NULL, &ws->d_strain, "strain"));
   CLSPH_TRY(usaw_turb_create(sim, &ws->turb));
+  if (ws->fused) { /* wcsph_momentum marks the particles that collide (update.cl) */
+    CLSPH_TRY(pset_add(ps, sim->dev, "close", sizeof(cl_uint), NULL, &ws->f_close));
+    pset_describe(ps, ws->f_close, PF_UINT, 0, 0);
+    pset_temporary(ps, ws->f_close);
+    CLSPH_TRY(prog_kernel(sim->prog, "wcsph_momentum", &ws->k_momentum));
+    CLSPH_TRY(prog_kernel(sim->prog, "wcsph_finish", &ws->k_finish));
+  }
   *state = ws;
   ws = NULL;
 done:
@@ -233,6 +269,34 @@ done:
     usaw_walls_destroy(&ws->walls);
     free(ws);
   }
+  return st;
+}
+
+/* Without the k-ε model: u* and the pressure force in one sweep (wcsph_momentum), then the
+ * collisions, u^{n+1} and the wall guard (wcsph_finish): the bits of usaw_predict, k-ε's place
+ * between them empty, and wcsph_velocity (update.cl). */
+static enum clsph_status wcsph_momentum(struct sim *sim, struct wcsph *ws, real rdt, real2 accel,
+                                        real2 grav, real pref, real rho0_h)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *sc = sim->scene;
+  struct pset *ps = &sim->ps;
+  cl_uint i;
+  const real nu = (real)sc->nu, dr = (real)sc->dr, d_min = (real)ws->d_min;
+  cl_mem vel = pset_mem(ps, sim->f_vel), p = pset_mem(ps, ws->f_p);
+  cl_mem rho = pset_mem(ps, ws->f_rho), ustar = pset_mem(ps, ws->f_ustar);
+  cl_mem acc_p = pset_mem(ps, ws->f_acc_p), close = pset_mem(ps, ws->f_close);
+  cl_mem id = pset_mem(ps, sim->f_id);
+  CLSPH_TRY(prefix(sim, ws, ws->k_momentum, 1, &i));
+  CLSPH_TRY(KERN_SET_AT(ws->k_momentum, i, KARG(vel), KARG(p), KARG(rho), KARG(rdt), KARG(nu),
+                        KARG(d_min), KARG(accel), KARG(rho0_h), KARG(grav), KARG(pref),
+                        KARG(ws->guard), KARG(dr), KARG(ustar), KARG(acc_p), KARG(close)));
+  CLSPH_TRY(kern_launch(sim->dev, ws->k_momentum, ps->n, NULL));
+  CLSPH_TRY(prefix(sim, ws, ws->k_finish, 1, &i));
+  CLSPH_TRY(KERN_SET_AT(ws->k_finish, i, KARG(ustar), KARG(acc_p), KARG(close), KARG(rdt),
+                        KARG(ws->guard), KARG(dr), KARG(id), KARG(vel)));
+  CLSPH_TRY(kern_launch(sim->dev, ws->k_finish, ps->n, NULL));
+done:
   return st;
 }
 
@@ -278,11 +342,17 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   ARG(ws->k_vertex, i, vnormal);
   ARG(ws->k_vertex, i, p);
   CLSPH_TRY(kern_launch(sim->dev, ws->k_vertex, ps->n, NULL));
+  const real d_min = (real)ws->d_min;
+  const real pref = ws->dynamic ? (real)ws->p_ref : 0, rho0_h = ws->dynamic ? rho0 : 0;
+  cl_mem id = pset_mem(ps, sim->f_id);
+  if (ws->fused) {
+    CLSPH_TRY(wcsph_momentum(sim, ws, rdt, accel, grav, pref, rho0_h));
+    goto continuity;
+  }
   CLSPH_TRY(prefix(sim, ws, ws->k_predict, 1, &i));
   ARG(ws->k_predict, i, vel);
   ARG(ws->k_predict, i, rdt);
   ARG(ws->k_predict, i, nu);
-  const real d_min = (real)ws->d_min;
   ARG(ws->k_predict, i, d_min);
   ARG(ws->k_predict, i, accel);
   ARG(ws->k_predict, i, ustar);
@@ -297,7 +367,6 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   ARG(ws->k_velocity, i, p);
   ARG(ws->k_velocity, i, rho);
   ARG(ws->k_velocity, i, rdt);
-  const real pref = ws->dynamic ? (real)ws->p_ref : 0, rho0_h = ws->dynamic ? rho0 : 0;
   ARG(ws->k_velocity, i, rho0_h);
   ARG(ws->k_velocity, i, grav);
   ARG(ws->k_velocity, i, pref);
@@ -307,7 +376,6 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
    * 3e-4 δr a step from t = 0.82 s and the run stopped at 0.97 s, 0.5 δr behind them */
   ARG(ws->k_velocity, i, ws->guard);
   ARG(ws->k_velocity, i, dr);
-  cl_mem id = pset_mem(ps, sim->f_id);
   ARG(ws->k_velocity, i, id);
   ARG(ws->k_velocity, i, vel);
   ARG(ws->k_velocity, i, acc_p);
@@ -329,6 +397,7 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
    * (p ≥ −1.1e4 Pa, at the front's tip), the floor's largest speed is that of the front's tip,
    * 0.92 × 2 √(gH) (0.96 at n = 40, against 1.88 before), and the front runs on (its mean speed
    * 0.66 of Ritter's at 0.42 s, 0.58 before). */
+continuity:
   CLSPH_TRY(prefix(sim, ws, ws->k_cont, 1, &i));
   ARG(ws->k_cont, i, vel);
   ARG(ws->k_cont, i, rho);
@@ -338,9 +407,14 @@ static enum clsph_status wcsph_step(struct sim *sim, void *state, double dt)
   ARG(ws->k_cont, i, r0c2);
   ARG(ws->k_cont, i, drho);
   CLSPH_TRY(kern_launch(sim->dev, ws->k_cont, ps->n, NULL));
+  real4 lo, hi; /* the domain check (scheme_ops.checks_domain) */
+  real margin;
+  cl_uint open;
+  sim_domain_box(sim, &lo, &hi, &margin, &open);
   CLSPH_TRY(KERN_SET(ws->k_advance, KARG(n), KARG(sim->grid.geom), KARG(rdt), KARG(mass),
-                     KARG(rho0), KARG(c0), KARG(pbg), KARG(kind), KARG(pos), KARG(vel), KARG(rho),
-                     KARG(drho), KARG(vol), KARG(p), KARG(sim->d_flags)));
+                     KARG(rho0), KARG(c0), KARG(pbg), KARG(lo), KARG(hi), KARG(margin), KARG(open),
+                     KARG(kind), KARG(pos), KARG(vel), KARG(rho), KARG(drho), KARG(vol), KARG(p),
+                     KARG(sim->d_flags)));
   CLSPH_TRY(kern_launch(sim->dev, ws->k_advance, ps->n, NULL));
   /* the turning walls where they stand at t^{n+1}, for the next step's sort */
   CLSPH_TRY(usaw_walls_turn(&ws->walls, sim, sim->time + dt));
@@ -399,8 +473,8 @@ static void wcsph_destroy(void *state)
 {
   struct wcsph *ws = state;
   if (ws == NULL) return;
-  cl_kernel *ks[] = {&ws->k_cont,     &ws->k_vertex,  &ws->k_predict,
-                     &ws->k_velocity, &ws->k_advance, &ws->k_strain};
+  cl_kernel *ks[] = {&ws->k_cont,    &ws->k_vertex, &ws->k_predict,  &ws->k_velocity,
+                     &ws->k_advance, &ws->k_strain, &ws->k_momentum, &ws->k_finish};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   kern_release(&ws->d_strain);
@@ -418,6 +492,7 @@ const struct scheme_ops scheme_wcsph_usaw = {
     .smoothing = "wendland",
     .h_over_dr = 2.0,
     .fill_fields = SCHEME_FILL_PRESSURE | SCHEME_FILL_DENSITY,
+    .checks_domain = 1, /* wcsph_advance (update.cl) */
     .turbulence = usaw_turbulence_models,
     .options = options,
     .define = wcsph_define,

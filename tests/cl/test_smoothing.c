@@ -79,7 +79,9 @@ static enum clsph_status eval_lanes(const struct dev *dev, cl_kernel k, const st
   for (size_t i = 0; i < m; ++i) buf[i] = (real)r[i];
   CLSPH_TRY(kern_buffer(dev, m * sizeof(real), buf, &d[0], "r"));
   for (int b = 1; b < 5; ++b) CLSPH_TRY(kern_buffer(dev, m * sizeof(real), NULL, &d[b], "out"));
-  const size_t lanes = CLSPH_DOUBLE ? 4 : 8; /* NEIGH_W (real.h) */
+  int nl = 0;
+  CLSPH_TRY(prog_neigh_lanes(dev, &nl)); /* NEIGH_W (real.h) */
+  const size_t lanes = (size_t)nl;
   cl_uint nw = (cl_uint)(m / lanes);
   const struct smooth_dev smd = smoothing_dev(sm);
   CLSPH_TRY(
