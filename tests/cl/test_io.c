@@ -9,7 +9,8 @@
  * device was overwritten, with time, step, dt and the blob; and each of a text file, a snapshot,
  * a truncated checkpoint, another case, another precision, a missing field and too small a
  * particle set must be refused with CLSPH_E_INPUT, one error message naming the file, and the
- * particle set untouched.
+ * particle set untouched; a file that lacks one of the run's temporaries (pset_temporary) must be
+ * read, the temporary left as it was.
  *
  * When pvpython is installed, tests/io/pv_check.py opens the index with ParaView's XDMF3 reader
  * and checks the points, the vertex cells and the arrays it sees at both times. An empty particle
@@ -85,10 +86,10 @@ static void fill_data(struct data *d, double shift)
   }
 }
 
-enum variant { SAME, EXTRA_FIELD, WIDER_P };
+enum variant { SAME, EXTRA_FIELD, WIDER_P, EXTRA_TEMP };
 
-/* A particle set with the fields of `d` (n of them, room for cap); the variants add a field or
- * give p two components. */
+/* A particle set with the fields of `d` (n of them, room for cap); the variants add a field, a
+ * temporary (pset_temporary) or give p two components. */
 static int make_pset(const struct dev *dev, const struct data *d, size_t n, size_t cap,
                      enum variant v, struct pset *ps)
 {
@@ -108,6 +109,10 @@ static int make_pset(const struct dev *dev, const struct data *d, size_t n, size
   if (pset_add(ps, dev, "hidden", 2 * sizeof(real), d->hidden, &k)) return 0;
   pset_describe(ps, k, PF_REAL, 2, 0);
   if (v == EXTRA_FIELD && pset_add(ps, dev, "extra", sizeof(real), NULL, &k)) return 0;
+  if (v == EXTRA_TEMP) {
+    if (pset_add(ps, dev, "extra_temp", sizeof(real), NULL, &k)) return 0;
+    pset_temporary(ps, k);
+  }
   return 1;
 }
 
@@ -601,6 +606,38 @@ static void check_checkpoints(const struct dev *dev, const struct data *d, struc
       {"missing field", NP, EXTRA_FIELD, "has no field 'extra'"},
       {"other element size", NP, WIDER_P, "field 'p' holds 1 x "},
   };
+  /* a temporary the file lacks (a build whose scheme keeps another within its step): read, the
+   * rest restored, the temporary left as it was */
+  {
+    struct pset tp;
+    int made = make_pset(dev, d, NP, NP, EXTRA_TEMP, &tp);
+    TC_CHECK(made, "extra temporary: particle set made");
+    if (made) {
+      const int kt = tp.nfields - 1, kp = pset_find(&tp, "p");
+      const cl_uint mark = 0x5a5a5a5au;
+      if (kern_fill(dev, tp.f[kt].d, &mark, sizeof mark, tp.cap * tp.f[kt].elem)) exit(1);
+      if (kern_fill(dev, tp.f[kp].d, &mark, sizeof mark, tp.cap * tp.f[kp].elem)) exit(1);
+      struct io_meta got2;
+      memset(&got2, 0, sizeof got2);
+      TC_CHECK(io_checkpoint_read(ck, dev, &tp, m, &got2, &blob, &bytes) == CLSPH_OK,
+               "a checkpoint without one of the run's temporaries is read");
+      free(blob);
+      blob = NULL;
+      real *pv = malloc(NP * sizeof *pv);
+      cl_uint *tv = malloc(NP * sizeof *tv);
+      if (pv == NULL || tv == NULL || kern_read(dev, tp.f[kp].d, NP * sizeof *pv, pv) ||
+          kern_read(dev, tp.f[kt].d, NP * sizeof *tv, tv))
+        exit(1);
+      TC_CHECK(memcmp(pv, before[pset_find(ps, "p")], NP * sizeof *pv) == 0,
+               "its other fields restored (p)");
+      int left = 1;
+      for (size_t i = 0; i < NP; ++i) left &= tv[i] == mark;
+      TC_CHECK(left, "the temporary left as it was");
+      free(pv);
+      free(tv);
+    }
+    pset_destroy(&tp);
+  }
   for (size_t i = 0; i < sizeof sets / sizeof *sets; ++i) {
     struct pset other_ps;
     size_t n = sets[i].cap < NP ? sets[i].cap : NP;
