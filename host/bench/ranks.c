@@ -1,5 +1,6 @@
 /* ranks.c: clsph-ranks, the pressure solve split across MPI ranks (README, "Beyond one device"),
- * built where Open MPI is installed. Run under mpiexec:
+ * built where Open MPI is installed; `clsph-ranks run` splits a whole run (ranks_run.c). Run under
+ * mpiexec:
  *
  *   mpiexec -n 2 clsph-ranks psolve [--side N] [--jitter J] [--kgc 0|1] [--rtol R] [--max-it M]
  *                                   [--reps K] [--device I] [--json FILE] [--no-check]
@@ -28,6 +29,7 @@
 #include "log.h"
 #include "prog.h"
 #include "pslab.h"
+#include "ranks_run.h"
 
 #if CLSPH_DOUBLE
 #define MPI_REAL_T MPI_DOUBLE
@@ -96,7 +98,10 @@ static int parse(int argc, char **argv, struct opts *o, int rank)
     if (rank == 0)
       fprintf(stderr, "usage: mpiexec -n RANKS clsph-ranks psolve [--side N] [--jitter J] "
                       "[--kgc 0|1] [--rtol R] [--max-it M] [--reps K] [--device I] [--json FILE] "
-                      "[--no-check] [--one-sum] [--precond jacobi|multigrid]\n");
+                      "[--no-check] [--one-sum] [--precond jacobi|multigrid]\n"
+                      "       mpiexec -n RANKS clsph-ranks run CASE [--set NAME=VALUE ...] "
+                      "[--halo SWEEPS] [--cuts X1,X2,...] [--device I] [--json FILE] "
+                      "[--no-check]\n");
     return 0;
   }
   for (int i = 2; i < argc; ++i) {
@@ -247,6 +252,11 @@ int main(int argc, char **argv)
   MPI_Init(&argc, &argv);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (argc >= 2 && strcmp(argv[1], "run") == 0) { /* a whole run split (ranks_run.c) */
+    const int rc = ranks_run(argc, argv, MPI_COMM_WORLD);
+    MPI_Finalize();
+    return rc;
+  }
   if (!parse(argc, argv, &o, rank)) {
     MPI_Finalize();
     return 2;
@@ -357,16 +367,9 @@ int main(int argc, char **argv)
         cJSON_AddNumberToObject(j, "error", err);
         cJSON_AddNumberToObject(j, "error_alone", err_ref);
       }
-      char *text = cJSON_Print(j);
+      st = ranks_write_json(o.json, j);
       cJSON_Delete(j);
-      FILE *f = text != NULL ? fopen(o.json, "w") : NULL;
-      if (f != NULL) {
-        fputs(text, f);
-        fputc('\n', f);
-      }
-      const int wrote = f != NULL && fclose(f) == 0;
-      free(text);
-      CLSPH_CHECK(wrote, CLSPH_E_IO, "cannot write %s", o.json);
+      if (st != CLSPH_OK) goto done;
     }
   }
   CLSPH_CHECK(converged, CLSPH_E_BLOWUP,

@@ -74,7 +74,7 @@ enum clsph_status sim_max_speed(struct sim *sim, int kind, double *vmax)
   if (sim->speed_ready && kind == sim->speed_kind) { /* read at the end of the last step */
     sim->speed_ready = 0;
     *vmax = sim->speed;
-    return CLSPH_OK;
+    return sim->comm != NULL ? sim->comm->max(sim->comm->ctx, vmax) : CLSPH_OK;
   }
   sim->speed_kind = kind; /* from now on the step-end read brings it along */
   return sim_max_norm(sim, pset_mem(&sim->ps, sim->f_vel), kind, vmax);
@@ -106,6 +106,7 @@ enum clsph_status sim_max_norm(struct sim *sim, cl_mem d_vec, int kind, double *
   CLSPH_TRY(kern_read(sim->dev, sim->d_partial, groups * sizeof *part, part));
   double m = 0.0;
   for (size_t g = 0; g < groups; ++g) m = fmax(m, (double)part[g]);
+  if (sim->comm != NULL) CLSPH_TRY(sim->comm->max(sim->comm->ctx, &m));
   *vmax = m;
 done:
   free(part);

@@ -21,6 +21,13 @@
 
 struct scheme_ops;
 
+/** A run split across ranks (host/bench/ranks_run.c): the reduction over the ranks of a maximum
+ *  each rank has taken over its particles (ctx: the caller's). */
+struct sim_comm {
+  void *ctx;
+  enum clsph_status (*max)(void *ctx, double *v);
+};
+
 /** Flow-rate control (eqs 67-68): the state a checkpoint carries (doubles only, in this order). */
 struct sim_flow {
   double force;  /* F^{n−1}: the x body force of the last step, m/s² */
@@ -35,9 +42,11 @@ struct sim {
   const struct dev *dev;
   const struct scene *scene;
   const struct scheme_ops *scheme;
-  void *state;           /* the scheme's */
-  struct geom_park park; /* the particles parked behind the exits (geometry_build) */
-  struct geom geom;      /* host copy of the generated particles and wall segments */
+  void *state;                 /* the scheme's */
+  const struct sim_comm *comm; /* a run split across ranks: sim_max_speed and sim_max_norm take
+                                * the largest over every rank's (NULL: one device) */
+  struct geom_park park;       /* the particles parked behind the exits (geometry_build) */
+  struct geom geom;            /* host copy of the generated particles and wall segments */
   struct smoothing sm;
   struct grid_spec gspec;
   struct grid grid;

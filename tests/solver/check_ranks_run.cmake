@@ -1,0 +1,29 @@
+# check_ranks_run.cmake: run `clsph-ranks run` under mpiexec and check its JSON (tests/CMakeLists.txt,
+# ranks_run_*). -DMPIEXEC, -DNP, -DEXE, -DOUT, -DCASE, -DARGS (|-separated), -DTOL: the particles'
+# positions (in dr) and velocities (over the largest speed) at the end against the whole scene run
+# alone, at most TOL apart (0: bit for bit). The split must own every particle once and take the
+# whole run's steps (clsph-ranks checks both and fails otherwise), and with more than one rank hold
+# a halo (more particles than the scene's) and send particles every step.
+string(REPLACE "|" ";" args "${ARGS}")
+file(REMOVE "${OUT}")
+execute_process(COMMAND "${MPIEXEC}" --oversubscribe -n ${NP} "${EXE}" run "${CASE}" ${args}
+                        --json "${OUT}"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "clsph-ranks run on ${NP} ranks exited with ${rc}")
+endif()
+file(READ "${OUT}" j)
+foreach(k ranks particles owned steps steps_alone dx_dr dv_rel held_ratio bytes_per_step)
+  string(JSON ${k} GET "${j}" ${k})
+endforeach()
+if(NOT ranks EQUAL NP OR NOT owned EQUAL particles OR NOT steps EQUAL steps_alone)
+  message(FATAL_ERROR "ranks ${ranks} (want ${NP}), owned ${owned} of ${particles}, steps ${steps} against ${steps_alone} alone")
+endif()
+execute_process(COMMAND python3 -c "import sys; x,v,t,h,b,n=map(float,sys.argv[1:]); sys.exit(0 if x <= t and v <= t and (n == 1 or (h > 1 and b > 0)) else 1)"
+                        ${dx_dr} ${dv_rel} ${TOL} ${held_ratio} ${bytes_per_step} ${NP}
+                RESULT_VARIABLE crc)
+if(NOT crc EQUAL 0)
+  message(FATAL_ERROR "split against alone: positions ${dx_dr} dr, velocities ${dv_rel} (at most ${TOL}); held ${held_ratio} times the particles, ${bytes_per_step} bytes sent a step")
+endif()
+message("split on ${NP} ranks: ${steps} steps, positions ${dx_dr} dr and velocities ${dv_rel} from the whole run's, held ${held_ratio} times the particles")
