@@ -46,7 +46,7 @@
 struct run_opts {
   const char *case_path, *json;
   char *sets[RUN_MAX_SETS];
-  int nsets, sweeps, device, check, ncuts;
+  int nsets, sweeps, device, check, ncuts, recut;
   double cuts[RUN_MAX_RANKS];
 };
 
@@ -64,8 +64,10 @@ struct part {
   size_t *own;                       /* indices of the owned particles */
   /* figures: exchanges, bytes sent, seconds in them (transfers to and from the device with
    * the MPI), particles held over the steps (owned + halo) and owned */
+  int recut;   /* move the cuts every this many steps (0: never) */
+  long recuts; /* times they moved */
   long exchanges;
-  double bytes, seconds, held_sum, owned_sum;
+  double bytes, seconds, held_sum, owned_sum, held_max_sum;
   size_t owned, held;
 };
 
@@ -83,12 +85,13 @@ static enum clsph_status mpi_max(void *ctx, double *v)
 static void usage(void)
 {
   fprintf(stderr, "usage: mpiexec -n RANKS clsph-ranks run CASE [--set NAME=VALUE ...] "
-                  "[--halo SWEEPS] [--cuts X1,X2,...] [--device I] [--json FILE] [--no-check]\n");
+                  "[--halo SWEEPS] [--cuts X1,X2,...] [--recut STEPS] [--device I] [--json FILE] "
+                  "[--no-check]\n");
 }
 
 static int parse(int argc, char **argv, struct run_opts *o, int rank)
 {
-  *o = (struct run_opts){.sweeps = 18, .device = -1, .check = 1};
+  *o = (struct run_opts){.sweeps = 18, .device = -1, .check = 1, .recut = 20};
   for (int i = 2; i < argc; ++i) {
     const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
     if (strcmp(a, "--no-check") == 0) {
@@ -119,16 +122,20 @@ static int parse(int argc, char **argv, struct run_opts *o, int rank)
       o->sets[o->nsets++] = (char *)v;
     } else if (strcmp(a, "--json") == 0) {
       o->json = v;
-    } else if (strcmp(a, "--halo") == 0 || strcmp(a, "--device") == 0) {
+    } else if (strcmp(a, "--halo") == 0 || strcmp(a, "--device") == 0 ||
+               strcmp(a, "--recut") == 0) {
       const double x = strtod(v, &end);
-      const int halo = a[2] == 'h';
-      if (end == v || *end != '\0' || !(x >= (halo ? 1 : 0)) || !(x <= 1000) || x != floor(x)) {
+      const int halo = a[2] == 'h', dev = a[2] == 'd';
+      if (end == v || *end != '\0' || !(x >= (halo ? 1 : 0)) || !(x <= (dev ? 1000 : 1e6)) ||
+          x != floor(x)) {
         if (rank == 0)
           fprintf(stderr, "clsph-ranks run: %s %s: %s\n", a, v,
-                  halo ? "a whole number of sweeps from 1 to 1000" : "a device index");
+                  halo  ? "a whole number of sweeps from 1 to 1000"
+                  : dev ? "a device index"
+                        : "a whole number of steps (0: the cuts stay)");
         return 0;
       }
-      *(halo ? &o->sweeps : &o->device) = (int)x;
+      *(halo ? &o->sweeps : dev ? &o->device : &o->recut) = (int)x;
     } else if (strcmp(a, "--cuts") == 0) {
       const char *s = v;
       o->ncuts = 0;
@@ -297,10 +304,53 @@ static void unpack(const struct part *p, const struct pset *ps, const unsigned c
   }
 }
 
+/* Move the cuts to the quantiles of the particles the ranks own now, so that the load follows
+ * the fluid: each cut by at most `reach` (a rank's particles that far past its slab are as the
+ * whole run computes them: the halo's depth less the sweeps the last step took) and only where
+ * every inner slab stays as wide as the halo. Every rank computes the same cuts. */
+static enum clsph_status recut(struct part *p, const real *x, size_t n, size_t stride, double reach)
+{
+  enum clsph_status st = CLSPH_OK;
+  double *mine = malloc((n + 1) * sizeof *mine), *all = NULL;
+  int *counts = malloc((size_t)p->size * sizeof *counts);
+  int *displs = malloc((size_t)p->size * sizeof *displs);
+  CLSPH_CHECK(mine != NULL && counts != NULL && displs != NULL, CLSPH_E_NOMEM, "out of memory");
+  int m = 0;
+  for (size_t i = 0; i < n; ++i)
+    if (owner(p, (double)x[stride * i]) == p->rank) mine[m++] = (double)x[stride * i];
+  CLSPH_CHECK(MPI_Allgather(&m, 1, MPI_INT, counts, 1, MPI_INT, p->comm) == MPI_SUCCESS, CLSPH_E_IO,
+              "the gather of the particle counts failed");
+  size_t total = 0;
+  for (int r = 0; r < p->size; ++r) displs[r] = (int)total, total += (size_t)counts[r];
+  all = malloc((total + 1) * sizeof *all);
+  CLSPH_CHECK(all != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_CHECK(MPI_Allgatherv(mine, m, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, p->comm) ==
+                  MPI_SUCCESS,
+              CLSPH_E_IO, "the gather of the particles' x failed");
+  qsort(all, total, sizeof *all, cmp_double);
+  double cut[RUN_MAX_RANKS + 1];
+  memcpy(cut, p->cut, sizeof cut);
+  for (int r = 1; r < p->size; ++r)
+    cut[r] = fmin(fmax(all[(total * (size_t)r) / (size_t)p->size], p->cut[r] - reach),
+                  p->cut[r] + reach);
+  int ok = 1;
+  for (int r = 1; r + 1 < p->size; ++r) ok &= cut[r + 1] - cut[r] >= p->halo;
+  if (ok) {
+    memcpy(p->cut, cut, sizeof cut);
+    ++p->recuts;
+  }
+done:
+  free(mine);
+  free(all);
+  free(counts);
+  free(displs);
+  return st;
+}
+
 /* The exchange after a step (or, `first`, the selection at t = 0, when every rank holds every
  * particle): keep the particles of the slab, send each neighbour those of its halo (and those
  * that crossed into its slab), take the neighbours' in. */
-static enum clsph_status exchange(struct part *p, struct sim *sim, int first)
+static enum clsph_status exchange(struct part *p, struct sim *sim, int first, double reach)
 {
   enum clsph_status st = CLSPH_OK;
   struct pset *ps = &sim->ps;
@@ -313,6 +363,8 @@ static enum clsph_status exchange(struct part *p, struct sim *sim, int first)
     if (p->fidx[k] == sim->f_pos) posk = k;
   CLSPH_CHECK(posk >= 0, CLSPH_E_UNSUPPORTED, "no position field");
   const real *x = (const real *)p->h[posk];
+  if (!first && p->recut > 0 && sim->step % p->recut == 0 && reach > 0.0)
+    CLSPH_TRY(recut(p, x, n, stride, reach));
   const double lo = p->cut[p->rank], hi = p->cut[p->rank + 1];
   const int nbr[2] = {p->rank - 1, p->rank + 1};
   size_t nown = 0, nsend[2] = {0, 0}, nrecv[2] = {0, 0};
@@ -410,6 +462,7 @@ static enum clsph_status run_to_end(struct sim *sim, struct part *p)
     if (p == NULL) continue;
     if (p->size == 1) { /* no halo */
       p->held_sum += (double)sim->ps.n;
+      p->held_max_sum += (double)sim->ps.n;
       continue;
     }
     /* wcsph-riemann's sweeps this step: the lists, the advection, two per acoustic sub-step,
@@ -419,9 +472,13 @@ static enum clsph_status run_to_end(struct sim *sim, struct part *p)
                 "%s: step %ld took %ld acoustic sub-steps: %ld sweeps reach through the halo of "
                 "%d (--halo %ld or more)",
                 s->case_path, sim->step, sim->substeps, need, p->sweeps, need);
-    CLSPH_TRY(exchange(p, sim, 0));
+    CLSPH_TRY(exchange(p, sim, 0, (double)(p->sweeps - need) * sim->gspec.support));
     p->held_sum += (double)p->held;
     p->owned_sum += (double)p->owned;
+    double most = (double)p->held; /* the busiest rank's particles */
+    CLSPH_CHECK(MPI_Allreduce(MPI_IN_PLACE, &most, 1, MPI_DOUBLE, MPI_MAX, p->comm) == MPI_SUCCESS,
+                CLSPH_E_IO, "MPI_Allreduce of the particles held failed");
+    p->held_max_sum += most;
   }
 done:
   return st;
@@ -490,6 +547,7 @@ static enum clsph_status set_up(const struct run_opts *o, struct part *p, struct
   CLSPH_TRY(check_scene(scene, sim));
   p->dim = scene->dim;
   p->sweeps = o->sweeps;
+  p->recut = o->recut;
   p->halo = o->sweeps * sim->gspec.support;
   CLSPH_TRY(make_cuts(p, o, sim));
   CLSPH_TRY(part_create(p, sim));
@@ -535,7 +593,7 @@ int ranks_run(int argc, char **argv, MPI_Comm comm)
   const struct sim_comm sc = {.ctx = &p, .max = mpi_max};
   sim.comm = &sc;
   const size_t total = sim.ps.n;
-  CLSPH_TRY(exchange(&p, &sim, 1));
+  CLSPH_TRY(exchange(&p, &sim, 1, 0.0));
   MPI_Barrier(comm);
   const double w0 = MPI_Wtime();
   CLSPH_TRY(run_to_end(&sim, &p));
@@ -577,17 +635,21 @@ int ranks_run(int argc, char **argv, MPI_Comm comm)
       where[(size_t)id] = (long)k;
     }
     const double steps = (double)sim.step;
+    const double balance = fig[2] > 0.0 ? p.held_max_sum * p.size / fig[2] : 1.0;
     printf("clsph-ranks run: %s split across %d ranks along x (%s), %s, %zu particles\n",
            scene.case_path, p.size, o.ncuts > 0 ? "cuts given" : "cuts at the particles' quantiles",
            CLSPH_PRECISION_NAME, total);
-    printf("  cuts:");
+    printf("  cuts at the end:");
     for (int r = 1; r < p.size; ++r) printf(" %.6g", p.cut[r]);
-    printf(" m; halo %d sweeps = %.4g m\n", p.sweeps, p.halo);
+    printf(" m (moved %ld times: --recut %d); halo %d sweeps = %.4g m\n", p.recuts, p.recut,
+           p.sweeps, p.halo);
     printf("  to t = %g s: %ld steps (%.2f acoustic sub-steps a step), %.3f s, %.3g "
            "particle-steps/s; the ranks held %.3f times the particles (halos)\n",
            scene.t_end, sim.step, steps > 0 ? (double)sim.substeps_sum / steps : 0.0, wall,
            wall > 0.0 ? (double)total * steps / wall : 0.0,
            steps > 0 ? fig[2] / steps / (double)total : 0.0);
+    printf("  load: the busiest rank held %.3f times the ranks' mean, on average over the steps\n",
+           balance);
     printf("  exchanges: one a step, %.0f bytes sent a step over the ranks, %.1f%% of the wall "
            "time (the slowest rank's, with its transfers to and from the device)\n",
            steps > 0 ? fig[3] / steps : 0.0, wall > 0.0 ? 100.0 * fig[1] / wall : 0.0);
@@ -652,6 +714,11 @@ int ranks_run(int argc, char **argv, MPI_Comm comm)
     cJSON_AddNumberToObject(j, "exchange_seconds", fig[1]);
     cJSON_AddNumberToObject(j, "held_ratio",
                             sim.step > 0 ? fig[2] / (double)sim.step / (double)total : 0.0);
+    cJSON_AddNumberToObject(j, "recuts", (double)p.recuts);
+    cJSON_AddNumberToObject(j, "balance", fig[2] > 0.0 ? p.held_max_sum * p.size / fig[2] : 1.0);
+    cJSON *cuts = cJSON_AddArrayToObject(j, "cuts");
+    for (int r = 1; r < p.size && cuts != NULL; ++r)
+      cJSON_AddItemToArray(cuts, cJSON_CreateNumber(p.cut[r]));
     cJSON_AddNumberToObject(j, "bytes_per_step", sim.step > 0 ? fig[3] / (double)sim.step : 0.0);
     if (o.check) {
       cJSON_AddNumberToObject(j, "steps_alone", (double)steps_alone);

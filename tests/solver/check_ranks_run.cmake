@@ -3,7 +3,8 @@
 # positions (in dr) and velocities (over the largest speed) at the end against the whole scene run
 # alone, at most TOL apart (0: bit for bit). The split must own every particle once and take the
 # whole run's steps (clsph-ranks checks both and fails otherwise), and with more than one rank hold
-# a halo (more particles than the scene's) and send particles every step.
+# a halo (more particles than the scene's) and send particles every step. -DRECUTS=0: the cuts
+# must not have moved; 1: they must have (the load following the fluid); unset: either.
 string(REPLACE "|" ";" args "${ARGS}")
 file(REMOVE "${OUT}")
 execute_process(COMMAND "${MPIEXEC}" --oversubscribe -n ${NP} "${EXE}" run "${CASE}" ${args}
@@ -14,7 +15,7 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "clsph-ranks run on ${NP} ranks exited with ${rc}")
 endif()
 file(READ "${OUT}" j)
-foreach(k ranks particles owned steps steps_alone dx_dr dv_rel held_ratio bytes_per_step)
+foreach(k ranks particles owned steps steps_alone dx_dr dv_rel held_ratio bytes_per_step recuts)
   string(JSON ${k} GET "${j}" ${k})
 endforeach()
 if(NOT ranks EQUAL NP OR NOT owned EQUAL particles OR NOT steps EQUAL steps_alone)
@@ -25,5 +26,9 @@ execute_process(COMMAND python3 -c "import sys; x,v,t,h,b,n=map(float,sys.argv[1
                 RESULT_VARIABLE crc)
 if(NOT crc EQUAL 0)
   message(FATAL_ERROR "split against alone: positions ${dx_dr} dr, velocities ${dv_rel} (at most ${TOL}); held ${held_ratio} times the particles, ${bytes_per_step} bytes sent a step")
+endif()
+if((DEFINED RECUTS AND RECUTS EQUAL 0 AND NOT recuts EQUAL 0) OR
+   (DEFINED RECUTS AND RECUTS EQUAL 1 AND recuts EQUAL 0))
+  message(FATAL_ERROR "the cuts moved ${recuts} times (RECUTS=${RECUTS})")
 endif()
 message("split on ${NP} ranks: ${steps} steps, positions ${dx_dr} dr and velocities ${dv_rel} from the whole run's, held ${held_ratio} times the particles")
