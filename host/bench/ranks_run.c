@@ -2,7 +2,8 @@
  * (README, "Beyond one device"):
  *
  *   mpiexec -n RANKS clsph-ranks run CASE [--set NAME=VALUE ...] [--halo SWEEPS] [--cuts X1,X2,...]
- *                                       [--device I] [--json FILE] [--no-check]
+ *                                       [--recut STEPS] [--device I] [--json FILE] [--out DIR]
+ *                                       [--no-check]
  *
  * The domain is cut into slabs along x, one per rank (by default at the quantiles of the
  * particles' x at t = 0, so that each rank starts with as many particles). A rank steps the
@@ -20,8 +21,9 @@
  * the memory does not yet (a rank's buffers have the whole scene's capacity, so that the fluid
  * may gather anywhere). Rank 0 gathers the particles' final positions and velocities by id and,
  * unless --no-check, runs the whole scene alone to the same time and reports the largest
- * difference. No snapshots, probes or forces are written: the figures go to standard output and
- * --json. Exit codes: 0, 1 failure, 2 bad command line or a scene the split cannot run. */
+ * difference; --out DIR writes the final state, gathered, as one snapshot that `clsph render` and
+ * ParaView read. No probes, forces or snapshots along the way: the figures go to standard output
+ * and --json. Exit codes: 0, 1 failure, 2 bad command line or a scene the split cannot run. */
 #include <math.h>
 #include <mpi.h>
 #include <stdio.h>
@@ -37,14 +39,18 @@
 #include "log.h"
 #include "prog.h"
 #include "ranks_run.h"
+#include "io.h"
+#include "out.h"
 #include "scheme.h"
 #include "sim.h"
+#include "snapshot.h"
+#include "str.h"
 
 #define RUN_MAX_SETS  64
 #define RUN_MAX_RANKS 64
 
 struct run_opts {
-  const char *case_path, *json;
+  const char *case_path, *json, *out; /* --out: the final state's snapshot folder */
   char *sets[RUN_MAX_SETS];
   int nsets, sweeps, device, check, ncuts, recut;
   double cuts[RUN_MAX_RANKS];
@@ -86,7 +92,7 @@ static void usage(void)
 {
   fprintf(stderr, "usage: mpiexec -n RANKS clsph-ranks run CASE [--set NAME=VALUE ...] "
                   "[--halo SWEEPS] [--cuts X1,X2,...] [--recut STEPS] [--device I] [--json FILE] "
-                  "[--no-check]\n");
+                  "[--out DIR] [--no-check]\n");
 }
 
 static int parse(int argc, char **argv, struct run_opts *o, int rank)
@@ -122,6 +128,8 @@ static int parse(int argc, char **argv, struct run_opts *o, int rank)
       o->sets[o->nsets++] = (char *)v;
     } else if (strcmp(a, "--json") == 0) {
       o->json = v;
+    } else if (strcmp(a, "--out") == 0) {
+      o->out = v;
     } else if (strcmp(a, "--halo") == 0 || strcmp(a, "--device") == 0 ||
                strcmp(a, "--recut") == 0) {
       const double x = strtod(v, &end);
@@ -518,6 +526,74 @@ done:
   return st;
 }
 
+/* The final state in one snapshot (out/snap_000000.h5 and snapshots.xdmf, as `clsph run` writes
+ * them, so that `clsph render` and ParaView read it): every rank's owned particles, every field,
+ * gathered into rank 0's buffers, which have the whole scene's capacity. */
+static enum clsph_status write_snapshot(struct part *p, struct sim *sim, const char *dir)
+{
+  enum clsph_status st = CLSPH_OK;
+  struct pset *ps = &sim->ps;
+  const size_t n = ps->n, stride = p->dim == 3 ? 4 : 2;
+  unsigned char *all = NULL;
+  int *counts = NULL, *displs = NULL;
+  char *path = NULL;
+  struct io_series series;
+  memset(&series, 0, sizeof series);
+  int posk = -1;
+  for (int k = 0; k < p->nf; ++k) {
+    CLSPH_TRY(kern_read(sim->dev, pset_mem(ps, p->fidx[k]), n * ps->f[p->fidx[k]].elem, p->h[k]));
+    if (p->fidx[k] == sim->f_pos) posk = k;
+  }
+  CLSPH_CHECK(posk >= 0, CLSPH_E_UNSUPPORTED, "no position field");
+  const real *x = (const real *)p->h[posk];
+  size_t m = 0;
+  for (size_t i = 0; i < n; ++i)
+    if (owner(p, (double)x[stride * i]) == p->rank) pack(p, ps, i, p->sbuf[0] + p->rec * m++);
+  const int bytes = (int)(m * p->rec);
+  if (p->rank == 0) {
+    counts = malloc((size_t)p->size * sizeof *counts);
+    displs = malloc((size_t)p->size * sizeof *displs);
+    CLSPH_CHECK(counts != NULL && displs != NULL, CLSPH_E_NOMEM, "out of memory");
+  }
+  CLSPH_CHECK(MPI_Gather(&bytes, 1, MPI_INT, counts, 1, MPI_INT, 0, p->comm) == MPI_SUCCESS,
+              CLSPH_E_IO, "the gather of the snapshot's counts failed");
+  size_t total = 0;
+  if (p->rank == 0) {
+    for (int r = 0; r < p->size; ++r) displs[r] = (int)total, total += (size_t)counts[r];
+    all = malloc(total + 1);
+    CLSPH_CHECK(all != NULL, CLSPH_E_NOMEM, "out of memory");
+  }
+  CLSPH_CHECK(MPI_Gatherv(p->sbuf[0], bytes, MPI_BYTE, all, counts, displs, MPI_BYTE, 0, p->comm) ==
+                  MPI_SUCCESS,
+              CLSPH_E_IO, "the gather of the snapshot's particles failed");
+  if (p->rank != 0) goto done;
+  total /= p->rec;
+  CLSPH_CHECK(total <= p->cap, CLSPH_E_UNSUPPORTED, "%zu particles gathered, room for %zu", total,
+              p->cap);
+  for (size_t i = 0; i < total; ++i) unpack(p, ps, all + p->rec * i, i);
+  for (int k = 0; k < p->nf; ++k)
+    CLSPH_TRY(
+        kern_write(sim->dev, pset_mem(ps, p->fidx[k]), total * ps->f[p->fidx[k]].elem, p->h[k]));
+  ps->n = total;
+  struct io_meta meta;
+  snapshot_meta(sim, &meta);
+  path = str_printf("%s/snap_000000.h5", dir);
+  CLSPH_CHECK(path != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(io_snapshot_write(path, sim->dev, ps, &meta));
+  free(path);
+  path = str_printf("%s/snapshots.xdmf", dir);
+  CLSPH_CHECK(path != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(io_series_add(&series, "snap_000000.h5", sim->time, total));
+  CLSPH_TRY(io_xdmf_write(path, &series, ps, p->dim));
+done:
+  io_series_free(&series);
+  free(path);
+  free(all);
+  free(counts);
+  free(displs);
+  return st;
+}
+
 enum clsph_status ranks_write_json(const char *path, struct cJSON *j)
 {
   enum clsph_status st = CLSPH_OK;
@@ -541,6 +617,11 @@ static enum clsph_status set_up(const struct run_opts *o, struct part *p, struct
   enum clsph_status st = CLSPH_OK;
   struct case_limits lim;
   case_limits_default(&lim);
+  if (o->out != NULL && p->rank == 0) { /* a folder that holds no other run's outputs */
+    int here = 0;
+    CLSPH_TRY(out_claim_dir(o->out, NULL, 0, &here));
+    CLSPH_TRY(out_prepare_dir(o->out));
+  }
   CLSPH_TRY(case_load(o->case_path, o->nsets, o->sets, &lim, scene, script));
   CLSPH_TRY(dev_open(o->device, CLSPH_DOUBLE, dev));
   CLSPH_TRY(sim_create(dev, scene, sim));
@@ -603,6 +684,7 @@ int ranks_run(int argc, char **argv, MPI_Comm comm)
   MPI_Allreduce(MPI_IN_PLACE, fig, 2, MPI_DOUBLE, MPI_MAX, comm);
   MPI_Allreduce(MPI_IN_PLACE, fig + 2, 2, MPI_DOUBLE, MPI_SUM, comm);
   wall = fig[0];
+  if (o.out != NULL) CLSPH_TRY(write_snapshot(&p, &sim, o.out));
   /* the final state by id on rank 0 */
   int nmine = 0;
   CLSPH_TRY(read_state(&sim, &p, &mine, &nmine));

@@ -5,8 +5,15 @@
 # whole run's steps (clsph-ranks checks both and fails otherwise), and with more than one rank hold
 # a halo (more particles than the scene's) and send particles every step. -DRECUTS=0: the cuts
 # must not have moved; 1: they must have (the load following the fluid); unset: either.
+# -DCLSPH (the clsph executable): the split also writes its final state (--out OUT.d), which must
+# hold every particle once (/particles/id a permutation, read with h5dump) and which
+# `clsph render` must draw.
 string(REPLACE "|" ";" args "${ARGS}")
 file(REMOVE "${OUT}")
+if(DEFINED CLSPH)
+  file(REMOVE_RECURSE "${OUT}.d")
+  list(APPEND args --out "${OUT}.d")
+endif()
 execute_process(COMMAND "${MPIEXEC}" --oversubscribe -n ${NP} "${EXE}" run "${CASE}" ${args}
                         --json "${OUT}"
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -30,5 +37,24 @@ endif()
 if((DEFINED RECUTS AND RECUTS EQUAL 0 AND NOT recuts EQUAL 0) OR
    (DEFINED RECUTS AND RECUTS EQUAL 1 AND recuts EQUAL 0))
   message(FATAL_ERROR "the cuts moved ${recuts} times (RECUTS=${RECUTS})")
+endif()
+if(DEFINED CLSPH)
+  execute_process(COMMAND h5dump -d /particles/id "${OUT}.d/snap_000000.h5"
+                  RESULT_VARIABLE hrc OUTPUT_FILE "${OUT}.d/ids.txt" ERROR_VARIABLE herr)
+  if(NOT hrc EQUAL 0)
+    message(FATAL_ERROR "h5dump of the split's snapshot failed: ${herr}")
+  endif()
+  # the values after DATA {, each row's "(index):" left out
+  execute_process(COMMAND python3 -c "import re,sys; t=open(sys.argv[1]).read(); d=re.sub(r'[(][0-9]+[)]:', ' ', t[t.index('DATA {'):]); v=sorted(int(x) for x in re.findall(r'[0-9]+', d)); sys.exit(0 if v == list(range(int(sys.argv[2]))) else 1)"
+                          "${OUT}.d/ids.txt" ${particles}
+                  RESULT_VARIABLE prc)
+  if(NOT prc EQUAL 0)
+    message(FATAL_ERROR "the split's snapshot does not hold each of the ${particles} particles once")
+  endif()
+  execute_process(COMMAND "${CLSPH}" render "${OUT}.d" --out "${OUT}.d/frames" --no-movie
+                  RESULT_VARIABLE rrc OUTPUT_VARIABLE rout ERROR_VARIABLE rerr)
+  if(NOT rrc EQUAL 0 OR NOT EXISTS "${OUT}.d/frames/frames/speed_000000.png")
+    message(FATAL_ERROR "clsph render of the split's snapshot: ${rrc} ${rout}${rerr}")
+  endif()
 endif()
 message("split on ${NP} ranks: ${steps} steps, positions ${dx_dr} dr and velocities ${dv_rel} from the whole run's, held ${held_ratio} times the particles")
