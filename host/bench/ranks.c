@@ -100,8 +100,8 @@ static int parse(int argc, char **argv, struct opts *o, int rank)
                       "[--kgc 0|1] [--rtol R] [--max-it M] [--reps K] [--device I] [--json FILE] "
                       "[--no-check] [--one-sum] [--precond jacobi|multigrid]\n"
                       "       mpiexec -n RANKS clsph-ranks run CASE [--set NAME=VALUE ...] "
-                      "[--halo SWEEPS] [--cuts X1,X2,...] [--device I] [--json FILE] "
-                      "[--no-check]\n");
+                      "[--halo SWEEPS] [--cuts X1,X2,...] [--recut STEPS] [--device I] "
+                      "[--json FILE] [--out DIR] [--no-check]\n");
     return 0;
   }
   for (int i = 2; i < argc; ++i) {

@@ -63,7 +63,8 @@ struct part {
   double cut[RUN_MAX_RANKS + 1]; /* cut[0] = −∞, cut[size] = +∞ */
   double halo;                   /* the halo's depth, m: sweeps × the lists' reach */
   int sweeps;
-  size_t cap, rec; /* particles the buffers hold; bytes of one particle's fields */
+  size_t cap, rec;    /* particles the buffers hold; bytes of one particle's fields */
+  MPI_Datatype rtype; /* one particle's record (rec bytes): MPI counts in particles, not bytes */
   int nf, fidx[PSET_MAX_FIELDS];
   unsigned char *h[PSET_MAX_FIELDS]; /* host copy of each exchanged field, cap elements */
   unsigned char *sbuf[2], *rbuf[2];  /* records to and from the left and right neighbours */
@@ -277,6 +278,9 @@ static enum clsph_status part_create(struct part *p, const struct sim *sim)
     p->rbuf[s] = malloc(p->cap * p->rec);
     CLSPH_CHECK(p->sbuf[s] != NULL && p->rbuf[s] != NULL, CLSPH_E_NOMEM, "out of memory");
   }
+  CLSPH_CHECK(MPI_Type_contiguous((int)p->rec, MPI_BYTE, &p->rtype) == MPI_SUCCESS &&
+                  MPI_Type_commit(&p->rtype) == MPI_SUCCESS,
+              CLSPH_E_IO, "cannot make the MPI type of a particle's record");
   p->own = malloc(p->cap * sizeof *p->own);
   CLSPH_CHECK(p->own != NULL, CLSPH_E_NOMEM, "out of memory");
 done:
@@ -285,6 +289,7 @@ done:
 
 static void part_destroy(struct part *p)
 {
+  if (p->rtype != MPI_DATATYPE_NULL && p->rtype != 0) MPI_Type_free(&p->rtype);
   for (int k = 0; k < p->nf; ++k) free(p->h[k]);
   for (int s = 0; s < 2; ++s) {
     free(p->sbuf[s]);
@@ -410,11 +415,9 @@ static enum clsph_status exchange(struct part *p, struct sim *sim, int first, do
     nreq = 0;
     for (int s = 0; s < 2 && rc == MPI_SUCCESS; ++s) {
       if (nbr[s] < 0 || nbr[s] >= p->size) continue;
-      rc = MPI_Irecv(p->rbuf[s], (int)(nrecv[s] * p->rec), MPI_BYTE, nbr[s], 12, p->comm,
-                     &req[nreq++]);
+      rc = MPI_Irecv(p->rbuf[s], (int)nrecv[s], p->rtype, nbr[s], 12, p->comm, &req[nreq++]);
       if (rc == MPI_SUCCESS)
-        rc = MPI_Isend(p->sbuf[s], (int)(nsend[s] * p->rec), MPI_BYTE, nbr[s], 12, p->comm,
-                       &req[nreq++]);
+        rc = MPI_Isend(p->sbuf[s], (int)nsend[s], p->rtype, nbr[s], 12, p->comm, &req[nreq++]);
       p->bytes += (double)(nsend[s] * p->rec);
     }
     if (rc == MPI_SUCCESS) rc = MPI_Waitall(nreq, req, MPI_STATUSES_IGNORE);
@@ -549,25 +552,24 @@ static enum clsph_status write_snapshot(struct part *p, struct sim *sim, const c
   size_t m = 0;
   for (size_t i = 0; i < n; ++i)
     if (owner(p, (double)x[stride * i]) == p->rank) pack(p, ps, i, p->sbuf[0] + p->rec * m++);
-  const int bytes = (int)(m * p->rec);
+  const int recs = (int)m;
   if (p->rank == 0) {
     counts = malloc((size_t)p->size * sizeof *counts);
     displs = malloc((size_t)p->size * sizeof *displs);
     CLSPH_CHECK(counts != NULL && displs != NULL, CLSPH_E_NOMEM, "out of memory");
   }
-  CLSPH_CHECK(MPI_Gather(&bytes, 1, MPI_INT, counts, 1, MPI_INT, 0, p->comm) == MPI_SUCCESS,
+  CLSPH_CHECK(MPI_Gather(&recs, 1, MPI_INT, counts, 1, MPI_INT, 0, p->comm) == MPI_SUCCESS,
               CLSPH_E_IO, "the gather of the snapshot's counts failed");
   size_t total = 0;
   if (p->rank == 0) {
     for (int r = 0; r < p->size; ++r) displs[r] = (int)total, total += (size_t)counts[r];
-    all = malloc(total + 1);
+    all = malloc(total * p->rec + 1);
     CLSPH_CHECK(all != NULL, CLSPH_E_NOMEM, "out of memory");
   }
-  CLSPH_CHECK(MPI_Gatherv(p->sbuf[0], bytes, MPI_BYTE, all, counts, displs, MPI_BYTE, 0, p->comm) ==
+  CLSPH_CHECK(MPI_Gatherv(p->sbuf[0], recs, p->rtype, all, counts, displs, p->rtype, 0, p->comm) ==
                   MPI_SUCCESS,
               CLSPH_E_IO, "the gather of the snapshot's particles failed");
   if (p->rank != 0) goto done;
-  total /= p->rec;
   CLSPH_CHECK(total <= p->cap, CLSPH_E_UNSUPPORTED, "%zu particles gathered, room for %zu", total,
               p->cap);
   for (size_t i = 0; i < total; ++i) unpack(p, ps, all + p->rec * i, i);
