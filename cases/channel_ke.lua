@@ -13,7 +13,9 @@
 -- the bulk velocity against the reference's 1.0653 (bulk_dev), and u_plus_rowN, the rows' u+;
 -- tau_w_dev, the walls' viscous force (the wall model's shear, eq 39) over the second half of
 -- the run per unit length, over ρ u_τ², less 1 (0 once the walls carry the body force), and
--- wall_pressure_x, the pressure part along x in the same unit (0 on a flat wall).
+-- wall_pressure_x, the pressure part along x in the same unit (0 on a flat wall, but not between
+-- particles: the pair forces of the dummies on a disordered first row; in every run, over the
+-- walls' friction).
 -- ub > 0 holds the bulk velocity at ub instead (flow-rate control of the body force, Leroy et
 -- al. eqs 67-68; Lee & Moser's U_b = 1 at ub = 1, Re = 2 δ U_b/ν = 20000): u_tau, the walls'
 -- friction velocity over the second half of the run, against the 1-D solver's at U_b = 1
@@ -30,7 +32,20 @@
 -- reference's), k_rows_rms and k_rows_mean (k per row, RMS and mean of the relative deviation),
 -- and u_plus_model_dns_dev_max, the reference's own u+ against the DNS from the second row on
 -- (the model's error, which the particles' cannot make smaller but by cancelling it).
--- The run is the last instant's (no time average yet).
+-- The rows' u and k are time averages over the second half of the run (u_τ's window), from the
+-- samples sample() records every sample_dt (series u_rN and k_rN, N the row from the wall; the
+-- paper averages its SPH data in time): profile_samples counts them; the last instant's where
+-- the second half holds no sample. u_tau_blocks_range: the largest less the smallest u_τ of the
+-- window's four quarters, over u_τ (a run's own measure of how far one run's u_τ is settled).
+-- u_tau_drive: the friction velocity that the flow-rate control's mean body force over the same
+-- window implies, u_τ² = f (δ − y_p + dr/2) (the fluid between the offset walls), against the 1-D
+-- solver's in u_tau_drive_dev_1d; friction_over_drive, the walls' recorded friction over it, less
+-- 1 (0 where the momentum the fluid loses is the walls' recorded friction; wall_pressure_x is
+-- the rest of what the walls record).
+-- shear = 1: the wall model's shear from the log law at each particle's own distance from the
+-- wall (wcsph-riemann's wall_shear = "distance"; 0: at y_p, the paper's).
+-- seed > 0 adds a uniform perturbation of ±0.1 u_τ to each component of each particle's starting
+-- velocity, drawn from Lua's generator seeded with `seed`: the members of an ensemble.
 -- tvf: the transport-velocity correction (0 off, 1 full, 2 limited: the scheme's default);
 -- turb = 0 runs the same scene laminar (for the model's cost: `--profile`); ws ≥ 0 sets w_s of
 -- eq 40 (the scheme's 0.1 otherwise); md ≥ 0 sets the scheme's momentum_dissipation (0 off,
@@ -40,9 +55,15 @@
 -- u_τ averages the second half's friction over many samples: over 10% windows of a run it moves
 -- by ±1%, so that three or four samples (one per output) are not an average.
 param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1, md = -1, ub = 0,
-        wallp = -1, sample_dt = 1 }
+        wallp = -1, sample_dt = 1, seed = 0, shear = 0 }
 if not (sample_dt > 0) then
   error(("channel_ke: sample_dt must be a positive time between force samples, not %g"):format(sample_dt))
+end
+if seed < 0 or seed ~= math.floor(seed) then
+  error(("channel_ke: seed must be 0 (no perturbation) or a positive integer, not %g"):format(seed))
+end
+if shear ~= 0 and shear ~= 1 then
+  error(("channel_ke: shear must be 0 (the wall's shear from the log law at y_p) or 1 (at each particle's distance), not %g"):format(shear))
 end
 if wallp ~= -1 and wallp ~= 0 and wallp ~= 1 then
   error(("channel_ke: wallp must be -1 (the scheme's default), 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
@@ -58,7 +79,8 @@ domain { 0, off, L, H - off, periodic = "x" }
 particles { dr = dr }
 scheme { "wcsph-riemann", ard = ard, momentum_dissipation = ({"off", "riemann", "reconstructed"})[md + 1],
          transport_velocity = ({"off", "full", "limited"})[tvf + 1],
-         wall_pressure = ({"mirror", "gradient"})[wallp + 1] }
+         wall_pressure = ({"mirror", "gradient"})[wallp + 1],
+         wall_shear = turb == 1 and ({"y_p", "distance"})[shear + 1] or nil }
 if ub > 0 then
   fluid { density = 1, viscosity = nu,
           flow_rate_control = { velocity = ub, slice = { 0, L * (1 - 1e-9) } } }
@@ -84,18 +106,21 @@ local function ref_at(col, d)
   end
   return vs[#vs]
 end
+-- an ensemble member's perturbation of the starting velocity (0 without a seed)
+if seed > 0 then math.randomseed(math.tointeger(seed)) end
+local function jitter() return seed > 0 and 0.1 * u_tau * (2 * math.random() - 1) or 0 end
 if init == 1 then -- the reference's u, k and ε at the particle's distance from the wall
   -- under flow-rate control the profile scaled to ub (k as its square, ε as its cube)
   local sc = ub > 0 and ub / ub_ref or 1
   local scale = {u = sc, k = sc * sc, epsilon = sc ^ 3}
   local function at(col, y) return ref_at(col, math.min(y, H - y)) * scale[col] end
-  fill { 0, off, L, H - off, velocity = function(x, y) return at("u", y), 0 end,
+  fill { 0, off, L, H - off, velocity = function(x, y) return at("u", y) + jitter(), jitter() end,
          k = turb == 1 and function(x, y) return at("k", y) end or nil,
          epsilon = turb == 1 and function(x, y) return at("epsilon", y) end or nil }
 else -- the 1/7 power law of the same mean, k and ε of turbulence { }
   fill { 0, off, L, H - off, velocity = function(x, y)
     local d = math.min(y, H - y) / delta
-    return 8 / 7 * ub_ref * math.max(d, 1e-3) ^ (1 / 7), 0
+    return 8 / 7 * ub_ref * math.max(d, 1e-3) ^ (1 / 7) + jitter(), jitter()
   end }
 end
 force { "floor" }
@@ -126,21 +151,65 @@ for j = 1, #foam.y do
   end
 end
 
-function metrics(sim)
+local half = math.floor(nf / 2)
+-- the particle rows' mean u and k now: row r holds the particles between off + (r − 1) dr and
+-- off + r dr from the nearer wall (both halves folded)
+local function rows_now(sim)
   local y = sim.field("pos", 2).value
   local u = sim.field("vel", 1).value
   local kf = turb == 1 and sim.field("k").value or nil
-  local rows, half = {}, math.floor(nf / 2)
+  local rows = {}
   for r = 1, half do rows[r] = {sum = 0, k = 0, n = 0} end
   for i = 1, #u do
-    local d = math.min(y[i], H - y[i]) -- distance from the nearer wall
+    local d = math.min(y[i], H - y[i])
     local r = math.floor((d - off) / dr) + 1
     if r >= 1 and r <= half then
       rows[r].sum, rows[r].n = rows[r].sum + u[i], rows[r].n + 1
       if kf then rows[r].k = rows[r].k + kf[i] end
     end
   end
-  local m = {}
+  local ur, kr = {}, {}
+  for r = 1, half do
+    local n = math.max(rows[r].n, 1)
+    ur[r], kr[r] = rows[r].sum / n, rows[r].k / n
+  end
+  return ur, kr
+end
+
+function sample(sim)
+  local ur, kr = rows_now(sim)
+  local s = {}
+  for r = 1, half do
+    s[("u_r%d"):format(r)] = ur[r]
+    if turb == 1 then s[("k_r%d"):format(r)] = kr[r] end
+  end
+  s.drive = sim.body_force[1]
+  return s
+end
+
+-- the mean of a recorded series over t >= t0 (nil without a sample there)
+local function series_mean(sim, name, t0)
+  local h = sim.series(name)
+  local sum, c = 0, 0
+  for j = 1, #h.time do
+    if h.time[j] >= t0 then sum, c = sum + h.value[j], c + 1 end
+  end
+  if c == 0 then return nil, 0 end
+  return sum / c, c
+end
+
+function metrics(sim)
+  local t0 = t_end / 2 - 1e-9
+  local ur, kr = rows_now(sim)
+  local samples = 0
+  if series_mean(sim, "u_r1", t0) ~= nil then -- the rows' time averages over the second half
+    for r = 1, half do
+      ur[r], samples = series_mean(sim, ("u_r%d"):format(r), t0)
+      if turb == 1 then kr[r] = series_mean(sim, ("k_r%d"):format(r), t0) end
+    end
+  end
+  local u = sim.field("vel", 1).value
+  local m = {profile_samples = samples}
   -- the walls' friction over the second half of the run: u_τ,wall² = F_x/(2 L ρ) against the
   -- body force's u_τ² (a steady periodic channel's walls carry it all)
   local f, c = sim.force("floor", t_end / 2), sim.force("ceiling", t_end / 2)
@@ -151,10 +220,32 @@ function metrics(sim)
     m.u_tau = ut
     m.u_tau_dev_1d = ut / 0.051372 - 1
     m.u_tau_dev_fv = ut / 0.052403 - 1
+    -- the drive: the flow-rate control's mean body force over the window, over the fluid's
+    -- height between the walls, the friction that holds it (2 L (δ − off) f = 2 L u_τ²)
+    local drive = series_mean(sim, "drive", t0)
+    if drive ~= nil then
+      m.u_tau_drive = math.sqrt(math.max(drive * (delta - off), 0))
+      m.u_tau_drive_dev_1d = m.u_tau_drive / 0.051372 - 1
+      m.friction_over_drive = (ut / m.u_tau_drive) ^ 2 - 1
+    end
+    -- u_τ of each quarter of the window (the walls' whole x force: the pressure's part is 0.2%)
+    local hf, hc = sim.force_history("floor", t0), sim.force_history("ceiling", t0)
+    local lo, hi, nq = math.huge, -math.huge, #hf.time
+    if nq >= 8 then
+      for q = 0, 3 do
+        local sum, c = 0, 0
+        for j = math.floor(q * nq / 4) + 1, math.floor((q + 1) * nq / 4) do
+          sum, c = sum + hf.x[j] + hc.x[j], c + 1
+        end
+        local uq = math.sqrt(math.max(sum / c / (2 * L), 0))
+        lo, hi = math.min(lo, uq), math.max(hi, uq)
+      end
+      m.u_tau_blocks_range = (hi - lo) / ut
+    end
   else
     m.tau_w_dev = tau / (u_tau * u_tau) - 1
-    m.wall_pressure_x = (f.pressure_x + c.pressure_x) / (2 * L) / (u_tau * u_tau)
   end
+  m.wall_pressure_x = (f.pressure_x + c.pressure_x) / (2 * L) / (ut * ut)
   local bulk, count = 0, 0
   for i = 1, #u do bulk, count = bulk + u[i], count + 1 end
   m.bulk = bulk / count
@@ -164,7 +255,7 @@ function metrics(sim)
   local worst, sq, dworst, fworst, fsq = 0, 0, 0, 0, 0
   for r = 1, half do
     local yy = y_p + (r - 1) * dr
-    local up = rows[r].sum / math.max(rows[r].n, 1) / ut
+    local up = ur[r] / ut
     local want = ref_at("u_plus", yy)
     local dev = math.abs(up - want) / want
     worst = math.max(worst, dev)
@@ -178,12 +269,11 @@ function metrics(sim)
   m.u_plus_rms = math.sqrt(sq / half)
   m.u_plus_dns_dev_max = dworst
   m.u_plus_dns_dev_row1 = m.u_plus_row1 / interp(dns.y_over_delta, dns.U_plus, y_p) - 1
-  if rows_ref and kf then -- the same model on the same rows
+  if rows_ref and turb == 1 then -- the same model on the same rows
     local uw, usq, ksq, ksum, mworst = 0, 0, 0, 0, 0
     for r = 1, half do
-      local n = math.max(rows[r].n, 1)
-      local du = rows[r].sum / n / rows_ref.u[r] - 1
-      local dk = rows[r].k / n / rows_ref.k[r] - 1
+      local du = ur[r] / rows_ref.u[r] - 1
+      local dk = kr[r] / rows_ref.k[r] - 1
       uw, usq = math.max(uw, math.abs(du)), usq + du * du
       ksq, ksum = ksq + dk * dk, ksum + dk
       if r > 1 then

@@ -294,6 +294,7 @@ void metrics_api(struct sim *sim, const char *dir, struct case_sim_api *api)
   api->wall_steps = sim->wall_steps;
   api->wall_most = sim->wall_most;
   api->escaped = sim->escaped;
+  for (int k = 0; k < 3; ++k) api->body[k] = sim->body_force[k];
   api->stats = metric_stats;
   api->sample_many = metric_sample_many;
   api->probe = metric_probe;

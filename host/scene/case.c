@@ -2653,6 +2653,12 @@ static void push_sim(lua_State *L, const struct case_sim_api *api)
   lua_setfield(L, -2, "wall_crossings_most");
   lua_pushinteger(L, api->escaped);
   lua_setfield(L, -2, "escaped");
+  lua_createtable(L, 3, 0); /* the body force now: {x, y, z}, x the flow-rate control's */
+  for (int k = 0; k < 3; ++k) {
+    lua_pushnumber(L, api->body[k]);
+    lua_rawseti(L, -2, k + 1);
+  }
+  lua_setfield(L, -2, "body_force");
   if (api->stopped != NULL) { /* nil for a run that reached its end */
     lua_pushstring(L, api->stopped);
     lua_setfield(L, -2, "stopped");

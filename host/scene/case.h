@@ -19,6 +19,7 @@ struct case_sim_api {
   long wall_steps;     /* steps at which a fluid particle was behind a wall */
   long wall_most;      /* most fluid particles behind a wall at one step */
   long escaped;        /* fluid particles dropped on leaving the domain (host/sim/checks.c) */
+  double body[3];      /* the body force now, m/s² (the scene's; x: the flow-rate control's) */
   const char *stopped; /* NULL for a run that reached its end; else the failure class that
                         * stopped it (summary.json "failure"): metrics of the state at the stop */
   /** Statistics of component `comp` of a field over the particles of `kind` (−1: all) in the

@@ -63,7 +63,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
                             const real c0, const real h, __global realv *acc_prior,
                             __global realv *shift, __global real *ard, __global const real *nu_t,
                             __global const real4 *frame, __global const real2 *wallv,
-                            const real r_ext, const uint wall_model)
+                            const real r_ext, const uint wall_model, const real wscale)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
@@ -130,7 +130,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
   if (modelled) { /* eq 39: −(2/ρ) Σ_b τ_w V_b ∇W_ib, τ_w = −ρ (τ_w/ρ)(t⊗n + n⊗t) on the fluid */
     const real4 fr = frame[i];
     const realv t = (realv)(fr.x, fr.y), nw = (realv)(fr.z, fr.w);
-    a += R(2.0) * wallv[i].x * (dot(nw, swall) * t + dot(t, swall) * nw);
+    a += R(2.0) * wscale * wallv[i].x * (dot(nw, swall) * t + dot(t, swall) * nw);
   }
   acc_prior[i] = a;
   (void)nu_l;
@@ -138,6 +138,7 @@ __kernel void wcr_advection(const uint n, const struct grid g, __global const re
   (void)nu_t;
   (void)frame;
   (void)wallv;
+  (void)wscale;
   (void)r_ext;
   (void)wall_model;
   acc_prior[i] = accel + R(2.0) * mu * inv_lambda / rho[i] * visc;

@@ -17,7 +17,8 @@ __kernel void wcr_wall_force(
     const uint nmask, const real dr, const real rho0, const real c0, const real p_bg, const real mu,
     const real inv_lambda, const real h, __global real4 *out, __global const real *tk,
     __global const real *nu_t, __global const real4 *frame, __global const real2 *wallv,
-    const real r_ext, const uint wall_model, const realv gravity, __global const realv *gradp)
+    const real r_ext, const uint wall_model, const realv gravity, __global const realv *gradp,
+    const real wscale)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -38,12 +39,13 @@ __kernel void wcr_wall_force(
   const int modelled = wall_model && di >= R(0.0) && di < r_ext;
   const real4 fr = frame[i];
   const realv tt = (realv)(fr.x, fr.y), nn = (realv)(fr.z, fr.w);
-  const real tau = wallv[i].x;
+  const real tau = wscale * wallv[i].x; /* eq 39's (wcr_wall_shear_sum) */
 #else
   (void)tk;
   (void)nu_t;
   (void)frame;
   (void)wallv;
+  (void)wscale;
   (void)r_ext;
   (void)wall_model;
   const real pi = p[i], ri = rho[i], vol_i = vol[i];

@@ -15,6 +15,15 @@
  *   τ_w/ρ = U_p u_s/u+ (eq 12), and the wall function's ∂U/∂n at y_p: τ_w/(ρ u_s κ y_p) in the
  *   log layer, τ_w/(ρ ν) in the linear one (eq 13).
  * Stored: frame = (t_p, n_p) and wall = (τ_w/ρ, ∂U/∂n); zero outside P_ext.
+ * With wall_shear = "distance" (WCR_SHEAR_DIST) τ_w reads the log law at i's own distance from
+ * the wall (its height over the nearest dummy's layer, less dr/2, plus the boundary offset
+ * y_p − dr/2; at least y_p/2) in place of y_p (∂U/∂n and the rest stay at y_p), and eq 39's
+ * force is divided by its lattice sum (wcr_wall_shear_sum). Both are quadrature errors of
+ * eq 39 on a flat wall: the second row of a lattice (d = 1.5 dr < R) also carries the wall's
+ * shear, with 7% of the first row's weight Σ_b V_b ∂W/∂n at h = 1.3 dr, and at y_p it reads
+ * the log law from its own, higher, velocity (+19% at 20 rows across the channel); and the two
+ * rows' weights sum to 0.974 of τ_w, not 1 (Wendland C2, h = 1.3 dr), at every resolution
+ * (cases/channel_ke.lua; RESULTS_rans.md).
  * E = 9.793 with the switch at 11.225 (the pair the paper's eq 11 quotes; its "E = 0.9" is a
  * misprint), κ = 0.41.
  *
@@ -48,7 +57,8 @@ __kernel void wcr_turb_wall(const uint n, const struct grid g, __global const re
                             __global const real *wall_dist, __global const realv *wall_normal,
                             __global const uint *nlist, __global const uint *ncount,
                             __global const real *k, const real y_p, const real nu, const real r_ext,
-                            __global real4 *frame, __global real2 *wall, __global real *yplus)
+                            const real shift, __global real4 *frame, __global real2 *wall,
+                            __global real *yplus)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -60,6 +70,9 @@ __kernel void wcr_turb_wall(const uint n, const struct grid g, __global const re
   const realv x = pos[i];
   realv nsum = (realv)(R(0.0)), vw = (realv)(R(0.0));
   real wsum = R(0.0);
+#if WCR_SHEAR_DIST
+  real rmin = INFINITY, dn = R(0.0); /* the nearest dummy: i's height over its layer */
+#endif
   const uint c = ncount[i];
   __global const uint *row = nlist + (size_t)i * WCR_MAXN;
   for (uint m = 0; m < c; ++m) {
@@ -70,6 +83,13 @@ __kernel void wcr_turb_wall(const uint n, const struct grid g, __global const re
     nsum += w * wall_normal[j];
     vw += w * vel[j];
     wsum += w;
+#if WCR_SHEAR_DIST
+    const real r2 = dot(r, r);
+    if (r2 < rmin) {
+      rmin = r2;
+      dn = dot(r, wall_normal[j]);
+    }
+#endif
   }
   if (!(wsum > R(0.0)) || !(dot(nsum, nsum) > R(0.0))) return;
   const realv np = nsum * rsqrt(dot(nsum, nsum)); /* eq 35's n_p, made a unit vector */
@@ -83,9 +103,45 @@ __kernel void wcr_turb_wall(const uint n, const struct grid g, __global const re
   const real uplus = lam ? yp : log(KE_E * yp) / KE_KAPPA;    /* eq 11 */
   const real tau = uplus > R(0.0) ? up * us / uplus : R(0.0); /* eq 12, over ρ */
   const real dudn = lam ? tau / nu : tau / (us * KE_KAPPA * y_p);
+#if WCR_SHEAR_DIST
+  /* wall_shear = "distance": the shear from the log law at i's own distance from the wall, its
+   * height over the nearest dummy's layer (dr/2 behind the boundary) less dr/2, plus the
+   * boundary offset y_p − dr/2 (shift = y_p − dr) */
+  (void)d;
+  const real yi = fmax(dn + shift, R(0.5) * y_p);
+  const real ypi = yi * us / nu;
+  const real upi = ypi < KE_YLAM ? ypi : log(KE_E * ypi) / KE_KAPPA;
+  const real tw = upi > R(0.0) ? up * us / upi : R(0.0);
+#else
+  (void)shift;
+  const real tw = tau;
+#endif
   frame[i] = (real4)(tp.x, tp.y, np.x, np.y);
-  wall[i] = (real2)(tau, dudn);
+  wall[i] = (real2)(tw, dudn);
   yplus[i] = yp;
+}
+
+/* wall_shear = "distance": what eq 39 makes of a wall shear stress τ_w on a flat wall of the
+ * dummy lattice, per unit area over τ_w: 2 dr^(DIM+1) Σ_i Σ_b (−F(r_ib)) (r_ib·n) over the rows
+ * i of a column at (m + ½) dr from the boundary within R = 2h − dr (the wall model's P_ext) and
+ * the dummy lattice b at −(j + ½) dr (the continuum's value is 1; one work-item). */
+__kernel void wcr_wall_shear_sum(const struct smooth sm, const real dr, const real r_ext,
+                                 __global real *out)
+{
+  if (get_global_id(0) != 0) return;
+  const int m = (int)ceil(sm.support / dr) + 1;
+  const int mz = DIM == 3 ? m : 0;
+  real s = R(0.0);
+  for (int row = 0; ((real)row + R(0.5)) * dr < r_ext; ++row)
+    for (int j = 0; j <= m; ++j)
+      for (int c = -mz; c <= mz; ++c)
+        for (int a = -m; a <= m; ++a) {
+          const real rn = (real)(row + j + 1) * dr;
+          const real r = sqrt(rn * rn + (real)(a * a + c * c) * dr * dr);
+          if (r >= sm.support) continue;
+          s -= smoothing_f(sm, r) * rn;
+        }
+  out[0] = R(2.0) * s * (DIM == 3 ? dr * dr * dr * dr : dr * dr * dr);
 }
 
 __kernel void wcr_turb_transport(const uint n, const struct grid g, __global const realv *pos,

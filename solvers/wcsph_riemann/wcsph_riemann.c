@@ -36,6 +36,11 @@
  *                        laminar scene) or "gradient" (extrapolated along the wall with i's
  *                        pressure gradient over its fluid neighbours: config.cl,
  *                        wcr_wall_pressure_grad; the default under the k-ε model)
+ *   wall_shear           under the k-ε model, where the wall model reads the log law for the
+ *                        wall's shear stress (eq 12) on each P_ext particle: "y_p" (at y_p for
+ *                        every one, sec 4.4's constant y_p; the default) or "distance" (at the
+ *                        particle's own distance from the wall, with the boundary offset, and
+ *                        eq 39's force over its sum on the lattice: turbulence.cl says why)
  *   momentum_dissipation "riemann" (eq 19's dissipative term between fluid pairs; the default of
  *                        a laminar scene or one with ARD) or "off" (the default under the k-ε
  *                        model without ARD; acoustic.cl says why)
@@ -78,7 +83,7 @@ struct wcr {
   cl_kernel k_config, k_count, k_adv, k_drift, k_mom, k_cont, k_force, k_lattice;
   double c0, p_bg, mass, sigma0, lambda, u_scale;
   double cfl_ad, cfl_ac, tvf_alpha;
-  int tvf, ard, wall_full, cont_riemann, outlet_fixed, mom_diss, wall_pgrad;
+  int tvf, ard, wall_full, cont_riemann, outlet_fixed, mom_diss, wall_pgrad, shear_dist;
   int tvf_surface; /* 1: the correction's tangential part in the surface rows (advection.cl) */
   cl_uint reinit;
   double vmax;               /* the fluid's largest speed at the last max_dt, m/s */
@@ -94,6 +99,7 @@ struct wcr {
   cl_mem d_frame, d_wallv, d_grad;
   cl_kernel k_twall, k_ttrans, k_tupd;
   double y_p, w_s;  /* the wall model's distance and weight */
+  double wscale;    /* eq 39's force over its lattice sum (wall_shear = "distance"; else 1) */
   struct gate gate; /* a lifted wall group (solvers/gate), e.g. the Lobovsky dam break's gate */
 };
 
@@ -116,6 +122,7 @@ static const char *const options[] = {"sound_speed",
                                       "wall_dissipation",
                                       "wall_pressure",
                                       "momentum_dissipation",
+                                      "wall_shear",
                                       "outlet",
                                       "continuity",
                                       "transport_coefficient",
@@ -226,6 +233,13 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
               "velocity gradient of the k-ε model (turbulence { model = \"k-epsilon\" }); a "
               "laminar scene takes \"riemann\" or \"off\"",
               sc->case_path);
+  static const char *const shear_names[] = {"y_p", "distance", NULL};
+  CLSPH_TRY(option_choice(sc, "wall_shear", shear_names, 0, &w->shear_dist));
+  CLSPH_CHECK(!w->shear_dist || sc->turb.on, CLSPH_E_INPUT,
+              "%s: wcsph-riemann option wall_shear = \"distance\" sets where the k-ε wall model "
+              "reads its log law (turbulence { model = \"k-epsilon\" }); a laminar scene has "
+              "no wall model: drop it",
+              sc->case_path);
   static const char *const surf_names[] = {"off", "tangential", "pairs", NULL};
   /* "pairs" in a 3-D free-surface flow, off otherwise (the 2-D runs' validated default) */
   const int surf_default =
@@ -290,13 +304,14 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   if (verbose)
     log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), background "
              "pressure %.4g Pa, transport velocity %s%s%s, ARD %s, density %s, walls' "
-             "dissipation %s, fluid pairs' momentum dissipation %s%s",
+             "dissipation %s, fluid pairs' momentum dissipation %s%s%s",
              w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach, w->p_bg,
              tvf_names[w->tvf], w->tvf_surface ? " (surface rows: " : "",
              w->tvf_surface ? (w->tvf_surface == 1 ? "tangential)" : "pairs)") : "",
              w->ard ? "on" : "off", dens_names[reinit], wall_names[w->wall_full],
              mom_names[w->mom_diss],
-             w->wall_pgrad ? ", walls' pressure extrapolated along them with ∇p" : "");
+             w->wall_pgrad ? ", walls' pressure extrapolated along them with ∇p" : "",
+             w->shear_dist ? ", the wall model's shear at each particle's distance" : "");
 done:
   return st;
 }
@@ -339,6 +354,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_CONT_RIEMANN", w.cont_riemann));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_CONT_NORMAL", w.reinit == WCR_REINIT_OFF));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TURB", sim->scene->turb.on));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_SHEAR_DIST", w.shear_dist));
   CLSPH_TRY(prog_opts_define_int(o, "KE_ON", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_GATE", w.gate.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TVF_SURFACE", w.tvf_surface));
@@ -518,6 +534,26 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
               "%s: wcsph-riemann: the kernel sum of the lattice is %g and its Laplacian's %g, not "
               "about 1: the smoothing length (h_over_dr) is too small for the particle spacing",
               sc->case_path, w->sigma0, w->lambda);
+  w->wscale = 1.0;
+  if (w->turb && w->shear_dist) { /* eq 39's lattice sum (turbulence.cl) */
+    cl_kernel k = NULL;
+    const real rext = (real)(2.0 * sim->sm.h - sc->dr);
+    st = prog_kernel(sim->prog, "wcr_wall_shear_sum", &k);
+    if (st == CLSPH_OK) st = KERN_SET(k, KARG(smd), KARG(dr), KARG(rext), KARG(w->d_partial));
+    if (st == CLSPH_OK) st = kern_launch(sim->dev, k, 1, NULL);
+    if (st == CLSPH_OK) st = kern_read(sim->dev, w->d_partial, sizeof(real), w->h_partial);
+    if (k != NULL) clReleaseKernel(k);
+    CLSPH_TRY(st);
+    const double sum = (double)w->h_partial[0];
+    CLSPH_CHECK(sum > 0.5 && sum < 1.5, CLSPH_E_INPUT,
+                "%s: wcsph-riemann: eq 39's wall shear sums to %g of the stress on the lattice, "
+                "not about 1: the smoothing length (h_over_dr) is too small for the spacing",
+                sc->case_path, sum);
+    w->wscale = 1.0 / sum;
+    log_info("wcsph-riemann: the wall model's shear at each particle's distance, eq 39 over its "
+             "lattice sum %.4f",
+             sum);
+  }
   *state = w;
   w = NULL;
 done:
@@ -559,13 +595,15 @@ static enum clsph_status turb_wall(struct sim *sim, struct wcr *w)
   const cl_uint n = (cl_uint)ps->n;
   const real yp = (real)w->y_p, nu = (real)sim->scene->nu;
   const real r_ext = (real)(2.0 * sim->sm.h - sim->scene->dr);
+  const real shift = (real)(w->y_p - sim->scene->dr); /* wcr_turb_wall: the offset less dr/2 */
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem kind = pset_mem(ps, sim->f_kind), wd = pset_mem(ps, w->f_wdist);
   cl_mem wn = pset_mem(ps, w->f_wnormal), k = pset_mem(ps, w->ke.f_k);
   cl_mem yplus = pset_mem(ps, w->f_yplus);
   CLSPH_TRY(KERN_SET(w->k_twall, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(kind),
                      KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount), KARG(k), KARG(yp),
-                     KARG(nu), KARG(r_ext), KARG(w->d_frame), KARG(w->d_wallv), KARG(yplus)));
+                     KARG(nu), KARG(r_ext), KARG(shift), KARG(w->d_frame), KARG(w->d_wallv),
+                     KARG(yplus)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_twall, ps->n, NULL));
 done:
   return st;
@@ -635,12 +673,13 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   cl_mem frame = w->turb ? w->d_frame : w->d_none, wallv = w->turb ? w->d_wallv : w->d_none;
   const real r_ext = (real)(2.0 * h - sc->dr);
   const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
+  const real wsc = (real)w->wscale;
   CLSPH_TRY(KERN_SET(w->k_adv, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_sigma), KARG(rdr), KARG(mu), KARG(ilam),
                      KARGV(accel), KARG(tvf_a), KARG(tvf_m), KARG(bulk), KARG(rho0), KARG(c0),
                      KARG(rh), KARG(w->d_prior), KARG(w->d_shift), KARG(ard), KARG(nut),
-                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel)));
+                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(wsc)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_adv, ps->n, NULL));
 done:
   return st;
@@ -914,6 +953,7 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   cl_mem frame = w->turb ? w->d_frame : w->d_none, wallv = w->turb ? w->d_wallv : w->d_none;
   const real r_ext = (real)(2.0 * sim->sm.h - sc->dr);
   const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
+  const real wsc = (real)w->wscale;
   const struct realv_arg grav = dev_realv(sc->dim, sc->gravity);
   cl_mem gradp = w->wall_pgrad ? w->d_gradp : w->d_none;
   CLSPH_TRY(KERN_SET(
@@ -921,7 +961,7 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
       KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
       KARG(w->d_prior), KARG(wall), KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0),
       KARG(pbg), KARG(mu), KARG(ilam), KARG(h), KARG(w->d_force), KARG(tk), KARG(nut), KARG(frame),
-      KARG(wallv), KARG(r_ext), KARG(wmodel), KARGV(grav), KARG(gradp)));
+      KARG(wallv), KARG(r_ext), KARG(wmodel), KARGV(grav), KARG(gradp), KARG(wsc)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
   /* the torque about the group's centre, each dummy particle's force at its own position */

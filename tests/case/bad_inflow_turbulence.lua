@@ -5,16 +5,18 @@
 -- functions of s: 7 a velocity function that returns a string, 8 a k function negative at the far
 -- end, 9 profile = with a velocity function, 10 ramp = with one, 11 a velocity function whose mean
 -- flows out, 12 k and epsilon functions inconsistent near s = 1 (only there), 13 a k function
--- without epsilon, 14 a velocity function that returns NaN
+-- without epsilon, 14 a velocity function that returns NaN; 15 wall_shear = "distance" in a laminar
+-- scene
 param { what = 1 }
 domain { 0, 0, 2, 1 }
 particles { dr = 0.1 }
 local opts = {"wcsph-riemann"}
 if what == 5 then opts.momentum_dissipation = "reconstructed" end
 if what == 6 then opts.ard, opts.momentum_dissipation = 1, "off" end
+if what == 15 then opts.wall_shear = "distance" end
 scheme(opts)
 fluid { density = 1, viscosity = 1e-5 }
-if what ~= 1 and what ~= 5 then turbulence { model = "k-epsilon", k = 0.01, epsilon = 0.0025 } end
+if what ~= 1 and what ~= 5 and what ~= 15 then turbulence { model = "k-epsilon", k = 0.01, epsilon = 0.0025 } end
 wall { {2.3, 0}, {-0.3, 0}, fluid = "right" }
 wall { {-0.3, 1}, {2.3, 1}, fluid = "right" }
 fill { 0, 0, 2, 1 }
@@ -22,7 +24,7 @@ local k, eps = 0.01, 0.0025
 if what == 2 then eps = nil end
 if what == 3 then eps = 1e-6 end
 if what == 4 then eps = -1 end
-if what == 5 or what == 6 then k, eps = nil, nil end
+if what == 5 or what == 6 or what == 15 then k, eps = nil, nil end
 local entry = {{0, 1}, {0, 0}, velocity = 1, k = k, epsilon = eps, name = "entry"}
 if what == 7 then entry.velocity = function(s) return "fast" end end
 if what == 8 then entry.k = function(s) return 0.01 - 0.02 * s end end

@@ -306,7 +306,7 @@ def rans_section(runs):
     channel (cases/channel_ke.lua) against the 1-D solver, OpenFOAM and Lee & Moser's DNS, and
     the half converging-diverging channel (cases/channel_hcd.lua) against OpenFOAM, ARD on and
     off over resolutions."""
-    chan = sorted((s for s in runs if s["case"] == "channel_ke"),
+    chan = sorted((s for s in runs if s["case"] == "channel_ke" and "seed" not in s["parameters"]),
                   key=lambda s: (s["parameters"].get("ub", 0), s["parameters"].get("nf", 0),
                                  s["parameters"].get("md", -1), wall_pressure(s)))
     hcd = sorted((s for s in runs if s["case"] == "channel_hcd"),
@@ -718,6 +718,64 @@ def steps_run(s):
     return s["steps"] - s.get("restarted_at_step", 0)
 
 
+def ensemble_section(runs):
+    """The k-ε channel as an ensemble (cases/channel_ke.lua with seed =): members that differ only
+    in a perturbation of their starting velocity, grouped by resolution and wall shear, so that
+    what a single run measures can be told from the spread of the particles' arrangements."""
+    members = [s for s in runs if s["case"] == "channel_ke" and "seed" in s["parameters"]
+               and s["status"] == "ok"]
+    if not members:
+        return []
+    groups = {}
+    for s in members:
+        p = s["parameters"]
+        key = (p.get("nf", 0), wall_pressure(s), int(p.get("md", -1)), int(p.get("shear", 0)),
+               p.get("t_end", 0))
+        groups.setdefault(key, []).append(s)
+
+    def stats(vals):
+        vals = [v for v in vals if v is not None]
+        if not vals:
+            return "–"
+        mean = sum(vals) / len(vals)
+        sd = math.sqrt(sum((v - mean) ** 2 for v in vals) / (len(vals) - 1)) if len(vals) > 1 else 0.0
+        return (f"{100 * mean:+.2f}% ± {100 * sd:.2f} ({100 * min(vals):+.2f} … "
+                f"{100 * max(vals):+.2f})")
+    out = ["", "## k-ε channel: ensembles (Wang, Sun & Hu sec 5.1)", "",
+           "Lee & Moser's channel at U_b = 1 as above, each group's members started from the "
+           "same 1-D profile with a perturbation of ±0.1 u_τ in each velocity component, drawn "
+           "from `seed` (`tests/validation/run_rans_ensemble.sh`). Per group: the mean ± sample "
+           "standard deviation (smallest … largest) over its members of u_τ from the walls' "
+           "friction against the 1-D solver's grid limit (0.051372); of the u_τ that the drive "
+           "implies (the flow-rate control's mean body force f over the same window, u_τ² = "
+           "f (δ − y_p + dr/2)); the walls' recorded friction over the drive (0 where the "
+           "momentum the fluid loses is the walls' friction); the walls' recorded pressure force "
+           "along x over their friction (0 on a flat wall between continua); u+ against the DNS "
+           "from the second row on, from the rows' time-averaged u; and k over the 1-D solver's "
+           "on the same rows (mean of the rows' deviations). wall_shear \"y_p\" is the paper's "
+           "(every P_ext particle at y_p), \"distance\" each particle's own distance with eq 39 "
+           "over its lattice sum (wcsph-riemann's option; turbulence.cl). Wall times: members ran "
+           "two to four side by side on 2 cores, so that they compare no costs.", "",
+           "| N_f | wall pressure | wall shear | t_end | members | u_τ vs 1-D (walls' friction) "
+           "| u_τ vs 1-D (drive) | friction over drive | pressure along x over friction "
+           "| u+ vs DNS (rows 2+) | k vs 1-D rows | wall s (median) | particle-steps/s |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for key in sorted(groups):
+        g = groups[key]
+        nf, wp, _, shear, t_end = key
+
+        def col(name):
+            return stats([s["metrics"].get(name) for s in g])
+        walls = sorted(s["wall_seconds"] for s in g)
+        rates = sorted(s["particle_steps_per_second"] for s in g)
+        out.append(f"| {nf:g} | {wp} | {('y_p', 'distance')[shear]} | {t_end:g} | {len(g)} "
+                   f"| {col('u_tau_dev_1d')} | {col('u_tau_drive_dev_1d')} "
+                   f"| {col('friction_over_drive')} | {col('wall_pressure_x')} "
+                   f"| {col('u_plus_dns_dev_max')} | {col('k_rows_mean')} "
+                   f"| {walls[len(walls) // 2]:.1f} | {rates[len(rates) // 2]:.3g} |")
+    return out
+
+
 def wall(s, f=".1f"):
     """The wall time, marked with the step a restarted run resumed from: the whole run's where
     its checkpoints carried it, and the last leg's."""
@@ -1034,6 +1092,7 @@ def main():
     lines += hydrostatic_section(runs)
     lines += lobovsky_section(runs)
     lines += rans_section(runs)
+    lines += ensemble_section(runs)
     lines += usaw_ke_section(runs, runs_dir)
     lines += wheel_section(runs, runs_dir)
     lines += fish_pass_section(runs, runs_dir)

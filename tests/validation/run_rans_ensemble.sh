@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The k-ε channel of wcsph-riemann as ensembles (cases/channel_ke.lua, Lee & Moser's U_b = 1):
+# members that differ only in a ±0.1 u_τ perturbation of their starting velocity (seed), at
+# N_f = 20 (t = 1000 δ/U_b, four members) and 40 (t = 600, three), with the wall model's shear at
+# y_p (the paper's) and at each particle's distance (wall_shear = "distance"); then
+# RESULTS_rans_ensemble.md. About 75 min on 2 cores, two runs side by side.
+#   tests/validation/run_rans_ensemble.sh [BUILD_DIR]     (default build)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${1:-build}
+out=out/validation_rans_ensemble
+mkdir -p "$out"
+source tests/validation/lib.sh
+(
+  for s in 0 1 2 3; do run channel_ke_nf20_s$s channel_ke nf=20 ub=1 t_end=1000 every=100 seed=$s; done
+  for s in 0 1 2; do run channel_ke_nf40_s$s channel_ke nf=40 ub=1 t_end=600 every=100 seed=$s; done
+) &
+(
+  for s in 0 1 2 3; do
+    run channel_ke_nf20_distance_s$s channel_ke nf=20 ub=1 t_end=1000 every=100 seed=$s shear=1
+  done
+  for s in 0 1 2; do
+    run channel_ke_nf40_distance_s$s channel_ke nf=40 ub=1 t_end=600 every=100 seed=$s shear=1
+  done
+) &
+wait
+python3 tests/validation/results.py "$out" tests/validation/RESULTS_rans_ensemble.md
