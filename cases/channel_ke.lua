@@ -59,8 +59,8 @@ param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1
 if not (sample_dt > 0) then
   error(("channel_ke: sample_dt must be a positive time between force samples, not %g"):format(sample_dt))
 end
-if seed < 0 or seed ~= math.floor(seed) then
-  error(("channel_ke: seed must be 0 (no perturbation) or a positive integer, not %g"):format(seed))
+if seed < 0 or seed >= 2 ^ 31 or seed ~= math.floor(seed) then
+  error(("channel_ke: seed must be 0 (no perturbation) or a positive integer below 2^31, not %g"):format(seed))
 end
 if shear ~= 0 and shear ~= 1 then
   error(("channel_ke: shear must be 0 (the wall's shear from the log law at y_p) or 1 (at each particle's distance), not %g"):format(shear))

@@ -1165,7 +1165,10 @@ clsph_cli_test(channel_ke_shear_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_
                REGEX "channel_ke: shear must be 0 \\(the wall's shear from the log law at y_p\\) or 1")
 clsph_cli_test(channel_ke_seed_negative ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
                --set seed=-1 RC 2
-               REGEX "channel_ke: seed must be 0 \\(no perturbation\\) or a positive integer, not -1")
+               REGEX "channel_ke: seed must be 0 \\(no perturbation\\) or a positive integer below 2\\^31, not -1")
+clsph_cli_test(channel_ke_seed_huge ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
+               --set seed=1e300 RC 2
+               REGEX "channel_ke: seed must be 0 \\(no perturbation\\) or a positive integer below 2\\^31, not 1e\\+300")
 clsph_cli_test(channel_ke_wallp_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
                --set wallp=2 RC 2
                REGEX "channel_ke: wallp must be -1 \\(the scheme's default\\), 0 \\(the mirror\\) or 1 \\(the gradient\\), not 2")
