@@ -1294,6 +1294,8 @@ clsph_cli_test(riemann_dissipation_off_with_ard ARGS info ${bad_inflow_turb} --s
                REGEX "momentum_dissipation = \"off\" contradicts ard = 1")
 clsph_cli_test(riemann_wall_shear_laminar ARGS info ${bad_inflow_turb} --set what=15 RC 2
                REGEX "wall_shear = \"distance\" sets where the k-ε wall model reads its log law")
+clsph_cli_test(riemann_wall_shear_unknown ARGS info ${bad_inflow_turb} --set what=16 RC 2
+               REGEX "wcsph-riemann option wall_shear must be one of \"y_p\", \"distance\"")
 clsph_cli_test(inflow_function_not_number ARGS info ${bad_inflow_turb} --set what=7 RC 2
                REGEX "inflow 'entry': the velocity function returned string at s = 0(\\.0)?: it must return a number")
 clsph_cli_test(inflow_function_k_negative ARGS info ${bad_inflow_turb} --set what=8 RC 2

@@ -121,6 +121,7 @@ __kernel void wcr_turb_wall(const uint n, const struct grid g, __global const re
   yplus[i] = yp;
 }
 
+#if WCR_SHEAR_DIST
 /* wall_shear = "distance": what eq 39 makes of a wall shear stress τ_w on a flat wall of the
  * dummy lattice, per unit area over τ_w: 2 dr^(DIM+1) Σ_i Σ_b (−F(r_ib)) (r_ib·n) over the rows
  * i of a column at (m + ½) dr from the boundary within R = 2h − dr (the wall model's P_ext) and
@@ -143,6 +144,7 @@ __kernel void wcr_wall_shear_sum(const struct smooth sm, const real dr, const re
         }
   out[0] = R(2.0) * s * (DIM == 3 ? dr * dr * dr * dr : dr * dr * dr);
 }
+#endif
 
 __kernel void wcr_turb_transport(const uint n, const struct grid g, __global const realv *pos,
                                  __global const realv *vel, __global const real *vol,

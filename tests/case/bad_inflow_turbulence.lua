@@ -6,7 +6,7 @@
 -- end, 9 profile = with a velocity function, 10 ramp = with one, 11 a velocity function whose mean
 -- flows out, 12 k and epsilon functions inconsistent near s = 1 (only there), 13 a k function
 -- without epsilon, 14 a velocity function that returns NaN; 15 wall_shear = "distance" in a laminar
--- scene
+-- scene, 16 a wall_shear the scheme does not know
 param { what = 1 }
 domain { 0, 0, 2, 1 }
 particles { dr = 0.1 }
@@ -14,6 +14,7 @@ local opts = {"wcsph-riemann"}
 if what == 5 then opts.momentum_dissipation = "reconstructed" end
 if what == 6 then opts.ard, opts.momentum_dissipation = 1, "off" end
 if what == 15 then opts.wall_shear = "distance" end
+if what == 16 then opts.wall_shear = "wall" end
 scheme(opts)
 fluid { density = 1, viscosity = 1e-5 }
 if what ~= 1 and what ~= 5 and what ~= 15 then turbulence { model = "k-epsilon", k = 0.01, epsilon = 0.0025 } end
