@@ -184,10 +184,22 @@ wcr_momentum(const uint n, const struct grid g, __global const realv *pos,
              __global const realv *acc_prior, const real rho0, const real c0, const real p_bg,
              const real mu, const real h, __global realv *acc, __global const real *tk,
              __global const real *nu_t, __global const realv *wall_normal, const realv gravity,
-             __global const real4 *grad, __global realv *gradp, __global const uint *gate)
+             __global const real4 *grad, __global realv *gradp, __global const uint *gate,
+             __global const uint *wall, __global real4 *rec, __global const uint *wgroup,
+             const uint nwall, const real rec_w)
 {
   const uint i = get_global_id(0);
   if (i >= n || kind[i] != WCR_FLUID) return;
+#if WCR_REC
+  real4 wp[WCR_REC]; /* the walls' pair sums by group (force.cl): pressure and Riemann, ARD */
+  for (uint q = 0; q < WCR_REC; ++q) wp[q] = (real4)(R(0.0));
+#else
+  (void)wall;
+  (void)rec;
+  (void)wgroup;
+  (void)nwall;
+  (void)rec_w;
+#endif
   const realv x = pos[i], vi = vel[i], ai = acc_prior[i];
 #if WCR_MOM_DISS == 2
   const real4 gi = grad[i];
@@ -221,11 +233,11 @@ wcr_momentum(const uint n, const struct grid g, __global const realv *pos,
     const realv r = wcr_sep(x, pos[j], &g);
     const real r2 = dot(r, r), rr = sqrt(r2);
     const real f = smoothing_f(g.sm, rr) * vol[j];
-    const uint kj = kind[j], wall = kj == WCR_DUMMY;
+    const uint kj = kind[j], isw = kj == WCR_DUMMY;
     realv vj;
     real pj;
     wcr_mat bj;
-    if (wall) {
+    if (isw) {
 #if WCR_TURB
       /* the wall model carries the wall's shear (eq 39): the Riemann problem sees the normal
        * mirror only, no tangential jump (else its dissipation is a laminar no-slip drag) */
@@ -251,24 +263,41 @@ wcr_momentum(const uint n, const struct grid g, __global const realv *pos,
     const realv vij = vi - vj;
     real u = rr > R(0.0) ? -dot(vij, r) / rr : R(0.0);
 #if WCR_MOM_DISS == 2
-    if (!wall) { /* the jump left after the linear reconstruction, ½ (∇v_i + ∇v_j) r_ij */
+    if (!isw) { /* the jump left after the linear reconstruction, ½ (∇v_i + ∇v_j) r_ij */
       const real4 gm = kj == WCR_FLUID ? R(0.5) * (gi + grad[j]) : gi;
       const realv rec = vij - (realv)(gm.x * r.x + gm.y * r.y, gm.z * r.x + gm.w * r.y);
       u = rr > R(0.0) ? -dot(rec, r) / rr : R(0.0);
     }
 #endif
-    const real beta = wcr_beta(u, c0, wall);
-    sum += f * (pi * wcr_apply(bj, r) + pj * wcr_apply(bi, r));
+    const real beta = wcr_beta(u, c0, isw);
+    const realv tp = f * (pi * wcr_apply(bj, r) + pj * wcr_apply(bi, r));
+    sum += tp;
 #if WCR_ARD
 #if WCR_TURB
-    const real muj = wall ? mui : mu + rho0 * nu_t[j];
+    const real muj = isw ? mui : mu + rho0 * nu_t[j];
     const real mij = wcr_pair_mean(mui, muj); /* eq 32 against µ̃_ij */
 #else
     const real mij = mu;
 #endif
-    visc += fmax(R(0.5) * rho0 * beta * h - mij, R(0.0)) * f * vij;
+    const realv dv = fmax(R(0.5) * rho0 * beta * h - mij, R(0.0)) * f * vij;
+    visc += dv;
 #else
-    if (WCR_MOM_DISS != 0 || wall) sum += f * (rho0 * beta * u) * r;
+    realv td = (realv)(R(0.0));
+    if (WCR_MOM_DISS != 0 || isw) {
+      td = f * (rho0 * beta * u) * r;
+      sum += td;
+    }
+#endif
+#if WCR_REC
+    const uint q = isw ? wcr_rec_group(j, wall, wgroup, nwall) : 0u;
+    if (q) {
+#if WCR_ARD
+      wp[q - 1].xy += tp;
+      wp[q - 1].zw += dv;
+#else
+      wp[q - 1].xy += tp + td;
+#endif
+    }
 #endif
   }
   realv a = ai - sum / ri;
@@ -276,6 +305,16 @@ wcr_momentum(const uint n, const struct grid g, __global const realv *pos,
   a += R(2.0) / ri * visc;
 #endif
   acc[i] = a;
+#if WCR_REC
+  /* the walls take the reactions, −m_i (= −ρ_i V_i) of what each group's pairs give i, as the
+   * mean over the step's sub-steps (rec_w = 1/their number; the viscous part: wcr_advection) */
+  const real vi_w = rec_w * vol[i];
+  for (uint q = 0; q < WCR_REC; ++q) {
+    const size_t at = (size_t)i * WCR_REC + q;
+    rec[at] +=
+        (real4)(vi_w * wp[q].x, vi_w * wp[q].y, -R(2.0) * vi_w * wp[q].z, -R(2.0) * vi_w * wp[q].w);
+  }
+#endif
 }
 
 /* dρ/dt (eq 15) from v^{n+1} = v + δt dv/dt of both particles; fluid only (0 elsewhere). The

@@ -66,6 +66,9 @@
 #ifndef WCR_TVF_SURFACE
 #define WCR_TVF_SURFACE 0 /* the surface rows' correction: 1 tangential, 2 near pairs */
 #endif
+#ifndef WCR_REC
+#define WCR_REC 0 /* wall groups whose force the sub-steps record (force.cl), 0: none */
+#endif
 #define WCR_PAIR_KAPPA R(0.25) /* the near pairs' push (advection.cl) */
 /* below this normalised kernel sum a particle is spray: no correction (advection.cl) */
 #define WCR_SURF_SIGMA_MIN R(0.3)
@@ -182,6 +185,14 @@ real wcr_wall_pressure_grad(real pi, real ri, realv ai, realv r, realv nw, realv
 real wcr_pair_mean(real a, real b)
 {
   return R(2.0) * a * b / (a + b);
+}
+
+/* the record a dummy particle's pair forces go to: 1 + the index of its wall's group among the
+ * scene's force groups (force.cl), 0: not recorded */
+uint wcr_rec_group(uint j, __global const uint *wall, __global const uint *wgroup, uint nwall)
+{
+  const uint k = wall[j];
+  return k < nwall ? wgroup[k] : 0u;
 }
 
 /* B applied to a vector */

@@ -1,13 +1,22 @@
 /* force.cl (wcsph-riemann): the force of the fluid on a group of dummy-particle walls, the sum of
- * the reactions of the pair forces the walls exert on the fluid in the sub-steps (acoustic.cl,
- * advection.cl), so that what the fluid loses the walls gain:
+ * the reactions of the pair forces the walls exert on the fluid, so that what the fluid loses the
+ * walls gain:
  *   pressure: Σ_i V_i Σ_w V_w [(p_i B_w + p_w B_i) + ρ0 β U I] ∇W_iw   (eq 19 with the wall state;
  *             p + p_bg as the momentum sum has it, acoustic.cl)
  *   viscous:  −Σ_i V_i Σ_w 2 µ V_w F (v_i − v_w)  (eq 21 with Morris's wall velocity,
  *             advection.cl; with ARD the Riemann viscosity's excess max(µ_R − µ, 0) with the
  *             mirror velocity, eqs 31-32)
- * over the fluid particles i and the dummy particles w of the group (mask[wall[w]] != 0). Each
- * fluid particle writes its share (pressure x, y, viscous x, y); the host sums them in double. */
+ * over the fluid particles i and the dummy particles w of the group (mask[wall[w]] != 0).
+ * A step records them where the fluid feels them (-D WCR_REC = the scene's force groups): the
+ * advection step writes each fluid particle's viscous reactions per group (wcr_advection) and
+ * each acoustic sub-step adds its pressure and Riemann ones over their number (wcr_momentum), so
+ * that the record is the step's mean force and M ΔU = Δt (M f − F) holds to round-off
+ * (tests/case/wall_momentum.lua). This kernel evaluates the same pairs once on the present state:
+ * the output before the first step only. Used after every step, it missed
+ * what the sub-steps did between: in the k-ε channel (cases/channel_ke.lua, N_f = 20, a fixed
+ * body force, TVF off) the sub-steps' wall pairs pushed a disordered first row forward by 49% of
+ * the body force while the end of the step read a drag of 12%. Each fluid particle writes its
+ * share (pressure x, y, viscous x, y); the host sums them in double. */
 __kernel void wcr_wall_force(
     const uint n, const struct grid g, __global const realv *pos, __global const realv *vel,
     __global const real *vol, __global const uint *kind, __global const real *rho,

@@ -101,6 +101,12 @@ struct wcr {
   double y_p, w_s;  /* the wall model's distance and weight */
   double wscale;    /* eq 39's force over its lattice sum (wall_shear = "distance"; else 1) */
   struct gate gate; /* a lifted wall group (solvers/gate), e.g. the Lobovsky dam break's gate */
+  /* the walls' force record (force.cl) of the scene's force groups: per fluid particle and
+   * group, the reactions of its wall pairs over the last step (field f_rec, nrec groups) */
+  int f_rec;
+  cl_uint nrec, nwall_map;
+  cl_mem d_wgroup; /* per wall (scene walls): 1 + its force group, 0: not recorded */
+  long rec_steps;  /* steps recorded here (a restart finds its record in the checkpoint) */
 };
 
 static const char *const sources[] = {OPEN_SOURCES,
@@ -358,6 +364,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "KE_ON", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_GATE", w.gate.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TVF_SURFACE", w.tvf_surface));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_REC", sim->scene->dim == 2 ? sim->scene->nforces : 0));
   CLSPH_TRY(open_define(sim, o)); /* the sections (solvers/open) */
 done:
   return st;
@@ -375,6 +382,30 @@ done:
 }
 
 static void wcr_destroy(void *state);
+
+/* The walls' force record (force.cl): a field of 4 reals per force group (pressure x, y,
+ * viscous x, y) that the step's kernels fill, and the map from the scene's walls to the groups.
+ * A group named twice records once, under its first name. */
+static enum clsph_status record_create(struct sim *sim, struct wcr *w)
+{
+  enum clsph_status st = CLSPH_OK;
+  const struct scene *sc = sim->scene;
+  const cl_uint nw = (cl_uint)(sc->nwalls > 0 ? sc->nwalls : 1);
+  cl_uint *map = calloc(nw, sizeof *map);
+  CLSPH_CHECK(map != NULL, CLSPH_E_NOMEM, "out of memory");
+  for (int k = 0; k < sc->nwalls; ++k)
+    for (int g = 0; g < sc->nforces && map[k] == 0; ++g)
+      if (strcmp(sc->walls[k].group, sc->forces[g]) == 0) map[k] = (cl_uint)g + 1u;
+  w->nrec = (cl_uint)sc->nforces;
+  w->nwall_map = nw;
+  CLSPH_TRY(kern_buffer(sim->dev, nw * sizeof *map, map, &w->d_wgroup, "wall force groups"));
+  CLSPH_TRY(
+      pset_add(&sim->ps, sim->dev, "wall_record", w->nrec * 4 * sizeof(real), NULL, &w->f_rec));
+  pset_describe(&sim->ps, w->f_rec, PF_REAL, (int)(4 * w->nrec), 0);
+done:
+  free(map);
+  return st;
+}
 
 /* The k-ε model's fields (k, epsilon, nu_t, y_plus: outputs), buffers and kernels; a laminar
  * scene makes none of them. The initial k and ε are the declared ones everywhere; ν_t starts
@@ -484,6 +515,8 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
         geo->kind[i] == KIND_DUMMY && geo->group[i] >= 0 ? (cl_uint)geo->group[i] : 0xffffffffu;
   CLSPH_TRY(pset_add(ps, sim->dev, "wall", sizeof(cl_uint), ubuf, &w->f_wall));
   pset_describe(ps, w->f_wall, PF_UINT, 1, 0);
+  w->f_rec = -1;
+  if (dim == 2 && sc->nforces > 0) CLSPH_TRY(record_create(sim, w));
   CLSPH_TRY(gate_check(sim, &w->gate, "wcsph-riemann"));
   CLSPH_TRY(gate_create(sim, &w->gate));
   /* the entry and exit layers: their velocity in a field of their own (the fluid's vel is the
@@ -673,13 +706,17 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   cl_mem frame = w->turb ? w->d_frame : w->d_none, wallv = w->turb ? w->d_wallv : w->d_none;
   const real r_ext = (real)(2.0 * h - sc->dr);
   const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
-  const real wsc = (real)w->wscale;
+  const real wsc = (real)w->wscale, mass = (real)w->mass;
+  cl_mem wall = pset_mem(ps, w->f_wall);
+  cl_mem rec = w->f_rec >= 0 ? pset_mem(ps, w->f_rec) : w->d_none;
+  cl_mem wgroup = w->f_rec >= 0 ? w->d_wgroup : w->d_none;
   CLSPH_TRY(KERN_SET(w->k_adv, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_sigma), KARG(rdr), KARG(mu), KARG(ilam),
                      KARGV(accel), KARG(tvf_a), KARG(tvf_m), KARG(bulk), KARG(rho0), KARG(c0),
                      KARG(rh), KARG(w->d_prior), KARG(w->d_shift), KARG(ard), KARG(nut),
-                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(wsc)));
+                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(wsc), KARG(wall),
+                     KARG(rec), KARG(wgroup), KARG(w->nwall_map), KARG(mass)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_adv, ps->n, NULL));
 done:
   return st;
@@ -708,8 +745,9 @@ done:
   return st;
 }
 
-/* dv/dt (eq 19), then dρ/dt (eq 15) from v + dt dv/dt */
-static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
+/* dv/dt (eq 19), then dρ/dt (eq 15) from v + dt dv/dt; the walls' record takes rec_w of the
+ * sub-step's wall pairs */
+static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt, double rec_w)
 {
   enum clsph_status st = CLSPH_OK;
   struct pset *ps = &sim->ps;
@@ -727,11 +765,16 @@ static enum clsph_status relax(struct sim *sim, struct wcr *w, double dt)
   cl_mem grad = w->turb ? w->d_grad : w->d_none;
   cl_mem gradp = w->wall_pgrad ? w->d_gradp : w->d_none;
   cl_mem gate = w->gate.on ? pset_mem(ps, w->gate.f_gate) : w->d_none;
+  cl_mem wall = pset_mem(ps, w->f_wall);
+  cl_mem rec = w->f_rec >= 0 ? pset_mem(ps, w->f_rec) : w->d_none;
+  cl_mem wgroup = w->f_rec >= 0 ? w->d_wgroup : w->d_none;
+  const real rw = (real)rec_w;
   CLSPH_TRY(KERN_SET(w->k_mom, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                      KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount),
                      KARG(w->d_bmat), KARG(w->d_prior), KARG(rho0), KARG(c0), KARG(pbg), KARG(mu),
                      KARG(h), KARG(w->d_acc), KARG(tk), KARG(nut), KARG(wn), KARGV(grav),
-                     KARG(grad), KARG(gradp), KARG(gate)));
+                     KARG(grad), KARG(gradp), KARG(gate), KARG(wall), KARG(rec), KARG(wgroup),
+                     KARG(w->nwall_map), KARG(rw)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_mom, ps->n, NULL));
   CLSPH_TRY(KERN_SET(w->k_cont, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(w->d_acc),
                      KARG(rdt), KARG(vol), KARG(kind), KARG(rho), KARG(p), KARG(w->d_nlist),
@@ -874,7 +917,7 @@ static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
                           pset_mem(&sim->ps, sim->f_vel), vgate));
     }
     if (w->open.nsec > 0) CLSPH_TRY(open_layers(sim, w));
-    CLSPH_TRY(relax(sim, w, d));
+    CLSPH_TRY(relax(sim, w, d, 1.0 / (double)nac));
     const double tail = k + 1 < nac ? d : 0.5 * d; /* the next sub-step's first half too */
     CLSPH_TRY(drift(sim, w, d, tail, tail, 0u));
     if (w->open.nsec > 0) CLSPH_TRY(open_move(&w->open, sim, d));
@@ -884,6 +927,7 @@ static enum clsph_status wcr_step(struct sim *sim, void *state, double dt)
   CLSPH_TRY(count_pairs(sim, w, &pairs));
   sim->substeps = nac;
   sim->pairs = pairs * (double)(2 + 2 * nac); /* config, advection, 2 per sub-step */
+  w->rec_steps++;
 done:
   return st;
 }
@@ -907,7 +951,34 @@ done:
   return st;
 }
 
-/* Force of the fluid on the dummy particles of a wall group (force.cl), summed in double. */
+/* The sums of a wall group's force from per-particle shares (pressure x, y, viscous x, y at
+ * share[stride * i + 4 q + c]): the force, and the torque about the group's centre with each
+ * share at its fluid particle's position (the image nearest the centre) */
+static void force_sum(const struct sim *sim, const char *group, const real *share, size_t stride,
+                      size_t q, const real *hpos, struct wall_force *out)
+{
+  const struct scene *sc = sim->scene;
+  double c[2];
+  scene_group_centre(sc, group, c);
+  memset(out, 0, sizeof *out);
+  for (size_t i = 0; i < sim->ps.n; ++i) {
+    const real *f = share + stride * i + 4 * q;
+    const double fx = (double)f[0] + (double)f[2], fy = (double)f[1] + (double)f[3];
+    out->pressure[0] += (double)f[0];
+    out->pressure[1] += (double)f[1];
+    out->viscous[0] += (double)f[2];
+    out->viscous[1] += (double)f[3];
+    if (fx == 0.0 && fy == 0.0) continue;
+    double r[2] = {(double)hpos[2 * i] - c[0], (double)hpos[2 * i + 1] - c[1]};
+    for (int a = 0; a < 2; ++a)
+      if (sc->periodic[a]) r[a] -= (sc->hi[a] - sc->lo[a]) * round(r[a] / (sc->hi[a] - sc->lo[a]));
+    out->torque += r[0] * fy - r[1] * fx;
+  }
+}
+
+/* Force of the fluid on the dummy particles of a wall group (force.cl), summed in double: the
+ * record of the last step (its sub-steps' mean; after a restart the checkpoint's, a field), else
+ * (the output before the first step) the pairs evaluated once on the present state. */
 static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char *group,
                                         struct wall_force *out)
 {
@@ -916,8 +987,23 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   struct pset *ps = &sim->ps;
   const struct scene *sc = sim->scene;
   cl_uint *mask = NULL;
-  real *hpos = NULL;
+  real *hpos = NULL, *share = NULL;
   const cl_uint n = (cl_uint)ps->n, nmask = (cl_uint)(sc->nwalls > 0 ? sc->nwalls : 1);
+  hpos = malloc(2 * (ps->n + 1) * sizeof *hpos);
+  CLSPH_CHECK(hpos != NULL, CLSPH_E_NOMEM, "out of memory");
+  CLSPH_TRY(kern_read(sim->dev, pset_mem(ps, sim->f_pos), 2 * ps->n * sizeof *hpos, hpos));
+  if (w->f_rec >= 0 && (w->rec_steps > 0 || sim->step > 0)) { /* a restart: the checkpoint's */
+    size_t q = 0;
+    while (q < w->nrec && strcmp(sc->forces[q], group) != 0) ++q;
+    CLSPH_CHECK(q < w->nrec, CLSPH_E_INPUT, "%s: force { \"%s\" }: no such recorded group",
+                sc->case_path, group);
+    const size_t stride = 4 * (size_t)w->nrec;
+    share = malloc((ps->n * stride + 1) * sizeof *share);
+    CLSPH_CHECK(share != NULL, CLSPH_E_NOMEM, "out of memory");
+    CLSPH_TRY(kern_read(sim->dev, pset_mem(ps, w->f_rec), ps->n * stride * sizeof *share, share));
+    force_sum(sim, group, share, stride, q, hpos, out);
+    goto done;
+  }
   mask = calloc(nmask, sizeof *mask);
   CLSPH_CHECK(mask != NULL, CLSPH_E_NOMEM, "out of memory");
   for (int k = 0; k < sc->nwalls; ++k) mask[k] = strcmp(sc->walls[k].group, group) == 0;
@@ -964,27 +1050,9 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
       KARG(wallv), KARG(r_ext), KARG(wmodel), KARGV(grav), KARG(gradp), KARG(wsc)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
-  /* the torque about the group's centre, each dummy particle's force at its own position */
-  hpos = malloc(2 * (ps->n + 1) * sizeof *hpos);
-  CLSPH_CHECK(hpos != NULL, CLSPH_E_NOMEM, "out of memory");
-  CLSPH_TRY(kern_read(sim->dev, pos, 2 * ps->n * sizeof *hpos, hpos));
-  double c[2];
-  scene_group_centre(sc, group, c);
-  memset(out, 0, sizeof *out);
-  for (size_t i = 0; i < ps->n; ++i) {
-    const double fx = (double)w->h_force[4 * i] + (double)w->h_force[4 * i + 2],
-                 fy = (double)w->h_force[4 * i + 1] + (double)w->h_force[4 * i + 3];
-    out->pressure[0] += (double)w->h_force[4 * i];
-    out->pressure[1] += (double)w->h_force[4 * i + 1];
-    out->viscous[0] += (double)w->h_force[4 * i + 2];
-    out->viscous[1] += (double)w->h_force[4 * i + 3];
-    if (fx == 0.0 && fy == 0.0) continue;
-    double r[2] = {(double)hpos[2 * i] - c[0], (double)hpos[2 * i + 1] - c[1]};
-    for (int a = 0; a < 2; ++a) /* the image nearest the centre */
-      if (sc->periodic[a]) r[a] -= (sc->hi[a] - sc->lo[a]) * round(r[a] / (sc->hi[a] - sc->lo[a]));
-    out->torque += r[0] * fy - r[1] * fx;
-  }
+  force_sum(sim, group, w->h_force, 4, 0, hpos, out);
 done:
+  free(share);
   free(hpos);
   free(mask);
   return st;
@@ -998,9 +1066,9 @@ static void wcr_destroy(void *state)
                      &w->k_force,  &w->k_lattice, &w->k_twall, &w->k_ttrans, &w->k_tupd};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
-  cl_mem *ms[] = {&w->d_nlist, &w->d_ncount, &w->d_bmat,    &w->d_sigma, &w->d_prior,
-                  &w->d_shift, &w->d_acc,    &w->d_partial, &w->d_force, &w->d_mask,
-                  &w->d_none,  &w->d_frame,  &w->d_wallv,   &w->d_grad,  &w->d_gradp};
+  cl_mem *ms[] = {&w->d_nlist, &w->d_ncount,  &w->d_bmat,  &w->d_sigma, &w->d_prior, &w->d_shift,
+                  &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,  &w->d_none,  &w->d_frame,
+                  &w->d_wallv, &w->d_grad,    &w->d_gradp, &w->d_wgroup};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
   kepsilon_destroy(&w->ke);
   open_destroy(&w->open);
