@@ -41,7 +41,9 @@
 -- window implies, u_τ² = f (δ − y_p + dr/2) (the fluid between the offset walls), against the 1-D
 -- solver's in u_tau_drive_dev_1d; friction_over_drive, the walls' recorded friction over it, less
 -- 1 (0 where the momentum the fluid loses is the walls' recorded friction; wall_pressure_x is
--- the rest of what the walls record).
+-- the rest of what the walls record); wall_over_drive, the walls' whole x force (friction and
+-- pressure) over the drive, less 1: the momentum balance of the record (0 but for the bulk's
+-- changes at the sampled steps).
 -- shear = 1: the wall model's shear from the log law at each particle's own distance from the
 -- wall (wcsph-riemann's wall_shear = "distance"; 0: at y_p, the paper's).
 -- seed > 0 adds a uniform perturbation of ±0.1 u_τ to each component of each particle's starting
@@ -227,6 +229,7 @@ function metrics(sim)
       m.u_tau_drive = math.sqrt(math.max(drive * (delta - off), 0))
       m.u_tau_drive_dev_1d = m.u_tau_drive / 0.051372 - 1
       m.friction_over_drive = (ut / m.u_tau_drive) ^ 2 - 1
+      m.wall_over_drive = (f.x + c.x) / (2 * L) / m.u_tau_drive ^ 2 - 1
     end
     -- u_τ of each quarter of the window (the walls' whole x force: the pressure's part is 0.2%)
     local hf, hc = sim.force_history("floor", t0), sim.force_history("ceiling", t0)

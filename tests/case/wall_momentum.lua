@@ -14,6 +14,7 @@ param { n = 10, t_end = 0.5, turb = 0, ard = 0, seed = 1, jitter = 0.1, cont = 0
 local dens = cont == 1 and "continuity" or "summation"
 
 if n < 4 or n ~= math.floor(n) then error("wall_momentum: n must be an integer >= 4") end
+if math.tointeger(seed) == nil then error("wall_momentum: seed must be an integer") end
 local H, L, U = 1, 1, 1
 local nu = turb == 1 and 1e-4 or 0.01 -- k-ε: the first row at y+ = 55
 local f = 0.08 -- the laminar channel's Poiseuille drive of a centreline speed U

@@ -750,7 +750,9 @@ def ensemble_section(runs):
            "implies (the flow-rate control's mean body force f over the same window, u_τ² = "
            "f (δ − y_p + dr/2)); the walls' recorded friction over the drive (0 where the "
            "momentum the fluid loses is the walls' friction); the walls' recorded pressure force "
-           "along x over their friction (0 on a flat wall between continua); u+ against the DNS "
+           "along x over their friction (0 on a flat wall between continua); the walls' whole x "
+           "force over the drive (the record's momentum balance: 0 but for the bulk's changes at "
+           "the sampled steps); u+ against the DNS "
            "from the second row on, from the rows' time-averaged u; and k over the 1-D solver's "
            "on the same rows (mean of the rows' deviations). wall_shear \"y_p\" is the paper's "
            "(every P_ext particle at y_p), \"distance\" each particle's own distance with eq 39 "
@@ -758,19 +760,25 @@ def ensemble_section(runs):
            "two to four side by side on 2 cores, so that they compare no costs.", "",
            "| N_f | wall pressure | wall shear | t_end | members | u_τ vs 1-D (walls' friction) "
            "| u_τ vs 1-D (drive) | friction over drive | pressure along x over friction "
-           "| u+ vs DNS (rows 2+) | k vs 1-D rows | wall s (median) | particle-steps/s |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "| whole x force over drive | u+ vs DNS (rows 2+) | k vs 1-D rows | wall s (median) "
+           "| particle-steps/s |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for key in sorted(groups):
         g = groups[key]
         nf, wp, _, shear, t_end = key
 
         def col(name):
             return stats([s["metrics"].get(name) for s in g])
+
+        def whole(m):  # (friction + pressure along x) over the drive, less 1
+            f, p = m.get("friction_over_drive"), m.get("wall_pressure_x")
+            return None if f is None or p is None else (1 + f) * (1 + p) - 1
         walls = sorted(s["wall_seconds"] for s in g)
         rates = sorted(s["particle_steps_per_second"] for s in g)
         out.append(f"| {nf:g} | {wp} | {('y_p', 'distance')[shear]} | {t_end:g} | {len(g)} "
                    f"| {col('u_tau_dev_1d')} | {col('u_tau_drive_dev_1d')} "
                    f"| {col('friction_over_drive')} | {col('wall_pressure_x')} "
+                   f"| {stats([whole(s['metrics']) for s in g])} "
                    f"| {col('u_plus_dns_dev_max')} | {col('k_rows_mean')} "
                    f"| {walls[len(walls) // 2]:.1f} | {rates[len(rates) // 2]:.3g} |")
     return out
