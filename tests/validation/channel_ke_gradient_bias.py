@@ -12,7 +12,13 @@ Against the 1-D solver's exact ∂u/∂y = u_τ² (1 − y/δ)/(ν + ν_t), the 
 out. Prints one line per row: N_f, row, y, gradient ratio, production ratio; then, per N_f, the
 production summed over the rows from the second on over the model's.
 
-usage: channel_ke_gradient_bias.py [DATA_DIR] [N_f ...]   (default tests/data, 20 40 80)
+--log-rows M: the rows 2 to M take the gradient in the log law's coordinate instead, the pair's
+wall-normal separation y_i − y_j replaced by y_i ln(y_i/y_j) in the moment sum (exact for
+u = a ln y + b; y from the physical wall), and without eq 40's compensation: what a log-aware
+kernel gradient next to the walls would leave of the bias (an a-priori test: no kernel has it).
+
+usage: channel_ke_gradient_bias.py [DATA_DIR] [--log-rows M] [N_f ...]   (default tests/data,
+       20 40 80)
 """
 import csv
 import math
@@ -38,7 +44,7 @@ def wendland_f(r, h):
     return -5.0 * (1.0 - q / 2.0) ** 3 / (h * h)  # dW/dq = −5 q (1 − q/2)³, q/r = 1/h
 
 
-def bias(nf, data_dir):
+def bias(nf, data_dir, log_rows=0):
     u_tau, rows = load(f"{data_dir}/channel1d_rows{nf}.csv")
     ys = [float(r["y"]) for r in rows]
     us = [float(r["u"]) for r in rows]
@@ -56,6 +62,9 @@ def bias(nf, data_dir):
     def u_at(row):  # the other half mirrored across the centre line
         return us[row] if row < n else us[2 * n - 1 - row]
 
+    def y_at(row):
+        return ys[row] if row < n else 2.0 - ys[2 * n - 1 - row]
+
     out = []
     for i in range(1, n):
         d_i = (i + 0.5) * dr  # distance from the offset wall
@@ -71,10 +80,13 @@ def bias(nf, data_dir):
                 if r == 0.0 or r >= 2.0 * h:
                     continue
                 f = wendland_f(r, h)
-                ayy -= f * ry * ry
                 vij = us[i] - u_at(j)
-                if in_ext and j == 0:  # eq 40: w_s ∇v_p r_ij + (1 − w_s) v_ij
-                    vij = WS * dudn1 * ry + (1.0 - WS) * vij
+                if i + 1 <= log_rows:  # the log law's coordinate: y_i ln(y_i/y_j)
+                    ayy -= f * ys[i] * math.log(ys[i] / y_at(j)) * ry
+                else:
+                    ayy -= f * ry * ry
+                    if in_ext and j == 0:  # eq 40: w_s ∇v_p r_ij + (1 − w_s) v_ij
+                        vij = WS * dudn1 * ry + (1.0 - WS) * vij
                 g += vij * f * ry
         grad = -g / ayy
         exact = u_tau * u_tau * (1.0 - ys[i]) / (NU + nts[i])
@@ -84,12 +96,21 @@ def bias(nf, data_dir):
 
 def main():
     args = sys.argv[1:]
-    data_dir = args.pop(0) if args and not args[0].isdigit() else "tests/data"
+    data_dir = args.pop(0) if args and not args[0].isdigit() and args[0] != "--log-rows" else "tests/data"
+    log_rows = 0
+    if args and args[0] == "--log-rows":
+        if len(args) < 2 or not args[1].isdigit():
+            sys.exit("channel_ke_gradient_bias.py: --log-rows needs a row number (2 or more)")
+        log_rows = int(args[1])
+        args = args[2:]
+    for a in args:
+        if not a.isdigit():
+            sys.exit(f"channel_ke_gradient_bias.py: N_f must be a number of rows, not {a!r}")
     nfs = [int(a) for a in args] or [20, 40, 80]
     print("N_f,row,y,grad_ratio,production_ratio")
     total = {}
     for nf in nfs:
-        rows = bias(nf, data_dir)
+        rows = bias(nf, data_dir, log_rows)
         for row, y, gr, pr, _ in rows:
             print(f"{nf},{row},{y:.4f},{gr:.4f},{pr:.4f}")
         total[nf] = sum(pr * p for *_, pr, p in rows) / sum(p for *_, p in rows)
