@@ -46,6 +46,8 @@
 -- changes at the sampled steps).
 -- shear = 1: the wall model's shear from the log law at each particle's own distance from the
 -- wall (wcsph-riemann's wall_shear = "distance"; 0: at y_p, the paper's).
+-- grad = 1: the model's velocity gradient next to the walls in the log law's coordinate
+-- (wcsph-riemann's velocity_gradient = "log"; 0: the kernel sums', the paper's).
 -- seed > 0 adds a uniform perturbation of ±0.1 u_τ to each component of each particle's starting
 -- velocity, drawn from Lua's generator seeded with `seed`: the members of an ensemble.
 -- tvf: the transport-velocity correction (0 off, 1 full, 2 limited: the scheme's default);
@@ -57,7 +59,7 @@
 -- u_τ averages the second half's friction over many samples: over 10% windows of a run it moves
 -- by ±1%, so that three or four samples (one per output) are not an average.
 param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1, md = -1, ub = 0,
-        wallp = -1, sample_dt = 1, seed = 0, shear = 0 }
+        wallp = -1, sample_dt = 1, seed = 0, shear = 0, grad = 0 }
 if not (sample_dt > 0) then
   error(("channel_ke: sample_dt must be a positive time between force samples, not %g"):format(sample_dt))
 end
@@ -66,6 +68,9 @@ if seed < 0 or seed >= 2 ^ 31 or seed ~= math.floor(seed) then
 end
 if shear ~= 0 and shear ~= 1 then
   error(("channel_ke: shear must be 0 (the wall's shear from the log law at y_p) or 1 (at each particle's distance), not %g"):format(shear))
+end
+if grad ~= 0 and grad ~= 1 then
+  error(("channel_ke: grad must be 0 (the kernel sums' velocity gradient) or 1 (in the log law's coordinate by the walls), not %g"):format(grad))
 end
 if wallp ~= -1 and wallp ~= 0 and wallp ~= 1 then
   error(("channel_ke: wallp must be -1 (the scheme's default), 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
@@ -82,7 +87,8 @@ particles { dr = dr }
 scheme { "wcsph-riemann", ard = ard, momentum_dissipation = ({"off", "riemann", "reconstructed"})[md + 1],
          transport_velocity = ({"off", "full", "limited"})[tvf + 1],
          wall_pressure = ({"mirror", "gradient"})[wallp + 1],
-         wall_shear = turb == 1 and ({"y_p", "distance"})[shear + 1] or nil }
+         wall_shear = turb == 1 and ({"y_p", "distance"})[shear + 1] or nil,
+         velocity_gradient = turb == 1 and ({"kernel", "log"})[grad + 1] or nil }
 if ub > 0 then
   fluid { density = 1, viscosity = nu,
           flow_rate_control = { velocity = ub, slice = { 0, L * (1 - 1e-9) } } }

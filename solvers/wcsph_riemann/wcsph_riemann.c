@@ -41,6 +41,10 @@
  *                        every one, sec 4.4's constant y_p; the default) or "distance" (at the
  *                        particle's own distance from the wall, with the boundary offset, and
  *                        eq 39's force over its sum on the lattice: turbulence.cl says why)
+ *   velocity_gradient    under the k-ε model, the velocity gradient of the production and the
+ *                        reconstructed dissipation: "kernel" (eqs 22 and 40, the paper's; the
+ *                        default) or "log" (next to a wall, in the log law's coordinate, and
+ *                        without eq 40's compensation: turbulence.cl says why)
  *   momentum_dissipation "riemann" (eq 19's dissipative term between fluid pairs; the default of
  *                        a laminar scene or one with ARD) or "off" (the default under the k-ε
  *                        model without ARD; acoustic.cl says why)
@@ -84,6 +88,7 @@ struct wcr {
   double c0, p_bg, mass, sigma0, lambda, u_scale;
   double cfl_ad, cfl_ac, tvf_alpha;
   int tvf, ard, wall_full, cont_riemann, outlet_fixed, mom_diss, wall_pgrad, shear_dist;
+  int grad_log;    /* velocity_gradient = "log" (turbulence.cl) */
   int tvf_surface; /* 1: the correction's tangential part in the surface rows (advection.cl) */
   cl_uint reinit;
   double vmax;               /* the fluid's largest speed at the last max_dt, m/s */
@@ -97,7 +102,8 @@ struct wcr {
   struct kepsilon ke; /* k, epsilon, nu_t and the update's buffers (solvers/kepsilon) */
   int f_yplus;
   cl_mem d_frame, d_wallv, d_grad;
-  cl_kernel k_twall, k_ttrans, k_tupd;
+  cl_mem d_logf; /* velocity_gradient = "log": the wall's normal and y per particle */
+  cl_kernel k_twall, k_ttrans, k_tupd, k_logf;
   double y_p, w_s;  /* the wall model's distance and weight */
   double wscale;    /* eq 39's force over its lattice sum (wall_shear = "distance"; else 1) */
   struct gate gate; /* a lifted wall group (solvers/gate), e.g. the Lobovsky dam break's gate */
@@ -129,6 +135,7 @@ static const char *const options[] = {"sound_speed",
                                       "wall_pressure",
                                       "momentum_dissipation",
                                       "wall_shear",
+                                      "velocity_gradient",
                                       "outlet",
                                       "continuity",
                                       "transport_coefficient",
@@ -246,6 +253,13 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
               "reads its log law (turbulence { model = \"k-epsilon\" }); a laminar scene has "
               "no wall model: drop it",
               sc->case_path);
+  static const char *const grad_names[] = {"kernel", "log", NULL};
+  CLSPH_TRY(option_choice(sc, "velocity_gradient", grad_names, 0, &w->grad_log));
+  CLSPH_CHECK(!w->grad_log || sc->turb.on, CLSPH_E_INPUT,
+              "%s: wcsph-riemann option velocity_gradient = \"log\" is the k-ε model's velocity "
+              "gradient next to a wall (turbulence { model = \"k-epsilon\" }); a laminar scene "
+              "has none: drop it",
+              sc->case_path);
   static const char *const surf_names[] = {"off", "tangential", "pairs", NULL};
   /* "pairs" in a 3-D free-surface flow, off otherwise (the 2-D runs' validated default) */
   const int surf_default =
@@ -310,14 +324,15 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   if (verbose)
     log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), background "
              "pressure %.4g Pa, transport velocity %s%s%s, ARD %s, density %s, walls' "
-             "dissipation %s, fluid pairs' momentum dissipation %s%s%s",
+             "dissipation %s, fluid pairs' momentum dissipation %s%s%s%s",
              w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach, w->p_bg,
              tvf_names[w->tvf], w->tvf_surface ? " (surface rows: " : "",
              w->tvf_surface ? (w->tvf_surface == 1 ? "tangential)" : "pairs)") : "",
              w->ard ? "on" : "off", dens_names[reinit], wall_names[w->wall_full],
              mom_names[w->mom_diss],
              w->wall_pgrad ? ", walls' pressure extrapolated along them with ∇p" : "",
-             w->shear_dist ? ", the wall model's shear at each particle's distance" : "");
+             w->shear_dist ? ", the wall model's shear at each particle's distance" : "",
+             w->grad_log ? ", the velocity gradient in the log law's coordinate by the walls" : "");
 done:
   return st;
 }
@@ -361,6 +376,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_CONT_NORMAL", w.reinit == WCR_REINIT_OFF));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TURB", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_SHEAR_DIST", w.shear_dist));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_GRAD_LOG", w.grad_log));
   CLSPH_TRY(prog_opts_define_int(o, "KE_ON", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_GATE", w.gate.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TVF_SURFACE", w.tvf_surface));
@@ -438,6 +454,10 @@ static enum clsph_status turb_create(struct sim *sim, struct wcr *w)
   CLSPH_TRY(prog_kernel(sim->prog, "wcr_turb_wall", &w->k_twall));
   CLSPH_TRY(prog_kernel(sim->prog, "wcr_turb_transport", &w->k_ttrans));
   CLSPH_TRY(prog_kernel(sim->prog, "wcr_turb_update", &w->k_tupd));
+  if (w->grad_log) {
+    CLSPH_TRY(kern_buffer(sim->dev, cap * 4 * sizeof(real), NULL, &w->d_logf, "log frames"));
+    CLSPH_TRY(prog_kernel(sim->prog, "wcr_log_frame", &w->k_logf));
+  }
 done:
   free(zeros);
   return st;
@@ -654,6 +674,7 @@ static enum clsph_status turbulence(struct sim *sim, struct wcr *w, double dt)
   const real yp = (real)w->y_p, nu = (real)sc->nu, rdt = (real)dt, ilam = (real)(1.0 / w->lambda);
   const real r_ext = (real)(2.0 * sim->sm.h - sc->dr), r_p = (real)sc->dr, ws = (real)w->w_s;
   const real nu_fixed = (real)sc->turb.nu_t_delay;
+  cl_mem wn = pset_mem(ps, w->f_wnormal), logf = w->grad_log ? w->d_logf : w->d_none;
   cl_mem pos = pset_mem(ps, sim->f_pos), vel = pset_mem(ps, sim->f_vel);
   cl_mem vol = pset_mem(ps, sim->f_vol), kind = pset_mem(ps, sim->f_kind);
   cl_mem wd = pset_mem(ps, w->f_wdist);
@@ -661,12 +682,19 @@ static enum clsph_status turbulence(struct sim *sim, struct wcr *w, double dt)
          nut = pset_mem(ps, w->ke.f_nut);
   if (active) {
     CLSPH_TRY(turb_wall(sim, w));
+    if (w->grad_log) { /* the walls' frames of the log coordinate (turbulence.cl) */
+      const real shift = (real)(w->y_p - sc->dr), ymin = (real)(0.5 * w->y_p);
+      CLSPH_TRY(KERN_SET(w->k_logf, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(kind), KARG(wn),
+                         KARG(w->d_nlist), KARG(w->d_ncount), KARG(shift), KARG(ymin),
+                         KARG(w->d_logf)));
+      CLSPH_TRY(kern_launch(sim->dev, w->k_logf, ps->n, NULL));
+    }
     CLSPH_TRY(KERN_SET(w->k_ttrans, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
                        KARG(kind), KARG(wd), KARG(w->d_nlist), KARG(w->d_ncount), KARG(k),
                        KARG(eps), KARG(nut), KARG(w->d_frame), KARG(w->d_wallv), KARG(rdt),
                        KARG(nu), KARG(ilam), KARG(yp), KARG(r_ext), KARG(r_p), KARG(ws),
-                       KARG(w->ke.d_knew), KARG(w->ke.d_enew), KARG(w->ke.d_clips),
-                       KARG(w->d_grad)));
+                       KARG(w->ke.d_knew), KARG(w->ke.d_enew), KARG(w->ke.d_clips), KARG(w->d_grad),
+                       KARG(logf)));
     CLSPH_TRY(kern_launch(sim->dev, w->k_ttrans, ps->n, NULL));
   }
   CLSPH_TRY(KERN_SET(w->k_tupd, KARG(n), KARG(kind), KARG(w->ke.d_knew), KARG(w->ke.d_enew),
@@ -1062,13 +1090,14 @@ static void wcr_destroy(void *state)
 {
   struct wcr *w = state;
   if (w == NULL) return;
-  cl_kernel *ks[] = {&w->k_config, &w->k_count,   &w->k_adv,   &w->k_drift,  &w->k_mom, &w->k_cont,
-                     &w->k_force,  &w->k_lattice, &w->k_twall, &w->k_ttrans, &w->k_tupd};
+  cl_kernel *ks[] = {&w->k_config, &w->k_count,  &w->k_adv,   &w->k_drift,
+                     &w->k_mom,    &w->k_cont,   &w->k_force, &w->k_lattice,
+                     &w->k_twall,  &w->k_ttrans, &w->k_tupd,  &w->k_logf};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
-  cl_mem *ms[] = {&w->d_nlist, &w->d_ncount,  &w->d_bmat,  &w->d_sigma, &w->d_prior, &w->d_shift,
-                  &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,  &w->d_none,  &w->d_frame,
-                  &w->d_wallv, &w->d_grad,    &w->d_gradp, &w->d_wgroup};
+  cl_mem *ms[] = {&w->d_nlist, &w->d_ncount,  &w->d_bmat,  &w->d_sigma,  &w->d_prior, &w->d_shift,
+                  &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,   &w->d_none,  &w->d_frame,
+                  &w->d_wallv, &w->d_grad,    &w->d_gradp, &w->d_wgroup, &w->d_logf};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
   kepsilon_destroy(&w->ke);
   open_destroy(&w->open);
