@@ -29,9 +29,18 @@
 -- particles' own pressure gradient (wcsph-riemann's wall_pressure = "gradient"; the mirror's
 -- first row feels 0.78 of the pressure gradient that drives the flow along the walls).
 param { setting = 1, nf = 20, y_p = 0, t_end = 0, every = 0, avg = 0, ard = 0, points = 81,
-        fitted = 1, checkpoint = 0, wallp = 1 }
+        fitted = 1, checkpoint = 0, wallp = 1, grad = 0, diff = 0 }
 if wallp ~= 0 and wallp ~= 1 then
   error(("channel_curved: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
+end
+-- grad = 1: the k-ε model's velocity gradient in the log law's coordinate by the walls (wcsph-riemann's
+-- velocity_gradient = "log"); diff = 1: k and ε diffused with the log mean and the walls' mirror
+-- (turbulent_diffusion = "log_mirror"); 0: the paper's
+if grad ~= 0 and grad ~= 1 then
+  error(("channel_curved: grad must be 0 (the kernel sums' velocity gradient) or 1 (in the log law's coordinate by the walls), not %g"):format(grad))
+end
+if diff ~= 0 and diff ~= 1 then
+  error(("channel_curved: diff must be 0 (the harmonic mean over the fluid neighbours) or 1 (the log mean and the walls' mirror), not %g"):format(diff))
 end
 
 local S = ({
@@ -91,7 +100,9 @@ end
 domain { xmin - 1e-9, ymin, xmax + 1e-9, ymax + 1e-9 }
 particles { dr = dr }
 scheme { "wcsph-riemann", ard = ard, sound_speed = 15 * U,
-         wall_pressure = wallp == 1 and "gradient" or "mirror" }
+         wall_pressure = wallp == 1 and "gradient" or "mirror",
+         velocity_gradient = ({"kernel", "log"})[grad + 1],
+         turbulent_diffusion = ({"harmonic", "log_mirror"})[diff + 1] }
 fluid { density = 1, viscosity = nu }
 
 -- OpenFOAM's entry profile (s from the inner wall) and its sections

@@ -48,9 +48,18 @@
 -- both lines (0.05 at most, the platform's wall cell), k by 3% of its largest along x = 9.5 and
 -- 18% at the platform's near-wall peak; its backflow spans x = 5.65-10.69 (5.61-10.63).
 param { nf = 40, t_end = 60, y_p = 0.025, ard = 1, every = 1, avg = 20, ramp = 2, c0 = 20,
-        points = 121, fitted = 0, band = 6, pbg = 0, wallp = 1 }
+        points = 121, fitted = 0, band = 6, pbg = 0, wallp = 1, grad = 0, diff = 0 }
 if wallp ~= 0 and wallp ~= 1 then
   error(("channel_hcd: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
+end
+-- grad = 1: the k-ε model's velocity gradient in the log law's coordinate by the walls (wcsph-riemann's
+-- velocity_gradient = "log"); diff = 1: k and ε diffused with the log mean and the walls' mirror
+-- (turbulent_diffusion = "log_mirror"); 0: the paper's
+if grad ~= 0 and grad ~= 1 then
+  error(("channel_hcd: grad must be 0 (the kernel sums' velocity gradient) or 1 (in the log law's coordinate by the walls), not %g"):format(grad))
+end
+if diff ~= 0 and diff ~= 1 then
+  error(("channel_hcd: diff must be 0 (the harmonic mean over the fluid neighbours) or 1 (the log mean and the walls' mirror), not %g"):format(diff))
 end
 
 local H, U, Re = 2.0, 1.0, 40000
@@ -97,7 +106,9 @@ local top = H - off
 domain { 0, off, L, top }
 particles { dr = dr }
 scheme { "wcsph-riemann", ard = ard, sound_speed = c0 * U, background_pressure = pbg,
-         wall_pressure = wallp == 1 and "gradient" or "mirror" }
+         wall_pressure = wallp == 1 and "gradient" or "mirror",
+         velocity_gradient = ({"kernel", "log"})[grad + 1],
+         turbulent_diffusion = ({"harmonic", "log_mirror"})[diff + 1] }
 fluid { density = 1, viscosity = nu }
 local k_in = 1.5 * (0.05 * U) ^ 2
 local eps_in = 0.09 ^ 0.75 * k_in ^ 1.5 / (0.07 * H)

@@ -7,6 +7,13 @@
 -- resolution (nf = 20: dr = 0.1, no offset). Start (init = 1): u, k and ε of the 1-D reference at
 -- each particle's distance from the wall, as the paper starts its channel from its FDM solution;
 -- init = 0: the 1/7 power law of the same mean U_b = 1.0653, k = u_τ²/√C_μ, ε = u_τ³/(κ δ/10).
+-- init = 2 (ub > 0, nf = 20, 40 or 80, turb = 1): u, k and ε of the 1-D solver on this run's rows
+-- (tests/data/channel1d_rowsN.csv, below), the particles on their rows: that solution is steady
+-- for the model discretised on the rows, and at the first row, where the production and ε are the
+-- wall function's in both (eqs 13-14), the first step's change of k is the particles' diffusion
+-- sum less the 1-D solver's: k_row1_diffusion, the first row's diffusion sum over the 1-D
+-- solver's (the flux through the face to the second row with the faces' mean ν_t, none through the
+-- wall), from the first two samples (run it with a sample_dt below the step).
 -- Metrics: u+ = ⟨u⟩/u_τ per particle row (the mean over x, both halves folded) against the 1-D
 -- reference (tests/data/channel1d_re_tau543.csv, tests/reference/channel1d with the same u_τ,
 -- y_p and ν) at the rows' heights: u_plus_dev_max (the largest |u+ − u+_1D|/u+_1D), u_plus_rms;
@@ -48,6 +55,9 @@
 -- wall (wcsph-riemann's wall_shear = "distance"; 0: at y_p, the paper's).
 -- grad = 1: the model's velocity gradient next to the walls in the log law's coordinate
 -- (wcsph-riemann's velocity_gradient = "log"; 0: the kernel sums', the paper's).
+-- diff = 1: k and ε diffused with the pairs' logarithmic mean of D and the walls' mirror images
+-- (wcsph-riemann's turbulent_diffusion = "log_mirror"; 0: the harmonic mean over the fluid
+-- neighbours, the paper's).
 -- seed > 0 adds a uniform perturbation of ±0.1 u_τ to each component of each particle's starting
 -- velocity, drawn from Lua's generator seeded with `seed`: the members of an ensemble.
 -- tvf: the transport-velocity correction (0 off, 1 full, 2 limited: the scheme's default);
@@ -59,7 +69,7 @@
 -- u_τ averages the second half's friction over many samples: over 10% windows of a run it moves
 -- by ±1%, so that three or four samples (one per output) are not an average.
 param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1, md = -1, ub = 0,
-        wallp = -1, sample_dt = 1, seed = 0, shear = 0, grad = 0 }
+        wallp = -1, sample_dt = 1, seed = 0, shear = 0, grad = 0, diff = 0 }
 if not (sample_dt > 0) then
   error(("channel_ke: sample_dt must be a positive time between force samples, not %g"):format(sample_dt))
 end
@@ -72,6 +82,15 @@ end
 if grad ~= 0 and grad ~= 1 then
   error(("channel_ke: grad must be 0 (the kernel sums' velocity gradient) or 1 (in the log law's coordinate by the walls), not %g"):format(grad))
 end
+if init ~= 0 and init ~= 1 and init ~= 2 then
+  error(("channel_ke: init must be 0 (the power law), 1 (the 1-D reference) or 2 (the 1-D solver on the rows), not %g"):format(init))
+end
+if init == 2 and not (ub > 0 and turb == 1 and (nf == 20 or nf == 40 or nf == 80)) then
+  error(("channel_ke: init = 2 starts from the 1-D solver on 20, 40 or 80 rows under flow-rate control and the k-ε model: it needs ub > 0, turb = 1 and nf 20, 40 or 80 (ub = %g, turb = %g, nf = %g)"):format(ub, turb, nf))
+end
+if diff ~= 0 and diff ~= 1 then
+  error(("channel_ke: diff must be 0 (the harmonic mean over the fluid neighbours) or 1 (the log mean and the walls' mirror), not %g"):format(diff))
+end
 if wallp ~= -1 and wallp ~= 0 and wallp ~= 1 then
   error(("channel_ke: wallp must be -1 (the scheme's default), 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
 end
@@ -82,13 +101,15 @@ local dr = (H - 2 * y_p) / (nf - 1)
 local off = y_p - dr / 2
 local nx = math.max(math.floor(1.0 / dr + 0.5), 8)
 local L = nx * dr
+local half = math.floor(nf / 2)
 domain { 0, off, L, H - off, periodic = "x" }
 particles { dr = dr }
 scheme { "wcsph-riemann", ard = ard, momentum_dissipation = ({"off", "riemann", "reconstructed"})[md + 1],
          transport_velocity = ({"off", "full", "limited"})[tvf + 1],
          wall_pressure = ({"mirror", "gradient"})[wallp + 1],
          wall_shear = turb == 1 and ({"y_p", "distance"})[shear + 1] or nil,
-         velocity_gradient = turb == 1 and ({"kernel", "log"})[grad + 1] or nil }
+         velocity_gradient = turb == 1 and ({"kernel", "log"})[grad + 1] or nil,
+         turbulent_diffusion = turb == 1 and ({"harmonic", "log_mirror"})[diff + 1] or nil }
 if ub > 0 then
   fluid { density = 1, viscosity = nu,
           flow_rate_control = { velocity = ub, slice = { 0, L * (1 - 1e-9) } } }
@@ -114,10 +135,24 @@ local function ref_at(col, d)
   end
   return vs[#vs]
 end
+-- the same model on the same rows (ub > 0, nf = 20, 40 or 80): tests/data/channel1d_rowsN.csv
+local rows_ref = nil
+if ub > 0 and (nf == 20 or nf == 40 or nf == 80) then
+  rows_ref = reference(("tests/data/channel1d_rows%d.csv"):format(nf), "y", "u", "u_plus", "k",
+                       "epsilon", "nu_t")
+end
 -- an ensemble member's perturbation of the starting velocity (0 without a seed)
 if seed > 0 then math.randomseed(math.tointeger(seed)) end
 local function jitter() return seed > 0 and 0.1 * u_tau * (2 * math.random() - 1) or 0 end
-if init == 1 then -- the reference's u, k and ε at the particle's distance from the wall
+if init == 2 then -- the rows' solution, row by row (row r at y_p + (r − 1) dr from the wall)
+  local function at(col, y)
+    local r = math.floor((math.min(y, H - y) - off) / dr) + 1
+    return rows_ref[col][math.max(1, math.min(r, half))]
+  end
+  fill { 0, off, L, H - off, velocity = function(x, y) return at("u", y) + jitter(), jitter() end,
+         k = function(x, y) return at("k", y) end,
+         epsilon = function(x, y) return at("epsilon", y) end }
+elseif init == 1 then -- the reference's u, k and ε at the particle's distance from the wall
   -- under flow-rate control the profile scaled to ub (k as its square, ε as its cube)
   local sc = ub > 0 and ub / ub_ref or 1
   local scale = {u = sc, k = sc * sc, epsilon = sc ^ 3}
@@ -148,10 +183,6 @@ end
 local dns = reference("tests/data/channel_dns_LM550.csv", "y_over_delta", "U_plus")
 local foam = reference("tests/data/openfoam_channel_straight.csv", "setting", "y_p", "mesh", "y",
                        "U", "u_tau")
-local rows_ref = nil
-if ub > 0 and (nf == 20 or nf == 40 or nf == 80) then
-  rows_ref = reference(("tests/data/channel1d_rows%d.csv"):format(nf), "y", "u", "u_plus", "k")
-end
 local fv_y, fv_up = {}, {}
 for j = 1, #foam.y do
   if foam.setting[j] == "a" and foam.y_p[j] == 0.05 and foam.mesh[j] == "uniform_20" then
@@ -159,7 +190,6 @@ for j = 1, #foam.y do
   end
 end
 
-local half = math.floor(nf / 2)
 -- the particle rows' mean u and k now: row r holds the particles between off + (r − 1) dr and
 -- off + r dr from the nearer wall (both halves folded)
 local function rows_now(sim)
@@ -294,6 +324,14 @@ function metrics(sim)
     m.u_rows_dev_max, m.u_rows_rms = uw, math.sqrt(usq / half)
     m.k_rows_rms, m.k_rows_mean = math.sqrt(ksq / half), ksum / half
     m.u_plus_model_dns_dev_max = mworst
+  end
+  if init == 2 then -- the first step's dk/dt of the first row against the 1-D solver's diffusion
+    local h = sim.series("k_r1")
+    if #h.time >= 2 and h.time[1] == 0 then
+      local k, nt = rows_ref.k, rows_ref.nu_t
+      local d1 = (nu + 0.5 * (nt[1] + nt[2])) * (k[2] - k[1]) / (dr * dr) -- σ_k = 1
+      m.k_row1_diffusion = 1 + (h.value[2] - h.value[1]) / (h.time[2] - h.time[1]) / d1
+    end
   end
   if ub > 0 then
     m.u_plus_fv_dev_max = fworst

@@ -1188,6 +1188,32 @@ clsph_run_test(run_channel_ke_log ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SETS 
                "profile_samples>50")
 clsph_cli_test(channel_ke_grad_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua --set grad=2
                RC 2 REGEX "channel_ke: grad must be 0 .the kernel sums' velocity gradient. or 1")
+# The first row's diffusion of k against the 1-D solver's on the same rows: started from the 1-D
+# solver's steady solution on the rows (init = 2: tests/data/channel1d_rows20.csv, the particles
+# on their rows), where the first row's production and ε are the wall function's in both (eqs
+# 13-14), the first step's dk/dt of the first row is the particles' diffusion sum less the 1-D
+# solver's, whose flux through the first face (the faces' mean ν_t) it reads as a ratio
+# (k_row1_diffusion). The paper's sums (the harmonic mean of D over the fluid neighbours) carry
+# 0.835 of it at 20 rows (0.880 at 40): ν_t nearly doubles from the first row to the second, where
+# the harmonic mean stands under the two points' conductance, and the wall cuts the pairs across
+# it. turbulent_diffusion = "log_mirror" (the logarithmic mean and the wall's mirror images,
+# turbulence.cl): 0.932 (0.945 at 40); with the log mean alone 0.896, the mirror alone 0.864, from
+# the same sums over the first snapshot (tests/validation/channel_ke_diffusion.py), which also
+# reads the 0.835 and 0.932; the rest is the profile's curvature across the pairs at two
+# spacings. Double and float alike to 4 digits; bounds that part the four.
+clsph_run_test(run_channel_ke_diffusion ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SETS nf=20 init=2
+               ub=1 t_end=0.1 every=0.1 sample_dt=1e-6 grad=1
+               BOUNDS "k_row1_diffusion>0.82" "k_row1_diffusion<0.85" "profile_samples>2")
+clsph_run_test(run_channel_ke_diffusion_log_mirror ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SETS
+               nf=20 init=2 ub=1 t_end=0.1 every=0.1 sample_dt=1e-6 grad=1 diff=1
+               BOUNDS "k_row1_diffusion>0.92" "k_row1_diffusion<0.945" "profile_samples>2")
+clsph_cli_test(channel_ke_diff_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua --set diff=2
+               RC 2 REGEX "channel_ke: diff must be 0 .the harmonic mean over the fluid neighbours. or 1")
+clsph_cli_test(channel_ke_init_three ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua --set init=3
+               RC 2 REGEX "channel_ke: init must be 0 .the power law., 1 .the 1-D reference. or 2")
+clsph_cli_test(channel_ke_init_rows_fixed ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
+               --set init=2 RC 2
+               REGEX "channel_ke: init = 2 starts from the 1-D solver on 20, 40 or 80 rows under flow-rate control")
 # The walls' friction over the channel's first half second (17 steps from the 1-D reference
 # scaled to U_b = 1, the rows on the lattice). With the wall model's shear at y_p (the paper's)
 # the second row, 1.5 dr from the boundary, inside P_ext, reads the log law from its own velocity
@@ -1293,6 +1319,12 @@ clsph_cli_test(channel_hcd_fitted_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channe
 clsph_cli_test(channel_hcd_wallp_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
                --set wallp=2 RC 2
                REGEX "channel_hcd: wallp must be 0 \\(the mirror\\) or 1 \\(the gradient\\), not 2")
+clsph_cli_test(channel_hcd_diff_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
+               --set diff=2 RC 2
+               REGEX "channel_hcd: diff must be 0 .the harmonic mean over the fluid neighbours. or 1")
+clsph_cli_test(channel_curved_grad_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_curved.lua
+               --set grad=2 RC 2
+               REGEX "channel_curved: grad must be 0 .the kernel sums' velocity gradient. or 1")
 # fill { k, epsilon } needs a turbulence model; k and ε of a fill must be positive
 clsph_cli_test(turbulence_fill_without_model ARGS info ${bad_turb} --set what=7 RC 2
                REGEX "fill \\{ k, epsilon \\}: the case declares no turbulence")
@@ -1343,6 +1375,10 @@ clsph_cli_test(riemann_velocity_gradient_laminar ARGS info ${bad_inflow_turb} --
                REGEX "velocity_gradient = \"log\" is the k-ε model's velocity gradient next to a wall")
 clsph_cli_test(riemann_velocity_gradient_unknown ARGS info ${bad_inflow_turb} --set what=18 RC 2
                REGEX "wcsph-riemann option velocity_gradient must be one of \"kernel\", \"log\"")
+clsph_cli_test(riemann_turbulent_diffusion_laminar ARGS info ${bad_inflow_turb} --set what=19 RC 2
+               REGEX "turbulent_diffusion = \"log_mirror\" is the k-ε model's diffusion of k and ε")
+clsph_cli_test(riemann_turbulent_diffusion_unknown ARGS info ${bad_inflow_turb} --set what=20 RC 2
+               REGEX "wcsph-riemann option turbulent_diffusion must be one of \"harmonic\", \"log_mirror\"")
 clsph_cli_test(inflow_function_not_number ARGS info ${bad_inflow_turb} --set what=7 RC 2
                REGEX "inflow 'entry': the velocity function returned string at s = 0(\\.0)?: it must return a number")
 clsph_cli_test(inflow_function_k_negative ARGS info ${bad_inflow_turb} --set what=8 RC 2

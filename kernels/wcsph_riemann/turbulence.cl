@@ -37,7 +37,7 @@
  *   wall model's G = τ_w ∂U/∂n (eq 13);
  *   diffusion of φ = k, ε (eqs 23-24), over the fluid neighbours only (no flux into the wall:
  *   sec 4.3, third type): 2 Σ_j D̃_ij (φ_i − φ_j) F_ij V_j / λ, D = ν + ν_t/σ, D̃ the pair's
- *   mean (wcr_pair_mean, config.cl: harmonic), F = W'/r, λ the lattice's
+ *   mean (wcr_pair_mean, config.cl: harmonic; turbulent_diffusion below), F = W'/r, λ the lattice's
  * Laplacian sum (as the viscous term's, advection.cl); the linearised update (eq 30 and its ε form,
  * eqs 28-29): k' = (k + Δt (G + D_k)) / (1 + Δt ε/k),  ε' = (ε + Δt (C1 ε/k G + D_ε)) / (1 + Δt C2
  * ε/k), and in P, ε' = C_μ^¾ k'^{3/2}/(κ y_p) (eq 14). A numerator that diffusion makes negative is
@@ -59,6 +59,28 @@
  * wall's normal (kernel-weighted, as eq 35's) and its y from the nearest dummy's height (less
  * dr/2, plus the offset y_p − dr/2); one with none takes them from its nearest fluid neighbour
  * that has them (y_i = y_j + n·r_ij): the second to fourth rows of a lattice.
+ *
+ * turbulent_diffusion = "log_mirror" (WCR_KE_DIFF, an option; the paper's is "harmonic"): next to
+ * a wall the diffusion sums carry less than the 1-D solver's fluxes between the same rows, for
+ * two reasons: across the first two rows ν_t grows nearly in proportion to the distance, where
+ * the harmonic mean of D is 5% (40 rows across the channel) to 18% (20) under the two points'
+ * exact conductance for a D linear in the distance, the logarithmic mean; and the support cut by
+ * the wall drops the pairs across it, those of the first row with the second at two spacings'
+ * reach (7% of the first face's conductance at h = 1.3 dr). From the N_f = 40 channel's snapshots
+ * (tests/validation/channel_ke_diffusion.py) the first row's exchange with the rows above came 11%
+ * under the 1-D solver's fluxes on the rows' mean k and ε, the second row's ε intake 23% under:
+ * the second row's ε stood 2.6% low, its ν_t 3.6% high, and the first row ran 1.3% fast under the
+ * wall model's friction (u_τ +1.3% of the 1-D solver's at 40 rows with velocity_gradient = "log").
+ * With "log_mirror" each pair takes the logarithmic mean of D (wcr_diff_mean), and a pair of P_ext
+ * particles with wall frames adds the pair of i with j's mirror image behind the boundary (the
+ * normal separation d_i + d_j along i's normal, r_ij's tangential part): the even extension that
+ * keeps sec 4.3's zero flux through the wall (symmetric in i and j on a flat wall, so that the
+ * sums still only move k and ε between particles); the first row's exchange then meets the 1-D
+ * solver's flux on the run's rows (1.00 of it; started from the 1-D solver's own solution 0.932
+ * and 0.945 of it at 20 and 40 rows, the harmonic sums 0.835 and 0.880: k_row1_diffusion of
+ * cases/channel_ke.lua, the rest the profile's curvature across the pairs at two spacings). The
+ * viscous sums keep the paper's harmonic µ̃_ij (the logarithmic mean there moved u_τ from the
+ * drive by +0.2% at 40 rows and +0.8% at 20, single runs).
  *
  * wcr_turb_update: k, ε take the new values and ν_t = C_μ k²/ε (eq 6), or ν_t = nu_fixed while
  * the model waits (sec 5.2's delayed activation: k and ε then stay as they are). */
@@ -205,6 +227,22 @@ realv wcr_log_sep(realv r, realv nw, real yi, real y_min)
 }
 #endif
 
+/* D̃_ij of eqs 23-24: the harmonic mean (wcr_pair_mean), or with turbulent_diffusion =
+ * "log_mirror" the logarithmic mean (a − b)/ln(a/b) = m x/atanh x, m = (a + b)/2, x = (a − b)/(a +
+ * b): the two points' exact conductance for a D linear in the distance, as ν_t = κ u_τ y is in the
+ * log layer. Where |x| < 0.05 (most pairs away from the walls) its series m (1 − x²/3 − 4x⁴/45),
+ * within 1e-9 of it, spares the atanh */
+real wcr_diff_mean(real a, real b)
+{
+#if WCR_KE_DIFF
+  const real m = R(0.5) * (a + b), x = (a - b) / (a + b), x2 = x * x;
+  return x2 < R(0.0025) ? m * (R(1.0) - x2 * (R(1.0) / R(3.0) + x2 * (R(4.0) / R(45.0))))
+                        : m * x / atanh(x);
+#else
+  return wcr_pair_mean(a, b);
+#endif
+}
+
 __kernel void wcr_turb_transport(
     const uint n, const struct grid g, __global const realv *pos, __global const realv *vel,
     __global const real *vol, __global const uint *kind, __global const real *wall_dist,
@@ -301,8 +339,23 @@ __kernel void wcr_turb_transport(
     gyy += vij.y * gw.y;
     const real ntj = nu_t[j];
     const real dkj = nu + ntj / KE_SK, dej = nu + ntj / KE_SE;
-    dk += R(2.0) * wcr_pair_mean(dki, dkj) * (ki - k[j]) * f;
-    de += R(2.0) * wcr_pair_mean(dei, dej) * (ei - eps[j]) * f;
+    const real mk = wcr_diff_mean(dki, dkj), me = wcr_diff_mean(dei, dej);
+    real fd = f;
+#if WCR_KE_DIFF
+    /* the wall's mirror: the pair of i with j's image behind the boundary, at the separation
+     * d_i + d_j (wall_dist: the heights over the boundary) along i's wall normal (both in P_ext,
+     * with a wall frame) */
+    if (in_ext && kj == WCR_FLUID && dj >= R(0.0) && dj < r_ext &&
+        (fi.z != R(0.0) || fi.w != R(0.0)) && (fr.z != R(0.0) || fr.w != R(0.0))) {
+      const realv ni = (realv)(fi.z, fi.w);
+      const realv rt = r - dot(r, ni) * ni;
+      const real sn = di + dj;
+      const real r2m = dot(rt, rt) + sn * sn;
+      if (r2m < g.sm.support2) fd += smoothing_f(g.sm, sqrt(r2m)) * vol[j];
+    }
+#endif
+    dk += R(2.0) * mk * (ki - k[j]) * fd;
+    de += R(2.0) * me * (ei - eps[j]) * fd;
   }
   /* ∇_i W_ij = F r_ij with r_ij = x_i − x_j, so Σ v_ij ⊗ ∇W V is −∇v: flip */
   gxx = -gxx;

@@ -45,6 +45,11 @@
  *                        reconstructed dissipation: "kernel" (eqs 22 and 40, the paper's; the
  *                        default) or "log" (next to a wall, in the log law's coordinate, and
  *                        without eq 40's compensation: turbulence.cl says why)
+ *   turbulent_diffusion  under the k-ε model, the diffusion sums of k and ε (eqs 23-24):
+ *                        "harmonic" (the pairs' harmonic mean of D over the fluid neighbours,
+ *                        the paper's; the default) or "log_mirror" (the pairs' logarithmic mean
+ *                        of D, and the wall's mirror images of the first rows' neighbours:
+ *                        turbulence.cl says why)
  *   momentum_dissipation "riemann" (eq 19's dissipative term between fluid pairs; the default of
  *                        a laminar scene or one with ARD) or "off" (the default under the k-ε
  *                        model without ARD; acoustic.cl says why)
@@ -89,6 +94,7 @@ struct wcr {
   double cfl_ad, cfl_ac, tvf_alpha;
   int tvf, ard, wall_full, cont_riemann, outlet_fixed, mom_diss, wall_pgrad, shear_dist;
   int grad_log;    /* velocity_gradient = "log" (turbulence.cl) */
+  int diff_log;    /* turbulent_diffusion = "log_mirror" (turbulence.cl) */
   int tvf_surface; /* 1: the correction's tangential part in the surface rows (advection.cl) */
   cl_uint reinit;
   double vmax;               /* the fluid's largest speed at the last max_dt, m/s */
@@ -136,6 +142,7 @@ static const char *const options[] = {"sound_speed",
                                       "momentum_dissipation",
                                       "wall_shear",
                                       "velocity_gradient",
+                                      "turbulent_diffusion",
                                       "outlet",
                                       "continuity",
                                       "transport_coefficient",
@@ -260,6 +267,13 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
               "gradient next to a wall (turbulence { model = \"k-epsilon\" }); a laminar scene "
               "has none: drop it",
               sc->case_path);
+  static const char *const diff_names[] = {"harmonic", "log_mirror", NULL};
+  CLSPH_TRY(option_choice(sc, "turbulent_diffusion", diff_names, 0, &w->diff_log));
+  CLSPH_CHECK(!w->diff_log || sc->turb.on, CLSPH_E_INPUT,
+              "%s: wcsph-riemann option turbulent_diffusion = \"log_mirror\" is the k-ε model's "
+              "diffusion of k and ε (turbulence { model = \"k-epsilon\" }); a laminar scene has "
+              "none: drop it",
+              sc->case_path);
   static const char *const surf_names[] = {"off", "tangential", "pairs", NULL};
   /* "pairs" in a 3-D free-surface flow, off otherwise (the 2-D runs' validated default) */
   const int surf_default =
@@ -324,7 +338,7 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   if (verbose)
     log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), background "
              "pressure %.4g Pa, transport velocity %s%s%s, ARD %s, density %s, walls' "
-             "dissipation %s, fluid pairs' momentum dissipation %s%s%s%s",
+             "dissipation %s, fluid pairs' momentum dissipation %s%s%s%s%s",
              w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach, w->p_bg,
              tvf_names[w->tvf], w->tvf_surface ? " (surface rows: " : "",
              w->tvf_surface ? (w->tvf_surface == 1 ? "tangential)" : "pairs)") : "",
@@ -332,7 +346,8 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
              mom_names[w->mom_diss],
              w->wall_pgrad ? ", walls' pressure extrapolated along them with ∇p" : "",
              w->shear_dist ? ", the wall model's shear at each particle's distance" : "",
-             w->grad_log ? ", the velocity gradient in the log law's coordinate by the walls" : "");
+             w->grad_log ? ", the velocity gradient in the log law's coordinate by the walls" : "",
+             w->diff_log ? ", k and ε diffused with the log mean and the walls' mirror" : "");
 done:
   return st;
 }
@@ -377,6 +392,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TURB", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_SHEAR_DIST", w.shear_dist));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_GRAD_LOG", w.grad_log));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_KE_DIFF", w.diff_log));
   CLSPH_TRY(prog_opts_define_int(o, "KE_ON", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_GATE", w.gate.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TVF_SURFACE", w.tvf_surface));

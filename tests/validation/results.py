@@ -730,7 +730,7 @@ def ensemble_section(runs):
     for s in members:
         p = s["parameters"]
         key = (p.get("nf", 0), wall_pressure(s), int(p.get("md", -1)), int(p.get("shear", 0)),
-               int(p.get("grad", 0)), p.get("t_end", 0))
+               int(p.get("grad", 0)), int(p.get("diff", 0)), p.get("t_end", 0))
         groups.setdefault(key, []).append(s)
 
     def stats(vals):
@@ -758,17 +758,20 @@ def ensemble_section(runs):
            "(every P_ext particle at y_p), \"distance\" each particle's own distance with eq 39 "
            "over its lattice sum (wcsph-riemann's option; turbulence.cl); gradient \"kernel\" is "
            "the paper's velocity gradient (eqs 22, 40), \"log\" the one in the log law's "
-           "coordinate next to the walls (velocity_gradient = \"log\"). Wall times: members ran "
+           "coordinate next to the walls (velocity_gradient = \"log\"); diffusion \"harmonic\" is "
+           "the paper's diffusion sums of k and ε (eqs 23-24), \"log_mirror\" the one with the "
+           "logarithmic mean of D and the walls' mirror images (turbulent_diffusion = "
+           "\"log_mirror\"). Wall times: members ran "
            "two to four side by side on 2 cores, so that they compare no costs.", "",
-           "| N_f | wall pressure | wall shear | gradient | t_end | members "
+           "| N_f | wall pressure | wall shear | gradient | diffusion | t_end | members "
            "| u_τ vs 1-D (walls' friction) "
            "| u_τ vs 1-D (drive) | friction over drive | pressure along x over friction "
            "| whole x force over drive | u+ vs DNS (rows 2+) | k vs 1-D rows | wall s (median) "
            "| particle-steps/s |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for key in sorted(groups):
         g = groups[key]
-        nf, wp, _, shear, grad, t_end = key
+        nf, wp, _, shear, grad, diff, t_end = key
 
         def col(name):
             return stats([s["metrics"].get(name) for s in g])
@@ -779,7 +782,7 @@ def ensemble_section(runs):
         walls = sorted(s["wall_seconds"] for s in g)
         rates = sorted(s["particle_steps_per_second"] for s in g)
         out.append(f"| {nf:g} | {wp} | {('y_p', 'distance')[shear]} | {('kernel', 'log')[grad]} "
-                   f"| {t_end:g} | {len(g)} "
+                   f"| {('harmonic', 'log_mirror')[diff]} | {t_end:g} | {len(g)} "
                    f"| {col('u_tau_dev_1d')} | {col('u_tau_drive_dev_1d')} "
                    f"| {col('friction_over_drive')} | {col('wall_pressure_x')} "
                    f"| {stats([whole(s['metrics']) for s in g])} "

@@ -3,8 +3,9 @@
 # members that differ only in a ±0.1 u_τ perturbation of their starting velocity (seed), at
 # N_f = 20 (t = 1000 δ/U_b, four members) and 40 (t = 600, three), with the wall model's shear at
 # y_p (the paper's) and at each particle's distance (wall_shear = "distance"), and with the
-# velocity gradient in the log law's coordinate by the walls (velocity_gradient = "log"); then
-# RESULTS_rans_ensemble.md. About 50 min on 2 cores, two runs side by side.
+# velocity gradient in the log law's coordinate by the walls (velocity_gradient = "log"), and with
+# it the diffusion of k and ε with the logarithmic mean and the walls' mirror (turbulent_diffusion =
+# "log_mirror"); then RESULTS_rans_ensemble.md. About 65 min on 2 cores, two runs side by side.
 #   tests/validation/run_rans_ensemble.sh [BUILD_DIR]     (default build)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -18,6 +19,10 @@ source tests/validation/lib.sh
   for s in 0 1 2 3; do
     run channel_ke_nf20_grad_s$s channel_ke nf=20 ub=1 t_end=1000 every=100 seed=$s grad=1
   done
+  for s in 0 1 2 3; do
+    run channel_ke_nf20_diff_s$s channel_ke nf=20 ub=1 t_end=1000 every=100 seed=$s grad=1 diff=1
+  done
+  run channel_ke_nf40_diff_s0 channel_ke nf=40 ub=1 t_end=600 every=100 seed=0 grad=1 diff=1
 ) &
 (
   for s in 0 1 2 3; do
@@ -28,6 +33,9 @@ source tests/validation/lib.sh
   done
   for s in 0 1 2; do
     run channel_ke_nf40_grad_s$s channel_ke nf=40 ub=1 t_end=600 every=100 seed=$s grad=1
+  done
+  for s in 1 2; do
+    run channel_ke_nf40_diff_s$s channel_ke nf=40 ub=1 t_end=600 every=100 seed=$s grad=1 diff=1
   done
 ) &
 wait
