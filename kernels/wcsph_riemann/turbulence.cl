@@ -62,8 +62,9 @@
  *
  * turbulent_diffusion = "log_mirror" (WCR_KE_DIFF, an option; the paper's is "harmonic"): next to
  * a wall the diffusion sums carry less than the 1-D solver's fluxes between the same rows, for
- * two reasons: across the first two rows ν_t grows nearly in proportion to the distance, where
- * the harmonic mean of D is 5% (40 rows across the channel) to 18% (20) under the two points'
+ * two reasons: across the first two rows ν_t grows nearly in proportion to the distance (by 1.59
+ * and 1.99 times from the first row to the second at 40 and 20 rows across the channel, in the 1-D
+ * solver on those rows), where the harmonic mean of D stands 3.0% and 6.6% under the two points'
  * exact conductance for a D linear in the distance, the logarithmic mean; and the support cut by
  * the wall drops the pairs across it, those of the first row with the second at two spacings'
  * reach (7% of the first face's conductance at h = 1.3 dr). From the N_f = 40 channel's snapshots
