@@ -39,6 +39,15 @@
 -- reference's), k_rows_rms and k_rows_mean (k per row, RMS and mean of the relative deviation),
 -- and u_plus_model_dns_dev_max, the reference's own u+ against the DNS from the second row on
 -- (the model's error, which the particles' cannot make smaller but by cancelling it).
+-- That reference's momentum is the channel's, whose layer below the offset wall (y_p − dr/2:
+-- 0.026 δ at nf = 40, 0.038 δ at 80) the pressure gradient drives too; between the offset walls
+-- the particles take the wall's whole stress (wcsph-riemann's offset_layer = "none", the
+-- paper's), so that the stress in the stream stands 1/(1 − (y_p − dr/2)/δ) over the reference's
+-- and k with it. carry = 1 passes that layer's share of the body force to the first row
+-- (offset_layer = "body_force") and the particles' momentum is the channel's; with carry = 0 at
+-- nf = 40 and 80, u_tau_dev_rows_offset and k_rows_offset_rms / k_rows_offset_mean compare with
+-- the 1-D solver on the same rows under the particles' own momentum balance
+-- (tests/data/channel1d_rowsN_offset.csv: channel1d --rows N --bulk-over-rows --offset-momentum).
 -- The rows' u and k are time averages over the second half of the run (u_τ's window), from the
 -- samples sample() records every sample_dt (series u_rN and k_rN, N the row from the wall; the
 -- paper averages its SPH data in time): profile_samples counts them; the last instant's where
@@ -58,6 +67,10 @@
 -- diff = 1: k and ε diffused with the pairs' logarithmic mean of D and the walls' mirror images
 -- (wcsph-riemann's turbulent_diffusion = "log_mirror"; 0: the harmonic mean over the fluid
 -- neighbours, the paper's).
+-- carry = 1: the layer between the offset wall and the channel's wall passes its body force to
+-- the first row (wcsph-riemann's offset_layer = "body_force"; 0: no fluid there, the paper's),
+-- so that the walls hold the drive on the channel's whole height: u_tau_drive then
+-- takes the channel's full height, u_τ² = f δ.
 -- seed > 0 adds a uniform perturbation of ±0.1 u_τ to each component of each particle's starting
 -- velocity, drawn from Lua's generator seeded with `seed`: the members of an ensemble.
 -- tvf: the transport-velocity correction (0 off, 1 full, 2 limited: the scheme's default);
@@ -69,7 +82,7 @@
 -- u_τ averages the second half's friction over many samples: over 10% windows of a run it moves
 -- by ±1%, so that three or four samples (one per output) are not an average.
 param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1, md = -1, ub = 0,
-        wallp = -1, sample_dt = 1, seed = 0, shear = 0, grad = 0, diff = 0 }
+        wallp = -1, sample_dt = 1, seed = 0, shear = 0, grad = 0, diff = 0, carry = 0 }
 if not (sample_dt > 0) then
   error(("channel_ke: sample_dt must be a positive time between force samples, not %g"):format(sample_dt))
 end
@@ -91,6 +104,12 @@ end
 if diff ~= 0 and diff ~= 1 then
   error(("channel_ke: diff must be 0 (the harmonic mean over the fluid neighbours) or 1 (the log mean and the walls' mirror), not %g"):format(diff))
 end
+if carry ~= 0 and carry ~= 1 then
+  error(("channel_ke: carry must be 0 (no fluid below the offset walls) or 1 (the layer below them passes its body force to the first row), not %g"):format(carry))
+end
+if carry == 1 and turb ~= 1 then
+  error("channel_ke: carry = 1 is the k-ε wall model's offset layer: it needs turb = 1")
+end
 if wallp ~= -1 and wallp ~= 0 and wallp ~= 1 then
   error(("channel_ke: wallp must be -1 (the scheme's default), 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
 end
@@ -109,7 +128,8 @@ scheme { "wcsph-riemann", ard = ard, momentum_dissipation = ({"off", "riemann", 
          wall_pressure = ({"mirror", "gradient"})[wallp + 1],
          wall_shear = turb == 1 and ({"y_p", "distance"})[shear + 1] or nil,
          velocity_gradient = turb == 1 and ({"kernel", "log"})[grad + 1] or nil,
-         turbulent_diffusion = turb == 1 and ({"harmonic", "log_mirror"})[diff + 1] or nil }
+         turbulent_diffusion = turb == 1 and ({"harmonic", "log_mirror"})[diff + 1] or nil,
+         offset_layer = turb == 1 and ({"none", "body_force"})[carry + 1] or nil }
 if ub > 0 then
   fluid { density = 1, viscosity = nu,
           flow_rate_control = { velocity = ub, slice = { 0, L * (1 - 1e-9) } } }
@@ -140,6 +160,12 @@ local rows_ref = nil
 if ub > 0 and (nf == 20 or nf == 40 or nf == 80) then
   rows_ref = reference(("tests/data/channel1d_rows%d.csv"):format(nf), "y", "u", "u_plus", "k",
                        "epsilon", "nu_t")
+end
+-- the same rows under the particles' momentum balance between the offset walls (carry = 0)
+local rows_off = nil
+if ub > 0 and turb == 1 and carry == 0 and (nf == 40 or nf == 80) then
+  rows_off = reference(("tests/data/channel1d_rows%d_offset.csv"):format(nf), "y", "u", "u_plus",
+                       "k")
 end
 -- an ensemble member's perturbation of the starting velocity (0 without a seed)
 if seed > 0 then math.randomseed(math.tointeger(seed)) end
@@ -262,7 +288,7 @@ function metrics(sim)
     -- height between the walls, the friction that holds it (2 L (δ − off) f = 2 L u_τ²)
     local drive = series_mean(sim, "drive", t0)
     if drive ~= nil then
-      m.u_tau_drive = math.sqrt(math.max(drive * (delta - off), 0))
+      m.u_tau_drive = math.sqrt(math.max(drive * (delta - (carry == 1 and 0 or off)), 0))
       m.u_tau_drive_dev_1d = m.u_tau_drive / 0.051372 - 1
       m.friction_over_drive = (ut / m.u_tau_drive) ^ 2 - 1
       m.wall_over_drive = (f.x + c.x) / (2 * L) / m.u_tau_drive ^ 2 - 1
@@ -324,6 +350,15 @@ function metrics(sim)
     m.u_rows_dev_max, m.u_rows_rms = uw, math.sqrt(usq / half)
     m.k_rows_rms, m.k_rows_mean = math.sqrt(ksq / half), ksum / half
     m.u_plus_model_dns_dev_max = mworst
+  end
+  if rows_off then
+    local ksq, ksum = 0, 0
+    for r = 1, half do
+      local dk = kr[r] / rows_off.k[r] - 1
+      ksq, ksum = ksq + dk * dk, ksum + dk
+    end
+    m.u_tau_dev_rows_offset = ut / (rows_off.u[1] / rows_off.u_plus[1]) - 1
+    m.k_rows_offset_rms, m.k_rows_offset_mean = math.sqrt(ksq / half), ksum / half
   end
   if init == 2 then -- the first step's dk/dt of the first row against the 1-D solver's diffusion
     local h = sim.series("k_r1")

@@ -1209,6 +1209,30 @@ clsph_run_test(run_channel_ke_diffusion_log_mirror ${CMAKE_SOURCE_DIR}/cases/cha
                BOUNDS "k_row1_diffusion>0.92" "k_row1_diffusion<0.945" "profile_samples>2")
 clsph_cli_test(channel_ke_diff_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua --set diff=2
                RC 2 REGEX "channel_ke: diff must be 0 .the harmonic mean over the fluid neighbours. or 1")
+# The layer below the offset walls (sec 4.4's boundary offset, y_p − dr/2 = 0.026 δ at 40 rows):
+# started from the 1-D solver's steady solution on the rows (init = 2, tests/data/
+# channel1d_rows40.csv: the channel's own momentum balance), over 30 δ/U_b the particles move
+# towards their own. With the layer empty (offset_layer = "none", the paper's) the flow between
+# the offset walls takes the wall's whole stress, 1/(1 − 0.026) times the channel's in the stream,
+# and k, which follows the stress, rises: +2.44% / +2.93% (double / float) over the rows' k, +0.31%
+# / +0.79% over the same solver's under that momentum balance (channel1d_rows40_offset.csv:
+# --offset-momentum). With the layer's body force passed to the first row (offset_layer =
+# "body_force") +1.19% / +1.42%. The walls' whole x force over the drive on each one's height,
+# f (δ − y_p + dr/2) and f δ: −0.31% / −0.58% and −0.44% / +0.50% (a layer that passed nothing
+# would read −2.6% in the second). 20 s each.
+clsph_run_test(run_channel_ke_offset_none ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SETS nf=40
+               init=2 ub=1 t_end=30 every=30 grad=1 diff=1
+               BOUNDS "k_rows_mean>0.019" "k_rows_offset_mean>-0.01" "k_rows_offset_mean<0.015"
+               "wall_over_drive>-0.013" "wall_over_drive<0.013" "profile_samples>10")
+clsph_run_test(run_channel_ke_offset_body_force ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SETS
+               nf=40 init=2 ub=1 t_end=30 every=30 grad=1 diff=1 carry=1
+               BOUNDS "k_rows_mean<0.019" "wall_over_drive>-0.013" "wall_over_drive<0.013"
+               "profile_samples>10")
+clsph_cli_test(channel_ke_carry_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua --set carry=2
+               RC 2 REGEX "channel_ke: carry must be 0 .no fluid below the offset walls. or 1")
+clsph_cli_test(channel_ke_carry_laminar ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
+               --set carry=1 --set turb=0 RC 2
+               REGEX "channel_ke: carry = 1 is the k-ε wall model's offset layer: it needs turb = 1")
 clsph_cli_test(channel_ke_init_three ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua --set init=3
                RC 2 REGEX "channel_ke: init must be 0 .the power law., 1 .the 1-D reference. or 2")
 clsph_cli_test(channel_ke_init_rows_fixed ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
@@ -1379,6 +1403,12 @@ clsph_cli_test(riemann_turbulent_diffusion_laminar ARGS info ${bad_inflow_turb} 
                REGEX "turbulent_diffusion = \"log_mirror\" is the k-ε model's diffusion of k and ε")
 clsph_cli_test(riemann_turbulent_diffusion_unknown ARGS info ${bad_inflow_turb} --set what=20 RC 2
                REGEX "wcsph-riemann option turbulent_diffusion must be one of \"harmonic\", \"log_mirror\"")
+clsph_cli_test(riemann_offset_layer_laminar ARGS info ${bad_inflow_turb} --set what=21 RC 2
+               REGEX "offset_layer = \"body_force\" is the k-ε wall model's layer below the offset boundary")
+clsph_cli_test(riemann_offset_layer_unknown ARGS info ${bad_inflow_turb} --set what=22 RC 2
+               REGEX "wcsph-riemann option offset_layer must be one of \"none\", \"body_force\"")
+clsph_cli_test(riemann_offset_layer_no_layer ARGS info ${bad_inflow_turb} --set what=23 RC 2
+               REGEX "turbulence: y_p = 0.02 is under half the particle spacing \\(dr = 0.1\\), so there is no layer")
 clsph_cli_test(inflow_function_not_number ARGS info ${bad_inflow_turb} --set what=7 RC 2
                REGEX "inflow 'entry': the velocity function returned string at s = 0(\\.0)?: it must return a number")
 clsph_cli_test(inflow_function_k_negative ARGS info ${bad_inflow_turb} --set what=8 RC 2

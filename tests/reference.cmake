@@ -30,6 +30,8 @@ channel1d_cli_test(channel1d_cli_bad_option ARGS --re 40000 RC 2 REGEX "unknown 
 channel1d_cli_test(channel1d_cli_few_rows ARGS --rows 5 RC 1 REGEX "channel1d: rows must be 8 or more")
 channel1d_cli_test(channel1d_cli_bulk_without_rows ARGS --bulk-over-rows RC 1
                    REGEX "channel1d: a bulk over the rows needs rows")
+channel1d_cli_test(channel1d_cli_offset_without_bulk ARGS --rows 40 --offset-momentum RC 1
+                   REGEX "channel1d: the offset wall's momentum balance needs the bulk over the rows")
 channel1d_cli_test(channel1d_cli_two_schemes ARGS --fv --backward RC 1
                    REGEX "channel1d: one scheme: the finite volume's \\(--fv\\) or the backward differences \\(--backward\\)")
 channel1d_cli_test(channel1d_cli_fv ARGS --rows 20 --bulk-over-rows --log-b 5.5667 --fv RC 0

@@ -59,18 +59,17 @@ realv wcr_visc_jump(uint kj, realv xi, realv xj, realv vi, realv vj, real dw, re
   return (R(1.0) + dw / di) * (vi - vj);
 }
 
-__kernel void
-wcr_advection(const uint n, const struct grid g, __global const realv *pos,
-              __global const realv *vel, __global const real *vol, __global const uint *kind,
-              __global const real *rho, __global const real *wall_dist,
-              __global const realv *wall_normal, __global const uint *nlist,
-              __global const uint *ncount, __global const wcr_mat *bmat, __global const real *sigma,
-              const real dr, const real mu, const real inv_lambda, const realv accel,
-              const real tvf_a, const real tvf_m, const real bulk, const real rho0, const real c0,
-              const real h, __global realv *acc_prior, __global realv *shift, __global real *ard,
-              __global const real *nu_t, __global const real4 *frame, __global const real2 *wallv,
-              const real r_ext, const uint wall_model, const real wscale, __global const uint *wall,
-              __global real4 *rec, __global const uint *wgroup, const uint nwall, const real mass)
+__kernel void wcr_advection(
+    const uint n, const struct grid g, __global const realv *pos, __global const realv *vel,
+    __global const real *vol, __global const uint *kind, __global const real *rho,
+    __global const real *wall_dist, __global const realv *wall_normal, __global const uint *nlist,
+    __global const uint *ncount, __global const wcr_mat *bmat, __global const real *sigma,
+    const real dr, const real mu, const real inv_lambda, const realv accel, const real tvf_a,
+    const real tvf_m, const real bulk, const real rho0, const real c0, const real h,
+    __global realv *acc_prior, __global realv *shift, __global real *ard, __global const real *nu_t,
+    __global const real4 *frame, __global const real2 *wallv, const real r_ext,
+    const uint wall_model, const real wscale, __global const uint *wall, __global real4 *rec,
+    __global const uint *wgroup, const uint nwall, const real mass, const real layer)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -170,8 +169,18 @@ wcr_advection(const uint n, const struct grid g, __global const realv *pos,
     const real4 fr = frame[i];
     const realv t = (realv)(fr.x, fr.y), nw = (realv)(fr.z, fr.w);
     a += R(2.0) * wscale * wallv[i].x * (dot(nw, swall) * t + dot(t, swall) * nw);
+#if WCR_OFFSET_LAYER
+    /* offset_layer = "body_force": the layer between the wall and the offset boundary (sec 4.4)
+     * under the first row (P, d < dr), of (y_p − dr/2)/dr = layer times the particle's mass, passes
+     * its body force along the wall to the particle: the wall's τ_w holds the layer and the
+     * fluid above it */
+    if (di < dr) a += layer * (accel - dot(accel, nw) * nw);
+#endif
   }
   acc_prior[i] = a;
+#if !WCR_OFFSET_LAYER
+  (void)layer;
+#endif
   (void)nu_l;
 #if WCR_REC
   /* the walls take the reactions: −m_i of the acceleration each group's pairs give i */
@@ -193,6 +202,7 @@ wcr_advection(const uint n, const struct grid g, __global const realv *pos,
   (void)wscale;
   (void)r_ext;
   (void)wall_model;
+  (void)layer;
   acc_prior[i] = accel + R(2.0) * mu * inv_lambda * (vol[i] / mass) * visc;
 #if WCR_REC
   for (uint q = 0; q < WCR_REC; ++q) {

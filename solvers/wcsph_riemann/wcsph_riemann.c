@@ -50,6 +50,18 @@
  *                        the paper's; the default) or "log_mirror" (the pairs' logarithmic mean
  *                        of D, and the wall's mirror images of the first rows' neighbours:
  *                        turbulence.cl says why)
+ *   offset_layer         under the k-ε model with a boundary offset (y_p > dr/2, sec 4.4), the
+ *                        layer of fluid between the wall and the offset boundary: "none" (no
+ *                        fluid there, the paper's; the default) or "body_force" (the layer's
+ *                        body force along the wall passes to the first row above it, so that
+ *                        the wall's τ_w holds the layer: advection.cl). Without it the flow
+ *                        between the offset walls takes the whole wall stress τ_w: in a channel
+ *                        driven by a body force the stress in the stream stands
+ *                        1/(1 − (y_p − dr/2)/δ) over the channel's at the same τ_w (2.6% and
+ *                        3.9% at 40 and 80 rows across, y_p = 0.05 δ), and k, which follows the
+ *                        stress, as much (cases/channel_ke.lua). The layer's share of a pressure
+ *                        gradient is not passed on: the first row's ∇p, noise-dominated, gave
+ *                        that row a random tangential force that raised k on the rows by 20%
  *   momentum_dissipation "riemann" (eq 19's dissipative term between fluid pairs; the default of
  *                        a laminar scene or one with ARD) or "off" (the default under the k-ε
  *                        model without ARD; acoustic.cl says why)
@@ -95,6 +107,7 @@ struct wcr {
   int tvf, ard, wall_full, cont_riemann, outlet_fixed, mom_diss, wall_pgrad, shear_dist;
   int grad_log;    /* velocity_gradient = "log" (turbulence.cl) */
   int diff_log;    /* turbulent_diffusion = "log_mirror" (turbulence.cl) */
+  int carry;       /* offset_layer = "body_force" (advection.cl) */
   int tvf_surface; /* 1: the correction's tangential part in the surface rows (advection.cl) */
   cl_uint reinit;
   double vmax;               /* the fluid's largest speed at the last max_dt, m/s */
@@ -143,6 +156,7 @@ static const char *const options[] = {"sound_speed",
                                       "wall_shear",
                                       "velocity_gradient",
                                       "turbulent_diffusion",
+                                      "offset_layer",
                                       "outlet",
                                       "continuity",
                                       "transport_coefficient",
@@ -274,6 +288,14 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
               "diffusion of k and ε (turbulence { model = \"k-epsilon\" }); a laminar scene has "
               "none: drop it",
               sc->case_path);
+  static const char *const carry_names[] = {"none", "body_force", NULL};
+  CLSPH_TRY(option_choice(sc, "offset_layer", carry_names, 0, &w->carry));
+  CLSPH_CHECK(
+      !w->carry || sc->turb.on, CLSPH_E_INPUT,
+      "%s: wcsph-riemann option offset_layer = \"body_force\" is the k-ε wall model's "
+      "layer below the offset boundary (turbulence { model = \"k-epsilon\", y_p = ... }); a "
+      "laminar scene has none: drop it",
+      sc->case_path);
   static const char *const surf_names[] = {"off", "tangential", "pairs", NULL};
   /* "pairs" in a 3-D free-surface flow, off otherwise (the 2-D runs' validated default) */
   const int surf_default =
@@ -338,7 +360,7 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   if (verbose)
     log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), background "
              "pressure %.4g Pa, transport velocity %s%s%s, ARD %s, density %s, walls' "
-             "dissipation %s, fluid pairs' momentum dissipation %s%s%s%s%s",
+             "dissipation %s, fluid pairs' momentum dissipation %s%s%s%s%s%s",
              w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach, w->p_bg,
              tvf_names[w->tvf], w->tvf_surface ? " (surface rows: " : "",
              w->tvf_surface ? (w->tvf_surface == 1 ? "tangential)" : "pairs)") : "",
@@ -347,7 +369,8 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
              w->wall_pgrad ? ", walls' pressure extrapolated along them with ∇p" : "",
              w->shear_dist ? ", the wall model's shear at each particle's distance" : "",
              w->grad_log ? ", the velocity gradient in the log law's coordinate by the walls" : "",
-             w->diff_log ? ", k and ε diffused with the log mean and the walls' mirror" : "");
+             w->diff_log ? ", k and ε diffused with the log mean and the walls' mirror" : "",
+             w->carry ? ", the offset layer's body force on the first row" : "");
 done:
   return st;
 }
@@ -392,6 +415,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TURB", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_SHEAR_DIST", w.shear_dist));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_GRAD_LOG", w.grad_log));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_OFFSET_LAYER", w.carry));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_KE_DIFF", w.diff_log));
   CLSPH_TRY(prog_opts_define_int(o, "KE_ON", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_GATE", w.gate.on));
@@ -458,6 +482,11 @@ static enum clsph_status turb_create(struct sim *sim, struct wcr *w)
               sim->scene->case_path, t->line);
   w->turb = 1;
   w->y_p = t->y_p > 0.0 ? t->y_p : 0.5 * sim->scene->dr;
+  CLSPH_CHECK(!w->carry || w->y_p >= 0.5 * sim->scene->dr, CLSPH_E_INPUT,
+              "%s:%d: turbulence: y_p = %g is under half the particle spacing (dr = %g), so there "
+              "is no layer below the first row for wcsph-riemann's offset_layer = \"body_force\": "
+              "raise y_p (the boundary offset is y_p - dr/2) or drop the option",
+              sim->scene->case_path, t->line, w->y_p, sim->scene->dr);
   w->w_s = isnan(t->wall_weight) ? (w->ard ? 0.5 : 0.1) : t->wall_weight; /* sec 4.3 */
   CLSPH_TRY(kepsilon_create(sim, t->delay > 0.0 ? t->nu_t_delay : (double)NAN, &w->ke));
   CLSPH_TRY(add_field(sim, "y_plus", NULL, 1, &w->f_yplus));
@@ -751,6 +780,9 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   const real r_ext = (real)(2.0 * h - sc->dr);
   const cl_uint wmodel = w->turb && sim->time >= sc->turb.delay;
   const real wsc = (real)w->wscale, mass = (real)w->mass;
+  /* offset_layer = "body_force": the layer's mass under a first-row particle over the
+   * particle's, (y_p − dr/2)/dr (advection.cl) */
+  const real layer = w->carry ? (real)((w->y_p - 0.5 * sc->dr) / sc->dr) : (real)0;
   cl_mem wall = pset_mem(ps, w->f_wall);
   cl_mem rec = w->f_rec >= 0 ? pset_mem(ps, w->f_rec) : w->d_none;
   cl_mem wgroup = w->f_rec >= 0 ? w->d_wgroup : w->d_none;
@@ -760,7 +792,7 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
                      KARGV(accel), KARG(tvf_a), KARG(tvf_m), KARG(bulk), KARG(rho0), KARG(c0),
                      KARG(rh), KARG(w->d_prior), KARG(w->d_shift), KARG(ard), KARG(nut),
                      KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(wsc), KARG(wall),
-                     KARG(rec), KARG(wgroup), KARG(w->nwall_map), KARG(mass)));
+                     KARG(rec), KARG(wgroup), KARG(w->nwall_map), KARG(mass), KARG(layer)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_adv, ps->n, NULL));
 done:
   return st;

@@ -144,6 +144,8 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
     bad = "give a positive u_bulk or u_tau";
   else if (p->bulk_over_rows && !rows)
     bad = "a bulk over the rows needs rows";
+  else if (p->offset_momentum && !p->bulk_over_rows)
+    bad = "the offset wall's momentum balance needs the bulk over the rows";
   else if (m->fv && m->backward)
     bad = "one scheme: the finite volume's (--fv) or the backward differences (--backward)";
   if (bad != NULL) {
@@ -165,6 +167,9 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
   double *c = mem + 9 * n, *d = mem + 10 * n, *face = mem + 11 * n, *node = mem + 12 * n;
   double *old = mem + 13 * n;
   double dx = rows ? 2.0 * (p->delta - p->y_p) / (p->rows - 1) : (p->delta - p->y_p) / p->cells;
+  /* the total stress over u_τ² at y = 0 (p->offset_momentum: 1/(1 − y_w/δ), the wall's stress at
+   * the offset wall y_w = y_p − Δ/2) */
+  const double stress = p->offset_momentum ? p->delta / (p->delta - (p->y_p - 0.5 * dx)) : 1.0;
   double cmu = m->c_mu, cmu14 = pow(cmu, 0.25), cmu34 = pow(cmu, 0.75);
 
   /* start: the log layer's equilibrium at u_τ = 0.05 U */
@@ -182,7 +187,7 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
     double u_star = m->ustar_law ? u_tau : cmu14 * sqrt(s->k[0]);
     double yp_plus = p->y_p * u_star / p->nu;
     double f0 = u_plus(m, yp_plus) / u_star;
-    for (int i = 0; i < n; ++i) g[i] = (1.0 - s->y[i] / p->delta) / (p->nu + s->nu_t[i]);
+    for (int i = 0; i < n; ++i) g[i] = (1.0 - s->y[i] / p->delta) * stress / (p->nu + s->nu_t[i]);
     double flux = p->nu / (u_star * u_star) * u_plus_integral(m, yp_plus); /* ∫_0^{y_p} f dy */
     old[0] = f0;
     for (int i = 1; i < n; ++i) {
@@ -190,8 +195,8 @@ int channel1d_solve(const struct channel1d_model *m, const struct channel1d_prob
         old[i] = old[i - 1] + dx * g[i];
       } else if (m->fv) { /* the flux through the face between the nodes */
         const double yf = 0.5 * (s->y[i - 1] + s->y[i]);
-        old[i] =
-            old[i - 1] + dx * (1.0 - yf / p->delta) / (p->nu + 0.5 * (s->nu_t[i - 1] + s->nu_t[i]));
+        old[i] = old[i - 1] + dx * (1.0 - yf / p->delta) * stress /
+                                  (p->nu + 0.5 * (s->nu_t[i - 1] + s->nu_t[i]));
       } else {
         old[i] = old[i - 1] + 0.5 * dx * (g[i - 1] + g[i]);
       }

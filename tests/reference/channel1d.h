@@ -41,6 +41,11 @@ struct channel1d_problem {
   /* with rows: u_bulk is the mean of u over the rows (what an SPH run's flow-rate control holds
    * on its particles), not over [0, δ] */
   int bulk_over_rows;
+  /* with bulk_over_rows: the momentum balance of the SPH run's fluid, which fills [y_w, δ] only
+   * (y_w = y_p − Δ/2, the offset wall of sec 4.4) and takes the wall model's stress at y_w: the
+   * total stress u_τ² (δ − y)/(δ − y_w) instead of the channel's u_τ² (δ − y)/δ, whose layer
+   * below y_w the pressure gradient also drives */
+  int offset_momentum;
 };
 
 /** The solution on the nodes, and the scalars. */

@@ -1,7 +1,8 @@
 /* channel1d_main.c: the 1-D k-ε channel reference (channel1d.h) as a command that writes the
  * profile as CSV.
  *   channel1d [--delta 1] [--nu 1e-4] [--y-p 0.05] [--u-bulk 1 | --u-tau U]
- *             [--cells 3200 | --rows N_f [--bulk-over-rows]] [--paper-diffusion] [--log-b B]
+ *             [--cells 3200 | --rows N_f [--bulk-over-rows [--offset-momentum]]]
+ *             [--paper-diffusion] [--log-b B]
  *             [--wall-law u_k|u_tau] [--fv | --backward] [--out FILE]
  * --fv discretises as a cell-centred finite volume on the same nodes (channel1d.h: the faces'
  * mean ν_t in the momentum flux, the production from central differences of u): with OpenFOAM's
@@ -14,7 +15,9 @@
  * Leroy et al.'s wall condition does (eq 23), instead of C_μ^¼ k_p^½ (u_k, the default).
  * --rows N_f puts the nodes on the particle rows of an SPH channel of N_f rows across with its
  * first row at y_p (channel1d.h); --bulk-over-rows then holds the mean of u over those rows at
- * --u-bulk, as the SPH run's flow-rate control holds its particles' mean.
+ * --u-bulk, as the SPH run's flow-rate control holds its particles' mean; --offset-momentum
+ * takes the SPH run's momentum balance between its offset walls (channel1d.h: the wall's stress
+ * at y_p − Δ/2), that of wcsph-riemann's offset_layer = "none".
  * The defaults are Lee & Moser's Re_τ = 543.5 channel (δ = 1, U_b = 1, ν = 1e-4) with the
  * wall model at y_p = 0.05 (half the spacing of 20 particles across the channel), on 3200 cells
  * (test_channel1d: u_τ there within 0.03% of its grid limit). */
@@ -51,6 +54,10 @@ int main(int argc, char **argv)
     }
     if (strcmp(o, "--bulk-over-rows") == 0) {
       p.bulk_over_rows = 1;
+      continue;
+    }
+    if (strcmp(o, "--offset-momentum") == 0) {
+      p.offset_momentum = 1;
       continue;
     }
     if (strcmp(o, "--fv") == 0 || strcmp(o, "--backward") == 0) {
@@ -128,10 +135,11 @@ int main(int argc, char **argv)
           : m.backward ? ", the paper's backward differences for du/dy"
                        : "",
           m.e_wall, log(m.e_wall) / m.kappa, m.y_plus_lam);
-  char grid[96];
+  char grid[128];
   if (p.rows > 0)
-    snprintf(grid, sizeof grid, "rows = %d (spacing %.6g)%s", p.rows, s.y[1] - s.y[0],
-             p.bulk_over_rows ? ", bulk over the rows" : "");
+    snprintf(grid, sizeof grid, "rows = %d (spacing %.6g)%s%s", p.rows, s.y[1] - s.y[0],
+             p.bulk_over_rows ? ", bulk over the rows" : "",
+             p.offset_momentum ? ", the stress of the offset walls" : "");
   else
     snprintf(grid, sizeof grid, "cells = %d", p.cells);
   fprintf(f,

@@ -730,7 +730,8 @@ def ensemble_section(runs):
     for s in members:
         p = s["parameters"]
         key = (p.get("nf", 0), wall_pressure(s), int(p.get("md", -1)), int(p.get("shear", 0)),
-               int(p.get("grad", 0)), int(p.get("diff", 0)), p.get("t_end", 0))
+               int(p.get("grad", 0)), int(p.get("diff", 0)), int(p.get("carry", 0)),
+               p.get("t_end", 0))
         groups.setdefault(key, []).append(s)
 
     def stats(vals):
@@ -748,30 +749,38 @@ def ensemble_section(runs):
            "standard deviation (smallest … largest) over its members of u_τ from the walls' "
            "friction against the 1-D solver's grid limit (0.051372); of the u_τ that the drive "
            "implies (the flow-rate control's mean body force f over the same window, u_τ² = "
-           "f (δ − y_p + dr/2)); the walls' recorded friction over the drive (0 where the "
+           "f (δ − y_p + dr/2), the fluid's height between the offset walls, or f δ where the "
+           "layer below the offset wall passes its body force to the first row); the walls' "
+           "recorded friction over the drive (0 where the "
            "momentum the fluid loses is the walls' friction); the walls' recorded pressure force "
            "along x over their friction (0 on a flat wall between continua); the walls' whole x "
            "force over the drive (the record's momentum balance: 0 but for the bulk's changes at "
            "the sampled steps); u+ against the DNS "
-           "from the second row on, from the rows' time-averaged u; and k over the 1-D solver's "
-           "on the same rows (mean of the rows' deviations). wall_shear \"y_p\" is the paper's "
+           "from the second row on, from the rows' time-averaged u; k over the 1-D solver's "
+           "on the same rows (mean of the rows' deviations), and where the particles' layer "
+           "below the offset wall is empty (offset layer \"none\", N_f = 40 and 80) over the "
+           "same solver under the particles' own momentum balance, the wall's stress at the "
+           "offset wall (`channel1d --offset-momentum`: the stress in the stream "
+           "1/(1 − (y_p − dr/2)/δ) times the channel's). wall_shear \"y_p\" is the paper's "
            "(every P_ext particle at y_p), \"distance\" each particle's own distance with eq 39 "
            "over its lattice sum (wcsph-riemann's option; turbulence.cl); gradient \"kernel\" is "
            "the paper's velocity gradient (eqs 22, 40), \"log\" the one in the log law's "
            "coordinate next to the walls (velocity_gradient = \"log\"); diffusion \"harmonic\" is "
            "the paper's diffusion sums of k and ε (eqs 23-24), \"log_mirror\" the one with the "
            "logarithmic mean of D and the walls' mirror images (turbulent_diffusion = "
-           "\"log_mirror\"). Wall times: members ran "
+           "\"log_mirror\"); offset layer \"none\" is the paper's boundary offset, no fluid "
+           "below the offset wall, \"body_force\" the layer's body force passed to the first "
+           "row (offset_layer = \"body_force\"). Wall times: members ran "
            "two to four side by side on 2 cores, so that they compare no costs.", "",
-           "| N_f | wall pressure | wall shear | gradient | diffusion | t_end | members "
-           "| u_τ vs 1-D (walls' friction) "
+           "| N_f | wall pressure | wall shear | gradient | diffusion | offset layer | t_end "
+           "| members | u_τ vs 1-D (walls' friction) "
            "| u_τ vs 1-D (drive) | friction over drive | pressure along x over friction "
-           "| whole x force over drive | u+ vs DNS (rows 2+) | k vs 1-D rows | wall s (median) "
-           "| particle-steps/s |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "| whole x force over drive | u+ vs DNS (rows 2+) | k vs 1-D rows "
+           "| k vs 1-D rows, offset momentum | wall s (median) | particle-steps/s |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for key in sorted(groups):
         g = groups[key]
-        nf, wp, _, shear, grad, diff, t_end = key
+        nf, wp, _, shear, grad, diff, carry, t_end = key
 
         def col(name):
             return stats([s["metrics"].get(name) for s in g])
@@ -782,11 +791,13 @@ def ensemble_section(runs):
         walls = sorted(s["wall_seconds"] for s in g)
         rates = sorted(s["particle_steps_per_second"] for s in g)
         out.append(f"| {nf:g} | {wp} | {('y_p', 'distance')[shear]} | {('kernel', 'log')[grad]} "
-                   f"| {('harmonic', 'log_mirror')[diff]} | {t_end:g} | {len(g)} "
+                   f"| {('harmonic', 'log_mirror')[diff]} | {('none', 'body_force')[carry]} "
+                   f"| {t_end:g} | {len(g)} "
                    f"| {col('u_tau_dev_1d')} | {col('u_tau_drive_dev_1d')} "
                    f"| {col('friction_over_drive')} | {col('wall_pressure_x')} "
                    f"| {stats([whole(s['metrics']) for s in g])} "
                    f"| {col('u_plus_dns_dev_max')} | {col('k_rows_mean')} "
+                   f"| {col('k_rows_offset_mean')} "
                    f"| {walls[len(walls) // 2]:.1f} | {rates[len(rates) // 2]:.3g} |")
     return out
 
