@@ -63,8 +63,9 @@
  *                        gradient is not passed on: the first row's ∇p, noise-dominated, gave
  *                        that row a random tangential force that raised k on the rows by 20%
  *   momentum_dissipation "riemann" (eq 19's dissipative term between fluid pairs; the default of
- *                        a laminar scene or one with ARD) or "off" (the default under the k-ε
- *                        model without ARD; acoustic.cl says why)
+ *                        a laminar scene or one with ARD), "reconstructed" (the jump less
+ *                        ½ (∇v_i + ∇v_j) r_ij with the k-ε model's velocity gradients; the
+ *                        default under the model without ARD; acoustic.cl says why) or "off"
  *   outlet               a natural exit's pressure: "characteristic" (default; see open_layers)
  *                        or "fixed" (p = 0: the paper's zero-pressure outlet, which reflects
  *                        sound)
