@@ -1392,19 +1392,19 @@ clsph_cli_test(riemann_reconstructed_laminar ARGS info ${bad_inflow_turb} --set 
 clsph_cli_test(riemann_dissipation_off_with_ard ARGS info ${bad_inflow_turb} --set what=6 RC 2
                REGEX "momentum_dissipation = \"off\" contradicts ard = 1")
 clsph_cli_test(riemann_wall_shear_laminar ARGS info ${bad_inflow_turb} --set what=15 RC 2
-               REGEX "wall_shear = \"distance\" sets where the k-ε wall model reads its log law")
+               REGEX "wall_shear = \"distance\" belongs to the k-ε model .*: where its wall model reads the log law")
 clsph_cli_test(riemann_wall_shear_unknown ARGS info ${bad_inflow_turb} --set what=16 RC 2
                REGEX "wcsph-riemann option wall_shear must be one of \"y_p\", \"distance\"")
 clsph_cli_test(riemann_velocity_gradient_laminar ARGS info ${bad_inflow_turb} --set what=17 RC 2
-               REGEX "velocity_gradient = \"log\" is the k-ε model's velocity gradient next to a wall")
+               REGEX "velocity_gradient = \"log\" belongs to the k-ε model .*: its velocity gradient next to a wall")
 clsph_cli_test(riemann_velocity_gradient_unknown ARGS info ${bad_inflow_turb} --set what=18 RC 2
                REGEX "wcsph-riemann option velocity_gradient must be one of \"kernel\", \"log\"")
 clsph_cli_test(riemann_turbulent_diffusion_laminar ARGS info ${bad_inflow_turb} --set what=19 RC 2
-               REGEX "turbulent_diffusion = \"log_mirror\" is the k-ε model's diffusion of k and ε")
+               REGEX "turbulent_diffusion = \"log_mirror\" belongs to the k-ε model .*: its diffusion of k and ε")
 clsph_cli_test(riemann_turbulent_diffusion_unknown ARGS info ${bad_inflow_turb} --set what=20 RC 2
                REGEX "wcsph-riemann option turbulent_diffusion must be one of \"harmonic\", \"log_mirror\"")
 clsph_cli_test(riemann_offset_layer_laminar ARGS info ${bad_inflow_turb} --set what=21 RC 2
-               REGEX "offset_layer = \"body_force\" is the k-ε wall model's layer below the offset boundary")
+               REGEX "offset_layer = \"body_force\" belongs to the k-ε model .*: its wall model's layer below the offset boundary")
 clsph_cli_test(riemann_offset_layer_unknown ARGS info ${bad_inflow_turb} --set what=22 RC 2
                REGEX "wcsph-riemann option offset_layer must be one of \"none\", \"body_force\"")
 clsph_cli_test(riemann_offset_layer_no_layer ARGS info ${bad_inflow_turb} --set what=23 RC 2

@@ -203,6 +203,21 @@ done:
   return st;
 }
 
+/* a text option of the k-ε model among `names`: its index (0, the default, when not given);
+ * any other choice in a laminar scene is refused, `what` saying what it sets */
+static enum clsph_status turb_choice(const struct scene *s, const char *key,
+                                     const char *const *names, const char *what, int *out)
+{
+  enum clsph_status st = CLSPH_OK;
+  CLSPH_TRY(option_choice(s, key, names, 0, out));
+  CLSPH_CHECK(*out == 0 || s->turb.on, CLSPH_E_INPUT,
+              "%s: wcsph-riemann option %s = \"%s\" belongs to the k-ε model (turbulence { "
+              "model = \"k-epsilon\" }): %s; a laminar scene has none: drop it",
+              s->case_path, key, names[*out], what);
+done:
+  return st;
+}
+
 static enum clsph_status option_number(const struct scene *s, const char *key, double lo, double hi,
                                        const char *what, double *v)
 {
@@ -269,34 +284,17 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
               "laminar scene takes \"riemann\" or \"off\"",
               sc->case_path);
   static const char *const shear_names[] = {"y_p", "distance", NULL};
-  CLSPH_TRY(option_choice(sc, "wall_shear", shear_names, 0, &w->shear_dist));
-  CLSPH_CHECK(!w->shear_dist || sc->turb.on, CLSPH_E_INPUT,
-              "%s: wcsph-riemann option wall_shear = \"distance\" sets where the k-ε wall model "
-              "reads its log law (turbulence { model = \"k-epsilon\" }); a laminar scene has "
-              "no wall model: drop it",
-              sc->case_path);
+  CLSPH_TRY(turb_choice(sc, "wall_shear", shear_names, "where its wall model reads the log law",
+                        &w->shear_dist));
   static const char *const grad_names[] = {"kernel", "log", NULL};
-  CLSPH_TRY(option_choice(sc, "velocity_gradient", grad_names, 0, &w->grad_log));
-  CLSPH_CHECK(!w->grad_log || sc->turb.on, CLSPH_E_INPUT,
-              "%s: wcsph-riemann option velocity_gradient = \"log\" is the k-ε model's velocity "
-              "gradient next to a wall (turbulence { model = \"k-epsilon\" }); a laminar scene "
-              "has none: drop it",
-              sc->case_path);
+  CLSPH_TRY(turb_choice(sc, "velocity_gradient", grad_names, "its velocity gradient next to a wall",
+                        &w->grad_log));
   static const char *const diff_names[] = {"harmonic", "log_mirror", NULL};
-  CLSPH_TRY(option_choice(sc, "turbulent_diffusion", diff_names, 0, &w->diff_log));
-  CLSPH_CHECK(!w->diff_log || sc->turb.on, CLSPH_E_INPUT,
-              "%s: wcsph-riemann option turbulent_diffusion = \"log_mirror\" is the k-ε model's "
-              "diffusion of k and ε (turbulence { model = \"k-epsilon\" }); a laminar scene has "
-              "none: drop it",
-              sc->case_path);
+  CLSPH_TRY(
+      turb_choice(sc, "turbulent_diffusion", diff_names, "its diffusion of k and ε", &w->diff_log));
   static const char *const carry_names[] = {"none", "body_force", NULL};
-  CLSPH_TRY(option_choice(sc, "offset_layer", carry_names, 0, &w->carry));
-  CLSPH_CHECK(
-      !w->carry || sc->turb.on, CLSPH_E_INPUT,
-      "%s: wcsph-riemann option offset_layer = \"body_force\" is the k-ε wall model's "
-      "layer below the offset boundary (turbulence { model = \"k-epsilon\", y_p = ... }); a "
-      "laminar scene has none: drop it",
-      sc->case_path);
+  CLSPH_TRY(turb_choice(sc, "offset_layer", carry_names,
+                        "its wall model's layer below the offset boundary", &w->carry));
   static const char *const surf_names[] = {"off", "tangential", "pairs", NULL};
   /* "pairs" in a 3-D free-surface flow, off otherwise (the 2-D runs' validated default) */
   const int surf_default =
