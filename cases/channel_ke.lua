@@ -71,6 +71,9 @@
 -- the first row (wcsph-riemann's offset_layer = "body_force"; 0: no fluid there, the paper's),
 -- so that the walls hold the drive on the channel's whole height: u_tau_drive then
 -- takes the channel's full height, u_τ² = f δ.
+-- pforce = 1: the dummies' pressure force on the fluid along their wall normal only
+-- (wcsph-riemann's wall_pressure_force = "normal"; 0: eq 19 with the fluid particle's correction
+-- matrix, the paper's, whose off-diagonal part turns part of the walls' normal push along them).
 -- seed > 0 adds a uniform perturbation of ±0.1 u_τ to each component of each particle's starting
 -- velocity, drawn from Lua's generator seeded with `seed`: the members of an ensemble.
 -- tvf: the transport-velocity correction (0 off, 1 full, 2 limited: the scheme's default);
@@ -82,7 +85,8 @@
 -- u_τ averages the second half's friction over many samples: over 10% windows of a run it moves
 -- by ±1%, so that three or four samples (one per output) are not an average.
 param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1, init = 1, ws = -1, md = -1, ub = 0,
-        wallp = -1, sample_dt = 1, seed = 0, shear = 0, grad = 0, diff = 0, carry = 0 }
+        wallp = -1, sample_dt = 1, seed = 0, shear = 0, grad = 0, diff = 0, carry = 0,
+        pforce = 0 }
 if not (sample_dt > 0) then
   error(("channel_ke: sample_dt must be a positive time between force samples, not %g"):format(sample_dt))
 end
@@ -110,6 +114,12 @@ end
 if carry == 1 and turb ~= 1 then
   error("channel_ke: carry = 1 is the k-ε wall model's offset layer: it needs turb = 1")
 end
+if pforce ~= 0 and pforce ~= 1 then
+  error(("channel_ke: pforce must be 0 (the walls' pressure force with the correction matrix) or 1 (along the walls' normal), not %g"):format(pforce))
+end
+if pforce == 1 and turb ~= 1 then
+  error("channel_ke: pforce = 1 is the k-ε wall model's wall pressure force: it needs turb = 1")
+end
 if wallp ~= -1 and wallp ~= 0 and wallp ~= 1 then
   error(("channel_ke: wallp must be -1 (the scheme's default), 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
 end
@@ -129,7 +139,8 @@ scheme { "wcsph-riemann", ard = ard, momentum_dissipation = ({"off", "riemann", 
          wall_shear = turb == 1 and ({"y_p", "distance"})[shear + 1] or nil,
          velocity_gradient = turb == 1 and ({"kernel", "log"})[grad + 1] or nil,
          turbulent_diffusion = turb == 1 and ({"harmonic", "log_mirror"})[diff + 1] or nil,
-         offset_layer = turb == 1 and ({"none", "body_force"})[carry + 1] or nil }
+         offset_layer = turb == 1 and ({"none", "body_force"})[carry + 1] or nil,
+         wall_pressure_force = turb == 1 and ({"corrected", "normal"})[pforce + 1] or nil }
 if ub > 0 then
   fluid { density = 1, viscosity = nu,
           flow_rate_control = { velocity = ub, slice = { 0, L * (1 - 1e-9) } } }

@@ -1228,11 +1228,29 @@ clsph_run_test(run_channel_ke_offset_body_force ${CMAKE_SOURCE_DIR}/cases/channe
                nf=40 init=2 ub=1 t_end=30 every=30 grad=1 diff=1 carry=1
                BOUNDS "k_rows_mean<0.019" "wall_over_drive>-0.013" "wall_over_drive<0.013"
                "profile_samples>10")
+# The dummies' pressure force along the walls' normal (wall_pressure_force = "normal": a uniform
+# pressure's pair sum along the normal, the share of ∇p along the wall as it is), the same start
+# and window with the layer's body force: the walls' friction over the drive +0.11% / +0.31%
+# (double / float) and their pressure force along x −0.05% / +0.30% of it (the float's ∇p the
+# noisier). With eq 19's correction matrix on the wall pairs (the paper's;
+# run_channel_ke_offset_body_force) a first row that is not a lattice over the dummies turns part
+# of the walls' normal push along them: pressure along x +0.81% / +1.45% of the friction here
+# (−1.0% over 300-600 δ/U_b of the N_f = 40 runs: RESULTS_rans_ensemble.md), friction over the
+# drive −1.24% / −0.94%. Bounds of ±0.6% and ±0.5% part the two in both precisions. 20 s.
+clsph_run_test(run_channel_ke_pressure_normal ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SETS
+               nf=40 init=2 ub=1 t_end=30 every=30 grad=1 diff=1 carry=1 pforce=1
+               BOUNDS "friction_over_drive>-0.006" "friction_over_drive<0.006"
+               "wall_pressure_x>-0.005" "wall_pressure_x<0.005" "profile_samples>10")
 clsph_cli_test(channel_ke_carry_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua --set carry=2
                RC 2 REGEX "channel_ke: carry must be 0 .no fluid below the offset walls. or 1")
 clsph_cli_test(channel_ke_carry_laminar ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
                --set carry=1 --set turb=0 RC 2
                REGEX "channel_ke: carry = 1 is the k-ε wall model's offset layer: it needs turb = 1")
+clsph_cli_test(channel_ke_pforce_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua --set pforce=2
+               RC 2 REGEX "channel_ke: pforce must be 0 .the walls' pressure force with the correction matrix. or 1")
+clsph_cli_test(channel_ke_pforce_laminar ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
+               --set pforce=1 --set turb=0 RC 2
+               REGEX "channel_ke: pforce = 1 is the k-ε wall model's wall pressure force: it needs turb = 1")
 clsph_cli_test(channel_ke_init_three ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua --set init=3
                RC 2 REGEX "channel_ke: init must be 0 .the power law., 1 .the 1-D reference. or 2")
 clsph_cli_test(channel_ke_init_rows_fixed ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
@@ -1409,6 +1427,10 @@ clsph_cli_test(riemann_offset_layer_unknown ARGS info ${bad_inflow_turb} --set w
                REGEX "wcsph-riemann option offset_layer must be one of \"none\", \"body_force\"")
 clsph_cli_test(riemann_offset_layer_no_layer ARGS info ${bad_inflow_turb} --set what=23 RC 2
                REGEX "turbulence: y_p = 0.02 is under half the particle spacing \\(dr = 0.1\\), so there is no layer")
+clsph_cli_test(riemann_wall_pressure_force_laminar ARGS info ${bad_inflow_turb} --set what=24 RC 2
+               REGEX "wall_pressure_force = \"normal\" belongs to the k-ε model .*: the direction of the walls' pressure force next to its wall model")
+clsph_cli_test(riemann_wall_pressure_force_unknown ARGS info ${bad_inflow_turb} --set what=25 RC 2
+               REGEX "wcsph-riemann option wall_pressure_force must be one of \"corrected\", \"normal\"")
 clsph_cli_test(inflow_function_not_number ARGS info ${bad_inflow_turb} --set what=7 RC 2
                REGEX "inflow 'entry': the velocity function returned string at s = 0(\\.0)?: it must return a number")
 clsph_cli_test(inflow_function_k_negative ARGS info ${bad_inflow_turb} --set what=8 RC 2

@@ -270,7 +270,16 @@ wcr_momentum(const uint n, const struct grid g, __global const realv *pos,
     }
 #endif
     const real beta = wcr_beta(u, c0, isw);
+#if WCR_TURB && WCR_WALL_PNORMAL
+#if WCR_WALL_PGRAD
+    const realv tp = isw ? wcr_wall_push(f, pi + pj, bi, r, wall_normal[j], gpi)
+#else
+    const realv tp = isw ? wcr_wall_push(f, pi + pj, bi, r, wall_normal[j], ri * gravity)
+#endif
+                         : f * (pi * wcr_apply(bj, r) + pj * wcr_apply(bi, r));
+#else
     const realv tp = f * (pi * wcr_apply(bj, r) + pj * wcr_apply(bi, r));
+#endif
     sum += tp;
 #if WCR_ARD
 #if WCR_TURB

@@ -66,6 +66,9 @@
 #ifndef WCR_TVF_SURFACE
 #define WCR_TVF_SURFACE 0 /* the surface rows' correction: 1 tangential, 2 near pairs */
 #endif
+#ifndef WCR_WALL_PNORMAL
+#define WCR_WALL_PNORMAL 0 /* the dummies' pressure force along their wall normal (acoustic.cl) */
+#endif
 #ifndef WCR_REC
 #define WCR_REC 0 /* wall groups whose force the sub-steps record (force.cl), 0: none */
 #endif
@@ -205,6 +208,27 @@ realv wcr_apply(wcr_mat b, realv v)
                  b.s2 * v.x + b.s4 * v.y + b.s5 * v.z, R(0.0));
 #endif
 }
+
+#if WCR_TURB && WCR_WALL_PNORMAL
+/* wall_pressure_force = "normal": a dummy particle's pressure pair f (p_i + p_w) B_i r_iw (eq 19)
+ * along its wall's normal n_w, but for the share of p_w that i's pressure gradient along the
+ * wall gives it (wcr_wall_pressure_grad), which keeps its direction: that share is how the first
+ * row feels the whole of a gradient along the wall. A wall at one pressure pushes along its
+ * normal; the pair sum of a uniform pressure, Σ_w f B_i r_iw, has a part along the wall wherever
+ * the first row is not a lattice over the dummies' (its positions over their columns, B_i's
+ * off-diagonal part in a sheared row): in the k-ε channel (cases/channel_ke.lua, N_f = 40) a
+ * push of 1% of τ_w on the fluid over 300-600 δ/U_b, by which the drive that holds its flow rate
+ * stood under the walls' friction.
+ * Projecting the whole pair instead loses the gradient's share too (0.22 of it on a lattice's
+ * first row). gp: i's ∇p (wall_pressure = "gradient"), or ρ_i g (the mirror's share of
+ * gravity along the wall: wcr_wall_pressure). */
+realv wcr_wall_push(real f, real psum, wcr_mat bi, realv r, realv nw, realv gp)
+{
+  const realv br = wcr_apply(bi, r);
+  const real dp = -dot(gp - dot(gp, nw) * nw, r);
+  return f * ((psum - dp) * dot(br, nw) * nw + dp * br);
+}
+#endif
 
 /* The configuration of the fluid and layer particles: list, B, ρ, the normalised kernel sum
  * sigma = Σ_j W_ij dr² / sigma0 (1 in a full support; advection.cl tells the free surface by it)

@@ -84,7 +84,15 @@ __kernel void wcr_wall_force(
 #endif
     const real u = rr > R(0.0) ? -dot(vij, r) / rr : R(0.0);
     const real beta = wcr_beta(u, c0, 1u);
+#if WCR_TURB && WCR_WALL_PNORMAL /* wall_pressure_force = "normal" (config.cl) */
+#if WCR_WALL_PGRAD
+    fp += wcr_wall_push(f, pi + pj + R(2.0) * p_bg, bi, r, wall_normal[j], gradp[i]);
+#else
+    fp += wcr_wall_push(f, pi + pj + R(2.0) * p_bg, bi, r, wall_normal[j], ri * gravity);
+#endif
+#else
     fp += f * (pi + pj + R(2.0) * p_bg) * wcr_apply(bi, r);
+#endif
 #if WCR_ARD
     fv -= R(2.0) * fmax(R(0.5) * rho0 * beta * h - mui, R(0.0)) * f * vij;
 #else

@@ -62,6 +62,16 @@
  *                        stress, as much (cases/channel_ke.lua). The layer's share of a pressure
  *                        gradient is not passed on: the first row's ∇p, noise-dominated, gave
  *                        that row a random tangential force that raised k on the rows by 20%
+ *   wall_pressure_force  under the k-ε model, the pressure force of a dummy particle on a fluid
+ *                        one: "corrected" (eq 19 with i's correction matrix B_i, the paper's;
+ *                        the default) or "normal" (along the dummy's wall normal, but for the
+ *                        share of its pressure that ∇p along the wall gives it: config.cl,
+ *                        wcr_wall_push). A uniform pressure's pairs have a part along the wall
+ *                        where the first row is not a lattice over the dummies': in the channel
+ *                        at N_f = 40 a push of 1% of τ_w on the fluid, which lowers the drive
+ *                        that holds U_b; with "normal" the walls' friction is the drive within
+ *                        0.2%, and u_τ from either +1.5% of the grid limit (the drive's +1.0%
+ *                        with the push; cases/channel_ke.lua, README)
  *   momentum_dissipation "riemann" (eq 19's dissipative term between fluid pairs; the default of
  *                        a laminar scene or one with ARD), "reconstructed" (the jump less
  *                        ½ (∇v_i + ∇v_j) r_ij with the k-ε model's velocity gradients; the
@@ -106,10 +116,11 @@ struct wcr {
   double c0, p_bg, mass, sigma0, lambda, u_scale;
   double cfl_ad, cfl_ac, tvf_alpha;
   int tvf, ard, wall_full, cont_riemann, outlet_fixed, mom_diss, wall_pgrad, shear_dist;
-  int grad_log;    /* velocity_gradient = "log" (turbulence.cl) */
-  int diff_log;    /* turbulent_diffusion = "log_mirror" (turbulence.cl) */
-  int carry;       /* offset_layer = "body_force" (advection.cl) */
-  int tvf_surface; /* 1: the correction's tangential part in the surface rows (advection.cl) */
+  int grad_log;     /* velocity_gradient = "log" (turbulence.cl) */
+  int diff_log;     /* turbulent_diffusion = "log_mirror" (turbulence.cl) */
+  int carry;        /* offset_layer = "body_force" (advection.cl) */
+  int wall_pnormal; /* wall_pressure_force = "normal" (acoustic.cl) */
+  int tvf_surface;  /* 1: the correction's tangential part in the surface rows (advection.cl) */
   cl_uint reinit;
   double vmax;               /* the fluid's largest speed at the last max_dt, m/s */
   int configured;            /* the list and B have been made ... */
@@ -158,6 +169,7 @@ static const char *const options[] = {"sound_speed",
                                       "velocity_gradient",
                                       "turbulent_diffusion",
                                       "offset_layer",
+                                      "wall_pressure_force",
                                       "outlet",
                                       "continuity",
                                       "transport_coefficient",
@@ -295,6 +307,10 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   static const char *const carry_names[] = {"none", "body_force", NULL};
   CLSPH_TRY(turb_choice(sc, "offset_layer", carry_names,
                         "its wall model's layer below the offset boundary", &w->carry));
+  static const char *const pforce_names[] = {"corrected", "normal", NULL};
+  CLSPH_TRY(turb_choice(sc, "wall_pressure_force", pforce_names,
+                        "the direction of the walls' pressure force next to its wall model",
+                        &w->wall_pnormal));
   static const char *const surf_names[] = {"off", "tangential", "pairs", NULL};
   /* "pairs" in a 3-D free-surface flow, off otherwise (the 2-D runs' validated default) */
   const int surf_default =
@@ -359,7 +375,7 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
   if (verbose)
     log_info("wcsph-riemann: c0 = %.4g m/s (%s; U = %.4g m/s from %s, Mach %.3g), background "
              "pressure %.4g Pa, transport velocity %s%s%s, ARD %s, density %s, walls' "
-             "dissipation %s, fluid pairs' momentum dissipation %s%s%s%s%s%s",
+             "dissipation %s, fluid pairs' momentum dissipation %s%s%s%s%s%s%s",
              w->c0, o != NULL ? "option sound_speed" : "10 U", vs.u, vs.what, mach, w->p_bg,
              tvf_names[w->tvf], w->tvf_surface ? " (surface rows: " : "",
              w->tvf_surface ? (w->tvf_surface == 1 ? "tangential)" : "pairs)") : "",
@@ -369,7 +385,8 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
              w->shear_dist ? ", the wall model's shear at each particle's distance" : "",
              w->grad_log ? ", the velocity gradient in the log law's coordinate by the walls" : "",
              w->diff_log ? ", k and ε diffused with the log mean and the walls' mirror" : "",
-             w->carry ? ", the offset layer's body force on the first row" : "");
+             w->carry ? ", the offset layer's body force on the first row" : "",
+             w->wall_pnormal ? ", the walls' pressure force along their normal" : "");
 done:
   return st;
 }
@@ -415,6 +432,7 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_SHEAR_DIST", w.shear_dist));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_GRAD_LOG", w.grad_log));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_OFFSET_LAYER", w.carry));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_PNORMAL", w.wall_pnormal));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_KE_DIFF", w.diff_log));
   CLSPH_TRY(prog_opts_define_int(o, "KE_ON", sim->scene->turb.on));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_GATE", w.gate.on));

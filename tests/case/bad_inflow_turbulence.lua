@@ -10,7 +10,8 @@
 -- 18 a velocity_gradient the scheme does not know; 19 turbulent_diffusion = "log_mirror" in a laminar
 -- scene, 20 a turbulent_diffusion the scheme does not know; 21 offset_layer = "body_force" in a
 -- laminar scene, 22 an offset_layer the scheme does not know, 23 offset_layer = "body_force" with
--- y_p under half the spacing (no layer below the first row)
+-- y_p under half the spacing (no layer below the first row), 24 wall_pressure_force = "normal" in a
+-- laminar scene, 25 a wall_pressure_force the scheme does not know
 param { what = 1 }
 domain { 0, 0, 2, 1 }
 particles { dr = 0.1 }
@@ -25,9 +26,11 @@ if what == 19 then opts.turbulent_diffusion = "log_mirror" end
 if what == 20 then opts.turbulent_diffusion = "mirror" end
 if what == 21 or what == 23 then opts.offset_layer = "body_force" end
 if what == 22 then opts.offset_layer = "layer" end
+if what == 24 then opts.wall_pressure_force = "normal" end
+if what == 25 then opts.wall_pressure_force = "tangential" end
 scheme(opts)
 fluid { density = 1, viscosity = 1e-5 }
-if what ~= 1 and what ~= 5 and what ~= 15 and what ~= 17 and what ~= 19 and what ~= 21 then
+if what ~= 1 and what ~= 5 and what ~= 15 and what ~= 17 and what ~= 19 and what ~= 21 and what ~= 24 then
   turbulence { model = "k-epsilon", k = 0.01, epsilon = 0.0025, y_p = what == 23 and 0.02 or nil }
 end
 wall { {2.3, 0}, {-0.3, 0}, fluid = "right" }
@@ -37,7 +40,9 @@ local k, eps = 0.01, 0.0025
 if what == 2 then eps = nil end
 if what == 3 then eps = 1e-6 end
 if what == 4 then eps = -1 end
-if what == 5 or what == 6 or what == 15 or what == 17 or what == 19 or what == 21 then k, eps = nil, nil end
+if what == 5 or what == 6 or what == 15 or what == 17 or what == 19 or what == 21 or what == 24 then
+  k, eps = nil, nil
+end
 local entry = {{0, 1}, {0, 0}, velocity = 1, k = k, epsilon = eps, name = "entry"}
 if what == 7 then entry.velocity = function(s) return "fast" end end
 if what == 8 then entry.k = function(s) return 0.01 - 0.02 * s end end

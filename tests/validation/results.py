@@ -731,7 +731,7 @@ def ensemble_section(runs):
         p = s["parameters"]
         key = (p.get("nf", 0), wall_pressure(s), int(p.get("md", -1)), int(p.get("shear", 0)),
                int(p.get("grad", 0)), int(p.get("diff", 0)), int(p.get("carry", 0)),
-               p.get("t_end", 0))
+               int(p.get("pforce", 0)), p.get("t_end", 0))
         groups.setdefault(key, []).append(s)
 
     def stats(vals):
@@ -770,17 +770,21 @@ def ensemble_section(runs):
            "logarithmic mean of D and the walls' mirror images (turbulent_diffusion = "
            "\"log_mirror\"); offset layer \"none\" is the paper's boundary offset, no fluid "
            "below the offset wall, \"body_force\" the layer's body force passed to the first "
-           "row (offset_layer = \"body_force\"). Wall times: members ran "
+           "row (offset_layer = \"body_force\"); wall pressure force \"corrected\" is eq 19 "
+           "with the fluid particle's correction matrix on the dummies' pairs (the paper's), "
+           "\"normal\" its part along the wall's normal (wall_pressure_force = \"normal\"). "
+           "Wall times: members ran "
            "two to four side by side on 2 cores, so that they compare no costs.", "",
-           "| N_f | wall pressure | wall shear | gradient | diffusion | offset layer | t_end "
+           "| N_f | wall pressure | wall shear | gradient | diffusion | offset layer "
+           "| wall pressure force | t_end "
            "| members | u_τ vs 1-D (walls' friction) "
            "| u_τ vs 1-D (drive) | friction over drive | pressure along x over friction "
            "| whole x force over drive | u+ vs DNS (rows 2+) | k vs 1-D rows "
            "| k vs 1-D rows, offset momentum | wall s (median) | particle-steps/s |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for key in sorted(groups):
         g = groups[key]
-        nf, wp, _, shear, grad, diff, carry, t_end = key
+        nf, wp, _, shear, grad, diff, carry, pforce, t_end = key
 
         def col(name):
             return stats([s["metrics"].get(name) for s in g])
@@ -792,7 +796,7 @@ def ensemble_section(runs):
         rates = sorted(s["particle_steps_per_second"] for s in g)
         out.append(f"| {nf:g} | {wp} | {('y_p', 'distance')[shear]} | {('kernel', 'log')[grad]} "
                    f"| {('harmonic', 'log_mirror')[diff]} | {('none', 'body_force')[carry]} "
-                   f"| {t_end:g} | {len(g)} "
+                   f"| {('corrected', 'normal')[pforce]} | {t_end:g} | {len(g)} "
                    f"| {col('u_tau_dev_1d')} | {col('u_tau_drive_dev_1d')} "
                    f"| {col('friction_over_drive')} | {col('wall_pressure_x')} "
                    f"| {stats([whole(s['metrics']) for s in g])} "
