@@ -93,32 +93,28 @@ end
 if seed < 0 or seed >= 2 ^ 31 or seed ~= math.floor(seed) then
   error(("channel_ke: seed must be 0 (no perturbation) or a positive integer below 2^31, not %g"):format(seed))
 end
-if shear ~= 0 and shear ~= 1 then
-  error(("channel_ke: shear must be 0 (the wall's shear from the log law at y_p) or 1 (at each particle's distance), not %g"):format(shear))
+-- a switch of the case's: 0 or 1, what each means in the message; `model`: 1 needs turb = 1
+-- (the errors name the caller's line)
+local function switch(name, v, zero, one, model)
+  if v ~= 0 and v ~= 1 then
+    error(("channel_ke: %s must be 0 (%s) or 1 (%s), not %g"):format(name, zero, one, v), 2)
+  end
+  if model and v == 1 and turb ~= 1 then
+    error(("channel_ke: %s = 1 is the k-ε wall model's %s: it needs turb = 1"):format(name, model), 2)
+  end
 end
-if grad ~= 0 and grad ~= 1 then
-  error(("channel_ke: grad must be 0 (the kernel sums' velocity gradient) or 1 (in the log law's coordinate by the walls), not %g"):format(grad))
-end
+switch("shear", shear, "the wall's shear from the log law at y_p", "at each particle's distance")
+switch("grad", grad, "the kernel sums' velocity gradient", "in the log law's coordinate by the walls")
+switch("diff", diff, "the harmonic mean over the fluid neighbours", "the log mean and the walls' mirror")
+switch("carry", carry, "no fluid below the offset walls",
+       "the layer below them passes its body force to the first row", "offset layer")
+switch("pforce", pforce, "the walls' pressure force with the correction matrix",
+       "along the walls' normal", "wall pressure force")
 if init ~= 0 and init ~= 1 and init ~= 2 then
   error(("channel_ke: init must be 0 (the power law), 1 (the 1-D reference) or 2 (the 1-D solver on the rows), not %g"):format(init))
 end
 if init == 2 and not (ub > 0 and turb == 1 and (nf == 20 or nf == 40 or nf == 80)) then
   error(("channel_ke: init = 2 starts from the 1-D solver on 20, 40 or 80 rows under flow-rate control and the k-ε model: it needs ub > 0, turb = 1 and nf 20, 40 or 80 (ub = %g, turb = %g, nf = %g)"):format(ub, turb, nf))
-end
-if diff ~= 0 and diff ~= 1 then
-  error(("channel_ke: diff must be 0 (the harmonic mean over the fluid neighbours) or 1 (the log mean and the walls' mirror), not %g"):format(diff))
-end
-if carry ~= 0 and carry ~= 1 then
-  error(("channel_ke: carry must be 0 (no fluid below the offset walls) or 1 (the layer below them passes its body force to the first row), not %g"):format(carry))
-end
-if carry == 1 and turb ~= 1 then
-  error("channel_ke: carry = 1 is the k-ε wall model's offset layer: it needs turb = 1")
-end
-if pforce ~= 0 and pforce ~= 1 then
-  error(("channel_ke: pforce must be 0 (the walls' pressure force with the correction matrix) or 1 (along the walls' normal), not %g"):format(pforce))
-end
-if pforce == 1 and turb ~= 1 then
-  error("channel_ke: pforce = 1 is the k-ε wall model's wall pressure force: it needs turb = 1")
 end
 if wallp ~= -1 and wallp ~= 0 and wallp ~= 1 then
   error(("channel_ke: wallp must be -1 (the scheme's default), 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
