@@ -61,7 +61,8 @@
 -- pressure) over the drive, less 1: the momentum balance of the record (0 but for the bulk's
 -- changes at the sampled steps).
 -- shear = 1: the wall model's shear from the log law at each particle's own distance from the
--- wall (wcsph-riemann's wall_shear = "distance"; 0: at y_p, the paper's).
+-- wall (wcsph-riemann's wall_shear = "distance"; 0: at y_p, the paper's); 2: on the first row
+-- only (wall_shear = "first_row").
 -- grad = 1: the model's velocity gradient next to the walls in the log law's coordinate
 -- (wcsph-riemann's velocity_gradient = "log"; 0: the kernel sums', the paper's).
 -- diff = 1: k and ε diffused with the pairs' logarithmic mean of D and the walls' mirror images
@@ -103,7 +104,9 @@ local function switch(name, v, zero, one, model)
     error(("channel_ke: %s = 1 is the k-ε wall model's %s: it needs turb = 1"):format(name, model), 2)
   end
 end
-switch("shear", shear, "the wall's shear from the log law at y_p", "at each particle's distance")
+if shear ~= 0 and shear ~= 1 and shear ~= 2 then
+  error(("channel_ke: shear must be 0 (the wall's shear from the log law at y_p), 1 (at each particle's distance) or 2 (on the first row only), not %g"):format(shear))
+end
 switch("grad", grad, "the kernel sums' velocity gradient", "in the log law's coordinate by the walls")
 switch("diff", diff, "the harmonic mean over the fluid neighbours", "the log mean and the walls' mirror")
 switch("carry", carry, "no fluid below the offset walls",
@@ -132,7 +135,7 @@ particles { dr = dr }
 scheme { "wcsph-riemann", ard = ard, momentum_dissipation = ({"off", "riemann", "reconstructed"})[md + 1],
          transport_velocity = ({"off", "full", "limited"})[tvf + 1],
          wall_pressure = ({"mirror", "gradient"})[wallp + 1],
-         wall_shear = turb == 1 and ({"y_p", "distance"})[shear + 1] or nil,
+         wall_shear = turb == 1 and ({"y_p", "distance", "first_row"})[shear + 1] or nil,
          velocity_gradient = turb == 1 and ({"kernel", "log"})[grad + 1] or nil,
          turbulent_diffusion = turb == 1 and ({"harmonic", "log_mirror"})[diff + 1] or nil,
          offset_layer = turb == 1 and ({"none", "body_force"})[carry + 1] or nil,

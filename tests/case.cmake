@@ -1271,9 +1271,20 @@ clsph_run_test(run_channel_ke_start ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SET
 clsph_run_test(run_channel_ke_start_distance ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SETS nf=20
                t_end=0.5 ub=1 every=0.5 sample_dt=0.05 shear=1
                BOUNDS "u_tau_dev_1d>0.005" "u_tau_dev_1d<0.009" "profile_samples>5")
+# wall_shear = "first_row": eq 39 on the first row alone, over the first row's lattice sum (0.9046
+# at h = 1.3 dr, Wendland C2: 2 dr³ Σ_b (−F) (r·n) over the dummies of one column), so that the
+# walls carry the first row's whole log law as with "distance": u_τ +0.72% (double and float
+# alike; "distance" +0.61%, "y_p" −0.02%).
+clsph_run_test(run_channel_ke_start_first_row ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SETS nf=20
+               t_end=0.5 ub=1 every=0.5 sample_dt=0.05 shear=2
+               BOUNDS "u_tau_dev_1d>0.005" "u_tau_dev_1d<0.009" "profile_samples>5")
+clsph_cli_test(channel_ke_first_row_sum ARGS run ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
+               --set nf=20 --set t_end=0.2 --set ub=1 --set every=0.2 --set sample_dt=0.05
+               --set shear=2 --out ${CMAKE_CURRENT_BINARY_DIR}/first_row_sum --overwrite RC 0
+               REGEX "the wall model's shear on the first row only, eq 39 over its lattice sum 0\\.904[56]")
 clsph_cli_test(channel_ke_shear_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
-               --set shear=2 RC 2
-               REGEX "channel_ke: shear must be 0 \\(the wall's shear from the log law at y_p\\) or 1")
+               --set shear=3 RC 2
+               REGEX "channel_ke: shear must be 0 \\(the wall's shear from the log law at y_p\\), 1 .* or 2")
 clsph_cli_test(channel_ke_seed_negative ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
                --set seed=-1 RC 2
                REGEX "channel_ke: seed must be 0 \\(no perturbation\\) or a positive integer below 2\\^31, not -1")
@@ -1412,7 +1423,7 @@ clsph_cli_test(riemann_dissipation_off_with_ard ARGS info ${bad_inflow_turb} --s
 clsph_cli_test(riemann_wall_shear_laminar ARGS info ${bad_inflow_turb} --set what=15 RC 2
                REGEX "wall_shear = \"distance\" belongs to the k-ε model .*: where its wall model reads the log law")
 clsph_cli_test(riemann_wall_shear_unknown ARGS info ${bad_inflow_turb} --set what=16 RC 2
-               REGEX "wcsph-riemann option wall_shear must be one of \"y_p\", \"distance\"")
+               REGEX "wcsph-riemann option wall_shear must be one of \"y_p\", \"distance\", \"first_row\"")
 clsph_cli_test(riemann_velocity_gradient_laminar ARGS info ${bad_inflow_turb} --set what=17 RC 2
                REGEX "velocity_gradient = \"log\" belongs to the k-ε model .*: its velocity gradient next to a wall")
 clsph_cli_test(riemann_velocity_gradient_unknown ARGS info ${bad_inflow_turb} --set what=18 RC 2

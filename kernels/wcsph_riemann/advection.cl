@@ -108,6 +108,12 @@ __kernel void wcr_advection(
   const real nu_l = mu / rho0, mui = mu + rho0 * nu_t[i];
   const real di = wall_dist[i];
   const int modelled = wall_model && di >= R(0.0) && di < r_ext;
+#if WCR_SHEAR_ROW1
+  /* wall_shear = "first_row": eq 39 on the first row (P) only, over its lattice sum */
+  const real w39 = di < dr ? wscale : R(0.0);
+#else
+  const real w39 = wscale;
+#endif
   realv swall = (realv)(R(0.0)); /* Σ_b V_b ∇W_ib over the dummies */
 #endif
   for (uint k = 0; k < c; ++k) {
@@ -168,7 +174,7 @@ __kernel void wcr_advection(
   if (modelled) { /* eq 39: −(2/ρ) Σ_b τ_w V_b ∇W_ib, τ_w = −ρ (τ_w/ρ)(t⊗n + n⊗t) on the fluid */
     const real4 fr = frame[i];
     const realv t = (realv)(fr.x, fr.y), nw = (realv)(fr.z, fr.w);
-    a += R(2.0) * wscale * wallv[i].x * (dot(nw, swall) * t + dot(t, swall) * nw);
+    a += R(2.0) * w39 * wallv[i].x * (dot(nw, swall) * t + dot(t, swall) * nw);
 #if WCR_OFFSET_LAYER
     /* offset_layer = "body_force": the layer between the wall and the offset boundary (sec 4.4)
      * under the first row (P, d < dr), of (y_p − dr/2)/dr = layer times the particle's mass, passes
@@ -190,7 +196,7 @@ __kernel void wcr_advection(
       const real4 fr = frame[i];
       const realv t = (realv)(fr.x, fr.y), nw = (realv)(fr.z, fr.w);
       const realv s = wv[q].xy;
-      fw -= R(2.0) * mass * wscale * wallv[i].x * (dot(nw, s) * t + dot(t, s) * nw);
+      fw -= R(2.0) * mass * w39 * wallv[i].x * (dot(nw, s) * t + dot(t, s) * nw);
     }
     rec[(size_t)i * WCR_REC + q] = (real4)(R(0.0), R(0.0), fw.x, fw.y);
   }

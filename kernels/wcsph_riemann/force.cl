@@ -48,7 +48,11 @@ __kernel void wcr_wall_force(
   const int modelled = wall_model && di >= R(0.0) && di < r_ext;
   const real4 fr = frame[i];
   const realv tt = (realv)(fr.x, fr.y), nn = (realv)(fr.z, fr.w);
+#if WCR_SHEAR_ROW1
+  const real tau = di < dr ? wscale * wallv[i].x : R(0.0); /* wall_shear = "first_row" */
+#else
   const real tau = wscale * wallv[i].x; /* eq 39's (wcr_wall_shear_sum) */
+#endif
 #else
   (void)tk;
   (void)nu_t;

@@ -23,7 +23,11 @@
  * shear, with 7% of the first row's weight Σ_b V_b ∂W/∂n at h = 1.3 dr, and at y_p it reads
  * the log law from its own, higher, velocity (+19% at 20 rows across the channel); and the two
  * rows' weights sum to 0.974 of τ_w, not 1 (Wendland C2, h = 1.3 dr), at every resolution
- * (cases/channel_ke.lua; RESULTS_rans.md).
+ * (cases/channel_ke.lua; RESULTS_rans.md). With wall_shear = "first_row" (WCR_SHEAR_ROW1) only
+ * the first row (P, d < dr) takes eq 39's force, over the first row's lattice sum (0.9046):
+ * with the second row's 7% share of the wall's stress taken straight to the wall, the first
+ * row's upper face carried that much less of it, the velocity step to the second row shrank
+ * with it, and the first row, whose log law sets u_τ, ran fast (advection.cl, force.cl).
  * E = 9.793 with the switch at 11.225 (the pair the paper's eq 11 quotes; its "E = 0.9" is a
  * misprint), κ = 0.41.
  *
@@ -159,11 +163,12 @@ __kernel void wcr_turb_wall(const uint n, const struct grid g, __global const re
   yplus[i] = yp;
 }
 
-#if WCR_SHEAR_DIST
-/* wall_shear = "distance": what eq 39 makes of a wall shear stress τ_w on a flat wall of the
- * dummy lattice, per unit area over τ_w: 2 dr^(DIM+1) Σ_i Σ_b (−F(r_ib)) (r_ib·n) over the rows
- * i of a column at (m + ½) dr from the boundary within R = 2h − dr (the wall model's P_ext) and
- * the dummy lattice b at −(j + ½) dr (the continuum's value is 1; one work-item). */
+#if WCR_SHEAR_DIST || WCR_SHEAR_ROW1
+/* wall_shear = "distance" (and "first_row", r_ext = dr: the first row alone): what eq 39 makes of a
+ * wall shear stress τ_w on a flat wall of the dummy lattice, per unit area over τ_w: 2 dr^(DIM+1)
+ * Σ_i Σ_b (−F(r_ib)) (r_ib·n) over the rows i of a column at (m + ½) dr from the boundary within R
+ * = 2h − dr (the wall model's P_ext) and the dummy lattice b at −(j + ½) dr (the continuum's value
+ * is 1; one work-item). */
 __kernel void wcr_wall_shear_sum(const struct smooth sm, const real dr, const real r_ext,
                                  __global real *out)
 {

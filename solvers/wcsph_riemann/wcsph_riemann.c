@@ -38,9 +38,13 @@
  *                        wcr_wall_pressure_grad; the default under the k-ε model)
  *   wall_shear           under the k-ε model, where the wall model reads the log law for the
  *                        wall's shear stress (eq 12) on each P_ext particle: "y_p" (at y_p for
- *                        every one, sec 4.4's constant y_p; the default) or "distance" (at the
+ *                        every one, sec 4.4's constant y_p; the default), "distance" (at the
  *                        particle's own distance from the wall, with the boundary offset, and
- *                        eq 39's force over its sum on the lattice: turbulence.cl says why)
+ *                        eq 39's force over its sum on the lattice: turbulence.cl says why) or
+ *                        "first_row" (at y_p on the first row, P, alone, eq 39's force over the
+ *                        first row's lattice sum; the P_ext rows above take none of the wall's
+ *                        stress, which then crosses the first row's upper face whole, as in the
+ *                        1-D solver's first cell: turbulence.cl)
  *   velocity_gradient    under the k-ε model, the velocity gradient of the production and the
  *                        reconstructed dissipation: "kernel" (eqs 22 and 40, the paper's; the
  *                        default) or "log" (next to a wall, in the log law's coordinate, and
@@ -295,7 +299,7 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
               "velocity gradient of the k-ε model (turbulence { model = \"k-epsilon\" }); a "
               "laminar scene takes \"riemann\" or \"off\"",
               sc->case_path);
-  static const char *const shear_names[] = {"y_p", "distance", NULL};
+  static const char *const shear_names[] = {"y_p", "distance", "first_row", NULL};
   CLSPH_TRY(turb_choice(sc, "wall_shear", shear_names, "where its wall model reads the log law",
                         &w->shear_dist));
   static const char *const grad_names[] = {"kernel", "log", NULL};
@@ -382,7 +386,9 @@ static enum clsph_status read_options(const struct sim *sim, struct wcr *w, int 
              w->ard ? "on" : "off", dens_names[reinit], wall_names[w->wall_full],
              mom_names[w->mom_diss],
              w->wall_pgrad ? ", walls' pressure extrapolated along them with ∇p" : "",
-             w->shear_dist ? ", the wall model's shear at each particle's distance" : "",
+             w->shear_dist == 1   ? ", the wall model's shear at each particle's distance"
+             : w->shear_dist == 2 ? ", the wall model's shear on the first row only"
+                                  : "",
              w->grad_log ? ", the velocity gradient in the log law's coordinate by the walls" : "",
              w->diff_log ? ", k and ε diffused with the log mean and the walls' mirror" : "",
              w->carry ? ", the offset layer's body force on the first row" : "",
@@ -429,7 +435,8 @@ static enum clsph_status wcr_define(const struct sim *sim, struct prog_opts *o)
   CLSPH_TRY(prog_opts_define_int(o, "WCR_CONT_RIEMANN", w.cont_riemann));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_CONT_NORMAL", w.reinit == WCR_REINIT_OFF));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_TURB", sim->scene->turb.on));
-  CLSPH_TRY(prog_opts_define_int(o, "WCR_SHEAR_DIST", w.shear_dist));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_SHEAR_DIST", w.shear_dist == 1));
+  CLSPH_TRY(prog_opts_define_int(o, "WCR_SHEAR_ROW1", w.shear_dist == 2));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_GRAD_LOG", w.grad_log));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_OFFSET_LAYER", w.carry));
   CLSPH_TRY(prog_opts_define_int(o, "WCR_WALL_PNORMAL", w.wall_pnormal));
@@ -652,7 +659,8 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
   w->wscale = 1.0;
   if (w->turb && w->shear_dist) { /* eq 39's lattice sum (turbulence.cl) */
     cl_kernel k = NULL;
-    const real rext = (real)(2.0 * sim->sm.h - sc->dr);
+    /* "first_row": the first row's sum alone */
+    const real rext = (real)(w->shear_dist == 2 ? sc->dr : 2.0 * sim->sm.h - sc->dr);
     st = prog_kernel(sim->prog, "wcr_wall_shear_sum", &k);
     if (st == CLSPH_OK) st = KERN_SET(k, KARG(smd), KARG(dr), KARG(rext), KARG(w->d_partial));
     if (st == CLSPH_OK) st = kern_launch(sim->dev, k, 1, NULL);
@@ -665,9 +673,8 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
                 "not about 1: the smoothing length (h_over_dr) is too small for the spacing",
                 sc->case_path, sum);
     w->wscale = 1.0 / sum;
-    log_info("wcsph-riemann: the wall model's shear at each particle's distance, eq 39 over its "
-             "lattice sum %.4f",
-             sum);
+    log_info("wcsph-riemann: the wall model's shear %s, eq 39 over its lattice sum %.4f",
+             w->shear_dist == 2 ? "on the first row only" : "at each particle's distance", sum);
   }
   *state = w;
   w = NULL;

@@ -763,7 +763,8 @@ def ensemble_section(runs):
            "offset wall (`channel1d --offset-momentum`: the stress in the stream "
            "1/(1 − (y_p − dr/2)/δ) times the channel's). wall_shear \"y_p\" is the paper's "
            "(every P_ext particle at y_p), \"distance\" each particle's own distance with eq 39 "
-           "over its lattice sum (wcsph-riemann's option; turbulence.cl); gradient \"kernel\" is "
+           "over its lattice sum (wcsph-riemann's option; turbulence.cl), \"first_row\" the first row "
+           "alone at y_p with eq 39 over its lattice sum (wall_shear = \"first_row\"); gradient \"kernel\" is "
            "the paper's velocity gradient (eqs 22, 40), \"log\" the one in the log law's "
            "coordinate next to the walls (velocity_gradient = \"log\"); diffusion \"harmonic\" is "
            "the paper's diffusion sums of k and ε (eqs 23-24), \"log_mirror\" the one with the "
@@ -794,7 +795,7 @@ def ensemble_section(runs):
             return None if f is None or p is None else (1 + f) * (1 + p) - 1
         walls = sorted(s["wall_seconds"] for s in g)
         rates = sorted(s["particle_steps_per_second"] for s in g)
-        out.append(f"| {nf:g} | {wp} | {('y_p', 'distance')[shear]} | {('kernel', 'log')[grad]} "
+        out.append(f"| {nf:g} | {wp} | {('y_p', 'distance', 'first_row')[shear]} | {('kernel', 'log')[grad]} "
                    f"| {('harmonic', 'log_mirror')[diff]} | {('none', 'body_force')[carry]} "
                    f"| {('corrected', 'normal')[pforce]} | {t_end:g} | {len(g)} "
                    f"| {col('u_tau_dev_1d')} | {col('u_tau_drive_dev_1d')} "
