@@ -1262,8 +1262,8 @@ clsph_cli_test(channel_ke_init_rows_fixed ARGS info ${CMAKE_SOURCE_DIR}/cases/ch
 # (19% over the first row's at 20 rows), and the two rows' eq 39 weights Σ_b V_b ∂W/∂n sum to
 # 0.974 of τ_w (Wendland C2, h = 1.3 dr): the walls carry 0.986 of the first row's log law. With
 # wcsph-riemann's wall_shear = "distance" each row reads it at its own distance and eq 39 is
-# divided by its lattice sum: all of it. Measured (double and float alike): u_τ +0.08% and
-# +0.71% of the 1-D solver's (the scaled start stands 0.7% over it); the difference, 1.3% in τ_w,
+# divided by its lattice sum: all of it. Measured (double and float alike): u_τ −0.02% and
+# +0.61% of the 1-D solver's (the scaled start stands 0.7% over it); the difference, 1.3% in τ_w,
 # is the two quadrature errors, which the bounds separate.
 clsph_run_test(run_channel_ke_start ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua SETS nf=20 t_end=0.5
                ub=1 every=0.5 sample_dt=0.05
