@@ -59,17 +59,19 @@ realv wcr_visc_jump(uint kj, realv xi, realv xj, realv vi, realv vj, real dw, re
   return (R(1.0) + dw / di) * (vi - vj);
 }
 
-__kernel void wcr_advection(
-    const uint n, const struct grid g, __global const realv *pos, __global const realv *vel,
-    __global const real *vol, __global const uint *kind, __global const real *rho,
-    __global const real *wall_dist, __global const realv *wall_normal, __global const uint *nlist,
-    __global const uint *ncount, __global const wcr_mat *bmat, __global const real *sigma,
-    const real dr, const real mu, const real inv_lambda, const realv accel, const real tvf_a,
-    const real tvf_m, const real bulk, const real rho0, const real c0, const real h,
-    __global realv *acc_prior, __global realv *shift, __global real *ard, __global const real *nu_t,
-    __global const real4 *frame, __global const real2 *wallv, const real r_ext,
-    const uint wall_model, const real wscale, __global const uint *wall, __global real4 *rec,
-    __global const uint *wgroup, const uint nwall, const real mass, const real layer)
+__kernel void
+wcr_advection(const uint n, const struct grid g, __global const realv *pos,
+              __global const realv *vel, __global const real *vol, __global const uint *kind,
+              __global const real *rho, __global const real *wall_dist,
+              __global const realv *wall_normal, __global const uint *nlist,
+              __global const uint *ncount, __global const wcr_mat *bmat, __global const real *sigma,
+              const real dr, const real mu, const real inv_lambda, const realv accel,
+              const real tvf_a, const real tvf_m, const real bulk, const real rho0, const real c0,
+              const real h, __global realv *acc_prior, __global realv *shift, __global real *ard,
+              __global const real *nu_t, __global const real4 *frame, __global const real2 *wallv,
+              const real r_ext, const uint wall_model, const real wscale, __global const uint *wall,
+              __global real4 *rec, __global const uint *wgroup, const uint nwall, const real mass,
+              const real layer, __global const real *row1)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -107,14 +109,32 @@ __kernel void wcr_advection(
    * dummies' no-slip drag on a P_ext particle by the wall shear stress (eq 39) */
   const real nu_l = mu / rho0, mui = mu + rho0 * nu_t[i];
   const real di = wall_dist[i];
-  const int modelled = wall_model && di >= R(0.0) && di < r_ext;
 #if WCR_SHEAR_ROW1
-  /* wall_shear = "first_row": eq 39 on the first row (P) only, over its lattice sum */
-  const real w39 = di < dr ? wscale : R(0.0);
+  /* "first_row": no particle that sees a dummy takes its no-slip drag, the P_ext rows and those
+   * beyond R = 2h − dr that the dummies still reach (d < 2h − dr/2: off the lattice's rows, a
+   * disordered second row's) alike: the wall's stress is the first row's τ_w alone */
+  const int modelled = wall_model && di >= R(0.0);
+  (void)r_ext;
+#else
+  const int modelled = wall_model && di >= R(0.0) && di < r_ext;
+#endif
+#if WCR_SHEAR_ROW1
+  /* wall_shear = "first_row": on the first row (P) only, τ_w over its share of the wall s_i =
+   * Σ_b V_b W_ib / D_b over the first dummy layer (turbulence.cl) */
+  const int row1i = modelled && di < dr;
+  real share = R(0.0);
+#if WCR_REC
+  real wsh[WCR_REC];
+  for (uint q = 0; q < WCR_REC; ++q) wsh[q] = R(0.0);
+#endif
+  (void)wscale;
 #else
   const real w39 = wscale;
+  (void)row1;
 #endif
   realv swall = (realv)(R(0.0)); /* Σ_b V_b ∇W_ib over the dummies */
+#else
+  (void)row1;
 #endif
   for (uint k = 0; k < c; ++k) {
     const uint j = row[k];
@@ -138,9 +158,19 @@ __kernel void wcr_advection(
     const real muj = kj == WCR_DUMMY ? mui : mu + rho0 * nu_t[j];
     const real mij = wcr_pair_mean(mui, muj); /* µ̃_ij of eq 21 */
     if (modelled && kj == WCR_DUMMY) {
+#if WCR_SHEAR_ROW1
+      if (row1i && wall_dist[j] < dr && row1[j] > R(0.0)) {
+        const real sb = vol[j] * smoothing_w(g.sm, sqrt(r2)) / row1[j];
+        share += sb;
+#if WCR_REC
+        if (q) wsh[q - 1] += sb; /* the group's part of the share */
+#endif
+      }
+#else
       swall += f * r;
 #if WCR_REC
       if (q) wv[q - 1].xy += f * r; /* Σ_b V_b ∇W_ib of the group, for eq 39 below */
+#endif
 #endif
     } else {
       const realv dv =
@@ -171,16 +201,29 @@ __kernel void wcr_advection(
   }
 #if WCR_TURB
   realv a = accel + R(2.0) * inv_lambda * (vol[i] / mass) * visc;
-  if (modelled) { /* eq 39: −(2/ρ) Σ_b τ_w V_b ∇W_ib, τ_w = −ρ (τ_w/ρ)(t⊗n + n⊗t) on the fluid */
+  if (modelled) {
     const real4 fr = frame[i];
     const realv t = (realv)(fr.x, fr.y), nw = (realv)(fr.z, fr.w);
+#if WCR_SHEAR_ROW1
+    /* "first_row": ρ0 τ_w A_i along −t on the particle, A_i = s_i dr^(DIM−1) its share of the
+     * wall's area (on the lattice eq 39's τ_w dr^(DIM−1) per particle) */
+    const real area = share * WCR_FACE(dr);
+    a -= (rho0 * wallv[i].x * area / mass) * t;
+    const real lshare = rho0 * area * dr / mass; /* the layer's mass under A_i over m_i */
+    (void)swall;
+#else
+    /* eq 39: −(2/ρ) Σ_b τ_w V_b ∇W_ib, τ_w = −ρ (τ_w/ρ)(t⊗n + n⊗t) on the fluid */
     a += R(2.0) * w39 * wallv[i].x * (dot(nw, swall) * t + dot(t, swall) * nw);
+    const real lshare = R(1.0);
+#endif
 #if WCR_OFFSET_LAYER
     /* offset_layer = "body_force": the layer between the wall and the offset boundary (sec 4.4)
-     * under the first row (P, d < dr), of (y_p − dr/2)/dr = layer times the particle's mass, passes
-     * its body force along the wall to the particle: the wall's τ_w holds the layer and the
-     * fluid above it */
-    if (di < dr) a += layer * (accel - dot(accel, nw) * nw);
+     * under the first row (P, d < dr), of (y_p − dr/2)/dr = layer times the particle's mass (and
+     * its share of the wall with "first_row"), passes its body force along the wall to the
+     * particle: the wall's τ_w holds the layer and the fluid above it */
+    if (di < dr) a += layer * lshare * (accel - dot(accel, nw) * nw);
+#else
+    (void)lshare;
 #endif
   }
   acc_prior[i] = a;
@@ -195,8 +238,13 @@ __kernel void wcr_advection(
     if (modelled) {
       const real4 fr = frame[i];
       const realv t = (realv)(fr.x, fr.y), nw = (realv)(fr.z, fr.w);
+#if WCR_SHEAR_ROW1
+      fw += (rho0 * wallv[i].x * wsh[q] * WCR_FACE(dr)) * t;
+      (void)nw;
+#else
       const realv s = wv[q].xy;
       fw -= R(2.0) * mass * w39 * wallv[i].x * (dot(nw, s) * t + dot(t, s) * nw);
+#endif
     }
     rec[(size_t)i * WCR_REC + q] = (real4)(R(0.0), R(0.0), fw.x, fw.y);
   }

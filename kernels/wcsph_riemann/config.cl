@@ -66,8 +66,14 @@
 #ifndef WCR_TVF_SURFACE
 #define WCR_TVF_SURFACE 0 /* the surface rows' correction: 1 tangential, 2 near pairs */
 #endif
+/* the area of a lattice cell's face, dr^(DIM−1) */
+#if DIM == 2
+#define WCR_FACE(dr) (dr)
+#else
+#define WCR_FACE(dr) ((dr) * (dr))
+#endif
 #ifndef WCR_SHEAR_ROW1
-#define WCR_SHEAR_ROW1 0 /* wall_shear = "first_row": eq 39 on the first row (advection.cl) */
+#define WCR_SHEAR_ROW1 0 /* wall_shear = "first_row": τ_w on the first row (advection.cl) */
 #endif
 #ifndef WCR_WALL_PNORMAL
 #define WCR_WALL_PNORMAL 0 /* the dummies' pressure force along their wall normal (acoustic.cl) */

@@ -27,7 +27,7 @@ __kernel void wcr_wall_force(
     const real inv_lambda, const real h, __global real4 *out, __global const real *tk,
     __global const real *nu_t, __global const real4 *frame, __global const real2 *wallv,
     const real r_ext, const uint wall_model, const realv gravity, __global const realv *gradp,
-    const real wscale)
+    const real wscale, __global const real *row1)
 {
   const uint i = get_global_id(0);
   if (i >= n) return;
@@ -45,13 +45,25 @@ __kernel void wcr_wall_force(
    * model's shear (eq 39) instead of the no-slip drag, as acoustic.cl and advection.cl have them */
   const real pi = p[i] + R(2.0) / R(3.0) * rho[i] * tk[i], ri = rho[i], vol_i = vol[i];
   const real mui = mu + rho0 * nu_t[i], di = wall_dist[i];
+#if WCR_SHEAR_ROW1
+  /* "first_row": no particle that sees a dummy takes its no-slip drag, the P_ext rows and those
+   * beyond R = 2h − dr that the dummies still reach (d < 2h − dr/2: off the lattice's rows, a
+   * disordered second row's) alike: the wall's stress is the first row's τ_w alone */
+  const int modelled = wall_model && di >= R(0.0);
+  (void)r_ext;
+#else
   const int modelled = wall_model && di >= R(0.0) && di < r_ext;
+#endif
   const real4 fr = frame[i];
   const realv tt = (realv)(fr.x, fr.y), nn = (realv)(fr.z, fr.w);
 #if WCR_SHEAR_ROW1
-  const real tau = di < dr ? wscale * wallv[i].x : R(0.0); /* wall_shear = "first_row" */
+  /* wall_shear = "first_row": τ_w over the first row's shares of the wall (advection.cl) */
+  const real tau = di < dr ? wallv[i].x : R(0.0);
+  real share = R(0.0);
+  (void)wscale;
 #else
   const real tau = wscale * wallv[i].x; /* eq 39's (wcr_wall_shear_sum) */
+  (void)row1;
 #endif
 #else
   (void)tk;
@@ -59,6 +71,7 @@ __kernel void wcr_wall_force(
   (void)frame;
   (void)wallv;
   (void)wscale;
+  (void)row1;
   (void)r_ext;
   (void)wall_model;
   const real pi = p[i], ri = rho[i], vol_i = vol[i];
@@ -104,14 +117,22 @@ __kernel void wcr_wall_force(
 #endif
 #if WCR_TURB
     if (modelled) { /* the reaction of eq 39's pair term */
+#if WCR_SHEAR_ROW1
+      if (tau != R(0.0) && wall_dist[j] < dr && row1[j] > R(0.0))
+        share += vol[j] * smoothing_w(g.sm, rr) / row1[j];
+#else
       const realv s = f * r;
       fv -= R(2.0) * ri * tau * (dot(nn, s) * tt + dot(tt, s) * nn);
+#endif
       continue;
     }
 #endif
     fv -= R(2.0) * mui * inv_lambda * f *
           wcr_visc_jump(kj, x, x - r, vi, vel[j], wall_dist[j], wall_normal[j], dr);
   }
+#if WCR_TURB && WCR_SHEAR_ROW1
+  fv += (rho0 * tau * share * WCR_FACE(dr) / vol_i) * tt; /* ρ0 τ_w A_i on the wall, along t */
+#endif
   o = (real4)(vol_i * fp.x, vol_i * fp.y, vol_i * fv.x, vol_i * fv.y);
   out[i] = o;
 }

@@ -24,10 +24,17 @@
  * the log law from its own, higher, velocity (+19% at 20 rows across the channel); and the two
  * rows' weights sum to 0.974 of τ_w, not 1 (Wendland C2, h = 1.3 dr), at every resolution
  * (cases/channel_ke.lua; RESULTS_rans.md). With wall_shear = "first_row" (WCR_SHEAR_ROW1) only
- * the first row (P, d < dr) takes eq 39's force, over the first row's lattice sum (0.9046):
- * with the second row's 7% share of the wall's stress taken straight to the wall, the first
- * row's upper face carried that much less of it, the velocity step to the second row shrank
- * with it, and the first row, whose log law sets u_τ, ran fast (advection.cl, force.cl).
+ * the first row (P, d < dr) takes the wall's stress: with the second row's 7% share of it taken
+ * straight to the wall, the first row's upper face carried that much less of it, the velocity
+ * step to the second row shrank with it, and the first row, whose log law sets u_τ, ran fast.
+ * Each first-row particle takes τ_w over its share of the wall, s_i dr^(DIM−1) (advection.cl,
+ * force.cl): every dummy b of the first layer (depth < dr) hands its area V_b/dr to the first
+ * row's particles j in proportion to V_j W_jb, so that s_i = Σ_b V_b W_ib / D_b with D_b = Σ_j
+ * V_j W_jb (wcr_row1_density), 1 on the lattice, and the shares cover the wall whatever the row
+ * holds: eq 39's own sums follow the particles, and a first row short of particles (N_f = 80:
+ * 37-40 of 42 per wall) carried 4-8% less of the wall's stress. No particle then takes the
+ * dummies' no-slip drag: beyond R a disordered second row's particles (R ≤ d < 2h − dr/2) still
+ * reach the dummies, and with ν_t their drag added 1-3% to the wall's stress (N_f = 40).
  * E = 9.793 with the switch at 11.225 (the pair the paper's eq 11 quotes; its "E = 0.9" is a
  * misprint), κ = 0.41.
  *
@@ -163,9 +170,37 @@ __kernel void wcr_turb_wall(const uint n, const struct grid g, __global const re
   yplus[i] = yp;
 }
 
-#if WCR_SHEAR_DIST || WCR_SHEAR_ROW1
-/* wall_shear = "distance" (and "first_row", r_ext = dr: the first row alone): what eq 39 makes of a
- * wall shear stress τ_w on a flat wall of the dummy lattice, per unit area over τ_w: 2 dr^(DIM+1)
+#if WCR_SHEAR_ROW1
+/* wall_shear = "first_row": D_b = Σ_j V_j W_jb over the first row (0 ≤ d_j < dr: the fluid and the
+ * open boundaries' layers, which hold their share of the wall where they run along it) for each
+ * dummy b of the first layer (depth < dr); 0 for every other particle */
+__kernel void wcr_row1_density(const uint n, const struct grid g, __global const uint *cell_start,
+                               __global const realv *pos, __global const real *vol,
+                               __global const uint *kind, __global const real *wall_dist,
+                               const real dr, __global real *row1)
+{
+  const uint b = get_global_id(0);
+  if (b >= n) return;
+  real s = R(0.0);
+  if (kind[b] == WCR_DUMMY && wall_dist[b] < dr) {
+    const realv x = pos[b];
+    struct neigh_iter it;
+    NEIGH_FOR(it, g, cell_start, x, j) {
+      const uint kj = kind[j];
+      if (kj != WCR_FLUID && kj != WCR_INFLOW && kj != WCR_OUTFLOW) continue;
+      if (!(wall_dist[j] >= R(0.0) && wall_dist[j] < dr)) continue;
+      const realv r = x - (pos[j] + it.shift);
+      const real r2 = dot(r, r);
+      if (r2 < g.sm.support2) s += vol[j] * smoothing_w(g.sm, sqrt(r2));
+    }
+  }
+  row1[b] = s;
+}
+#endif
+
+#if WCR_SHEAR_DIST
+/* wall_shear = "distance": what eq 39 makes of a wall shear stress τ_w on a flat wall of the
+ * dummy lattice, per unit area over τ_w: 2 dr^(DIM+1)
  * Σ_i Σ_b (−F(r_ib)) (r_ib·n) over the rows i of a column at (m + ½) dr from the boundary within R
  * = 2h − dr (the wall model's P_ext) and the dummy lattice b at −(j + ½) dr (the continuum's value
  * is 1; one work-item). */

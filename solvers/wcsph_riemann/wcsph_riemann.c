@@ -41,10 +41,11 @@
  *                        every one, sec 4.4's constant y_p; the default), "distance" (at the
  *                        particle's own distance from the wall, with the boundary offset, and
  *                        eq 39's force over its sum on the lattice: turbulence.cl says why) or
- *                        "first_row" (at y_p on the first row, P, alone, eq 39's force over the
- *                        first row's lattice sum; the P_ext rows above take none of the wall's
- *                        stress, which then crosses the first row's upper face whole, as in the
- *                        1-D solver's first cell: turbulence.cl)
+ *                        "first_row" (at y_p on the first row, P, alone, each particle taking
+ *                        τ_w over its share of the wall, which the first dummy layer hands out
+ *                        by the kernel; the P_ext rows above take none of the wall's stress,
+ *                        which then crosses the first row's upper face whole, as in the 1-D
+ *                        solver's first cell: turbulence.cl)
  *   velocity_gradient    under the k-ε model, the velocity gradient of the production and the
  *                        reconstructed dissipation: "kernel" (eqs 22 and 40, the paper's; the
  *                        default) or "log" (next to a wall, in the log law's coordinate, and
@@ -138,7 +139,8 @@ struct wcr {
   int f_yplus;
   cl_mem d_frame, d_wallv, d_grad;
   cl_mem d_logf; /* velocity_gradient = "log": the wall's normal and y per particle */
-  cl_kernel k_twall, k_ttrans, k_tupd, k_logf;
+  cl_mem d_row1; /* wall_shear = "first_row": D_b of the first dummy layer (turbulence.cl) */
+  cl_kernel k_twall, k_ttrans, k_tupd, k_logf, k_row1;
   double y_p, w_s;  /* the wall model's distance and weight */
   double wscale;    /* eq 39's force over its lattice sum (wall_shear = "distance"; else 1) */
   struct gate gate; /* a lifted wall group (solvers/gate), e.g. the Lobovsky dam break's gate */
@@ -527,6 +529,10 @@ static enum clsph_status turb_create(struct sim *sim, struct wcr *w)
     CLSPH_TRY(kern_buffer(sim->dev, cap * 4 * sizeof(real), NULL, &w->d_logf, "log frames"));
     CLSPH_TRY(prog_kernel(sim->prog, "wcr_log_frame", &w->k_logf));
   }
+  if (w->shear_dist == 2) {
+    CLSPH_TRY(kern_buffer(sim->dev, cap * sizeof(real), NULL, &w->d_row1, "first-row densities"));
+    CLSPH_TRY(prog_kernel(sim->prog, "wcr_row1_density", &w->k_row1));
+  }
 done:
   free(zeros);
   return st;
@@ -657,10 +663,12 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
               "about 1: the smoothing length (h_over_dr) is too small for the particle spacing",
               sc->case_path, w->sigma0, w->lambda);
   w->wscale = 1.0;
-  if (w->turb && w->shear_dist) { /* eq 39's lattice sum (turbulence.cl) */
+  if (w->turb && w->shear_dist == 2)
+    log_info("wcsph-riemann: the wall model's shear on the first row only, τ_w over each "
+             "particle's share of the wall from the first dummy layer");
+  if (w->turb && w->shear_dist == 1) { /* eq 39's lattice sum (turbulence.cl) */
     cl_kernel k = NULL;
-    /* "first_row": the first row's sum alone */
-    const real rext = (real)(w->shear_dist == 2 ? sc->dr : 2.0 * sim->sm.h - sc->dr);
+    const real rext = (real)(2.0 * sim->sm.h - sc->dr);
     st = prog_kernel(sim->prog, "wcr_wall_shear_sum", &k);
     if (st == CLSPH_OK) st = KERN_SET(k, KARG(smd), KARG(dr), KARG(rext), KARG(w->d_partial));
     if (st == CLSPH_OK) st = kern_launch(sim->dev, k, 1, NULL);
@@ -673,8 +681,9 @@ static enum clsph_status wcr_create(struct sim *sim, void **state)
                 "not about 1: the smoothing length (h_over_dr) is too small for the spacing",
                 sc->case_path, sum);
     w->wscale = 1.0 / sum;
-    log_info("wcsph-riemann: the wall model's shear %s, eq 39 over its lattice sum %.4f",
-             w->shear_dist == 2 ? "on the first row only" : "at each particle's distance", sum);
+    log_info("wcsph-riemann: the wall model's shear at each particle's distance, eq 39 over its "
+             "lattice sum %.4f",
+             sum);
   }
   *state = w;
   w = NULL;
@@ -727,6 +736,13 @@ static enum clsph_status turb_wall(struct sim *sim, struct wcr *w)
                      KARG(nu), KARG(r_ext), KARG(shift), KARG(w->d_frame), KARG(w->d_wallv),
                      KARG(yplus)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_twall, ps->n, NULL));
+  if (w->shear_dist == 2) { /* "first_row": the first dummy layer's D_b (turbulence.cl) */
+    const real dr = (real)sim->scene->dr;
+    cl_mem vol = pset_mem(ps, sim->f_vol);
+    CLSPH_TRY(KERN_SET(w->k_row1, KARG(n), KARG(sim->grid.geom), KARG(sim->grid.d_start), KARG(pos),
+                       KARG(vol), KARG(kind), KARG(wd), KARG(dr), KARG(w->d_row1)));
+    CLSPH_TRY(kern_launch(sim->dev, w->k_row1, ps->n, NULL));
+  }
 done:
   return st;
 }
@@ -810,13 +826,14 @@ static enum clsph_status advection(struct sim *sim, struct wcr *w)
   cl_mem wall = pset_mem(ps, w->f_wall);
   cl_mem rec = w->f_rec >= 0 ? pset_mem(ps, w->f_rec) : w->d_none;
   cl_mem wgroup = w->f_rec >= 0 ? w->d_wgroup : w->d_none;
-  CLSPH_TRY(KERN_SET(w->k_adv, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol),
-                     KARG(kind), KARG(rho), KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount),
-                     KARG(w->d_bmat), KARG(w->d_sigma), KARG(rdr), KARG(mu), KARG(ilam),
-                     KARGV(accel), KARG(tvf_a), KARG(tvf_m), KARG(bulk), KARG(rho0), KARG(c0),
-                     KARG(rh), KARG(w->d_prior), KARG(w->d_shift), KARG(ard), KARG(nut),
-                     KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(wsc), KARG(wall),
-                     KARG(rec), KARG(wgroup), KARG(w->nwall_map), KARG(mass), KARG(layer)));
+  cl_mem row1 = w->d_row1 != NULL ? w->d_row1 : w->d_none;
+  CLSPH_TRY(KERN_SET(
+      w->k_adv, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol), KARG(kind),
+      KARG(rho), KARG(wd), KARG(wn), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
+      KARG(w->d_sigma), KARG(rdr), KARG(mu), KARG(ilam), KARGV(accel), KARG(tvf_a), KARG(tvf_m),
+      KARG(bulk), KARG(rho0), KARG(c0), KARG(rh), KARG(w->d_prior), KARG(w->d_shift), KARG(ard),
+      KARG(nut), KARG(frame), KARG(wallv), KARG(r_ext), KARG(wmodel), KARG(wsc), KARG(wall),
+      KARG(rec), KARG(wgroup), KARG(w->nwall_map), KARG(mass), KARG(layer), KARG(row1)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_adv, ps->n, NULL));
 done:
   return st;
@@ -1142,12 +1159,13 @@ static enum clsph_status wcr_wall_force(struct sim *sim, void *state, const char
   const real wsc = (real)w->wscale;
   const struct realv_arg grav = dev_realv(sc->dim, sc->gravity);
   cl_mem gradp = w->wall_pgrad ? w->d_gradp : w->d_none;
+  cl_mem row1 = w->d_row1 != NULL ? w->d_row1 : w->d_none;
   CLSPH_TRY(KERN_SET(
       w->k_force, KARG(n), KARG(sim->grid.geom), KARG(pos), KARG(vel), KARG(vol), KARG(kind),
       KARG(rho), KARG(wd), KARG(wn), KARG(p), KARG(w->d_nlist), KARG(w->d_ncount), KARG(w->d_bmat),
       KARG(w->d_prior), KARG(wall), KARG(w->d_mask), KARG(nmask), KARG(rdr), KARG(rho0), KARG(c0),
       KARG(pbg), KARG(mu), KARG(ilam), KARG(h), KARG(w->d_force), KARG(tk), KARG(nut), KARG(frame),
-      KARG(wallv), KARG(r_ext), KARG(wmodel), KARGV(grav), KARG(gradp), KARG(wsc)));
+      KARG(wallv), KARG(r_ext), KARG(wmodel), KARGV(grav), KARG(gradp), KARG(wsc), KARG(row1)));
   CLSPH_TRY(kern_launch(sim->dev, w->k_force, ps->n, NULL));
   CLSPH_TRY(kern_read(sim->dev, w->d_force, ps->n * 4 * sizeof(real), w->h_force));
   force_sum(sim, group, w->h_force, 4, 0, hpos, out);
@@ -1162,14 +1180,14 @@ static void wcr_destroy(void *state)
 {
   struct wcr *w = state;
   if (w == NULL) return;
-  cl_kernel *ks[] = {&w->k_config, &w->k_count,  &w->k_adv,   &w->k_drift,
-                     &w->k_mom,    &w->k_cont,   &w->k_force, &w->k_lattice,
-                     &w->k_twall,  &w->k_ttrans, &w->k_tupd,  &w->k_logf};
+  cl_kernel *ks[] = {&w->k_config, &w->k_count, &w->k_adv,     &w->k_drift, &w->k_mom,
+                     &w->k_cont,   &w->k_force, &w->k_lattice, &w->k_twall, &w->k_ttrans,
+                     &w->k_tupd,   &w->k_logf,  &w->k_row1};
   for (size_t k = 0; k < sizeof ks / sizeof *ks; ++k)
     if (*ks[k] != NULL) clReleaseKernel(*ks[k]);
   cl_mem *ms[] = {&w->d_nlist, &w->d_ncount,  &w->d_bmat,  &w->d_sigma,  &w->d_prior, &w->d_shift,
                   &w->d_acc,   &w->d_partial, &w->d_force, &w->d_mask,   &w->d_none,  &w->d_frame,
-                  &w->d_wallv, &w->d_grad,    &w->d_gradp, &w->d_wgroup, &w->d_logf};
+                  &w->d_wallv, &w->d_grad,    &w->d_gradp, &w->d_wgroup, &w->d_logf,  &w->d_row1};
   for (size_t k = 0; k < sizeof ms / sizeof *ms; ++k) kern_release(ms[k]);
   kepsilon_destroy(&w->ke);
   open_destroy(&w->open);

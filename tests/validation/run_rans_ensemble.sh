@@ -8,8 +8,9 @@
 # "log_mirror"), and at N_f = 40 with these the layer below the offset walls passing its body force
 # to the first row (offset_layer = "body_force"; at N_f = 20 there is no layer: y_p = dr/2), and
 # with these the dummies' pressure force along the walls' normal (wall_pressure_force = "normal"),
-# and with that the wall's stress on the first row alone (wall_shear = "first_row"); then
-# RESULTS_rans_ensemble.md. About 110 min on 2 cores, two runs side by side.
+# and with that the wall's stress on the first row alone (wall_shear = "first_row"; also at N_f =
+# 80, t = 300, two members); then RESULTS_rans_ensemble.md. About 150 min on 2 cores, two runs
+# side by side.
 #   tests/validation/run_rans_ensemble.sh [BUILD_DIR]     (default build)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -45,6 +46,8 @@ source tests/validation/lib.sh
     run channel_ke_nf40_first_s$s channel_ke nf=40 ub=1 t_end=600 every=100 seed=$s grad=1 \
       diff=1 carry=1 pforce=1 shear=2
   done
+  run channel_ke_nf80_first_s0 channel_ke nf=80 ub=1 t_end=300 every=50 seed=0 grad=1 diff=1 \
+    carry=1 pforce=1 shear=2
 ) &
 (
   for s in 0 1 2 3; do
@@ -75,6 +78,8 @@ source tests/validation/lib.sh
     carry=1 pforce=1 shear=2
   run channel_ke_nf40_pnormal_s2 channel_ke nf=40 ub=1 t_end=600 every=100 seed=2 grad=1 diff=1 \
     carry=1 pforce=1
+  run channel_ke_nf80_first_s1 channel_ke nf=80 ub=1 t_end=300 every=50 seed=1 grad=1 diff=1 \
+    carry=1 pforce=1 shear=2
 ) &
 wait
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_rans_ensemble.md
