@@ -29,7 +29,8 @@
 -- particles' own pressure gradient (wcsph-riemann's wall_pressure = "gradient"; the mirror's
 -- first row feels 0.78 of the pressure gradient that drives the flow along the walls).
 param { setting = 1, nf = 20, y_p = 0, t_end = 0, every = 0, avg = 0, ard = 0, points = 81,
-        fitted = 1, checkpoint = 0, wallp = 1, grad = 0, diff = 0 }
+        fitted = 1, checkpoint = 0, wallp = 1, grad = 0, diff = 0,
+        shear = 0, pforce = 0 }
 if wallp ~= 0 and wallp ~= 1 then
   error(("channel_curved: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
 end
@@ -41,6 +42,16 @@ if grad ~= 0 and grad ~= 1 then
 end
 if diff ~= 0 and diff ~= 1 then
   error(("channel_curved: diff must be 0 (the harmonic mean over the fluid neighbours) or 1 (the log mean and the walls' mirror), not %g"):format(diff))
+end
+-- shear = 2: the wall model's shear on the first row only (wcsph-riemann's wall_shear =
+-- "first_row"; 0: at y_p on the first two rows, the paper's; 1: at each particle's distance);
+-- pforce = 1: the dummies' pressure force on the fluid along the walls' normal but for the share
+-- of the pressure's gradient along them (wall_pressure_force = "normal"; 0: "corrected", eq 19)
+if shear ~= 0 and shear ~= 1 and shear ~= 2 then
+  error(("channel_curved: shear must be 0 (the wall's shear from the log law at y_p), 1 (at each particle's distance) or 2 (on the first row only), not %g"):format(shear))
+end
+if pforce ~= 0 and pforce ~= 1 then
+  error(("channel_curved: pforce must be 0 (the walls' pressure force with the correction matrix) or 1 (along the walls' normal), not %g"):format(pforce))
 end
 
 local S = ({
@@ -102,7 +113,9 @@ particles { dr = dr }
 scheme { "wcsph-riemann", ard = ard, sound_speed = 15 * U,
          wall_pressure = wallp == 1 and "gradient" or "mirror",
          velocity_gradient = ({"kernel", "log"})[grad + 1],
-         turbulent_diffusion = ({"harmonic", "log_mirror"})[diff + 1] }
+         turbulent_diffusion = ({"harmonic", "log_mirror"})[diff + 1],
+         wall_shear = ({"y_p", "distance", "first_row"})[shear + 1],
+         wall_pressure_force = ({"corrected", "normal"})[pforce + 1] }
 fluid { density = 1, viscosity = nu }
 
 -- OpenFOAM's entry profile (s from the inner wall) and its sections

@@ -48,7 +48,8 @@
 -- both lines (0.05 at most, the platform's wall cell), k by 3% of its largest along x = 9.5 and
 -- 18% at the platform's near-wall peak; its backflow spans x = 5.65-10.69 (5.61-10.63).
 param { nf = 40, t_end = 60, y_p = 0.025, ard = 1, every = 1, avg = 20, ramp = 2, c0 = 20,
-        points = 121, fitted = 0, band = 6, pbg = 0, wallp = 1, grad = 0, diff = 0 }
+        points = 121, fitted = 0, band = 6, pbg = 0, wallp = 1, grad = 0, diff = 0,
+        shear = 0, pforce = 0 }
 if wallp ~= 0 and wallp ~= 1 then
   error(("channel_hcd: wallp must be 0 (the mirror) or 1 (the gradient), not %g"):format(wallp))
 end
@@ -60,6 +61,16 @@ if grad ~= 0 and grad ~= 1 then
 end
 if diff ~= 0 and diff ~= 1 then
   error(("channel_hcd: diff must be 0 (the harmonic mean over the fluid neighbours) or 1 (the log mean and the walls' mirror), not %g"):format(diff))
+end
+-- shear = 2: the wall model's shear on the first row only (wcsph-riemann's wall_shear =
+-- "first_row"; 0: at y_p on the first two rows, the paper's; 1: at each particle's distance);
+-- pforce = 1: the dummies' pressure force on the fluid along the walls' normal but for the share
+-- of the pressure's gradient along them (wall_pressure_force = "normal"; 0: "corrected", eq 19)
+if shear ~= 0 and shear ~= 1 and shear ~= 2 then
+  error(("channel_hcd: shear must be 0 (the wall's shear from the log law at y_p), 1 (at each particle's distance) or 2 (on the first row only), not %g"):format(shear))
+end
+if pforce ~= 0 and pforce ~= 1 then
+  error(("channel_hcd: pforce must be 0 (the walls' pressure force with the correction matrix) or 1 (along the walls' normal), not %g"):format(pforce))
 end
 
 local H, U, Re = 2.0, 1.0, 40000
@@ -108,7 +119,9 @@ particles { dr = dr }
 scheme { "wcsph-riemann", ard = ard, sound_speed = c0 * U, background_pressure = pbg,
          wall_pressure = wallp == 1 and "gradient" or "mirror",
          velocity_gradient = ({"kernel", "log"})[grad + 1],
-         turbulent_diffusion = ({"harmonic", "log_mirror"})[diff + 1] }
+         turbulent_diffusion = ({"harmonic", "log_mirror"})[diff + 1],
+         wall_shear = ({"y_p", "distance", "first_row"})[shear + 1],
+         wall_pressure_force = ({"corrected", "normal"})[pforce + 1] }
 fluid { density = 1, viscosity = nu }
 local k_in = 1.5 * (0.05 * U) ^ 2
 local eps_in = 0.09 ^ 0.75 * k_in ^ 1.5 / (0.07 * H)

@@ -301,6 +301,18 @@ def wall_pressure(s):
     return "gradient" if w == 1 else "mirror"
 
 
+def ke_options(s):
+    """The wall model's options a curved or HCD channel run took (the cases' grad, diff, shear and
+    pforce; a run from before a parameter took the paper's): "paper" where it took none."""
+    p = s["parameters"]
+    names = [n for n, on in (("log gradient", p.get("grad", 0) == 1),
+                             ("log_mirror", p.get("diff", 0) == 1),
+                             ("distance", p.get("shear", 0) == 1),
+                             ("first_row", p.get("shear", 0) == 2),
+                             ("normal", p.get("pforce", 0) == 1)) if on]
+    return ", ".join(names) if names else "paper"
+
+
 def rans_section(runs):
     """The k-ε RANS model of wcsph-riemann (Wang, Sun & Hu sec 5.1, 5.3): the fully developed
     channel (cases/channel_ke.lua) against the 1-D solver, OpenFOAM and Lee & Moser's DNS, and
@@ -311,10 +323,11 @@ def rans_section(runs):
                                  s["parameters"].get("md", -1), wall_pressure(s)))
     hcd = sorted((s for s in runs if s["case"] == "channel_hcd"),
                  key=lambda s: (wall_pressure(s), s["parameters"].get("ard", 1),
-                                s["parameters"].get("nf", 0)))
+                                s["parameters"].get("nf", 0), ke_options(s) != "paper"))
     curved = sorted((s for s in runs if s["case"] == "channel_curved"),
                     key=lambda s: (s["parameters"].get("setting", 1), s["parameters"].get("nf", 0),
-                                   s["parameters"].get("ard", 0), wall_pressure(s)))
+                                   s["parameters"].get("ard", 0), wall_pressure(s),
+                                   ke_options(s) != "paper"))
     if not chan and not hcd and not curved:
         return []
 
@@ -385,10 +398,11 @@ def rans_section(runs):
                 "section's largest k_FV, and where u peaks (s/H from the inner wall; OpenFOAM's "
                 "beside it). The paper: within 2.4% of its FVM's velocity (strong channel). "
                 "Chart: [channel_curved_profiles.png](channel_curved_profiles.png).", "",
-                "| channel | N_f | y_p | wall pressure | status | t_end (avg) | u RMS bend / outlet "
+                "| channel | N_f | y_p | wall pressure | k-ε options | status | t_end (avg) "
+                "| u RMS bend / outlet "
                 "| u max bend / outlet | k RMS bend / outlet | u peak s/H outlet (FV) | particles "
                 "| steps | wall s | particle-steps/s |",
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for s in curved:
             p, m = s["parameters"], s.get("metrics", {})
             name = {1: "mild", 2: "strong"}.get(int(p.get("setting", 1)), "?")
@@ -396,7 +410,7 @@ def rans_section(runs):
                     if "u_peak_outlet" in m else "–")
             wallp = wall_pressure(s)
             out.append(f"| {name} | {p.get('nf', 0):g} | {m.get('y_p', p.get('y_p', 0)):g} "
-                       f"| {wallp} "
+                       f"| {wallp} | {ke_options(s)} "
                        f"| {s['status']} | {s['sim_time']:.3g} ({m.get('avg', p.get('avg', 0)):.3g}) "
                        f"| {pair(m, 'u_rms_bend', 'u_rms_outlet')} | {pair(m, 'u_max_bend', 'u_max_outlet')} "
                        f"| {pair(m, 'k_rms_bend', 'k_rms_outlet')} | {peak} | {s['particles']:g} "
@@ -420,14 +434,15 @@ def rans_section(runs):
                 "feels the whole adverse gradient past the corners (the mirror: 0.78 of it), and "
                 "the flow behind the platform comes closer to OpenFOAM's. "
                 "Chart: [channel_hcd_profiles.png](channel_hcd_profiles.png).", "",
-                "| ARD | wall pressure | N_f | status | t_end (avg) | u RMS x=5 / 9.5 "
+                "| ARD | wall pressure | k-ε options | N_f | status | t_end (avg) | u RMS x=5 / 9.5 "
                 "| k RMS x=5 / 9.5 | backflow x=9.5 | u unsteady x=5 / 9.5 | k unsteady x=5 / 9.5 "
                 "| ARD indicator | particles | wall s | particle-steps/s |",
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for s in hcd:
             p, m = s["parameters"], s.get("metrics", {})
             wallp = wall_pressure(s)
-            out.append(f"| {'on' if p.get('ard', 1) else 'off'} | {wallp} | {p.get('nf', 0):g} "
+            out.append(f"| {'on' if p.get('ard', 1) else 'off'} | {wallp} | {ke_options(s)} "
+                       f"| {p.get('nf', 0):g} "
                        f"| {s['status']} | {p.get('t_end', 0):g} ({p.get('avg', 0):g}) "
                        f"| {pair(m, 'u_rms_platform', 'u_rms_exit', '.3f')} "
                        f"| {pair(m, 'k_rms_platform', 'k_rms_exit', '.3f')} "
@@ -764,7 +779,8 @@ def ensemble_section(runs):
            "1/(1 − (y_p − dr/2)/δ) times the channel's). wall_shear \"y_p\" is the paper's "
            "(every P_ext particle at y_p), \"distance\" each particle's own distance with eq 39 "
            "over its lattice sum (wcsph-riemann's option; turbulence.cl), \"first_row\" the first row "
-           "alone at y_p with eq 39 over its lattice sum (wall_shear = \"first_row\"); gradient \"kernel\" is "
+           "alone at y_p, each particle taking τ_w over its share of the wall and no particle the "
+           "dummies' no-slip drag (wall_shear = \"first_row\"); gradient \"kernel\" is "
            "the paper's velocity gradient (eqs 22, 40), \"log\" the one in the log law's "
            "coordinate next to the walls (velocity_gradient = \"log\"); diffusion \"harmonic\" is "
            "the paper's diffusion sums of k and ε (eqs 23-24), \"log_mirror\" the one with the "

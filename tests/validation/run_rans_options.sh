@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The curved and HCD channels of wcsph-riemann's k-ε model (Wang, Sun & Hu sec 5.2, 5.3) with the
+# wall model's options that the straight channel's ensembles measured (run_rans_ensemble.sh): the
+# velocity gradient in the log law's coordinate by the walls (grad = 1), k and ε diffused with the
+# log mean and the walls' mirror (diff = 1), the wall's stress on the first row alone (shear = 2,
+# wall_shear = "first_row") and the dummies' pressure force along the walls' normal (pforce = 1,
+# wall_pressure_force = "normal"): the HCD channel at N_f = 40, ARD on and off, and the strongly
+# curved channel at N_f = 20, each beside the paper's treatment run in the same session (the
+# walls' pressure the gradient in both); then RESULTS_rans_options.md. About 45 min on 2 cores,
+# two runs side by side.
+#   tests/validation/run_rans_options.sh [BUILD_DIR]     (default build)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${1:-build}
+out=out/validation_rans_options
+mkdir -p "$out"
+source tests/validation/lib.sh
+opts=(grad=1 diff=1 shear=2 pforce=1)
+(
+  run channel_hcd_nf40_ard1_options channel_hcd nf=40 ard=1 t_end=60 avg=20 wallp=1 "${opts[@]}"
+  run channel_hcd_nf40_ard1 channel_hcd nf=40 ard=1 t_end=60 avg=20 wallp=1
+  run channel_hcd_nf40_ard0_options channel_hcd nf=40 ard=0 t_end=60 avg=20 wallp=1 "${opts[@]}"
+  run channel_hcd_nf40_ard0 channel_hcd nf=40 ard=0 t_end=60 avg=20 wallp=1
+) &
+(
+  run channel_curved_strong_nf20_options channel_curved setting=2 nf=20 wallp=1 "${opts[@]}"
+  run channel_curved_strong_nf20 channel_curved setting=2 nf=20 wallp=1
+) &
+wait
+python3 tests/validation/results.py "$out" tests/validation/RESULTS_rans_options.md
