@@ -1292,6 +1292,8 @@ clsph_cli_test(row1_share_holes ARGS info ${CASE_DIR}/row1_share.lua --set holes
                REGEX "row1_share: holes must be a whole number from 0 to 5, not 1.5")
 clsph_cli_test(row1_share_lift ARGS info ${CASE_DIR}/row1_share.lua --set lift=2 RC 2
                REGEX "row1_share: lift must be 0 or 1, not 2")
+clsph_cli_test(row1_share_shear ARGS info ${CASE_DIR}/row1_share.lua --set shear=3 RC 2
+               REGEX "row1_share: shear must be 0 .y_p., 1 .distance. or 2 .first_row., not 3")
 clsph_cli_test(channel_ke_shear_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
                --set shear=3 RC 2
                REGEX "channel_ke: shear must be 0 \\(the wall's shear from the log law at y_p\\), 1 .* or 2")

@@ -43,9 +43,10 @@
  *                        eq 39's force over its sum on the lattice: turbulence.cl says why) or
  *                        "first_row" (at y_p on the first row, P, alone, each particle taking
  *                        τ_w over its share of the wall, which the first dummy layer hands out
- *                        by the kernel; the P_ext rows above take none of the wall's stress,
- *                        which then crosses the first row's upper face whole, as in the 1-D
- *                        solver's first cell: turbulence.cl)
+ *                        by the kernel; no other particle takes the wall's stress or the
+ *                        dummies' no-slip drag, the P_ext rows above nor those beyond R that
+ *                        the dummies still reach, so that the stress crosses the first row's
+ *                        upper face whole, as in the 1-D solver's first cell: turbulence.cl)
  *   velocity_gradient    under the k-ε model, the velocity gradient of the production and the
  *                        reconstructed dissipation: "kernel" (eqs 22 and 40, the paper's; the
  *                        default) or "log" (next to a wall, in the log law's coordinate, and

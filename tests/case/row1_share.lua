@@ -28,6 +28,9 @@ fluid { density = 1, viscosity = nu }
 turbulence { model = "k-epsilon", y_p = y_p, k = k0, epsilon = eps0 }
 wall { {L, 0}, {0, 0}, fluid = "right", group = "floor" }
 wall { {0, H}, {L, H}, fluid = "right", group = "ceiling" }
+if shear ~= 0 and shear ~= 1 and shear ~= 2 then
+  error(("row1_share: shear must be 0 (y_p), 1 (distance) or 2 (first_row), not %g"):format(shear))
+end
 if lift ~= 0 and lift ~= 1 then
   error(("row1_share: lift must be 0 or 1, not %g"):format(lift))
 end
