@@ -91,6 +91,9 @@ param { nf = 20, t_end = 40, y_p = 0.05, ard = 0, every = 0.5, tvf = 2, turb = 1
 if not (sample_dt > 0) then
   error(("channel_ke: sample_dt must be a positive time between force samples, not %g"):format(sample_dt))
 end
+if md ~= -1 and md ~= 0 and md ~= 1 and md ~= 2 then
+  error(("channel_ke: md must be -1 (the scheme's default), 0 (off), 1 (riemann) or 2 (reconstructed), not %g"):format(md))
+end
 if seed < 0 or seed >= 2 ^ 31 or seed ~= math.floor(seed) then
   error(("channel_ke: seed must be 0 (no perturbation) or a positive integer below 2^31, not %g"):format(seed))
 end

@@ -1396,6 +1396,19 @@ clsph_cli_test(channel_curved_shear_three ARGS info ${CMAKE_SOURCE_DIR}/cases/ch
 clsph_cli_test(channel_hcd_pforce_two ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
                --set pforce=2 RC 2
                REGEX "channel_hcd: pforce must be 0 .the walls' pressure force with the correction matrix. or 1 .along the walls' normal., not 2")
+# md reaches the scheme: md = 0 takes the Riemann dissipation off the fluid pairs
+clsph_cli_test(channel_hcd_md_off ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
+               --set ard=0 --set md=0 RC 0
+               REGEX "ARD off, density summation, walls' dissipation limited, fluid pairs' momentum dissipation off")
+clsph_cli_test(channel_hcd_md_three ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
+               --set ard=0 --set md=3 RC 2
+               REGEX "channel_hcd: md must be -1 .the scheme's default., 0 .no Riemann dissipation., 1 .eq 19's full jump. or 2 .the reconstructed jump., not 3")
+clsph_cli_test(channel_hcd_md_with_ard ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_hcd.lua
+               --set md=0 RC 2
+               REGEX "channel_hcd: md = 0 with ard = 1: ARD sets the momentum's dissipation itself")
+clsph_cli_test(channel_ke_md_seven ARGS info ${CMAKE_SOURCE_DIR}/cases/channel_ke.lua
+               --set md=7 RC 2
+               REGEX "channel_ke: md must be -1 .the scheme's default., 0 .off., 1 .riemann. or 2 .reconstructed., not 7")
 # fill { k, epsilon } needs a turbulence model; k and ε of a fill must be positive
 clsph_cli_test(turbulence_fill_without_model ARGS info ${bad_turb} --set what=7 RC 2
                REGEX "fill \\{ k, epsilon \\}: the case declares no turbulence")

@@ -18,9 +18,12 @@
    (tests/data/openfoam_channel_{mild,strong}.csv at the run's y_p).
 
 4. The HCD channel's stability map: the disturbance (the RMS along a line of u's spread in time,
-   over U_b, and of k's over its mean: the metrics u_unsteady_* and k_unsteady_*) against N_f,
-   ARD on and off (the runs given as hcdmap:LABEL=RUN_DIR; a label other than "map" names a
-   series beside ARD on or off, e.g. the mirror's walls).
+   over U_b, and of k's over its mean: cases/channel_hcd.lua's u_unsteady_* and k_unsteady_*) in
+   each 10-s window from t = 20 s (results.py's hcd_windows: one window is one sample of the
+   flow behind the platform), their mean and range against N_f, one series for each momentum
+   dissipation (ARD, or without it the fluid pairs' "reconstructed", "none" or "riemann"; the
+   runs given as hcdmap:LABEL=RUN_DIR; a label other than "map" names a series beside them,
+   e.g. the mirror's walls).
 
     python3 tests/validation/channel_ke_chart.py OUT_DIR channel:LABEL=RUN_DIR ... \
         hcd:LABEL=RUN_DIR ... curved:LABEL=RUN_DIR ... hcdmap:LABEL=RUN_DIR ...
@@ -34,6 +37,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from snapshot_fields import last_snapshot_fields  # noqa: E402
+from results import hcd_dissipation, hcd_windows  # noqa: E402
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 NU, DELTA, U_TAU_REF = 1e-4, 1.0, 0.0543496
@@ -242,38 +246,44 @@ def hcd_map_chart(out_dir, runs):
         if not os.path.exists(path):
             print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of the map")
             continue
-        summary = json_load(path)
-        p, m = summary["parameters"], summary.get("metrics", {})
-        if "u_unsteady_exit" not in m:
-            print(f"channel_ke_chart.py: {run_dir} ({summary['status']}) has no disturbance "
-                  "metrics: left out of the map")
+        p = json_load(path)["parameters"]
+        plat, exit_ = hcd_windows(run_dir, "platform"), hcd_windows(run_dir, "exit")
+        if not plat or not exit_:
+            print(f"channel_ke_chart.py: {run_dir} has no whole window of outputs: left out of the "
+                  "map")
             continue
-        series = ("ARD on" if p.get("ard", 1) else "ARD off") + ("" if label == "map" else f" {label}")
-        rows.append((series, int(p["nf"]),
-                     m["u_unsteady_platform"], m["u_unsteady_exit"], m["k_unsteady_platform"],
-                     m["k_unsteady_exit"]))
+        series = hcd_dissipation(p) + ("" if label == "map" else f" {label}")
+        cols = []
+        for vals in ([u for u, _ in plat], [u for u, _ in exit_], [k for _, k in plat],
+                     [k for _, k in exit_]):
+            cols += [sum(vals) / len(vals), min(vals), max(vals)]
+        rows.append((series, int(p["nf"]), len(exit_), cols))
     rows.sort()
     csv_path = os.path.join(out_dir, "channel_hcd_map.csv")
+    names = ("u_unsteady_platform", "u_unsteady_exit", "k_unsteady_platform", "k_unsteady_exit")
     with open(csv_path, "w") as f:
-        f.write("series,nf,u_unsteady_platform,u_unsteady_exit,k_unsteady_platform,"
-                "k_unsteady_exit\n")
-        f.writelines(f"{r[0]},{r[1]},{r[2]:.6g},{r[3]:.6g},{r[4]:.6g},{r[5]:.6g}\n" for r in rows)
+        f.write("series,nf,windows," + ",".join(f"{n},{n}_min,{n}_max" for n in names) + "\n")
+        f.writelines(f"{r[0]},{r[1]},{r[2]}," + ",".join(f"{v:.6g}" for v in r[3]) + "\n"
+                     for r in rows)
     panels = []
-    for col, what in ((3, "u spread, x = 5"), (4, "u spread, x = 9.5"), (5, "k spread, x = 5"),
-                      (6, "k spread, x = 9.5")):
-        plots = [f"'{csv_path}' using (strcol(1) eq '{s}' ? $2 : 1/0):{col} with linespoints "
-                 f"lw 2 pt 7 title '{s}'" for s in sorted({r[0] for r in rows})]
+    for i, what in enumerate(("u spread, x = 5", "u spread, x = 9.5", "k spread, x = 5",
+                              "k spread, x = 9.5")):
+        col = 4 + 3 * i
+        series = sorted({r[0] for r in rows})  # each series a little apart along N_f
+        plots = [f"'{csv_path}' using (strcol(1) eq '{s}' ? $2 + {0.8 * (j - (len(series) - 1) / 2):g} "
+                 f": 1/0):{col}:{col + 1}:{col + 2} with yerrorlines lw 2 pt 7 title '{s}'"
+                 for j, s in enumerate(series)]
         panels.append(f"set title '{what}'\nplot {', '.join(plots)}")
     gnuplot(f"""set terminal pngcairo size 1000,700 font ",10" noenhanced
 set output '{os.path.join(out_dir, "channel_hcd_map.png")}'
 set datafile separator ','
 set grid
-set key top left
+set key top right
 set xlabel 'N_f (rows across the entry)'
-set ylabel 'RMS of the spread in time'
+set ylabel 'RMS spread (10-s windows)'
 set xrange [30:90]
 set yrange [0:*]
-set multiplot layout 2,2 title 'HCD channel: the disturbance with and without ARD (a steady RANS flow holds still)'
+set multiplot layout 2,2 title 'HCD channel: the disturbance by the momentum dissipation (a steady RANS flow holds still)'
 {chr(10).join(panels)}
 unset multiplot
 """)

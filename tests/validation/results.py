@@ -323,7 +323,8 @@ def rans_section(runs):
                                  s["parameters"].get("md", -1), wall_pressure(s)))
     hcd = sorted((s for s in runs if s["case"] == "channel_hcd"),
                  key=lambda s: (wall_pressure(s), s["parameters"].get("ard", 1),
-                                s["parameters"].get("nf", 0), ke_options(s) != "paper"))
+                                s["parameters"].get("md", -1), s["parameters"].get("nf", 0),
+                                ke_options(s) != "paper"))
     curved = sorted((s for s in runs if s["case"] == "channel_curved"),
                     key=lambda s: (s["parameters"].get("setting", 1), s["parameters"].get("nf", 0),
                                    s["parameters"].get("ard", 0), wall_pressure(s),
@@ -433,6 +434,11 @@ def rans_section(runs):
                 "gradient (`wallp = 1`, wall_pressure = \"gradient\") the wall-adjacent row "
                 "feels the whole adverse gradient past the corners (the mirror: 0.78 of it), and "
                 "the flow behind the platform comes closer to OpenFOAM's. "
+                "ARD off: the fluid pairs' momentum dissipation in parentheses (the model's "
+                "default \"reconstructed\"; \"none\", the eddy viscosity alone; \"riemann\", "
+                "eq 19's full jump). The ARD indicator: the mean over the fluid of the neighbours "
+                "whose Riemann viscosity exceeds the eddy one (eq 42), averaged over the outputs of "
+                "the last `avg` s (a run from before the series: its last output's). "
                 "Chart: [channel_hcd_profiles.png](channel_hcd_profiles.png).", "",
                 "| ARD | wall pressure | k-ε options | N_f | status | t_end (avg) | u RMS x=5 / 9.5 "
                 "| k RMS x=5 / 9.5 | backflow x=9.5 | u unsteady x=5 / 9.5 | k unsteady x=5 / 9.5 "
@@ -441,7 +447,9 @@ def rans_section(runs):
         for s in hcd:
             p, m = s["parameters"], s.get("metrics", {})
             wallp = wall_pressure(s)
-            out.append(f"| {'on' if p.get('ard', 1) else 'off'} | {wallp} | {ke_options(s)} "
+            ard = ("on" if p.get("ard", 1) else
+                   f"off ({ {-1: 'reconstructed', 0: 'none', 1: 'riemann', 2: 'reconstructed'}.get(int(p.get('md', -1)), '?')})")
+            out.append(f"| {ard} | {wallp} | {ke_options(s)} "
                        f"| {p.get('nf', 0):g} "
                        f"| {s['status']} | {p.get('t_end', 0):g} ({p.get('avg', 0):g}) "
                        f"| {pair(m, 'u_rms_platform', 'u_rms_exit', '.3f')} "
@@ -451,6 +459,94 @@ def rans_section(runs):
                        f"| {pair(m, 'k_unsteady_platform', 'k_unsteady_exit', '.3f')} "
                        f"| {m.get('ard_mean', float('nan')):.2f} | {s['particles']:g} "
                        f"| {wall(s)} | {s['particle_steps_per_second']:.3g} |")
+    return out
+
+
+HCD_WINDOW, HCD_WINDOW_FROM = 10.0, 20.0
+
+
+def hcd_windows(run_dir, line):
+    """The HCD channel's disturbance along a monitoring line (cases/channel_hcd.lua's
+    u_unsteady_* and k_unsteady_*: the RMS along the line of u's spread in time over U_b = 1, and
+    of k's over its mean along the line) in each whole HCD_WINDOW-s window of the outputs from
+    t = HCD_WINDOW_FROM on (the entry's ramp and the first passes of the flow behind): the
+    disturbance moves from window to window with the flow behind the platform (by up to a factor of
+    two at N_f = 40), so one window is one sample of it. [(u, k), ...] from profile_LINE.csv."""
+    path = os.path.join(run_dir, f"profile_{line}.csv")
+    if not os.path.exists(path):
+        return []
+    rows = {}
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            if not r.get("k"):  # a row a running run is still writing
+                continue
+            rows.setdefault(float(r["time"]), []).append((float(r["vel_x"]), float(r["k"])))
+    times = sorted(rows)
+    out, t0 = [], HCD_WINDOW_FROM
+    while times and t0 + HCD_WINDOW <= times[-1] + 1e-9:
+        snaps = [rows[t] for t in times if t0 - 1e-9 <= t <= t0 + HCD_WINDOW + 1e-9]
+        npts = min(len(v) for v in snaps)
+        fu = fk = kbar = 0.0
+        for i in range(npts):
+            us = [v[i][0] for v in snaps]
+            ks = [v[i][1] for v in snaps]
+            mu, mk = sum(us) / len(us), sum(ks) / len(ks)
+            fu += max(sum(u * u for u in us) / len(us) - mu * mu, 0.0)
+            fk += max(sum(k * k for k in ks) / len(ks) - mk * mk, 0.0)
+            kbar += mk
+        out.append((math.sqrt(fu / npts), math.sqrt(fk / npts) / (kbar / npts)))
+        t0 += HCD_WINDOW
+    return out
+
+
+def hcd_dissipation(p):
+    """The momentum's dissipation of an HCD run: ARD, or without it the fluid pairs' (the case's
+    md; -1 the model's default, "reconstructed")."""
+    if p.get("ard", 1):
+        return "ARD"
+    return {-1: "reconstructed", 0: "none", 1: "riemann", 2: "reconstructed"}.get(
+        int(p.get("md", -1)), "?")
+
+
+def hcd_map_section(runs, runs_dir):
+    """The HCD channel's stability map (figs 24-27): the disturbance in time in 10-s windows, by
+    the momentum's dissipation and N_f (the paper's runs only: no k-ε options)."""
+    hcd = [s for s in runs if s["case"] == "channel_hcd" and ke_options(s) == "paper"
+           and wall_pressure(s) == "gradient"]
+    if not hcd:
+        return []
+    order = {"ARD": 0, "reconstructed": 1, "none": 2, "riemann": 3}
+    hcd.sort(key=lambda s: (order.get(hcd_dissipation(s["parameters"]), 9),
+                            s["parameters"].get("nf", 0)))
+    out = ["", "## The HCD channel's disturbance by window (figs 24-27)", "",
+           f"The disturbance of the table above (u's spread in time over U_b, k's over its line "
+           f"mean, RMS along the line) in each {HCD_WINDOW:g}-s window of the outputs from t = "
+           f"{HCD_WINDOW_FROM:g} s to the run's end: the mean over the windows and the smallest "
+           "and largest. One window is one sample of the flow behind the platform. The momentum's "
+           "dissipation: ARD (eq 32), or without it on the fluid pairs the model's default "
+           "\"reconstructed\", \"none\" (the eddy viscosity alone) or \"riemann\" (eq 19's "
+           "full jump). Chart: [channel_hcd_map.png](channel_hcd_map.png); the last outputs' ARD indicator "
+           "at N_f = 40, 60, 80 (fig 27): [channel_hcd_ard_indicator.png](channel_hcd_ard_indicator.png); "
+           "k at N_f = 80 by dissipation (figs 25-26): "
+           "[channel_hcd_k_dissipation.png](channel_hcd_k_dissipation.png).",
+           "", "| dissipation | N_f | t_end | windows | u spread x=5: mean (min-max) "
+           "| u spread x=9.5 | k spread x=5 | k spread x=9.5 | ARD indicator |",
+           "|---|---|---|---|---|---|---|---|---|"]
+
+    def cell(vals, fmt):
+        if not vals:
+            return "–"
+        return (f"{format(sum(vals) / len(vals), fmt)} ({format(min(vals), fmt)}-"
+                f"{format(max(vals), fmt)})")
+    for s in hcd:
+        p, m = s["parameters"], s.get("metrics", {})
+        d = os.path.join(runs_dir, s["run"])
+        plat, exit_ = hcd_windows(d, "platform"), hcd_windows(d, "exit")
+        out.append(f"| {hcd_dissipation(p)} | {p.get('nf', 0):g} | {s['sim_time']:.3g} "
+                   f"| {len(exit_)} | {cell([u for u, _ in plat], '.4f')} "
+                   f"| {cell([u for u, _ in exit_], '.4f')} | {cell([k for _, k in plat], '.3f')} "
+                   f"| {cell([k for _, k in exit_], '.3f')} "
+                   f"| {format(m['ard_mean'], '.2f') if 'ard_mean' in m else '–'} |")
     return out
 
 
@@ -1139,6 +1235,7 @@ def main():
     lines += hydrostatic_section(runs)
     lines += lobovsky_section(runs)
     lines += rans_section(runs)
+    lines += hcd_map_section(runs, runs_dir)
     lines += ensemble_section(runs)
     lines += usaw_ke_section(runs, runs_dir)
     lines += wheel_section(runs, runs_dir)
