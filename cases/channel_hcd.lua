@@ -13,9 +13,9 @@
 -- ard = 1: adaptive Riemann-eddy dissipation (sec 3.1), the paper's choice for this channel;
 -- ard = 0 shows what it prevents (figs 24-26). md sets the momentum equation's Riemann
 -- dissipation between fluid pairs without ARD (wcsph-riemann's momentum_dissipation): -1 the
--- scheme's default under the model ("reconstructed"), 0 none, the eddy viscosity alone (sec 3.1:
--- what the paper's figs 2 and 24 (a) show without the Riemann dissipation), 1 eq 19's full jump,
--- 2 "reconstructed".
+-- scheme's default under the model ("reconstructed"), 0 none, the eddy viscosity alone (sec 3.1
+-- and fig 2: the scheme without the Riemann dissipation), 1 eq 19's full jump (the Riemann solver
+-- SPHinXsys's HCD channel keeps without ARD), 2 "reconstructed" (tests/validation/run_rans_map.sh).
 -- Metrics, against OpenFOAM v1912 with the same entry, model and wall functions
 -- (tests/data/openfoam_channel_hcd.csv, inlet "uniform"; tests/validation/openfoam/channel_ke):
 -- the profiles along x = 5 (mid-platform, platform to upper wall) and x = 9.5 (the exit section,
