@@ -6,8 +6,9 @@
 # wall_shear = "first_row") and the dummies' pressure force along the walls' normal (pforce = 1,
 # wall_pressure_force = "normal"): the HCD channel at N_f = 40, ARD on and off, and the strongly
 # curved channel at N_f = 20, each beside the paper's treatment run in the same session (the
-# walls' pressure the gradient in both); then RESULTS_rans_options.md. About 45 min on 2 cores,
-# two runs side by side.
+# walls' pressure the gradient in both), and then each option alone on the HCD channel with ARD
+# (N_f = 40, beside the paper's treatment again: the ARD indicator as a series mean); then
+# RESULTS_rans_options.md. About 70 min on 2 cores, two runs side by side.
 #   tests/validation/run_rans_options.sh [BUILD_DIR]     (default build)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -25,6 +26,16 @@ opts=(grad=1 diff=1 shear=2 pforce=1)
 (
   run channel_curved_strong_nf20_options channel_curved setting=2 nf=20 wallp=1 "${opts[@]}"
   run channel_curved_strong_nf20 channel_curved setting=2 nf=20 wallp=1
+) &
+wait
+(
+  run channel_hcd_nf40_ard1_grad channel_hcd nf=40 ard=1 t_end=60 avg=20 wallp=1 grad=1
+  run channel_hcd_nf40_ard1_diff channel_hcd nf=40 ard=1 t_end=60 avg=20 wallp=1 diff=1
+  run channel_hcd_nf40_ard1 channel_hcd nf=40 ard=1 t_end=60 avg=20 wallp=1
+) &
+(
+  run channel_hcd_nf40_ard1_shear channel_hcd nf=40 ard=1 t_end=60 avg=20 wallp=1 shear=2
+  run channel_hcd_nf40_ard1_pforce channel_hcd nf=40 ard=1 t_end=60 avg=20 wallp=1 pforce=1
 ) &
 wait
 python3 tests/validation/results.py "$out" tests/validation/RESULTS_rans_options.md
