@@ -46,7 +46,11 @@ python3 tests/validation/channel_ke_chart.py tests/validation \
 # indicator at N_f = 40, 60, 80 (the paper's fig 27) and k at N_f = 80 with ARD and with each
 # dissipation without it (figs 25-26)
 frames=$(mktemp -d)
-font=$(fc-match -f '%{file}' "DejaVu Sans")
+# the labels' font: fontconfig's DejaVu Sans, else Debian's fonts-dejavu-core path (the README's
+# packages; fc-match comes with the fontconfig package, which they need not pull in)
+font=$(fc-match -f '%{file}' "DejaVu Sans" 2>/dev/null || true)
+[ -n "$font" ] || font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+[ -r "$font" ] || { echo "run_rans_map.sh: no DejaVu Sans for the frames' labels ($font)" >&2; exit 1; }
 last_frame() { # run field range label -> the frame's path, the label drawn over its title line
   local run=$1 field=$2 range=$3 label=$4 snap dir
   snap=$(ls "$out/$run"/snap_*.h5 | tail -1)
