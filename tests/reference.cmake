@@ -52,3 +52,20 @@ if(Python3_Interpreter_FOUND)
                  "-DREGEX2=40,3,0\\.1474,1\\.06[23][0-9],1\\.129[0-9]" "-DENV="
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect.cmake)
 endif()
+
+# results.py's reading of the HCD channel's floor (RESULTS_rans_map.md's and
+# RESULTS_rans_options.md's last section): the foot and tangent of points over each piece of the
+# floor exactly, and OpenFOAM's stored wall cells (tests/data/openfoam_channel_hcd.csv, line
+# "floor") binned as the runs' first row is: their zero crossings, 5.70 and 10.66, each within a
+# bin (0.25) of the cells' own backflow range in the file's header (5.61 to 10.63).
+if(Python3_Interpreter_FOUND)
+  clsph_add_test(hcd_floor_reading LABELS unit COMMAND ${CMAKE_COMMAND}
+                 "-DCMD=${Python3_EXECUTABLE}|${CMAKE_SOURCE_DIR}/tests/validation/hcd_floor_check.py"
+                 -DRC=0 "-DREGEX=separation 5\\.70, reattachment 10\\.66. the cells' backflow 5\\.61 to 10\\.63"
+                 "-DREGEX2=48 bins" "-DENV=" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect.cmake)
+  # the same on the mesh twice as fine in the core and along the floor: 5.70 and 10.69
+  clsph_add_test(hcd_floor_reading_fine LABELS unit COMMAND ${CMAKE_COMMAND}
+                 "-DCMD=${Python3_EXECUTABLE}|${CMAKE_SOURCE_DIR}/tests/validation/hcd_floor_check.py|${CMAKE_SOURCE_DIR}/tests/data/openfoam_channel_hcd_fine.csv"
+                 -DRC=0 "-DREGEX=separation 5\\.70, reattachment 10\\.69. the cells' backflow 5\\.65 to 10\\.69"
+                 "-DREGEX2=48 bins" "-DENV=" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect.cmake)
+endif()

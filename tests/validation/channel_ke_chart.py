@@ -25,10 +25,16 @@
    runs given as hcdmap:LABEL=RUN_DIR; a label other than "map" names a series beside them,
    e.g. the mirror's walls).
 
+5. The HCD channel's floor: the first row's velocity along the floor, time-averaged over each
+   run's last `avg` s, against OpenFOAM's wall cells (results.py's hcd_floor_run and
+   hcd_floor_fv: the separation behind the platform and the reattachment).
+
     python3 tests/validation/channel_ke_chart.py OUT_DIR channel:LABEL=RUN_DIR ... \
-        hcd:LABEL=RUN_DIR ... curved:LABEL=RUN_DIR ... hcdmap:LABEL=RUN_DIR ...
+        hcd:LABEL=RUN_DIR ... curved:LABEL=RUN_DIR ... hcdmap:LABEL=RUN_DIR ... \
+        floor:LABEL=RUN_DIR ...
 writes OUT_DIR/channel_ke_uplus.{csv,png}, OUT_DIR/channel_hcd_profiles.{csv,png},
-OUT_DIR/channel_curved_profiles.{csv,png} and OUT_DIR/channel_hcd_map.{csv,png} (gnuplot).
+OUT_DIR/channel_curved_profiles.{csv,png}, OUT_DIR/channel_hcd_map.{csv,png} and
+OUT_DIR/channel_hcd_floor.{csv,png} (gnuplot).
 """
 import csv
 import os
@@ -37,7 +43,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from snapshot_fields import last_snapshot_fields  # noqa: E402
-from results import hcd_dissipation, hcd_windows  # noqa: E402
+from results import hcd_dissipation, hcd_floor_fv, hcd_floor_run, hcd_windows  # noqa: E402
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 NU, DELTA, U_TAU_REF = 1e-4, 1.0, 0.0543496
@@ -138,7 +144,7 @@ def hcd_chart(out_dir, runs):
                 sys.exit(f"channel_ke_chart.py: {run_dir} has no {line} profile after t = {t0:g}")
             rows += [(label, line, y, u, k) for y, u, k in got]
     for r in table(os.path.join(ROOT, "tests/data/openfoam_channel_hcd.csv")):
-        if r["inlet"] == "uniform":
+        if r["inlet"] == "uniform" and r["line"] in ("platform", "exit"):
             rows.append(("OpenFOAM", r["line"], float(r["y"]), float(r["U"]), float(r["k"])))
     csv_path = os.path.join(out_dir, "channel_hcd_profiles.csv")
     with open(csv_path, "w") as f:
@@ -289,6 +295,36 @@ unset multiplot
 """)
 
 
+def hcd_floor_chart(out_dir, runs):
+    rows = []
+    for label, run_dir in runs:
+        path = os.path.join(run_dir, "summary.json")
+        if not os.path.exists(path):
+            print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of the floor chart")
+            continue
+        rows += [(label, x, u) for x, u in hcd_floor_run(run_dir, json_load(path))]
+    rows += [("OpenFOAM wall cells", x, u) for x, u in hcd_floor_fv()]
+    csv_path = os.path.join(out_dir, "channel_hcd_floor.csv")
+    with open(csv_path, "w") as f:
+        f.write("series,x,u\n")
+        f.writelines(f"{s},{x:.6g},{u:.6g}\n" for s, x, u in rows)
+    series = list(dict.fromkeys(s for s, *_ in rows))
+    plots = [f"'{csv_path}' using (strcol(1) eq '{s}' ? $2 : 1/0):3 with "
+             f"{'points pt 6 ps 0.8 lc black' if s.startswith('OpenFOAM') else 'lines lw 2'} "
+             f"title '{s}'" for s in series]
+    gnuplot(f"""set terminal pngcairo size 1100,500 font ",10" noenhanced
+set output '{os.path.join(out_dir, "channel_hcd_floor.png")}'
+set datafile separator ','
+set grid
+set key top right font ",9"
+set title "HCD channel: the first row along the floor (time mean) and OpenFOAM's wall cells (y_p off the wall)"
+set xlabel 'x (the foot on the floor; platform: ramp 3-4.5, top 4.5-5.5, ramp 5.5-7)'
+set ylabel 'u along the floor / U_b'
+set xzeroaxis lt -1
+plot {', '.join(plots)}
+""")
+
+
 def json_load(path):
     import json
     with open(path) as f:
@@ -303,16 +339,18 @@ def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     out_dir = sys.argv[1]
-    channel, hcd, curved, hcdmap = [], [], [], []
+    channel, hcd, curved, hcdmap, floor = [], [], [], [], []
     for a in sys.argv[2:]:
         kind, rest = a.split(":", 1)
         label, run_dir = rest.rsplit("=", 1)
         if "," in label:
             sys.exit(f"channel_ke_chart.py: a label may not hold a comma (the CSV's separator): {label}")
-        if kind not in ("channel", "hcd", "curved", "hcdmap"):
-            sys.exit(f"channel_ke_chart.py: '{kind}' is not channel, hcd, curved or hcdmap: {a}")
-        {"channel": channel, "hcd": hcd, "curved": curved, "hcdmap": hcdmap}[kind].append(
-            (label, run_dir))
+        kinds = {"channel": channel, "hcd": hcd, "curved": curved, "hcdmap": hcdmap,
+                 "floor": floor}
+        if kind not in kinds:
+            sys.exit(f"channel_ke_chart.py: '{kind}' is not channel, hcd, curved, hcdmap or floor: "
+                     f"{a}")
+        kinds[kind].append((label, run_dir))
     if channel:
         channel_chart(out_dir, channel)
     if hcd:
@@ -321,6 +359,8 @@ def main():
         curved_chart(out_dir, curved)
     if hcdmap:
         hcd_map_chart(out_dir, hcdmap)
+    if floor:
+        hcd_floor_chart(out_dir, floor)
     print(f"wrote the charts into {out_dir}")
 
 

@@ -11,6 +11,7 @@ import json
 import math
 import os
 import re
+import subprocess
 import sys
 
 RESOLUTION = ("n", "dr")  # parameters that set the resolution: n particles per unit, or dr
@@ -547,6 +548,156 @@ def hcd_map_section(runs, runs_dir):
                    f"| {cell([u for u, _ in exit_], '.4f')} | {cell([k for _, k in plat], '.3f')} "
                    f"| {cell([k for _, k in exit_], '.3f')} "
                    f"| {format(m['ard_mean'], '.2f') if 'ard_mean' in m else '–'} |")
+    return out
+
+
+# The HCD channel's lower wall (cases/channel_hcd.lua; tests/validation/openfoam/channel_ke's
+# setup.geometry): the corners of the floor, the platform between x = 3 and 7
+HCD_FLOOR = [(0.0, 0.0), (3.0, 0.0), (4.5, 1.5 * math.tan(math.radians(30.0))),
+             (5.5, 1.5 * math.tan(math.radians(30.0))), (7.0, 0.0), (12.0, 0.0)]
+HCD_FLOOR_BIN = 0.25
+
+
+def hcd_floor_foot(x, y):
+    """(x of the foot on the floor of the point (x, y), the floor's unit tangent there)."""
+    best = None
+    for (ax, ay), (bx, by) in zip(HCD_FLOOR, HCD_FLOOR[1:]):
+        dx, dy = bx - ax, by - ay
+        t = min(max(((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy), 0.0), 1.0)
+        d = math.hypot(x - ax - t * dx, y - ay - t * dy)
+        if best is None or d < best[0]:
+            n = math.hypot(dx, dy)
+            best = (d, ax + t * dx, (dx / n, dy / n))
+    return best[1], best[2]
+
+
+def hcd_floor_bins(points):
+    """[(bin centre, mean)] of (x, value) pairs in HCD_FLOOR_BIN-wide bins over the floor."""
+    acc = {}
+    for x, v in points:
+        b = int(x // HCD_FLOOR_BIN)
+        a = acc.setdefault(b, [0.0, 0])
+        a[0] += v
+        a[1] += 1
+    return [((b + 0.5) * HCD_FLOOR_BIN, a[0] / a[1]) for b, a in sorted(acc.items())]
+
+
+def hcd_floor_fv(path=None):
+    """OpenFOAM's wall cells along the floor (tests/data/openfoam_channel_hcd.csv, line "floor",
+    the uniform entry): [(x, u along the floor)] in HCD_FLOOR_BIN bins by the foot of each cell
+    centre."""
+    path = path or os.path.join(os.path.dirname(__file__), "..", "data", "openfoam_channel_hcd.csv")
+    pts = []
+    with open(path) as f:
+        for r in csv.DictReader(line for line in f if not line.startswith("#")):
+            if r["inlet"] == "uniform" and r["line"] == "floor":
+                fx, (tx, ty) = hcd_floor_foot(float(r["x"]), float(r["y"]))
+                pts.append((fx, float(r["U"]) * tx + float(r["V"]) * ty))
+    if not pts:
+        raise ValueError(f"{path}: no floor line (tests/validation/openfoam/channel_ke/run.sh hcd)")
+    return hcd_floor_bins(pts)
+
+
+def h5_fields(path, *names):
+    """Datasets /particles/NAME of one snapshot as flat lists of floats (h5dump)."""
+    out = []
+    for name in names:
+        text = subprocess.run(["h5dump", "-d", f"/particles/{name}", "-y", "-w", "0", path],
+                              capture_output=True, text=True, check=True).stdout
+        start = text.index("DATA {") + 6
+        body = text[start:text.index("}", start)]
+        out.append([float(v) for v in body.replace("\n", " ").replace(",", " ").split() if v])
+    return out
+
+
+def hcd_floor_run(run_dir, s):
+    """The first row along the floor of an HCD run: the fluid particles less than one spacing
+    from the lower wall (wall_dist < dr, dr = (H − 2 y_p)/(nf − 1)), their velocity along the
+    floor at the foot of each, binned by the foot's x and averaged over the snapshots of the last
+    `avg` s (the window of the run's metrics). [(x, u)]; [] without snapshots there."""
+    p = s["parameters"]
+    dr = (2.0 - 2.0 * p.get("y_p", 0.025)) / (p["nf"] - 1)
+    t0 = s["sim_time"] - p.get("avg", 20) - 1e-9
+    pts, used = [], 0
+    for path in sorted(glob.glob(os.path.join(run_dir, "snap_*.h5"))):
+        text = subprocess.run(["h5dump", "-a", "/time", "-w", "0", path], capture_output=True,
+                              text=True, check=True).stdout
+        t = float(re.search(r"\(0\): ([-0-9.eE+]+)", text).group(1))
+        if t < t0:
+            continue
+        kind, pos, vel, wd = h5_fields(path, "kind", "pos", "vel", "wall_dist")
+        used += 1
+        for i, kd in enumerate(kind):
+            x, y = pos[2 * i], pos[2 * i + 1]
+            if kd != 0 or not 0.0 <= wd[i] < dr or y > 1.0:
+                continue
+            fx, (tx, ty) = hcd_floor_foot(x, y)
+            pts.append((fx, vel[2 * i] * tx + vel[2 * i + 1] * ty))
+    if not used:
+        return []
+    return hcd_floor_bins(pts)
+
+
+def crossings(prof, after):
+    """Where the binned profile [(x, u)] crosses zero downwards and then upwards again (linear
+    between bin centres) after x = after: (separation, reattachment), None where it does not."""
+    sep = att = None
+    for (x0, u0), (x1, u1) in zip(prof, prof[1:]):
+        if x0 < after:
+            continue
+        if sep is None and u0 >= 0.0 > u1:
+            sep = x0 + (x1 - x0) * u0 / (u0 - u1)
+        elif sep is not None and u0 < 0.0 <= u1:
+            att = x0 + (x1 - x0) * u0 / (u0 - u1)
+            break
+    return sep, att
+
+
+def hcd_floor_section(runs, runs_dir):
+    """The HCD channel's near-wall flow along the floor: each run's first row (hcd_floor_run)
+    against OpenFOAM's wall cells, whose centres stand y_p off the wall as the first row does."""
+    hcd = [s for s in runs if s["case"] == "channel_hcd" and s["status"] == "ok"]
+    if not hcd:
+        return []
+    fv = dict(hcd_floor_fv())
+    fsep, fatt = crossings(sorted(fv.items()), 5.0)
+
+    def mean(prof, a, b):
+        v = [u for x, u in prof if a <= x <= b]
+        return sum(v) / len(v) if v else float("nan")
+
+    def fmt(v):
+        return "none" if v is None else f"{v:.2f}"
+    out = ["", "## The HCD channel's floor: the first row against OpenFOAM's wall cells", "",
+           "The fluid particles less than one spacing from the lower wall, their velocity along "
+           "the floor at the foot of each on it, in bins of "
+           f"{HCD_FLOOR_BIN:g} along x and averaged over the snapshots of the last `avg` s, "
+           "against OpenFOAM's wall cells, whose centres stand y_p off the wall as the first "
+           "row does on the flat floor (`tests/data/openfoam_channel_hcd.csv`, line \"floor\", "
+           "the same bins; on the lattice, `fitted = 0`, the first row meets the ramps at "
+           "every distance and stands 0.009 over the platform at N_f = 40): RMS of the "
+           "difference over U_b from the entry to the exit and over the platform and the flow "
+           "behind it (x = 3-12), the mean along the platform's top (x = 4.5-5.5; OpenFOAM's "
+           f"{mean(sorted(fv.items()), 4.5, 5.5):.2f}), the deepest backflow and where the row "
+           "separates behind the platform and reattaches (its mean crossing zero; OpenFOAM's "
+           f"wall cells {fmt(fsep)} and {fmt(fatt)}).", "",
+           "| run | ARD | k-ε options | N_f | snapshots from t | u RMS 0-12 / 3-12 "
+           "| platform top | deepest backflow (FV) | separation | reattachment |",
+           "|---|---|---|---|---|---|---|---|---|---|"]
+    bottom = min(fv.values())
+    for s in sorted(hcd, key=lambda s: (s["parameters"].get("nf", 0), s["run"])):
+        p = s["parameters"]
+        prof = hcd_floor_run(os.path.join(runs_dir, s["run"]), s)
+        if not prof:
+            continue
+        d_all = [(u - fv[x]) ** 2 for x, u in prof if x in fv]
+        d_pl = [(u - fv[x]) ** 2 for x, u in prof if x in fv and x >= 3.0]
+        sep, att = crossings(prof, 5.0)
+        out.append(f"| {s['run']} | {hcd_dissipation(p)} | {ke_options(s)} | {p['nf']:g} "
+                   f"| {s['sim_time'] - p.get('avg', 20):g} "
+                   f"| {math.sqrt(sum(d_all) / len(d_all)):.3f} / "
+                   f"{math.sqrt(sum(d_pl) / len(d_pl)):.3f} | {mean(prof, 4.5, 5.5):.2f} "
+                   f"| {min(u for _, u in prof):.2f} ({bottom:.2f}) | {fmt(sep)} | {fmt(att)} |")
     return out
 
 
@@ -1236,6 +1387,7 @@ def main():
     lines += lobovsky_section(runs)
     lines += rans_section(runs)
     lines += hcd_map_section(runs, runs_dir)
+    lines += hcd_floor_section(runs, runs_dir)
     lines += ensemble_section(runs)
     lines += usaw_ke_section(runs, runs_dir)
     lines += wheel_section(runs, runs_dir)

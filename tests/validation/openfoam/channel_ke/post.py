@@ -310,6 +310,16 @@ def recirculation(r, w, j):
     return ", ".join(f"{a:.2f} to {b:.2f}" for a, b in ranges) or "none"
 
 
+def wall_distance(wall, x, y):
+    """The distance of (x, y) from the polyline wall [(x, y), ...]."""
+    best = math.inf
+    for (ax, ay), (bx, by) in zip(wall, wall[1:]):
+        dx, dy = bx - ax, by - ay
+        t = min(max(((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy), 0.0), 1.0)
+        best = min(best, math.hypot(x - ax - t * dx, y - ay - t * dy))
+    return best
+
+
 def hcd(scratch, names):
     head, rows = [], []
     for name in names:
@@ -323,6 +333,19 @@ def hcd(scratch, names):
                 rows.append(f"{run['src'] if run['src'] == 'uniform' else 'developed'},{key},"
                             f"{x:g},{y:.6f},{y - floor:.6f},{u[0]:.6f},{u[1]:.6e},{k:.6e},"
                             f"{e:.6e},{nut:.6e}")
+        # the lower wall's wall cells from the entry to the exit: the near-wall flow along it
+        # (y_wall: the cell centre's distance from the wall, y_p by construction but at the
+        # platform's corners)
+        wall = [st[0] for st in r["stations"]]  # the lower wall's corners (setup.geometry)
+        f = r["f"]
+        for c, (nx, _) in enumerate(r["columns"]):
+            for i in range(nx):
+                n = setup.cell(run, r["columns"], c, 0, i, 0)
+                x, y = f["C"][n][0], f["C"][n][1]
+                rows.append(f"{run['src'] if run['src'] == 'uniform' else 'developed'},floor,"
+                            f"{x:g},{y:.6f},{wall_distance(wall, x, y):.6f},{f['U'][n][0]:.6f},"
+                            f"{f['U'][n][1]:.6e},{f['k'][n]:.6e},{f['epsilon'][n]:.6e},"
+                            f"{f['nut'][n]:.6e}")
         yp = {w: foamio.patch_value(os.path.join(r["d"], r["t"], "yPlus"), w)
               for w in ("lowerWall", "upperWall")}
         ut = {w: [t for _, t in u_tau_wall(r, w)] for w in ("lowerWall", "upperWall")}
@@ -358,9 +381,10 @@ def hcd(scratch, names):
              "y_p = 0.025. "
              "SPHinXsys's lines: x = 5 (mid platform, platform to upper wall) and x = 9.5 (mid "
              "exit section, wall to wall).\n")
-    cols = ("# Columns: inlet (developed or uniform); line (platform: x = 5; exit: x = 9.5); x; y "
-            "(cell-centre row); y_wall = y - lower wall height (0.866025 on the platform); U; V; "
-            "k; epsilon; nut.\n"
+    cols = ("# Columns: inlet (developed or uniform); line (platform: x = 5; exit: x = 9.5; floor: "
+            "the lower wall's wall cells from the entry to the exit, one per column of cells); x; "
+            "y (cell-centre row); y_wall = y - lower wall height (0.866025 on the platform; on "
+            "the floor line the centre's distance from the wall); U; V; k; epsilon; nut.\n"
             "inlet,line,x,y,y_wall,U,V,k,epsilon,nut\n")
     return intro, head, cols, rows
 
