@@ -11,8 +11,10 @@ import json
 import math
 import os
 import re
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from snapshot_fields import snapshot_fields, snapshot_time  # noqa: E402
 
 RESOLUTION = ("n", "dr")  # parameters that set the resolution: n particles per unit, or dr
 NEUTRAL = ("checkpoint",)  # parameters that do not change a run's results (checkpoint interval)
@@ -598,18 +600,6 @@ def hcd_floor_fv(path=None):
     return hcd_floor_bins(pts)
 
 
-def h5_fields(path, *names):
-    """Datasets /particles/NAME of one snapshot as flat lists of floats (h5dump)."""
-    out = []
-    for name in names:
-        text = subprocess.run(["h5dump", "-d", f"/particles/{name}", "-y", "-w", "0", path],
-                              capture_output=True, text=True, check=True).stdout
-        start = text.index("DATA {") + 6
-        body = text[start:text.index("}", start)]
-        out.append([float(v) for v in body.replace("\n", " ").replace(",", " ").split() if v])
-    return out
-
-
 def hcd_floor_run(run_dir, s):
     """The first row along the floor of an HCD run: the fluid particles less than one spacing
     from the lower wall (wall_dist < dr, dr = (H − 2 y_p)/(nf − 1)), their velocity along the
@@ -620,12 +610,9 @@ def hcd_floor_run(run_dir, s):
     t0 = s["sim_time"] - p.get("avg", 20) - 1e-9
     pts, used = [], 0
     for path in sorted(glob.glob(os.path.join(run_dir, "snap_*.h5"))):
-        text = subprocess.run(["h5dump", "-a", "/time", "-w", "0", path], capture_output=True,
-                              text=True, check=True).stdout
-        t = float(re.search(r"\(0\): ([-0-9.eE+]+)", text).group(1))
-        if t < t0:
+        if snapshot_time(path) < t0:
             continue
-        kind, pos, vel, wd = h5_fields(path, "kind", "pos", "vel", "wall_dist")
+        kind, pos, vel, wd = snapshot_fields(path, "kind", "pos", "vel", "wall_dist")
         used += 1
         for i, kd in enumerate(kind):
             x, y = pos[2 * i], pos[2 * i + 1]
