@@ -76,11 +76,9 @@ def snapshot_rows(run_dir, nf, y_p):
 def channel_chart(out_dir, runs):
     rows = []
     for label, run_dir in runs:
-        path = os.path.join(run_dir, "summary.json")
-        if not os.path.exists(path):  # a run still going (the N_f = 40 ones take hours)
-            print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of the chart")
+        summary = finished(run_dir, "the chart")
+        if summary is None:
             continue
-        summary = json_load(path)
         params, metrics = summary["parameters"], summary["metrics"]
         ut = metrics.get("u_tau", U_TAU_REF)
         for y, u in snapshot_rows(run_dir, int(params["nf"]), params["y_p"]):
@@ -196,11 +194,9 @@ def curved_chart(out_dir, runs):
     rows, shown = [], set()
     names = {1: ("mild", 0.0635), 2: ("strong", 0.0762)}
     for label, run_dir in runs:
-        path = os.path.join(run_dir, "summary.json")
-        if not os.path.exists(path):  # a run still going (the N_f = 40 ones take hours)
-            print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of the chart")
+        summary = finished(run_dir, "the chart")
+        if summary is None:
             continue
-        summary = json_load(path)
         params, metrics = summary["parameters"], summary["metrics"]
         name, height = names[int(params.get("setting", 1))]
         t0 = summary["sim_time"] - metrics["avg"]
@@ -248,11 +244,10 @@ unset multiplot
 def hcd_map_chart(out_dir, runs):
     rows = []
     for label, run_dir in runs:
-        path = os.path.join(run_dir, "summary.json")
-        if not os.path.exists(path):
-            print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of the map")
+        summary = finished(run_dir, "the map")
+        if summary is None:
             continue
-        p = json_load(path)["parameters"]
+        p = summary["parameters"]
         plat, exit_ = hcd_windows(run_dir, "platform"), hcd_windows(run_dir, "exit")
         if not plat or not exit_:
             print(f"channel_ke_chart.py: {run_dir} has no whole window of outputs: left out of the "
@@ -298,11 +293,9 @@ unset multiplot
 def hcd_floor_chart(out_dir, runs):
     rows = []
     for label, run_dir in runs:
-        path = os.path.join(run_dir, "summary.json")
-        if not os.path.exists(path):
-            print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of the floor chart")
-            continue
-        rows += [(label, x, u) for x, u in hcd_floor_run(run_dir, json_load(path))]
+        summary = finished(run_dir, "the floor chart")
+        if summary is not None:
+            rows += [(label, x, u) for x, u in hcd_floor_run(run_dir, summary)]
     rows += [("OpenFOAM wall cells", x, u) for x, u in hcd_floor_fv()]
     csv_path = os.path.join(out_dir, "channel_hcd_floor.csv")
     with open(csv_path, "w") as f:
@@ -323,6 +316,15 @@ set ylabel 'u along the floor / U_b'
 set xzeroaxis lt -1
 plot {', '.join(plots)}
 """)
+
+
+def finished(run_dir, what):
+    """A run's summary.json, or None (said) for a run still going: the N_f = 40 ones take hours."""
+    path = os.path.join(run_dir, "summary.json")
+    if not os.path.exists(path):
+        print(f"channel_ke_chart.py: {run_dir} has no summary.json: left out of {what}")
+        return None
+    return json_load(path)
 
 
 def json_load(path):

@@ -30,7 +30,10 @@ def main():
         gx, gt = results.hcd_floor_foot(x, y)
         if abs(gx - fx) > 1e-9 or math.dist(gt, t) > 1e-9:
             bad.append(f"the foot of ({x:g}, {y:g}) is at x = {gx:g} along {gt}, not {fx:g} along {t}")
-    fv = results.hcd_floor_fv(path)
+    try:
+        fv = results.hcd_floor_fv(path)
+    except (OSError, ValueError) as e:
+        sys.exit(f"hcd_floor_check.py: {e}")
     sep, att = results.crossings(fv, 5.0)
     with open(path) as f:
         head = f.read()
